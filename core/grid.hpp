@@ -1,0 +1,33 @@
+#pragma once
+// A uniform grid of nx x ny rectangular cells covering [-lx/2, lx/2] x [-ly/2, ly/2] (metres).
+#include <cstddef>
+
+namespace coatfft {
+
+class Grid {
+ public:
+  /// Validates on construction: nx, ny >= 1 and lx, ly finite and > 0 (throws InvalidArgument).
+  Grid(std::ptrdiff_t nx, std::ptrdiff_t ny, double lx, double ly);
+
+  std::ptrdiff_t nx() const { return nx_; }
+  std::ptrdiff_t ny() const { return ny_; }
+  double lx() const { return lx_; }  ///< domain length along x [m]
+  double ly() const { return ly_; }  ///< domain length along y [m]
+  double dx() const { return lx_ / static_cast<double>(nx_); }  ///< cell size along x [m]
+  double dy() const { return ly_ / static_cast<double>(ny_); }  ///< cell size along y [m]
+  std::ptrdiff_t nb_cells() const { return nx_ * ny_; }
+  /// Cell centre x_i = -lx/2 + (i + 1/2) dx [m].
+  double x(std::ptrdiff_t i) const { return -0.5 * lx_ + (static_cast<double>(i) + 0.5) * dx(); }
+  /// Cell centre y_j = -ly/2 + (j + 1/2) dy [m].
+  double y(std::ptrdiff_t j) const { return -0.5 * ly_ + (static_cast<double>(j) + 0.5) * dy(); }
+
+  bool operator==(const Grid&) const = default;
+
+ private:
+  std::ptrdiff_t nx_;
+  std::ptrdiff_t ny_;
+  double lx_;
+  double ly_;
+};
+
+}  // namespace coatfft

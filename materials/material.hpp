@@ -1,0 +1,29 @@
+#pragma once
+// An isotropic linear-elastic material.
+
+namespace coatfft {
+
+class Material {
+ public:
+  /// E: Young's modulus [Pa], finite and > 0. nu: Poisson's ratio, finite, -1 < nu < 0.5.
+  /// nu = 0.5 (incompressible) is refused: the coated FRFs divide by (1 - 2 nu) terms through the
+  /// Kolosov constant and the project documents nu <= 0.4999 as the supported range.
+  Material(double E, double nu);
+
+  double youngs_modulus() const { return E_; }  ///< E [Pa]
+  double poisson_ratio() const { return nu_; }  ///< nu [-]
+  /// Plane-strain (reduced) modulus E* = E / (1 - nu^2) [Pa]; the half-space compliance is 2/(E* k).
+  double plane_strain_modulus() const { return E_ / (1.0 - nu_ * nu_); }
+  /// Shear modulus mu = E / (2 (1 + nu)) [Pa].
+  double shear_modulus() const { return E_ / (2.0 * (1.0 + nu_)); }
+  /// Kolosov constant for plane strain, kappa = 3 - 4 nu [-].
+  double kolosov() const { return 3.0 - 4.0 * nu_; }
+
+  bool operator==(const Material&) const = default;
+
+ private:
+  double E_;
+  double nu_;
+};
+
+}  // namespace coatfft

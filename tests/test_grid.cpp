@@ -1,0 +1,27 @@
+#include <catch2/catch.hpp>
+#include <limits>
+
+#include "core/error.hpp"
+#include "core/grid.hpp"
+
+using coatfft::Grid;
+using coatfft::InvalidArgument;
+
+TEST_CASE("Grid cell centres are symmetric about the origin", "[grid]") {
+  const Grid g(4, 3, 2.0, 3.0);
+  CHECK(g.dx() == 0.5);
+  CHECK(g.dy() == 1.0);
+  CHECK(g.x(0) == -0.75);
+  CHECK(g.x(3) == 0.75);
+  CHECK(g.y(0) == -1.0);
+  CHECK(g.y(1) == 0.0);  // odd ny: a centre on the origin
+  CHECK(g.nb_cells() == 12);
+}
+
+TEST_CASE("Grid refuses bad sizes with a message naming the value", "[grid][bad_input]") {
+  CHECK_THROWS_WITH(Grid(0, 3, 1.0, 1.0), Catch::Contains("nx = 0"));
+  CHECK_THROWS_WITH(Grid(3, -1, 1.0, 1.0), Catch::Contains("ny = -1"));
+  CHECK_THROWS_AS(Grid(3, 3, 0.0, 1.0), InvalidArgument);
+  CHECK_THROWS_AS(Grid(3, 3, 1.0, std::numeric_limits<double>::infinity()), InvalidArgument);
+  CHECK_THROWS_AS(Grid(3, 3, std::numeric_limits<double>::quiet_NaN(), 1.0), InvalidArgument);
+}
