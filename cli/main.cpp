@@ -1,0 +1,37 @@
+// The coatfft command-line program. This is the only place where exceptions become exit codes:
+// 2 for bad input (coatfft::InvalidArgument, bad flags), 1 for anything else.
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "cli/run_command.hpp"
+#include "core/error.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"coatfft: surface displacements and contact of coated elastic half-spaces"};
+  app.require_subcommand(1);
+
+  coatfft::cli::RunOptions run;
+  CLI::App* run_cmd = app.add_subcommand("run", "Compute the surface displacement of a scene");
+  run_cmd->add_option("scene", run.scene, "Scene file (TOML)")->required();
+  run_cmd->add_option("-o,--output", run.outdir, "Output folder")->required();
+  run_cmd->add_option("--repeat", run.repeat, "Applications to time (median reported)")
+      ->check(CLI::PositiveNumber);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+
+  try {
+    if (*run_cmd) coatfft::cli::run_command(run);
+  } catch (const coatfft::InvalidArgument& e) {
+    std::cerr << "coatfft: error: " << e.what() << '\n';
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "coatfft: internal error: " << e.what() << '\n';
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,248 @@
+#include "cli/scene.hpp"
+
+#include <cmath>
+#include <set>
+#include <toml++/toml.h>
+#include <vector>
+
+#include "core/error.hpp"
+#include "materials/catalog.hpp"
+
+namespace coatfft::cli {
+
+namespace {
+
+// Reads the keys of one TOML table, remembering which were used so that unknown keys (typos)
+// are refused instead of silently ignored.
+class SectionReader {
+ public:
+  SectionReader(const toml::table& table, std::string name) : table_(table), name_(std::move(name)) {}
+
+  bool has(std::string_view key) const { return table_.contains(key); }
+
+  double number(std::string_view key) {
+    const toml::node& node = require(key);
+    COATFFT_REQUIRE(node.is_number(), where(key), " must be a number, got ", describe(node));
+    const double value = node.value<double>().value();
+    COATFFT_REQUIRE(std::isfinite(value), where(key), " = ", value, " must be finite");
+    return value;
+  }
+  double number(std::string_view key, double fallback) { return has(key) ? number(key) : fallback; }
+
+  std::int64_t integer(std::string_view key) {
+    const toml::node& node = require(key);
+    COATFFT_REQUIRE(node.is_integer(), where(key), " must be an integer, got ", describe(node));
+    return node.value<std::int64_t>().value();
+  }
+  std::int64_t integer(std::string_view key, std::int64_t fallback) {
+    return has(key) ? integer(key) : fallback;
+  }
+
+  std::string string(std::string_view key) {
+    const toml::node& node = require(key);
+    COATFFT_REQUIRE(node.is_string(), where(key), " must be a string, got ", describe(node));
+    return node.value<std::string>().value();
+  }
+  std::string string(std::string_view key, std::string fallback) {
+    return has(key) ? string(key) : fallback;
+  }
+  std::string choice(std::string_view key, std::string fallback,
+                     std::initializer_list<std::string_view> allowed) {
+    std::string value = string(key, std::move(fallback));
+    std::string list;
+    for (auto a : allowed) {
+      if (a == value) return value;
+      list += (list.empty() ? "\"" : ", \"") + std::string(a) + "\"";
+    }
+    throw InvalidArgument(detail::concat(where(key), " = \"", value, "\" is not one of ", list));
+  }
+
+  /// Refuses every key that was not read.
+  void finish() const {
+    for (auto&& [key, node] : table_) {
+      COATFFT_REQUIRE(used_.count(std::string(key.str())), "[", name_, "] unknown key \"",
+                      key.str(), "\"", line_of(node));
+    }
+  }
+
+  std::string where(std::string_view key) const {
+    std::string line;
+    if (const toml::node* node = table_.get(key)) line = line_of(*node);
+    return detail::concat("[", name_, "] ", key, line);
+  }
+
+ private:
+  const toml::node& require(std::string_view key) {
+    const toml::node* node = table_.get(key);
+    COATFFT_REQUIRE(node != nullptr, "[", name_, "] missing required key \"", key, "\"");
+    used_.insert(std::string(key));
+    return *node;
+  }
+  static std::string line_of(const toml::node& node) {
+    return node.source().begin ? detail::concat(" (line ", node.source().begin.line, ")") : "";
+  }
+  static std::string describe(const toml::node& node) {
+    std::ostringstream os;
+    os << node.type();
+    return os.str();
+  }
+
+  const toml::table& table_;
+  std::string name_;
+  std::set<std::string> used_;
+};
+
+const toml::table& section(const toml::table& root, std::string_view name, bool required) {
+  static const toml::table empty;
+  const toml::node* node = root.get(name);
+  COATFFT_REQUIRE(node != nullptr || !required, "missing required section [", name, "]");
+  if (node == nullptr) return empty;
+  COATFFT_REQUIRE(node->is_table(), "[", name, "] must be a table");
+  return *node->as_table();
+}
+
+// Library constructors validate values; prefix their messages with the section they came from.
+template <typename Build>
+auto in_section(std::string_view name, Build&& build) {
+  try {
+    return build();
+  } catch (const InvalidArgument& e) {
+    const std::string message = e.what();
+    if (message.rfind("[", 0) == 0) throw;
+    throw InvalidArgument(detail::concat("[", name, "] ", message));
+  }
+}
+
+Material read_material(SectionReader& reader) {
+  if (reader.has("material")) {
+    COATFFT_REQUIRE(!reader.has("E") && !reader.has("nu"), reader.where("material"),
+                    ": give either material or E and nu, not both");
+    const std::string name = reader.string("material");
+    try {
+      return material_by_name(name);
+    } catch (const InvalidArgument& e) {
+      throw InvalidArgument(detail::concat(reader.where("material"), ": ", e.what()));
+    }
+  }
+  const double E = reader.number("E");
+  const double nu = reader.number("nu");
+  return Material(E, nu);
+}
+
+Grid read_grid(const toml::table& root) {
+  SectionReader reader(section(root, "grid", true), "grid");
+  return in_section("grid", [&] {
+    const auto nx = reader.integer("nx");
+    const auto ny = reader.integer("ny");
+    // Guard against input that would exhaust memory before FFTW does (2nx x 2ny padded arrays).
+    COATFFT_REQUIRE(nx <= 65536 && ny <= 65536, "nx = ", nx, ", ny = ", ny,
+                    ": at most 65536 cells per direction");
+    Grid grid(nx, ny, reader.number("lx"), reader.number("ly"));
+    reader.finish();
+    return grid;
+  });
+}
+
+LayerStack read_body(const toml::table& root) {
+  SectionReader substrate_reader(section(root, "substrate", true), "substrate");
+  const Material substrate = in_section("substrate", [&] { return read_material(substrate_reader); });
+  substrate_reader.finish();
+
+  std::vector<Coating> coatings;
+  if (const toml::node* node = root.get("coating")) {
+    const toml::array* array = node->as_array();
+    COATFFT_REQUIRE(array != nullptr && array->is_array_of_tables(),
+                    "coating must be an array of tables: write [[coating]]");
+    for (std::size_t n = 0; n < array->size(); ++n) {
+      const std::string name = detail::concat("coating ", n + 1);
+      SectionReader reader(*array->get(n)->as_table(), name);
+      coatings.push_back(in_section(name, [&] {
+        Coating coating{read_material(reader), reader.number("thickness"), Interface::bonded};
+        const std::string interface =
+            reader.choice("interface", "bonded", {"bonded", "frictionless"});
+        coating.interface_below = interface == "bonded" ? Interface::bonded : Interface::frictionless;
+        return coating;
+      }));
+      reader.finish();
+    }
+  }
+  return in_section("coating", [&] { return LayerStack(std::move(coatings), substrate); });
+}
+
+PressureSpec read_pressure(const toml::table& table, const Grid& grid,
+                           const std::filesystem::path& scene_dir) {
+  SectionReader reader(table, "pressure");
+  PressureSpec spec;
+  spec.kind = reader.choice("kind", "", {"hertz", "uniform_disk", "file"});
+  if (spec.kind == "file") {
+    spec.file = reader.string("path");
+    if (spec.file.is_relative()) spec.file = scene_dir / spec.file;
+  } else {
+    const char* amplitude_key = spec.kind == "hertz" ? "p0" : "p";
+    spec.amplitude = reader.number(amplitude_key);
+    COATFFT_REQUIRE(spec.amplitude > 0, reader.where(amplitude_key), " = ", spec.amplitude,
+                    " Pa must be > 0");
+    spec.radius = reader.number("a");
+    const double half_domain = 0.5 * std::min(grid.lx(), grid.ly());
+    COATFFT_REQUIRE(spec.radius > 0 && spec.radius <= half_domain, reader.where("a"), " = ",
+                    spec.radius, " m must be > 0 and at most half the domain (", half_domain,
+                    " m)");
+    spec.sampling = reader.choice("sampling", "centre", {"centre", "cell_average"});
+  }
+  reader.finish();
+  return spec;
+}
+
+MethodSpec read_method(const toml::table& root, const std::filesystem::path& scene_dir) {
+  SectionReader reader(section(root, "method", false), "method");
+  MethodSpec spec;
+  spec.name = reader.choice("name", spec.name,
+                            {"dcfft", "direct", "frf-spectral", "frf-dcfft", "frf-split"});
+  spec.alpha = reader.number("alpha", spec.alpha);
+  COATFFT_REQUIRE(spec.alpha >= 1, reader.where("alpha"), " = ", spec.alpha, " must be >= 1");
+  spec.g0 = reader.choice("g0", spec.g0, {"regularized", "quadrature"});
+  spec.g0_tol = reader.number("g0_tol", spec.g0_tol);
+  COATFFT_REQUIRE(spec.g0_tol > 0 && spec.g0_tol < 1, reader.where("g0_tol"), " = ", spec.g0_tol,
+                  " must be in (0, 1)");
+  spec.planning = reader.choice("planning", spec.planning, {"estimate", "measure"});
+  const auto threads = reader.integer("threads", spec.threads);
+  COATFFT_REQUIRE(threads >= 1 && threads <= 256, reader.where("threads"), " = ", threads,
+                  " must be in 1..256");
+  spec.threads = static_cast<int>(threads);
+  if (reader.has("wisdom")) {
+    spec.wisdom = reader.string("wisdom");
+    if (spec.wisdom.is_relative()) spec.wisdom = scene_dir / spec.wisdom;
+  }
+  reader.finish();
+  return spec;
+}
+
+}  // namespace
+
+Scene read_scene(const std::filesystem::path& path) {
+  const std::string file = path.string();
+  toml::table root;
+  try {
+    root = toml::parse_file(file);
+  } catch (const toml::parse_error& e) {
+    const auto& begin = e.source().begin;
+    throw InvalidArgument(
+        detail::concat(file, ":", begin.line, ": TOML syntax error: ", e.description()));
+  }
+  try {
+    const std::set<std::string> known{"grid", "substrate", "coating", "pressure", "method"};
+    for (auto&& [key, node] : root) {
+      COATFFT_REQUIRE(known.count(std::string(key.str())), "unknown section or key \"", key.str(),
+                      "\"");
+    }
+    const std::filesystem::path scene_dir = path.parent_path();
+    Scene scene{read_grid(root), read_body(root), std::nullopt, read_method(root, scene_dir)};
+    COATFFT_REQUIRE(root.contains("pressure"), "missing required section [pressure]");
+    scene.pressure = read_pressure(section(root, "pressure", true), scene.grid, scene_dir);
+    return scene;
+  } catch (const InvalidArgument& e) {
+    throw InvalidArgument(detail::concat(file, ": ", e.what()));
+  }
+}
+
+}  // namespace coatfft::cli

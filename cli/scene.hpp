@@ -1,0 +1,46 @@
+#pragma once
+// The scene file: a small TOML description of one computation (docs/scene_format.md).
+// read_scene() validates everything it can before any work starts, so that a bad scene ends with
+// one line naming the key and the value, and no output.
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "core/grid.hpp"
+#include "layers/layer_stack.hpp"
+
+namespace coatfft::cli {
+
+/// [pressure]: a known surface pressure.
+struct PressureSpec {
+  std::string kind;              ///< "hertz", "uniform_disk" or "file"
+  double amplitude = 0;          ///< p0 (hertz) or p (uniform_disk) [Pa]
+  double radius = 0;             ///< a [m]
+  std::string sampling = "centre";  ///< "centre" or "cell_average"
+  std::filesystem::path file;    ///< .npy or .csv of shape (ny, nx) [Pa], for kind = "file"
+};
+
+/// [method]: how displacements are computed.
+struct MethodSpec {
+  std::string name = "dcfft";      ///< "dcfft", "direct", "frf-spectral", "frf-dcfft", "frf-split"
+  double alpha = 2.0;              ///< extension ratio of the FRF pipelines
+  std::string g0 = "regularized";  ///< "regularized" or "quadrature"
+  double g0_tol = 1e-10;           ///< relative tolerance of the g(0) quadrature
+  std::string planning = "estimate";  ///< FFTW planning: "estimate" or "measure"
+  int threads = 1;                 ///< FFTW threads
+  std::filesystem::path wisdom;    ///< FFTW wisdom file to load and save (optional)
+};
+
+struct Scene {
+  Grid grid;
+  LayerStack body;
+  std::optional<PressureSpec> pressure;
+  MethodSpec method;
+};
+
+/// Parses and validates a scene file. Throws InvalidArgument with a one-line message
+/// ("scene.toml: [grid] nx = 0: ...") on any problem. Relative file paths in the scene are
+/// taken relative to the scene file's folder.
+Scene read_scene(const std::filesystem::path& path);
+
+}  // namespace coatfft::cli

@@ -1,0 +1,194 @@
+#include "contact/contact_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "core/error.hpp"
+
+namespace coatfft {
+
+namespace {
+
+// Mean of f over the cells where mask is set (mask non-empty).
+double masked_mean(const Field& f, const Eigen::Array<bool, Eigen::Dynamic, Eigen::Dynamic>& mask,
+                   std::ptrdiff_t count) {
+  return mask.select(f, 0.0).sum() / static_cast<double>(count);
+}
+
+bool pressure_on_border(const Field& p) {
+  const auto nx = p.rows();
+  const auto ny = p.cols();
+  return (p.row(0) > 0).any() || (p.row(nx - 1) > 0).any() || (p.col(0) > 0).any() ||
+         (p.col(ny - 1) > 0).any();
+}
+
+void append(std::string& text, const std::string& more) {
+  if (!text.empty()) text += "; ";
+  text += more;
+}
+
+}  // namespace
+
+ContactSolver::ContactSolver(SurfaceOperator& op, ContactOptions options)
+    : op_(op), options_(options) {
+  COATFFT_REQUIRE(std::isfinite(options_.tolerance) && options_.tolerance > 0,
+                  "ContactSolver: tolerance = ", options_.tolerance,
+                  ", but it must be finite and > 0");
+  COATFFT_REQUIRE(options_.max_iterations >= 1, "ContactSolver: max_iterations = ",
+                  options_.max_iterations, ", but it must be >= 1");
+}
+
+ContactResult ContactSolver::solve_load(const Field& height, double load) {
+  COATFFT_REQUIRE(std::isfinite(load) && load > 0, "ContactSolver: load = ", load,
+                  " N, but the total load must be finite and > 0");
+  return run(height, ContactControl::load, load);
+}
+
+ContactResult ContactSolver::solve_approach(const Field& height, double approach) {
+  COATFFT_REQUIRE(std::isfinite(approach), "ContactSolver: approach = ", approach,
+                  " m, but it must be finite");
+  return run(height, ContactControl::approach, approach);
+}
+
+ContactResult ContactSolver::solve(const Field& height, ContactControl control, double value) {
+  return control == ContactControl::load ? solve_load(height, value)
+                                         : solve_approach(height, value);
+}
+
+ContactResult ContactSolver::run(const Field& h, ContactControl control, double value) {
+  using Mask = Eigen::Array<bool, Eigen::Dynamic, Eigen::Dynamic>;
+  const Grid& grid = op_.grid();
+  const std::ptrdiff_t nx = grid.nx();
+  const std::ptrdiff_t ny = grid.ny();
+  COATFFT_REQUIRE(h.rows() == nx && h.cols() == ny, "ContactSolver: height field of shape (",
+                  h.rows(), ", ", h.cols(), "), but the operator's grid is (", nx, ", ", ny, ")");
+  COATFFT_REQUIRE(h.allFinite(), "ContactSolver: the height field has a non-finite entry");
+  const bool load_control = control == ContactControl::load;
+  const double cell_area = grid.dx() * grid.dy();
+  const double h_min = h.minCoeff();
+  if (!load_control) {
+    COATFFT_REQUIRE(value > h_min, "ContactSolver: approach = ", value,
+                    " m, but it must exceed min(height) = ", h_min,
+                    " m, or the indenter does not touch the surface");
+  }
+  const double delta = load_control ? 0.0 : value;  // approach control: the fixed approach
+
+  ContactResult result;
+  result.control = control;
+  Field p(nx, ny);
+  Field u(nx, ny);
+  Field g(nx, ny);
+  Field t = Field::Zero(nx, ny);
+  Field r(nx, ny);
+  Field p_old(nx, ny);
+
+  if (load_control) {
+    // Polonsky & Keer's start: the load spread uniformly over the whole domain.
+    p.setConstant(value / (static_cast<double>(nx * ny) * cell_area));
+  } else {
+    // A uniform pressure on the geometric overlap {h < delta}, scaled so that the mean gap over
+    // it vanishes: one extra application, and a start of the right magnitude.
+    const Mask overlap = h < delta;
+    const auto n_overlap = overlap.count();
+    p = overlap.cast<double>();
+    op_.apply(p, u);
+    const double scale = masked_mean(delta - h, overlap, n_overlap) /
+                         masked_mean(u, overlap, n_overlap);
+    COATFFT_REQUIRE(std::isfinite(scale) && scale > 0, "ContactSolver: operator '", op_.name(),
+                    "' returned a non-positive mean displacement under a positive pressure");
+    p *= scale;
+  }
+
+  double g_norm_old = 1.0;
+  bool conjugate = false;  // Polonsky & Keer's delta: keep the previous direction (no new contacts)
+  double residual = std::numeric_limits<double>::infinity();
+  int iteration = 0;
+  while (iteration < options_.max_iterations) {
+    ++iteration;
+    // Step 1: gap of the current pressure; on the contact set I_c = {p > 0} it should be constant
+    // (load control: its mean is the unknown approach) or zero (approach control).
+    op_.apply(p, u);
+    g = h + u - delta;
+    const Mask contact = p > 0;
+    const auto n_contact = contact.count();
+    if (n_contact == 0) {
+      append(result.warning, "all pressure vanished (breakdown)");
+      break;
+    }
+    if (load_control) g -= masked_mean(g, contact, n_contact);
+    // Step 2: conjugate direction on I_c (PK eqs. for t); restart when the set grew.
+    const double g_norm = contact.select(g.square(), 0.0).sum();
+    const double beta = conjugate ? g_norm / g_norm_old : 0.0;
+    t = contact.select(g + beta * t, 0.0);
+    g_norm_old = g_norm;
+    // Step 3: step length along t. Under load control the mean of K t over I_c is removed: a
+    // constant displacement is absorbed by the approach, so it must not steer the step. This is
+    // also what makes the iterates independent of the operator's g(0).
+    op_.apply(t, r);
+    if (load_control) r -= masked_mean(r, contact, n_contact);
+    const double numerator = contact.select(g * t, 0.0).sum();
+    const double denominator = contact.select(r * t, 0.0).sum();
+    if (g_norm == 0.0) {  // exact solution on I_c already
+      residual = 0.0;
+      result.converged = true;
+      break;
+    }
+    if (!(denominator > 0) || !std::isfinite(numerator)) {
+      append(result.warning, "non-positive curvature along the search direction (breakdown)");
+      break;
+    }
+    const double tau = numerator / denominator;
+    // Step 4: update, project on p >= 0, and put pressure on cells that overlap (p = 0, g < 0).
+    p_old = p;
+    p -= tau * t;
+    p = p.max(0.0);
+    const Mask overlap = (p == 0.0) && (g < 0.0);
+    conjugate = !overlap.any();
+    p = overlap.select(p - tau * g, p);
+    // Step 5 (load control): enforce the total load exactly.
+    const double p_sum = p.sum();
+    if (!(p_sum > 0) || !std::isfinite(p_sum)) {
+      append(result.warning, "all pressure vanished (breakdown)");
+      p = p_old;
+      break;
+    }
+    if (load_control) p *= value / (p_sum * cell_area);
+    residual = (p - p_old).abs().sum() / p.sum();
+    if (residual < options_.tolerance) {
+      result.converged = true;
+      break;
+    }
+  }
+
+  op_.apply(p, u);
+  const Mask contact = p > 0;
+  const auto n_contact = contact.count();
+  double approach = delta;
+  if (load_control) approach = n_contact > 0 ? masked_mean(h + u, contact, n_contact) : h_min;
+  result.gap = h + u - approach;
+  result.pressure = std::move(p);
+  result.displacement = std::move(u);
+  result.load = result.pressure.sum() * cell_area;
+  if (!load_control || options_.compute_approach) result.approach = approach;
+  result.contact_area = static_cast<double>(n_contact) * cell_area;
+  if (n_contact > 0) result.contact_radius = std::sqrt(result.contact_area / std::numbers::pi);
+  result.max_pressure = result.pressure.maxCoeff();
+  result.iterations = iteration;
+  result.residual = residual;
+  result.touches_boundary = pressure_on_border(result.pressure);
+  if (result.touches_boundary) {
+    append(result.warning,
+           "contact reaches the domain edge (pressure > 0 on a border cell): the domain is too "
+           "small for this load");
+  }
+  if (!result.converged && result.warning.find("breakdown") == std::string::npos) {
+    append(result.warning, detail::concat("not converged after ", iteration,
+                                          " iterations (residual ", residual, ", tolerance ",
+                                          options_.tolerance, ")"));
+  }
+  return result;
+}
+
+}  // namespace coatfft

@@ -1,0 +1,87 @@
+#pragma once
+// Frictionless normal contact of a rigid indenter on an elastic body, on any SurfaceOperator:
+// constrained conjugate gradient of Polonsky & Keer (2000), Wear 231, 206-219. See docs/contact.md.
+//
+// With h the initial separation (contact/indenter.hpp), u = K p the surface displacement and delta
+// the rigid-body approach, the gap is g = h + u - delta and the solution satisfies
+//   p >= 0,  g >= 0,  p g = 0   (complementarity), and either  sum p dx dy = W  (load control)
+//   or delta given (approach control).
+#include <optional>
+#include <string>
+
+#include "convolution/surface_operator.hpp"
+#include "core/types.hpp"
+
+namespace coatfft {
+
+/// Stopping rule and limits of the iteration.
+struct ContactOptions {
+  /// Converged when the relative pressure change of one iteration,
+  /// sum |p_new - p_old| / sum p_new (Polonsky & Keer's criterion), drops below this [-].
+  double tolerance = 1e-10;
+  /// Iteration limit; reaching it returns converged = false (never throws).
+  int max_iterations = 1000;
+  /// Load control only: also report the approach delta = mean over contact cells of (h + u).
+  /// Off by default because delta needs the absolute displacement level, which a spectral
+  /// (FRF-based) operator knows only up to its g(0) error; pressure, area and gap do not.
+  bool compute_approach = false;
+};
+
+/// Which quantity the solve prescribes.
+enum class ContactControl { load, approach };
+
+/// Output of one contact solve. Fields have the grid's shape (nx, ny).
+struct ContactResult {
+  Field pressure;      ///< p [Pa], >= 0 everywhere
+  Field displacement;  ///< u = K p [m], positive into the body, as the operator returns it
+  /// g = h + u - delta [m]: 0 (to solver accuracy) on contact cells, >= 0 elsewhere. Computed with
+  /// delta = mean over contact cells of (h + u), so it is independent of a g(0) error.
+  Field gap;
+  ContactControl control = ContactControl::load;
+  double load = 0;  ///< total force W = sum p dx dy [N]
+  /// Rigid-body approach delta [m]: the input under approach control; under load control present
+  /// only when ContactOptions::compute_approach is set (it depends on the operator's g(0)).
+  std::optional<double> approach;
+  double contact_area = 0;  ///< A = (number of cells with p > 0) dx dy [m^2]
+  /// Equivalent contact radius sqrt(A / pi) [m]; absent when there is no contact (A = 0).
+  std::optional<double> contact_radius;
+  double max_pressure = 0;  ///< max p [Pa]
+  int iterations = 0;       ///< conjugate-gradient iterations done
+  double residual = 0;      ///< last relative pressure change (see ContactOptions::tolerance)
+  bool converged = false;
+  /// True when a border cell carries pressure: the contact reaches the domain edge, so the
+  /// domain is too small for the problem (the solution is that of a truncated body).
+  bool touches_boundary = false;
+  /// Human-readable notes (boundary contact, non-convergence, breakdown); empty when all is well.
+  std::string warning;
+};
+
+/// Polonsky-Keer solver bound to one operator (the operator must outlive the solver). Each solve
+/// costs 2 operator applications per iteration, plus 1 or 2 at the start and 1 at the end.
+class ContactSolver {
+ public:
+  /// Throws InvalidArgument for tolerance not finite and > 0 or max_iterations < 1.
+  explicit ContactSolver(SurfaceOperator& op, ContactOptions options = {});
+
+  /// Load control: total force `load` [N] (finite, > 0) on the indenter of separation `height`
+  /// [m] (Field of the operator's grid shape, finite). Pressure, area and gap do not depend on a
+  /// constant (g(0)) error of the operator; only the optional approach does.
+  ContactResult solve_load(const Field& height, double load);
+
+  /// Approach control: rigid-body approach `approach` [m], finite and > min(height) (otherwise
+  /// there is no contact). The load is an output.
+  ContactResult solve_approach(const Field& height, double approach);
+
+  /// Dispatches to solve_load or solve_approach.
+  ContactResult solve(const Field& height, ContactControl control, double value);
+
+  const ContactOptions& options() const { return options_; }
+
+ private:
+  ContactResult run(const Field& height, ContactControl control, double value);
+
+  SurfaceOperator& op_;
+  ContactOptions options_;
+};
+
+}  // namespace coatfft

@@ -1,0 +1,95 @@
+#include "contact/indenter.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace coatfft {
+
+namespace {
+
+void require_length(double value, const char* what) {
+  COATFFT_REQUIRE(std::isfinite(value) && value > 0, what, " = ", value,
+                  " m, but it must be finite and > 0");
+}
+
+// Fills h(i, j) = f(x_i, y_j).
+template <typename F>
+Field sample(const Grid& grid, F&& f) {
+  Field h(grid.nx(), grid.ny());
+  for (std::ptrdiff_t j = 0; j < grid.ny(); ++j) {
+    for (std::ptrdiff_t i = 0; i < grid.nx(); ++i) h(i, j) = f(grid.x(i), grid.y(j));
+  }
+  return h;
+}
+
+}  // namespace
+
+Field height(const Grid& grid, const Sphere& sphere) {
+  const double R = sphere.radius;
+  require_length(R, "Sphere: radius");
+  // The farthest cell centre is a corner centre; beyond r = R the sphere has no lower surface.
+  const double x_max = std::abs(grid.x(0));
+  const double y_max = std::abs(grid.y(0));
+  const double r_max = std::hypot(x_max, y_max);
+  COATFFT_REQUIRE(r_max < R, "Sphere: radius = ", R,
+                  " m, but the grid's farthest cell centre lies at r = ", r_max,
+                  " m; the exact sphere needs R > r everywhere (enlarge R, shrink the domain, or "
+                  "use a Paraboloid)");
+  // R - sqrt(R^2 - r^2) rewritten as r^2 / (R + sqrt(R^2 - r^2)): no cancellation for r << R.
+  return sample(grid, [R](double x, double y) {
+    const double r2 = x * x + y * y;
+    return r2 / (R + std::sqrt(R * R - r2));
+  });
+}
+
+Field height(const Grid& grid, const Paraboloid& paraboloid) {
+  const double R = paraboloid.radius;
+  require_length(R, "Paraboloid: radius");
+  return sample(grid, [R](double x, double y) { return (x * x + y * y) / (2.0 * R); });
+}
+
+Field height(const Grid& grid, const Cylinder& cylinder) {
+  const double R = cylinder.radius;
+  const double L = cylinder.flat_length;
+  const double Re = cylinder.end_radius;
+  require_length(R, "Cylinder: radius");
+  require_length(Re, "Cylinder: end_radius");
+  COATFFT_REQUIRE(std::isfinite(L) && L >= 0, "Cylinder: flat_length = ", L,
+                  " m, but it must be finite and >= 0");
+  return sample(grid, [=](double x, double y) {
+    const double s = std::max(std::abs(x) - 0.5 * L, 0.0);
+    return y * y / (2.0 * R) + s * s / (2.0 * Re);
+  });
+}
+
+Field height(const Grid& grid, const FlatPunch& punch) {
+  const double a = punch.radius;
+  const double rho = punch.edge_radius;
+  require_length(a, "FlatPunch: radius");
+  require_length(rho, "FlatPunch: edge_radius");
+  return sample(grid, [=](double x, double y) {
+    const double s = std::max(std::hypot(x, y) - a, 0.0);
+    return s * s / (2.0 * rho);
+  });
+}
+
+Field height(const Grid& grid, const HeightMap& map) {
+  COATFFT_REQUIRE(map.heights.rows() == grid.nx() && map.heights.cols() == grid.ny(),
+                  "HeightMap: shape (", map.heights.rows(), ", ", map.heights.cols(),
+                  "), but the grid needs (nx, ny) = (", grid.nx(), ", ", grid.ny(), ")");
+  for (std::ptrdiff_t j = 0; j < grid.ny(); ++j) {
+    for (std::ptrdiff_t i = 0; i < grid.nx(); ++i) {
+      COATFFT_REQUIRE(std::isfinite(map.heights(i, j)), "HeightMap: h(", i, ", ", j,
+                      ") = ", map.heights(i, j), ", but every height must be finite");
+    }
+  }
+  return map.heights;
+}
+
+Field height(const Grid& grid, const Indenter& indenter) {
+  return std::visit([&grid](const auto& shape) { return height(grid, shape); }, indenter);
+}
+
+}  // namespace coatfft

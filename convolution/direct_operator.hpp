@@ -1,0 +1,27 @@
+#pragma once
+// Brute-force discrete convolution: the O((nx ny)^2) reference every fast operator is tested
+// against. Use on small grids only (64 x 64 takes about 20 ms).
+#include <string>
+
+#include "convolution/influence_kernel.hpp"
+#include "convolution/surface_operator.hpp"
+
+namespace coatfft {
+
+/// u_ij = sum_kl K(i - k, j - l) p_kl by direct multi-summation over the kernel's grid.
+class DirectOperator final : public SurfaceOperator {
+ public:
+  /// Keeps a copy of `kernel`.
+  explicit DirectOperator(const InfluenceKernel& kernel);
+
+  const Grid& grid() const override { return kernel_.grid(); }
+  /// Throws InvalidArgument unless `pressure` has shape (nx, ny).
+  void apply(const Field& pressure, Field& displacement) override;
+  std::string name() const override { return "direct"; }
+  using SurfaceOperator::apply;
+
+ private:
+  InfluenceKernel kernel_;
+};
+
+}  // namespace coatfft

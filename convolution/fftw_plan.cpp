@@ -1,0 +1,72 @@
+#include "convolution/fftw_plan.hpp"
+
+#include <algorithm>
+#include <new>
+#include <type_traits>
+
+#include "core/error.hpp"
+
+namespace coatfft {
+
+unsigned fftw_flags(Planning planning) {
+  return planning == Planning::measure ? FFTW_MEASURE : FFTW_ESTIMATE;
+}
+
+std::mutex& fftw_planner_mutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+
+bool load_fftw_wisdom(const std::string& path) {
+  std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+  return fftw_import_wisdom_from_filename(path.c_str()) != 0;
+}
+
+void save_fftw_wisdom(const std::string& path) {
+  std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+  COATFFT_REQUIRE(fftw_export_wisdom_to_filename(path.c_str()) != 0,
+                  "save_fftw_wisdom: cannot write the wisdom file '", path, "'");
+}
+
+namespace detail {
+void set_planner_threads_locked(int threads) {
+  COATFFT_REQUIRE(threads >= 1, "FFTW plan: threads = ", threads, ", but threads must be >= 1");
+  // fftw_init_threads must precede the first threaded plan; doing it lazily under the planner
+  // mutex keeps it once-only without a separate init call that users could forget.
+  static bool initialised = false;
+  if (!initialised) {
+    if (fftw_init_threads() == 0) throw Error("FFTW: fftw_init_threads failed");
+    initialised = true;
+  }
+  fftw_plan_with_nthreads(threads);
+}
+}  // namespace detail
+
+template <typename T>
+FftwBuffer<T>::FftwBuffer(std::size_t size) : size_(size) {
+  if (size == 0) return;
+  if constexpr (std::is_same_v<T, double>) {
+    data_ = fftw_alloc_real(size);
+  } else {
+    data_ = fftw_alloc_complex(size);
+  }
+  if (data_ == nullptr) throw std::bad_alloc();
+  // Zero-filled so that a buffer is never read uninitialised (and padding starts as zeros).
+  std::fill_n(reinterpret_cast<double*>(data_), size * (sizeof(T) / sizeof(double)), 0.0);
+}
+
+template class FftwBuffer<double>;
+template class FftwBuffer<fftw_complex>;
+
+FftwPlan::FftwPlan(fftw_plan plan) : plan_(plan) {
+  if (plan_ == nullptr) throw Error("FFTW: the planner returned no plan for the requested transform");
+}
+
+void FftwPlan::reset() {
+  if (plan_ == nullptr) return;
+  std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+  fftw_destroy_plan(plan_);
+  plan_ = nullptr;
+}
+
+}  // namespace coatfft
