@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
+#include "cli/frf_command.hpp"
 #include "cli/run_command.hpp"
 #include "core/error.hpp"
 
@@ -17,6 +18,15 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--repeat", run.repeat, "Applications to time (median reported)")
       ->check(CLI::PositiveNumber);
 
+  coatfft::cli::FrfOptions frf;
+  CLI::App* frf_cmd = app.add_subcommand("frf", "Print the FRF of a scene's body as a CSV table");
+  frf_cmd->add_option("scene", frf.scene, "Scene file (TOML); only [substrate] and [[coating]] are used")
+      ->required();
+  frf_cmd->add_option("-o,--output", frf.output, "CSV file (default: standard output)");
+  frf_cmd->add_option("--k-min", frf.k_min, "Smallest wavenumber [rad/m]");
+  frf_cmd->add_option("--k-max", frf.k_max, "Largest wavenumber [rad/m]");
+  frf_cmd->add_option("--points", frf.points, "Number of log-spaced wavenumbers");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -26,6 +36,7 @@ int main(int argc, char** argv) {
 
   try {
     if (*run_cmd) coatfft::cli::run_command(run);
+    if (*frf_cmd) coatfft::cli::frf_command(frf);
   } catch (const coatfft::InvalidArgument& e) {
     std::cerr << "coatfft: error: " << e.what() << '\n';
     return 2;

@@ -217,32 +217,45 @@ MethodSpec read_method(const toml::table& root, const std::filesystem::path& sce
   return spec;
 }
 
-}  // namespace
-
-Scene read_scene(const std::filesystem::path& path) {
-  const std::string file = path.string();
-  toml::table root;
+toml::table parse_scene_file(const std::filesystem::path& path) {
   try {
-    root = toml::parse_file(file);
-  } catch (const toml::parse_error& e) {
-    const auto& begin = e.source().begin;
-    throw InvalidArgument(
-        detail::concat(file, ":", begin.line, ": TOML syntax error: ", e.description()));
-  }
-  try {
+    toml::table root = toml::parse_file(path.string());
     const std::set<std::string> known{"grid", "substrate", "coating", "pressure", "method"};
     for (auto&& [key, node] : root) {
       COATFFT_REQUIRE(known.count(std::string(key.str())), "unknown section or key \"", key.str(),
                       "\"");
     }
+    return root;
+  } catch (const toml::parse_error& e) {
+    throw InvalidArgument(
+        detail::concat("line ", e.source().begin.line, ": TOML syntax error: ", e.description()));
+  }
+}
+
+// Scene errors start with the file name, so that a message stands on its own.
+template <typename Parse>
+auto with_file_name(const std::filesystem::path& path, Parse&& parse) {
+  try {
+    return parse();
+  } catch (const InvalidArgument& e) {
+    throw InvalidArgument(detail::concat(path.string(), ": ", e.what()));
+  }
+}
+
+}  // namespace
+
+Scene read_scene(const std::filesystem::path& path) {
+  return with_file_name(path, [&] {
+    const toml::table root = parse_scene_file(path);
     const std::filesystem::path scene_dir = path.parent_path();
     Scene scene{read_grid(root), read_body(root), std::nullopt, read_method(root, scene_dir)};
-    COATFFT_REQUIRE(root.contains("pressure"), "missing required section [pressure]");
     scene.pressure = read_pressure(section(root, "pressure", true), scene.grid, scene_dir);
     return scene;
-  } catch (const InvalidArgument& e) {
-    throw InvalidArgument(detail::concat(file, ": ", e.what()));
-  }
+  });
+}
+
+LayerStack read_scene_body(const std::filesystem::path& path) {
+  return with_file_name(path, [&] { return read_body(parse_scene_file(path)); });
 }
 
 }  // namespace coatfft::cli

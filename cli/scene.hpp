@@ -43,4 +43,8 @@ struct Scene {
 /// taken relative to the scene file's folder.
 Scene read_scene(const std::filesystem::path& path);
 
+/// Parses only the body of a scene ([substrate] and [[coating]]), for commands that need no
+/// grid or load (`coatfft frf`). Other sections must still be known ones.
+LayerStack read_scene_body(const std::filesystem::path& path);
+
 }  // namespace coatfft::cli

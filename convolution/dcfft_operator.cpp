@@ -3,63 +3,192 @@
 #include <algorithm>
 #include <chrono>
 #include <complex>
+#include <cstdlib>
+#include <thread>
 
 #include "core/error.hpp"
 
 namespace coatfft {
+namespace {
+
+// Bytes of one worker's block of y transforms: small enough to stay in L2 while it is gathered,
+// transformed forward, filtered, transformed back and scattered (one pass over main memory).
+constexpr std::ptrdiff_t block_bytes = 128 * 1024;
+
+// True when K(di, dj) = K(-di, dj) = K(di, -dj) exactly; then the DFT of the wrapped array is
+// real and even, and equals a 2-D DCT-I of its (nx + 1) x (ny + 1) corner.
+bool is_even(const Field& w, std::ptrdiff_t nx, std::ptrdiff_t ny) {
+  const std::ptrdiff_t mx = 2 * nx;
+  const std::ptrdiff_t my = 2 * ny;
+  for (std::ptrdiff_t j = 0; j < my; ++j)
+    for (std::ptrdiff_t i = 1; i < nx; ++i)
+      if (w(i, j) != w(mx - i, j)) return false;
+  for (std::ptrdiff_t j = 1; j < ny; ++j)
+    for (std::ptrdiff_t i = 0; i < mx; ++i)
+      if (w(i, j) != w(i, my - j)) return false;
+  return true;
+}
+
+}  // namespace
 
 DcfftOperator::DcfftOperator(const InfluenceKernel& kernel, Planning planning, int threads)
     : grid_(kernel.grid()),
+      nx_(kernel.grid().nx()),
+      ny_(kernel.grid().ny()),
       mx_(2 * kernel.grid().nx()),
       my_(2 * kernel.grid().ny()),
-      hx_(kernel.grid().nx() + 1) {
+      hx_(kernel.grid().nx() + 1),
+      threads_(threads) {
   const auto start = std::chrono::steady_clock::now();
   COATFFT_REQUIRE(threads >= 1, "DcfftOperator: threads = ", threads, ", but must be >= 1");
-  const auto n_real = static_cast<std::size_t>(mx_ * my_);
-  const auto n_complex = static_cast<std::size_t>(hx_ * my_);
-  real_ = FftwRealBuffer(n_real);
-  spectrum_ = FftwComplexBuffer(n_complex);
-  kernel_hat_ = FftwComplexBuffer(n_complex);
-  // Row-major dimensions {my, mx}: a Field (x fastest) is a C-order (ny, nx) array.
-  const int nmy = static_cast<int>(my_);
-  const int nmx = static_cast<int>(mx_);
   const unsigned flags = fftw_flags(planning);
-  forward_ = FftwPlan::create(threads, [&] {
-    return fftw_plan_dft_r2c_2d(nmy, nmx, real_.data(), spectrum_.data(), flags);
+
+  // x transforms of the ny data rows only (the padding rows ny..2ny-1 are zero on input and
+  // not needed on output), in place: real rows of stride 2 hx, complex rows of stride hx.
+  rows_ = FftwComplexBuffer(static_cast<std::size_t>(ny_ * hx_));
+  double* real = reinterpret_cast<double*>(rows_.data());
+  const int n_x[1] = {static_cast<int>(mx_)};
+  const int ny = static_cast<int>(ny_);
+  const int hx = static_cast<int>(hx_);
+  forward_x_ = FftwPlan::create(threads, [&] {
+    return fftw_plan_many_dft_r2c(1, n_x, ny, real, nullptr, 1, 2 * hx, rows_.data(), nullptr, 1,
+                                  hx, flags);
   });
-  backward_ = FftwPlan::create(threads, [&] {
-    return fftw_plan_dft_c2r_2d(nmy, nmx, spectrum_.data(), real_.data(), flags);
+  backward_x_ = FftwPlan::create(threads, [&] {
+    return fftw_plan_many_dft_c2r(1, n_x, ny, rows_.data(), nullptr, 1, hx, real, nullptr, 1,
+                                  2 * hx, flags);
   });
-  // Kernel spectrum, once, with FFTW's unnormalised inverse compensated by 1/(mx my).
-  const Field& w = kernel.wrapped();
-  std::copy_n(w.data(), n_real, real_.data());
-  forward_.execute();
-  const double scale = 1.0 / static_cast<double>(mx_ * my_);
-  const std::complex<double>* s = as_complex(spectrum_.data());
-  std::complex<double>* k = as_complex(kernel_hat_.data());
-  for (std::size_t q = 0; q < n_complex; ++q) k[q] = s[q] * scale;
+
+  // y transforms (length 2ny) of the hx spectrum columns, by blocks of block_ columns.
+  std::ptrdiff_t bb = block_bytes;
+  if (const char* e = std::getenv("COATFFT_TUNE_BLOCK")) bb = std::atol(e);  // TUNING ONLY
+  block_ = std::clamp<std::ptrdiff_t>(bb / (my_ * 16), 1, hx_);
+  nb_blocks_ = (hx_ + block_ - 1) / block_;
+  const auto nb_workers = static_cast<std::size_t>(std::min<std::ptrdiff_t>(threads, nb_blocks_));
+  const int n_y[1] = {static_cast<int>(my_)};
+  const int bw = static_cast<int>(block_);
+  workers_.resize(nb_workers);
+  for (Worker& w : workers_) {
+    w.block = FftwComplexBuffer(static_cast<std::size_t>(my_ * block_));
+    for (auto [plan, sign] :
+         {std::pair{&w.forward_y, FFTW_FORWARD}, {&w.backward_y, FFTW_BACKWARD}})
+      *plan = FftwPlan::create(1, [&] {
+        return fftw_plan_many_dft(1, n_y, bw, w.block.data(), nullptr, bw, 1, w.block.data(),
+                                  nullptr, bw, 1, sign, flags);
+      });
+  }
+
+  const Field& wrapped = kernel.wrapped();
+  even_ = is_even(wrapped, nx_, ny_);
+  if (even_) {
+    compute_even_spectrum(wrapped);
+  } else {
+    compute_general_spectrum(wrapped);
+  }
   setup_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+void DcfftOperator::compute_even_spectrum(const Field& wrapped) {
+  // DFT of the 2n-periodic even sequence = DCT-I (FFTW REDFT00) of its first n + 1 entries; the
+  // slots nx, ny are the zeros the wrap-around layout leaves there. One-off: FFTW_ESTIMATE.
+  const std::ptrdiff_t rows = ny_ + 1;
+  kernel_even_ = FftwRealBuffer(static_cast<std::size_t>(rows * hx_));
+  double* k = kernel_even_.data();
+  const FftwPlan dct = FftwPlan::create(threads_, [&] {
+    return fftw_plan_r2r_2d(static_cast<int>(rows), static_cast<int>(hx_), k, k, FFTW_REDFT00,
+                            FFTW_REDFT00, FFTW_ESTIMATE);
+  });
+  for (std::ptrdiff_t ky = 0; ky < rows; ++ky)
+    for (std::ptrdiff_t kx = 0; kx < hx_; ++kx) k[ky * hx_ + kx] = wrapped(kx, ky);
+  dct.execute();
+  const double scale = 1.0 / static_cast<double>(mx_ * my_);
+  std::for_each(k, k + rows * hx_, [scale](double& v) { v *= scale; });
+}
+
+void DcfftOperator::compute_general_spectrum(const Field& wrapped) {
+  // In-place 2-D r2c of the whole wrapped array: its padded real layout (row stride 2 hx) has
+  // exactly the size of the half spectrum kept, so no second full-size array is needed.
+  kernel_general_ = FftwComplexBuffer(static_cast<std::size_t>(my_ * hx_));
+  double* real = reinterpret_cast<double*>(kernel_general_.data());
+  const FftwPlan r2c = FftwPlan::create(threads_, [&] {
+    return fftw_plan_dft_r2c_2d(static_cast<int>(my_), static_cast<int>(mx_), real,
+                                kernel_general_.data(), FFTW_ESTIMATE);
+  });
+  for (std::ptrdiff_t j = 0; j < my_; ++j) std::copy_n(&wrapped(0, j), mx_, real + j * 2 * hx_);
+  r2c.execute();
+  const double scale = 1.0 / static_cast<double>(mx_ * my_);
+  std::complex<double>* k = as_complex(kernel_general_.data());
+  std::for_each(k, k + my_ * hx_, [scale](std::complex<double>& v) { v *= scale; });
+}
+
+void DcfftOperator::convolve_columns(Worker& worker, std::ptrdiff_t first_block,
+                                     std::ptrdiff_t end_block) {
+  std::complex<double>* rows = as_complex(rows_.data());
+  std::complex<double>* t = as_complex(worker.block.data());
+  const std::ptrdiff_t bw = block_;
+  const std::complex<double> zero(0.0, 0.0);
+  for (std::ptrdiff_t b = first_block; b < end_block; ++b) {
+    const std::ptrdiff_t c0 = b * bw;
+    const std::ptrdiff_t width = std::min(bw, hx_ - c0);
+    // Gather the ny data rows of these columns; the rows ny..2ny-1 are the zero padding in y.
+    for (std::ptrdiff_t ky = 0; ky < ny_; ++ky) {
+      std::copy_n(rows + ky * hx_ + c0, width, t + ky * bw);
+      std::fill(t + ky * bw + width, t + (ky + 1) * bw, zero);
+    }
+    std::fill(t + ny_ * bw, t + my_ * bw, zero);
+    worker.forward_y.execute();
+    if (even_) {
+      const double* k = kernel_even_.data();
+      for (std::ptrdiff_t ky = 0; ky < my_; ++ky) {
+        const double* kr = k + (ky <= ny_ ? ky : my_ - ky) * hx_ + c0;
+        std::complex<double>* tr = t + ky * bw;
+        for (std::ptrdiff_t c = 0; c < width; ++c) tr[c] *= kr[c];
+      }
+    } else {
+      const std::complex<double>* k = as_complex(kernel_general_.data());
+      for (std::ptrdiff_t ky = 0; ky < my_; ++ky) {
+        const std::complex<double>* kr = k + ky * hx_ + c0;
+        std::complex<double>* tr = t + ky * bw;
+        for (std::ptrdiff_t c = 0; c < width; ++c) tr[c] *= kr[c];
+      }
+    }
+    worker.backward_y.execute();
+    // Only the rows ky < ny of the inverse are inside the crop.
+    for (std::ptrdiff_t ky = 0; ky < ny_; ++ky)
+      std::copy_n(t + ky * bw, width, rows + ky * hx_ + c0);
+  }
+}
+
 void DcfftOperator::apply(const Field& pressure, Field& displacement) {
-  const std::ptrdiff_t nx = grid_.nx();
-  const std::ptrdiff_t ny = grid_.ny();
-  COATFFT_REQUIRE(pressure.rows() == nx && pressure.cols() == ny,
+  COATFFT_REQUIRE(pressure.rows() == nx_ && pressure.cols() == ny_,
                   "DcfftOperator::apply: pressure has shape (", pressure.rows(), ", ",
-                  pressure.cols(), "), but the grid needs (", nx, ", ", ny, ")");
+                  pressure.cols(), "), but the grid needs (", nx_, ", ", ny_, ")");
   COATFFT_REQUIRE(&pressure != &displacement,
                   "DcfftOperator::apply: displacement must not alias pressure");
-  double* r = real_.data();
-  std::fill_n(r, static_cast<std::size_t>(mx_ * my_), 0.0);
-  for (std::ptrdiff_t j = 0; j < ny; ++j) std::copy_n(&pressure(0, j), nx, r + j * mx_);
-  forward_.execute();
-  std::complex<double>* s = as_complex(spectrum_.data());
-  const std::complex<double>* k = as_complex(kernel_hat_.data());
-  const auto n_complex = static_cast<std::size_t>(hx_ * my_);
-  for (std::size_t q = 0; q < n_complex; ++q) s[q] *= k[q];
-  backward_.execute();
-  displacement.resize(nx, ny);
-  for (std::ptrdiff_t j = 0; j < ny; ++j) std::copy_n(r + j * mx_, nx, &displacement(0, j));
+  double* real = reinterpret_cast<double*>(rows_.data());
+  const std::ptrdiff_t stride = 2 * hx_;
+  for (std::ptrdiff_t j = 0; j < ny_; ++j) {
+    double* row = real + j * stride;
+    std::copy_n(&pressure(0, j), nx_, row);
+    std::fill(row + nx_, row + stride, 0.0);
+  }
+  forward_x_.execute();
+  const auto nb_workers = static_cast<std::ptrdiff_t>(workers_.size());
+  if (nb_workers == 1) {
+    convolve_columns(workers_[0], 0, nb_blocks_);
+  } else {
+    std::vector<std::jthread> pool;
+    pool.reserve(static_cast<std::size_t>(nb_workers - 1));
+    for (std::ptrdiff_t w = 1; w < nb_workers; ++w)
+      pool.emplace_back([this, w, nb_workers] {
+        convolve_columns(workers_[static_cast<std::size_t>(w)], nb_blocks_ * w / nb_workers,
+                         nb_blocks_ * (w + 1) / nb_workers);
+      });
+    convolve_columns(workers_[0], 0, nb_blocks_ / nb_workers);
+  }
+  backward_x_.execute();
+  displacement.resize(nx_, ny_);
+  for (std::ptrdiff_t j = 0; j < ny_; ++j) std::copy_n(real + j * stride, nx_, &displacement(0, j));
 }
 
 }  // namespace coatfft

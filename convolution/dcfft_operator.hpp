@@ -1,8 +1,10 @@
 #pragma once
 // DC-FFT (Liu, Wang & Liu, Wear 243 (2000) 101): the linear convolution of the pressure with
-// space-domain influence coefficients, computed exactly (to rounding) by a circular convolution on
+// space-domain influence coefficients, computed exactly (to rounding) as a circular convolution on
 // the zero-padded (2nx, 2ny) grid. Seed paper (Spinu 2021) section 3.
+#include <cstddef>
 #include <string>
+#include <vector>
 
 #include "convolution/fftw_plan.hpp"
 #include "convolution/influence_kernel.hpp"
@@ -11,11 +13,16 @@
 namespace coatfft {
 
 /// Surface operator u = K * p (linear convolution) by DC-FFT for any InfluenceKernel (no symmetry
-/// assumed). Everything is planned in the constructor: the kernel spectrum (with FFTW's 1/(4 nx ny)
-/// folded in) and the FFTW plans on owned buffers; apply() only copies, transforms and multiplies.
+/// assumed; an exactly even kernel such as Love's is detected and its real spectrum stored at a
+/// quarter of the memory). Everything is planned in the constructor: the kernel spectrum (with
+/// FFTW's 1/(4 nx ny) folded in) and the FFTW plans on owned buffers; apply() only copies,
+/// transforms and multiplies. The padded transform is pruned: three quarters of the padded input
+/// are zeros and three quarters of the padded output are discarded, so the x transforms run on
+/// the ny data rows only and the y transforms on cache-sized column blocks.
 class DcfftOperator final : public SurfaceOperator {
  public:
-  /// `planning` is the FFTW planner effort; `threads` (>= 1) the FFTW threads per transform.
+  /// `planning` is the FFTW planner effort; `threads` (>= 1) the threads of apply(): FFTW threads
+  /// for the x transforms and as many workers for the blocks of y transforms.
   explicit DcfftOperator(const InfluenceKernel& kernel, Planning planning = Planning::estimate,
                          int threads = 1);
 
@@ -26,19 +33,44 @@ class DcfftOperator final : public SurfaceOperator {
   std::string name() const override { return "dcfft"; }
   using SurfaceOperator::apply;
 
-  /// Wall-clock seconds the constructor took (kernel transform and FFTW planning).
+  /// Wall-clock seconds the constructor took (kernel transform and FFTW planning) [s].
   double setup_seconds() const { return setup_seconds_; }
+  /// True when the kernel was found exactly even in x and in y (real spectrum stored).
+  bool even_kernel() const { return even_; }
 
  private:
+  // One worker's scratch: a block of `block_` spectrum columns, all 2ny rows, row-major
+  // (row ky holds block_ complex numbers), with its own in-place y plans.
+  struct Worker {
+    FftwComplexBuffer block;
+    FftwPlan forward_y;
+    FftwPlan backward_y;
+  };
+
+  void compute_even_spectrum(const Field& wrapped);
+  void compute_general_spectrum(const Field& wrapped);
+  void convolve_columns(Worker& worker, std::ptrdiff_t first_block, std::ptrdiff_t end_block);
+
   Grid grid_;
+  std::ptrdiff_t nx_;
+  std::ptrdiff_t ny_;
   std::ptrdiff_t mx_;  // padded sizes 2 nx, 2 ny
   std::ptrdiff_t my_;
-  std::ptrdiff_t hx_;  // nx + 1 = mx/2 + 1 complex entries per r2c row
-  FftwRealBuffer real_;
-  FftwComplexBuffer spectrum_;
-  FftwComplexBuffer kernel_hat_;
-  FftwPlan forward_;
-  FftwPlan backward_;
+  std::ptrdiff_t hx_;     // nx + 1: complex entries per r2c row, also the spectrum's row length
+  std::ptrdiff_t block_;  // spectrum columns per y-transform block
+  std::ptrdiff_t nb_blocks_;
+  int threads_;
+  bool even_ = false;
+  // The ny data rows: real view with row stride 2 hx (in-place r2c), complex view with row
+  // stride hx. Holds the pressure, its x spectrum, the filtered x spectrum, the displacement.
+  FftwComplexBuffer rows_;
+  FftwPlan forward_x_;
+  FftwPlan backward_x_;
+  // Kernel spectrum times 1/(4 nx ny), row-major [ky][kx]: real (ny + 1) x hx when even_ (the
+  // rows ky > ny mirror ky' = 2ny - ky), else complex 2ny x hx.
+  FftwRealBuffer kernel_even_;
+  FftwComplexBuffer kernel_general_;
+  std::vector<Worker> workers_;
   double setup_seconds_ = 0.0;
 };
 

@@ -59,7 +59,8 @@ template class FftwBuffer<double>;
 template class FftwBuffer<fftw_complex>;
 
 FftwPlan::FftwPlan(fftw_plan plan) : plan_(plan) {
-  if (plan_ == nullptr) throw Error("FFTW: the planner returned no plan for the requested transform");
+  if (plan_ == nullptr)
+    throw Error("FFTW: the planner returned no plan for the requested transform");
 }
 
 void FftwPlan::reset() {

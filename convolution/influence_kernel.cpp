@@ -22,10 +22,10 @@ InfluenceKernel::InfluenceKernel(const Grid& grid, Field wrapped)
 double InfluenceKernel::at(std::ptrdiff_t di, std::ptrdiff_t dj) const {
   const std::ptrdiff_t nx = grid_.nx();
   const std::ptrdiff_t ny = grid_.ny();
-  COATFFT_REQUIRE(di > -nx && di < nx, "InfluenceKernel::at: di = ", di, ", but |di| must be <= ",
-                  nx - 1);
-  COATFFT_REQUIRE(dj > -ny && dj < ny, "InfluenceKernel::at: dj = ", dj, ", but |dj| must be <= ",
-                  ny - 1);
+  COATFFT_REQUIRE(di > -nx && di < nx, "InfluenceKernel::at: di = ", di,
+                  ", but |di| must be <= ", nx - 1);
+  COATFFT_REQUIRE(dj > -ny && dj < ny, "InfluenceKernel::at: dj = ", dj,
+                  ", but |dj| must be <= ", ny - 1);
   return wrapped_(di >= 0 ? di : 2 * nx + di, dj >= 0 ? dj : 2 * ny + dj);
 }
 
@@ -41,9 +41,9 @@ InfluenceKernel love_kernel(const Grid& grid, double plane_strain_modulus) {
   // also makes the wrapped array exactly symmetric (DcfftOperator then stores a real spectrum).
   for (std::ptrdiff_t dj = 0; dj < ny; ++dj) {
     for (std::ptrdiff_t di = 0; di < nx; ++di) {
-      const double k = love_influence(static_cast<double>(di) * dx, static_cast<double>(dj) * dy,
-                                      dx, dy) /
-                       plane_strain_modulus;
+      const double k =
+          love_influence(static_cast<double>(di) * dx, static_cast<double>(dj) * dy, dx, dy) /
+          plane_strain_modulus;
       const std::ptrdiff_t mi = di == 0 ? 0 : 2 * nx - di;
       const std::ptrdiff_t mj = dj == 0 ? 0 : 2 * ny - dj;
       wrapped(di, dj) = k;

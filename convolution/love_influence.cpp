@@ -19,9 +19,10 @@ double corner(double X, double Y) {
 }
 
 // Far from the rectangle the 4-corner sum cancels: its terms are O(r) while the result is
-// O(dx dy / r), so the closed form loses about log10((r/d)^2) digits (1e-10 relative at r = 1000 d).
-// There 1/R is analytic over the rectangle and a 4 x 4 Gauss-Legendre product rule converges like
-// rho^-8 with rho ~ 4 r/d >= 128 here, i.e. to rounding, and costs 16 square roots instead of 8 asinh.
+// O(dx dy / r), so the closed form loses about log10((r/d)^2) digits (1e-10 relative at r = 1000
+// d). There 1/R is analytic over the rectangle and a 4 x 4 Gauss-Legendre product rule converges
+// like rho^-8 with rho ~ 4 r/d >= 128 here, i.e. to rounding, and costs 16 square roots instead of
+// 8 asinh.
 constexpr double far_field_ratio = 32.0;
 
 double gauss_legendre_4x4(double x, double y, double a, double b) {

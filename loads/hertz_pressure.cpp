@@ -1,6 +1,7 @@
 #include "loads/hertz_pressure.hpp"
 
 #include <algorithm>
+#include <boost/math/quadrature/gauss.hpp>
 #include <boost/math/quadrature/tanh_sinh.hpp>
 #include <cmath>
 
@@ -69,7 +70,19 @@ Field hertz_pressure(const Grid& grid, double p0, double a, Sampling sampling) {
       const double xc = grid.x(i) / a;
       const detail::ScaledCell cell{xc - hx, xc + hx, yc - hy, yc + hy};
       if (detail::min_radius(cell) >= 1.0) continue;
-      out(i, j) = p0 * hertz_integral_in_cell(cell, quad) / (4.0 * hx * hy);
+      double integral;
+      if (1.0 - detail::max_radius(cell) >= 8.0 * hx) {
+        // Well inside the circle the x integrand is analytic on the cell: its nearest
+        // singularity (where the half-chord meets a cell side) lies >= (1 - r_max)/2 >= 4 hx
+        // beyond the interval of half-width hx, so the Bernstein ellipse has rho >= 4 + sqrt(15)
+        // and 15-point Gauss-Legendre errs by < rho^-30 ~ 1e-27: exact to round-off, ~10x
+        // cheaper than tanh-sinh on the bulk of the cells.
+        integral = boost::math::quadrature::gauss<double, 15>::integrate(
+            [&](double x) { return column_integral(x, cell.y0, cell.y1); }, cell.x0, cell.x1);
+      } else {
+        integral = hertz_integral_in_cell(cell, quad);
+      }
+      out(i, j) = p0 * integral / (4.0 * hx * hy);
     }
   }
   return out;

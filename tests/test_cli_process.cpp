@@ -7,7 +7,10 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <algorithm>
 #include <functional>
+#include <sstream>
+#include <vector>
 #include <string>
 
 #include "cli/npy.hpp"
@@ -183,4 +186,37 @@ TEST_CASE("coatfft run reads pressure files and refuses malformed ones", "[cli][
     CHECK(result.stderr_text.find("p.csv") != std::string::npos);
     CHECK_FALSE(fs::exists(out));
   }
+}
+
+TEST_CASE("coatfft frf prints the FRF table of a scene's body", "[cli]") {
+  const fs::path table = scratch("frf_table.csv");
+  fs::remove(table);
+  const auto result = run_coatfft("frf " + std::string(COATFFT_SOURCE_DIR) +
+                                  "/examples/scenes/coated_hertz.toml --points 5 -o " +
+                                  table.string());
+  INFO(result.stderr_text);
+  REQUIRE(result.status == 0);
+  std::ifstream in(table);
+  std::string header;
+  std::getline(in, header);
+  CHECK(header == "k,kh_total,frf,frf_over_substrate");
+  // Default range k h = 1e-3 .. 1e3: the first row is close to the substrate (ratio -> 1), the
+  // last equals the coating's half-space ratio E*_substrate / E*_coating (TiN on steel).
+  std::vector<std::array<double, 4>> rows;
+  for (std::string line; std::getline(in, line);) {
+    std::array<double, 4> row{};
+    std::replace(line.begin(), line.end(), ',', ' ');
+    std::istringstream(line) >> row[0] >> row[1] >> row[2] >> row[3];
+    rows.push_back(row);
+  }
+  REQUIRE(rows.size() == 5);
+  CHECK(rows.front()[1] == Approx(1e-3).epsilon(1e-12));
+  CHECK(rows.front()[3] == Approx(1.0).margin(1e-3));
+  const double ratio = (210e9 / (1 - 0.09)) / (400e9 / (1 - 0.0625));
+  CHECK(rows.back()[3] == Approx(ratio).epsilon(1e-12));
+
+  const auto bad = run_coatfft("frf " + std::string(COATFFT_SOURCE_DIR) +
+                               "/examples/scenes/coated_hertz.toml --k-min -1");
+  CHECK(bad.status == 2);
+  CHECK(bad.stderr_text.find("--k-min") != std::string::npos);
 }

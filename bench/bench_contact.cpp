@@ -1,0 +1,171 @@
+// Contact solver cost on the Hertz problem (DC-FFT operator): Polonsky-Keer iterations to a
+// relative pressure change of 1e-10 at N = 128 ... 1024, and the wall time of a solve as a multiple
+// of one operator application timed in the same run. Prints `# key = value` headers and CSV rows,
+// and writes the same to bench/results/contact.csv (or the path given as first argument).
+// Usage: bench_contact [output.csv] [--measure]   (FFTW_ESTIMATE unless --measure)
+#include <fftw3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "contact/contact_solver.hpp"
+#include "contact/indenter.hpp"
+#include "convolution/dcfft_operator.hpp"
+#include "convolution/influence_kernel.hpp"
+#include "validation/hertz_contact.hpp"
+
+namespace {
+
+using namespace coatfft;
+using Clock = std::chrono::steady_clock;
+
+constexpr double kModulus = 1e11;  // E* [Pa]
+constexpr double kRadius = 0.01;   // R [m]
+constexpr double kLoad = 10.0;     // W [N]
+constexpr double kHalfWidth = 1.5;  // domain [-1.5 a, 1.5 a]^2, as in contact_table
+
+double ms_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+std::string cpu_name() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+  }
+  return "unknown";
+}
+
+struct Row {
+  std::ptrdiff_t n;
+  std::string control;
+  int iterations;
+  double residual;
+  bool converged;
+  double plan_ms;
+  double apply_ms_min;
+  double apply_ms_median;
+  double solve_ms;
+  double radius_error;
+  double pressure_error;
+  double load_or_approach_error;
+};
+
+Row run(std::ptrdiff_t n, ContactControl control, Planning planning) {
+  const HertzSphere ref = hertz_sphere_for_load(kLoad, kRadius, kModulus);
+  const double width = 2 * kHalfWidth * ref.contact_radius;
+  const Grid grid(n, n, width, width);
+  const auto plan_start = Clock::now();
+  DcfftOperator op(love_kernel(grid, kModulus), planning);
+  const double plan_ms = ms_since(plan_start);
+  const Field h = height(grid, Sphere{kRadius});
+  // One application, timed on a Hertz-like pressure (the cost does not depend on the values).
+  Field p(n, n);
+  for (std::ptrdiff_t j = 0; j < n; ++j) {
+    for (std::ptrdiff_t i = 0; i < n; ++i) {
+      p(i, j) = ref.pressure(std::hypot(grid.x(i), grid.y(j)));
+    }
+  }
+  Field u;
+  op.apply(p, u);  // warm-up
+  std::vector<double> times;
+  const int repeats = n <= 256 ? 20 : 7;
+  for (int k = 0; k < repeats; ++k) {
+    const auto start = Clock::now();
+    op.apply(p, u);
+    times.push_back(ms_since(start));
+  }
+  std::sort(times.begin(), times.end());
+  ContactOptions opts;
+  opts.compute_approach = true;
+  ContactSolver solver(op, opts);
+  const auto start = Clock::now();
+  const ContactResult res = control == ContactControl::load
+                                ? solver.solve_load(h, kLoad)
+                                : solver.solve_approach(h, ref.approach);
+  const double solve_ms = ms_since(start);
+  const double third_error = control == ContactControl::load
+                                 ? res.approach.value_or(0.0) / ref.approach - 1
+                                 : res.load / ref.load - 1;
+  return {n,
+          control == ContactControl::load ? "load" : "approach",
+          res.iterations,
+          res.residual,
+          res.converged && !res.touches_boundary,
+          plan_ms,
+          times.front(),
+          times[times.size() / 2],
+          solve_ms,
+          res.contact_radius.value_or(0.0) / ref.contact_radius - 1,
+          res.max_pressure / ref.max_pressure - 1,
+          third_error};
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    std::string path = "bench/results/contact.csv";
+    Planning planning = Planning::estimate;
+    for (int k = 1; k < argc; ++k) {
+      const std::string arg = argv[k];
+      if (arg == "--measure") {
+        planning = Planning::measure;
+      } else {
+        path = arg;
+      }
+    }
+    std::ostringstream out;
+    out << "# benchmark = bench_contact (Polonsky-Keer on DC-FFT, Hertz sphere)\n"
+        << "# cpu = " << cpu_name() << "\n"
+        << "# hardware_threads = " << std::thread::hardware_concurrency() << "\n"
+        << "# compiler = g++ " << __VERSION__ << "\n"
+        << "# build_flags = " << COATFFT_BENCH_FLAGS << "\n"
+        << "# fftw = " << fftw_version << "\n"
+        << "# fftw_flags = "
+        << (planning == Planning::measure ? "FFTW_MEASURE" : "FFTW_ESTIMATE") << "\n"
+        << "# fftw_threads = 1\n"
+        << "# problem = R " << kRadius << " m, E* " << kModulus << " Pa, W " << kLoad
+        << " N, domain [-" << kHalfWidth << " a, " << kHalfWidth << " a]^2, exact sphere\n"
+        << "# tolerance = 1e-10 (relative pressure change per iteration)\n"
+        << "# applies_per_solve = 2 iterations + 1 (load) or + 2 (approach)\n"
+        << "# columns: errors are relative to Hertz (a from sqrt(A/pi)); third_error is the\n"
+        << "#   approach error under load control and the load error under approach control\n"
+        << "control,N,iterations,residual,converged,plan_ms,apply_ms_min,apply_ms_median,"
+           "solve_ms,solve_over_apply,a_error,p0_error,third_error\n";
+    std::cout << out.str() << std::flush;
+    for (const std::ptrdiff_t n : {128, 256, 512, 1024}) {
+      for (const ContactControl control : {ContactControl::load, ContactControl::approach}) {
+        const Row r = run(n, control, planning);
+        std::ostringstream row;
+        row.precision(4);
+        row << r.control << "," << r.n << "," << r.iterations << "," << r.residual << ","
+            << (r.converged ? 1 : 0) << "," << r.plan_ms << "," << r.apply_ms_min << ","
+            << r.apply_ms_median << "," << r.solve_ms << ","
+            << r.solve_ms / r.apply_ms_median << "," << r.radius_error << ","
+            << r.pressure_error << "," << r.load_or_approach_error << "\n";
+        std::cout << row.str() << std::flush;
+        out << row.str();
+      }
+    }
+    std::ofstream file(path);
+    if (!file) {
+      std::cerr << "bench_contact: cannot write " << path << "\n";
+      return 1;
+    }
+    file << out.str();
+    return 0;
+  } catch (const std::exception& e) {
+    std::cerr << "bench_contact: " << e.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,48 @@
+#include "cli/frf_command.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+#include "cli/scene.hpp"
+#include "core/error.hpp"
+#include "frf/frf.hpp"
+#include "frf/frf_table.hpp"
+
+namespace coatfft::cli {
+
+void frf_command(const FrfOptions& options) {
+  const LayerStack body = read_scene_body(options.scene);
+  const double h = body.total_thickness();
+  // Coated: span the transition from the substrate (k h << 1) to the coating (k h >> 1).
+  const double k_min = options.k_min.value_or(h > 0 ? 1e-3 / h : 1e2);
+  const double k_max = options.k_max.value_or(h > 0 ? 1e3 / h : 1e8);
+  COATFFT_REQUIRE(std::isfinite(k_min) && k_min > 0, "--k-min = ", k_min, " must be > 0");
+  COATFFT_REQUIRE(std::isfinite(k_max) && k_max > k_min, "--k-max = ", k_max,
+                  " must be finite and > --k-min = ", k_min);
+  COATFFT_REQUIRE(options.points >= 2, "--points = ", options.points, " must be >= 2");
+
+  const auto frf = make_frf(body);
+  std::ostringstream table;
+  table << "k,kh_total,frf,frf_over_substrate\n" << std::setprecision(17);
+  for (const auto& row : frf_table(body, *frf, k_min, k_max, options.points))
+    table << row.k << ',' << row.kh_total << ',' << row.frf << ',' << row.ratio_to_substrate << '\n';
+
+  if (options.output.empty()) {
+    std::cout << table.str();
+    return;
+  }
+  // Whole-file write through a temporary name: no partial table on failure.
+  const std::filesystem::path partial = options.output.string() + ".partial";
+  {
+    std::ofstream out(partial);
+    COATFFT_REQUIRE(out.good(), "cannot open ", partial.string(), " for writing");
+    out << table.str();
+    COATFFT_REQUIRE(out.good(), "failed writing ", partial.string());
+  }
+  std::filesystem::rename(partial, options.output);
+}
+
+}  // namespace coatfft::cli

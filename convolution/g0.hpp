@@ -1,0 +1,49 @@
+#pragma once
+// The zero-frequency sample g(0) of a spectral kernel: every FRF is singular at k = 0
+// (H ~ C0 / k), so the sample at the origin of the frequency lattice is replaced by the mean of H
+// over the central lattice cell [-dkx/2, dkx/2] x [-dky/2, dky/2] (theory.md section 3; seed
+// paper section 4, step 3, where it is "computed by quadrature").
+#include <string_view>
+
+#include "frf/frf.hpp"
+
+namespace coatfft {
+
+/// How g(0) is computed.
+enum class G0Method {
+  /// C0 * mean(1/|k|) in closed form (theory.md 3.1) plus the mean of the bounded remainder
+  /// H(k) - C0/k, integrated in polar form where it is smooth (theory.md 3.2-3.3). Fast and
+  /// accurate to ~1e-14 relative.
+  regularized,
+  /// Plain adaptive quadrature of the singular H over the cell (the seed's quad2d approach):
+  /// nested adaptive Gauss-Kronrod on a quadrant, the 1/k singularity at its corner. Slow and
+  /// only as accurate as its error estimate; kept to reproduce the seed's Figure 3(b).
+  quadrature,
+};
+
+/// "regularized" or "quadrature".
+std::string_view to_string(G0Method method);
+
+/// g(0) and how it was obtained.
+struct G0Result {
+  double value;            ///< g(0) [m/Pa]: mean of H over the central frequency cell
+  G0Method method;         ///< method used
+  double seconds;          ///< wall-clock time of the computation [s]
+  double estimated_error;  ///< quadrature error estimate of `value` [m/Pa] (absolute)
+};
+
+/// Default relative tolerance for compute_g0 (reached by `regularized` for every FRF of frf/).
+inline constexpr double default_g0_tolerance = 1e-13;
+
+/// Closed-form mean of 1/|k| over [-dkx/2, dkx/2] x [-dky/2, dky/2] [m/rad] (theory.md 3.1):
+/// (2/dky) asinh(dky/dkx) + (2/dkx) asinh(dkx/dky). dkx, dky [rad/m] finite and > 0.
+double mean_inverse_wavenumber(double dkx, double dky);
+
+/// g(0) for `frf` on a frequency lattice of spacings dkx = 2 pi / period_x and
+/// dky = 2 pi / period_y [rad/m]. `tolerance` is the requested relative accuracy (> 0, finite; for
+/// `regularized` it applies to the numerical remainder, for `quadrature` to the whole integral).
+/// Throws InvalidArgument on bad spacings or tolerance.
+G0Result compute_g0(const Frf& frf, double dkx, double dky, G0Method method,
+                    double tolerance = default_g0_tolerance);
+
+}  // namespace coatfft

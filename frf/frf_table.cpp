@@ -1,0 +1,30 @@
+#include "frf/frf_table.hpp"
+
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace coatfft {
+
+std::vector<FrfTableRow> frf_table(const LayerStack& stack, const Frf& frf, double k_min,
+                                   double k_max, int nb_points) {
+  COATFFT_REQUIRE(std::isfinite(k_min) && k_min > 0, "frf_table: k_min = ", k_min,
+                  " rad/m, but it must be finite and > 0");
+  COATFFT_REQUIRE(std::isfinite(k_max) && k_max > k_min, "frf_table: k_max = ", k_max,
+                  " rad/m, but it must be finite and > k_min = ", k_min, " rad/m");
+  COATFFT_REQUIRE(nb_points >= 2, "frf_table: nb_points = ", nb_points, ", but it must be >= 2");
+  const double h_total = stack.total_thickness();
+  const double c_substrate = 2.0 / stack.substrate().plane_strain_modulus();
+  const double log_min = std::log(k_min);
+  const double step = (std::log(k_max) - log_min) / (nb_points - 1);
+  std::vector<FrfTableRow> rows;
+  rows.reserve(static_cast<std::size_t>(nb_points));
+  for (int i = 0; i < nb_points; ++i) {
+    const double k = i == 0 ? k_min : i == nb_points - 1 ? k_max : std::exp(log_min + i * step);
+    const double h = frf(k);
+    rows.push_back({k, k * h_total, h, h * k / c_substrate});
+  }
+  return rows;
+}
+
+}  // namespace coatfft

@@ -1,0 +1,268 @@
+// Polonsky-Keer contact solver (contact/contact_solver.hpp) against Hertz and the flat punch on
+// DC-FFT, plus its own consistency properties and its input checks.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <limits>
+
+#include "contact/contact_solver.hpp"
+#include "contact/indenter.hpp"
+#include "convolution/dcfft_operator.hpp"
+#include "convolution/direct_operator.hpp"
+#include "convolution/influence_kernel.hpp"
+#include "core/error.hpp"
+#include "core/norms.hpp"
+#include "validation/hertz_contact.hpp"
+
+using namespace coatfft;
+
+namespace {
+
+using Mask = Eigen::Array<bool, Eigen::Dynamic, Eigen::Dynamic>;
+
+constexpr double kModulus = 1e11;  // E* [Pa]
+constexpr double kRadius = 0.01;   // sphere radius [m]
+constexpr double kLoad = 10.0;     // [N]; a = 90.9 um, a/R = 0.009
+
+// A Hertz problem on [-2a, 2a]^2: the contact covers half the width, and the domain edge sits where
+// the pressure is zero anyway (DC-FFT has no periodic images, so no larger margin is needed).
+struct HertzProblem {
+  HertzSphere reference = hertz_sphere_for_load(kLoad, kRadius, kModulus);
+  Grid grid;
+  Field h;
+  explicit HertzProblem(std::ptrdiff_t n)
+      : grid(n, n, 4 * reference.contact_radius, 4 * reference.contact_radius),
+        h(height(grid, Sphere{kRadius})) {}
+};
+
+// The model of an error in g(0), the zero-frequency sample of a spectral operator: it adds one
+// constant to every displacement, proportional to the total force, u -> u + c sum(p) dx dy.
+class OffsetOperator final : public SurfaceOperator {
+ public:
+  OffsetOperator(SurfaceOperator& inner, double c) : inner_(inner), c_(c) {}
+  const Grid& grid() const override { return inner_.grid(); }
+  void apply(const Field& p, Field& u) override {
+    inner_.apply(p, u);
+    u += c_ * p.sum() * grid().dx() * grid().dy();
+  }
+  std::string name() const override { return "offset"; }
+  using SurfaceOperator::apply;
+
+ private:
+  SurfaceOperator& inner_;
+  double c_;
+};
+
+}  // namespace
+
+TEST_CASE("Hertz sphere on DC-FFT: radius, peak pressure and approach", "[contact][hertz]") {
+  const std::ptrdiff_t n = GENERATE(64, 128);
+  const HertzProblem hp(n);
+  DcfftOperator op(love_kernel(hp.grid, kModulus));
+  ContactOptions opts;
+  opts.compute_approach = true;
+  ContactSolver solver(op, opts);
+  const ContactResult res = solver.solve_load(hp.h, kLoad);
+  INFO("n = " << n << ", iterations = " << res.iterations << ", residual = " << res.residual);
+  REQUIRE(res.converged);
+  REQUIRE(res.contact_radius.has_value());
+  REQUIRE(res.approach.has_value());
+  const double a = hp.reference.contact_radius;
+  const double dx = hp.grid.dx();
+  // Contact radius from the area, sqrt(A/pi): the contact set is a union of cells, so its edge is
+  // resolved to a fraction of a cell: |a_num - a| <= dx/2 (measured 0.48% = 0.08 dx at n = 64,
+  // 0.54% = 0.17 dx at n = 128).
+  CHECK(std::abs(*res.contact_radius - a) <= 0.5 * dx);
+  // Peak pressure and approach: DC-FFT is exact for piecewise-constant pressure, so the error is
+  // the O(dx^2) of that representation of the smooth Hertz field (measured p0: -8.7e-4, -2.0e-4;
+  // approach: -2.2e-4, -4.3e-5 at n = 64, 128, i.e. <= 0.22 (dx/a)^2). Tolerance 0.5 (dx/a)^2.
+  const double tol2 = 0.5 * (dx / a) * (dx / a);
+  CHECK(std::abs(res.max_pressure / hp.reference.max_pressure - 1) <= tol2);
+  CHECK(std::abs(*res.approach / hp.reference.approach - 1) <= tol2);
+  // Pointwise pressure against p0 sqrt(1 - r^2/a^2): the edge cells carry the O(sqrt(dx/a))
+  // error of the square-root profile, so measure it in the relative l2 norm (measured 1.4e-2 and
+  // 8e-3): below sqrt(dx/a)/4.
+  Field p_ref(n, n);
+  for (std::ptrdiff_t j = 0; j < n; ++j) {
+    for (std::ptrdiff_t i = 0; i < n; ++i) {
+      p_ref(i, j) = hp.reference.pressure(std::hypot(hp.grid.x(i), hp.grid.y(j)));
+    }
+  }
+  CHECK(rel_l2(res.pressure, p_ref) <= 0.25 * std::sqrt(dx / a));
+}
+
+TEST_CASE("Solver constraints: load balance, p >= 0, complementary gap", "[contact]") {
+  const HertzProblem hp(64);
+  DcfftOperator op(love_kernel(hp.grid, kModulus));
+  ContactOptions opts;
+  opts.compute_approach = true;
+  const ContactResult res = ContactSolver(op, opts).solve_load(hp.h, kLoad);
+  REQUIRE(res.converged);
+  // The load is imposed by a rescaling in every iteration: exact up to rounding of the sum.
+  CHECK(std::abs(res.load / kLoad - 1) <= 1e-10);
+  CHECK(std::abs(res.pressure.sum() * hp.grid.dx() * hp.grid.dy() / kLoad - 1) <= 1e-10);
+  CHECK(res.pressure.minCoeff() >= 0.0);  // projection: exactly non-negative
+  const double delta = *res.approach;
+  const Mask contact = res.pressure > 0;
+  // Outside the contact the gap is open (the overlap step puts pressure on any cell with g < 0).
+  CHECK((!contact).select(res.gap, 1.0).minCoeff() >= -1e-12 * delta);
+  // Inside, the gap vanishes to the solver tolerance: the last pressure change (relative 1e-10)
+  // moves u by about that fraction times the condition of the contact block (tens): 1e-9.
+  // Measured 1e-11.
+  CHECK(contact.select(res.gap.abs(), 0.0).maxCoeff() <= 1e-9 * delta);
+  // Gap, displacement and approach are consistent: g = h + u - delta.
+  CHECK(rel_linf(res.gap, hp.h + res.displacement - delta) <= 1e-14);
+  CHECK_FALSE(res.touches_boundary);
+  CHECK(res.warning.empty());
+  CHECK(res.contact_area == Approx(static_cast<double>(contact.count()) * hp.grid.dx() *
+                                   hp.grid.dy()));
+}
+
+TEST_CASE("Flat punch: load at a given approach is 2 a E* delta", "[contact][punch]") {
+  const std::ptrdiff_t n = GENERATE(64, 128);
+  const double a = 1e-3;
+  const double delta = 1e-6;
+  const Grid grid(n, n, 4 * a, 4 * a);
+  const double dx = grid.dx();
+  // Edge radius rho = 0.01 dx^2 / delta: the rounded edge rises to h = delta within
+  // sqrt(2 rho delta) = 0.14 dx of r = a, so the contact can grow beyond the face only by cells
+  // whose centres lie within that sliver: the solve sees a sharp punch of radius a + O(0.14 dx).
+  const Field h = height(grid, FlatPunch{a, 0.01 * dx * dx / delta});
+  DcfftOperator op(love_kernel(grid, kModulus));
+  const ContactResult res = ContactSolver(op).solve_approach(h, delta);
+  INFO("n = " << n << ", iterations = " << res.iterations);
+  REQUIRE(res.converged);
+  REQUIRE(res.approach.has_value());
+  CHECK(*res.approach == delta);
+  // The pixelated face and the 1/sqrt(a - r) edge singularity give an O(dx/a) load error
+  // (measured -0.28% and -0.16% at n = 64, 128, i.e. 0.04-0.05 dx/a). Tolerance 0.25 dx/a.
+  const double w_ref = flat_punch_load(a, delta, kModulus);
+  CHECK(std::abs(res.load / w_ref - 1) <= 0.25 * dx / a);
+  // The whole face is in contact, and nothing where the indenter stays clear of the flat surface
+  // (h >= delta; there g = h + u - delta > 0 since u > 0).
+  const Mask contact = res.pressure > 0;
+  CHECK((h == 0.0).select(contact, true).all());
+  CHECK((h >= delta).select(!contact, true).all());
+}
+
+TEST_CASE("Approach control and load control give the same solution", "[contact]") {
+  const HertzProblem hp(64);
+  DcfftOperator op(love_kernel(hp.grid, kModulus));
+  ContactOptions opts;
+  opts.compute_approach = true;
+  ContactSolver solver(op, opts);
+  const ContactResult by_load = solver.solve_load(hp.h, kLoad);
+  REQUIRE(by_load.converged);
+  const ContactResult by_approach = solver.solve_approach(hp.h, *by_load.approach);
+  REQUIRE(by_approach.converged);
+  // Both stop at a relative pressure change of 1e-10; the remaining error in the load is a small
+  // multiple of that (measured 2e-12). 1e-8 is the solver-consistency tier.
+  CHECK(std::abs(by_approach.load / kLoad - 1) <= 1e-8);
+  CHECK(rel_linf(by_approach.pressure, by_load.pressure) <= 1e-8);
+  CHECK(by_approach.contact_area == by_load.contact_area);
+  // And the approach-controlled solve meets Hertz's W(delta) = (4/3) E* sqrt(R) delta^(3/2) to the
+  // discretisation tier (0.5 (dx/a)^2, times 3/2 for the power of delta): 3e-3.
+  const double w_hertz = hertz_sphere_for_approach(*by_load.approach, kRadius, kModulus).load;
+  CHECK(std::abs(by_approach.load / w_hertz - 1) <= 1.5 * 0.5 * std::pow(4.0 / 64.0, 2));
+}
+
+TEST_CASE("Load control does not depend on g(0); the approach shifts by c W", "[contact][g0]") {
+  const HertzProblem hp(64);
+  DcfftOperator exact(love_kernel(hp.grid, kModulus));
+  // Tolerance 1e-12: two solves agree only to their stopping tolerance (different rounding sends
+  // the CG iterates along slightly different paths; measured differences 3e-11, 9e-11, 3e-13 at
+  // tolerances 1e-8, 1e-10, 1e-12), so the comparison needs a tolerance near the rounding floor
+  // (~1e-12 relative, where the iteration count starts to explode: 1e-14 needs 100-170).
+  ContactOptions opts;
+  opts.tolerance = 1e-12;
+  opts.compute_approach = true;
+  const ContactResult ref = ContactSolver(exact, opts).solve_load(hp.h, kLoad);
+  REQUIRE(ref.converged);
+  // c W = +-delta: a g(0) error as large as the whole approach, and one that would make it negative.
+  const double c = GENERATE(1.0, -1.0) * hp.reference.approach / kLoad;
+  OffsetOperator shifted(exact, c);
+  const ContactResult res = ContactSolver(shifted, opts).solve_load(hp.h, kLoad);
+  INFO("c W / delta = " << c * kLoad / hp.reference.approach);
+  REQUIRE(res.converged);
+  // In exact arithmetic the iterates are identical (the constant is removed with the mean over the
+  // contact set, of both g and K t); what remains is rounding (measured 3e-13).
+  CHECK(rel_linf(res.pressure, ref.pressure) <= 2e-12);
+  CHECK(res.contact_area == ref.contact_area);
+  CHECK(rel_linf(res.gap, ref.gap) <= 1e-10);
+  // The approach carries the error: delta -> delta + c W (measured to 1.4e-15 relative to c W).
+  CHECK(*res.approach - *ref.approach == Approx(c * kLoad).epsilon(1e-11));
+  // Without compute_approach none is reported under load control.
+  CHECK_FALSE(ContactSolver(shifted).solve_load(hp.h, kLoad).approach.has_value());
+}
+
+TEST_CASE("DC-FFT and direct summation give the same contact", "[contact]") {
+  // Non-square, odd x size: catches a transposed axis or an off-by-one in the operator plumbing.
+  const Grid grid(15, 12, 3e-4, 2.4e-4);
+  const InfluenceKernel kernel = love_kernel(grid, kModulus);
+  DcfftOperator fast(kernel);
+  DirectOperator direct(kernel);
+  const Field h = height(grid, Cylinder{0.01, 1e-4, 0.005});
+  const ContactResult a = ContactSolver(fast).solve_load(h, 0.5);
+  const ContactResult b = ContactSolver(direct).solve_load(h, 0.5);
+  REQUIRE(a.converged);
+  REQUIRE(b.converged);
+  // Same discrete operator up to FFT rounding (1e-15 relative): same solution to the solver tier.
+  CHECK(rel_linf(a.pressure, b.pressure) <= 1e-8);
+  // Symmetric problem: the pressure is even in x and in y to the solver tolerance.
+  CHECK(rel_linf(a.pressure, a.pressure.colwise().reverse().eval()) <= 1e-8);
+  CHECK(rel_linf(a.pressure, a.pressure.rowwise().reverse().eval()) <= 1e-8);
+}
+
+TEST_CASE("Non-convergence is reported, not thrown", "[contact]") {
+  const HertzProblem hp(32);
+  DcfftOperator op(love_kernel(hp.grid, kModulus));
+  ContactOptions opts;
+  opts.max_iterations = 2;
+  ContactResult res;
+  REQUIRE_NOTHROW(res = ContactSolver(op, opts).solve_load(hp.h, kLoad));
+  CHECK_FALSE(res.converged);
+  CHECK(res.iterations == 2);
+  CHECK(res.residual > opts.tolerance);
+  CHECK(std::isfinite(res.residual));
+  CHECK_THAT(res.warning, Catch::Contains("not converged"));
+  // The returned iterate still satisfies the constraints the iteration enforces at every step.
+  CHECK(res.pressure.minCoeff() >= 0.0);
+  CHECK(std::abs(res.load / kLoad - 1) <= 1e-12);
+}
+
+TEST_CASE("Contact reaching the domain edge is flagged", "[contact][bad_input]") {
+  const HertzProblem hp(32);  // domain [-2a, 2a] for W = 10 N
+  DcfftOperator op(love_kernel(hp.grid, kModulus));
+  // 27 W gives a contact radius 3 a, beyond the domain half-width 2 a.
+  const ContactResult res = ContactSolver(op).solve_load(hp.h, 27 * kLoad);
+  CHECK(res.touches_boundary);
+  CHECK_THAT(res.warning, Catch::Contains("domain edge"));
+  const ContactResult fine = ContactSolver(op).solve_load(hp.h, kLoad);
+  CHECK_FALSE(fine.touches_boundary);
+}
+
+TEST_CASE("Contact solver refuses bad input with InvalidArgument", "[contact][bad_input]") {
+  const HertzProblem hp(16);
+  DcfftOperator op(love_kernel(hp.grid, kModulus));
+  ContactSolver solver(op);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  CHECK_THROWS_WITH(solver.solve_load(hp.h, 0.0), Catch::Contains("load = 0"));
+  CHECK_THROWS_AS(solver.solve_load(hp.h, -1.0), InvalidArgument);
+  CHECK_THROWS_AS(solver.solve_load(hp.h, nan), InvalidArgument);
+  CHECK_THROWS_AS(solver.solve_approach(hp.h, nan), InvalidArgument);
+  // The sphere's lowest point is at h = 0 only up to the cell centres: min h > 0 on an even grid.
+  CHECK_THROWS_WITH(solver.solve_approach(hp.h, 0.0), Catch::Contains("min(height)"));
+  CHECK_THROWS_WITH(solver.solve_load(Field::Zero(16, 15), kLoad), Catch::Contains("(16, 15)"));
+  Field bad = hp.h;
+  bad(3, 4) = nan;
+  CHECK_THROWS_AS(solver.solve_load(bad, kLoad), InvalidArgument);
+  CHECK_THROWS_AS(height(hp.grid, HeightMap{Field::Zero(15, 16)}), InvalidArgument);
+  // A sphere smaller than the domain's half-diagonal has no surface over the corners.
+  const double half_diagonal = std::sqrt(2.0) * 2 * hp.reference.contact_radius;
+  CHECK_THROWS_AS(height(hp.grid, Sphere{0.9 * half_diagonal}), InvalidArgument);
+  ContactOptions opts;
+  opts.tolerance = 0;
+  CHECK_THROWS_AS(ContactSolver(op, opts), InvalidArgument);
+  opts.tolerance = 1e-10;
+  opts.max_iterations = 0;
+  CHECK_THROWS_AS(ContactSolver(op, opts), InvalidArgument);
+}

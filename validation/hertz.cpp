@@ -1,0 +1,78 @@
+#include "validation/hertz.hpp"
+
+#include <boost/math/special_functions/ellint_1.hpp>
+#include <boost/math/special_functions/ellint_2.hpp>
+#include <boost/math/special_functions/ellint_d.hpp>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "core/error.hpp"
+
+namespace coatfft {
+namespace {
+
+void check_arguments(const char* who, double r, double p, double a, double e_star) {
+  COATFFT_REQUIRE(std::isfinite(r) && r >= 0, who, ": r = ", r,
+                  " m, but r must be finite and >= 0");
+  COATFFT_REQUIRE(std::isfinite(p), who, ": pressure = ", p, " Pa, but it must be finite");
+  COATFFT_REQUIRE(std::isfinite(a) && a > 0, who, ": a = ", a, " m, but a must be finite and > 0");
+  COATFFT_REQUIRE(std::isfinite(e_star) && e_star > 0, who, ": E* = ", e_star,
+                  " Pa, but E* must be finite and > 0");
+}
+
+// g(t) = (2t^2 - 1) asin t + t sqrt(1 - t^2), t = a/r, so that (1.7) reads
+// u = p0 r^2 g(t) / (2 a E*). Since g'(t) = 4 t asin t and asin t = sum_n c_n t^(2n+1) with
+// c_n = (2n)! / (4^n (n!)^2 (2n+1)), g(t) = sum_n 4 c_n t^(2n+3) / (2n+3): no cancellation.
+double hertz_outside_series(double t) {
+  const double t2 = t * t;
+  double binomial = 1.0;  // (2n)! / (4^n (n!)^2)
+  double power = t * t2;  // t^(2n+3)
+  double sum = 0.0;
+  for (int n = 0; n < 200; ++n) {
+    const double term = 4.0 * binomial / (2.0 * n + 1.0) * power / (2.0 * n + 3.0);
+    sum += term;
+    if (term < std::numeric_limits<double>::epsilon() * 1e-2 * sum) break;
+    binomial *= (2.0 * n + 1.0) / (2.0 * n + 2.0);
+    power *= t2;
+  }
+  return sum;
+}
+
+}  // namespace
+
+double hertz_displacement(double r, double p0, double a, double plane_strain_modulus) {
+  check_arguments("hertz_displacement", r, p0, a, plane_strain_modulus);
+  const double e_star = plane_strain_modulus;
+  if (r <= a) return std::numbers::pi * p0 * (2.0 * a * a - r * r) / (4.0 * a * e_star);
+  // (1.7) loses about log10(r^2/a^2) digits to cancellation; beyond r = 2a the series (at most
+  // ~30 terms there) is exact to rounding.
+  if (r > 2.0 * a) return p0 * r * r * hertz_outside_series(a / r) / (2.0 * a * e_star);
+  // Near r = a, asin(a/r) has an infinite slope: the rounding of a/r alone would cost 1e-8
+  // relative. s = sqrt((r - a)(r + a)) is exact to rounding and asin(a/r) = atan2(a, s).
+  const double s = std::sqrt((r - a) * (r + a));
+  return p0 / (2.0 * a * e_star) * ((2.0 * a * a - r * r) * std::atan2(a, s) + a * s);
+}
+
+double uniform_disk_displacement(double r, double p, double a, double plane_strain_modulus) {
+  check_arguments("uniform_disk_displacement", r, p, a, plane_strain_modulus);
+  const double e_star = plane_strain_modulus;
+  using boost::math::ellint_1;
+  using boost::math::ellint_2;
+  using boost::math::ellint_d;
+  if (r <= a) return 4.0 * p * a * ellint_2(r / a) / (std::numbers::pi * e_star);
+  // (1.9) outside: E(k) - (1 - k^2) K(k) with k = a/r cancels like k^2 as r grows. With
+  // D(k) = (K - E)/k^2 it equals k^2 (K(k) - D(k)), a difference of O(1) terms (K -> pi/2,
+  // D -> pi/4), so no digits are lost.
+  const double k = a / r;
+  return 4.0 * p * r * k * k * (ellint_1(k) - ellint_d(k)) / (std::numbers::pi * e_star);
+}
+
+double seed_error(double u_num, double u_exact, double u_exact_centre) {
+  COATFFT_REQUIRE(std::isfinite(u_exact_centre) && u_exact_centre != 0.0,
+                  "seed_error: u_exact(0) = ", u_exact_centre,
+                  " m, but it must be finite and != 0");
+  return (u_num - u_exact) / u_exact_centre;
+}
+
+}  // namespace coatfft
