@@ -1,5 +1,6 @@
 // The coatfft command-line program. This is the only place where exceptions become exit codes:
-// 2 for bad input (coatfft::InvalidArgument, bad flags), 1 for anything else.
+// 2 for bad input (coatfft::InvalidArgument, bad flags), 3 for a contact solve that did not
+// converge (outputs are written, summary.json says converged = false), 1 for anything else.
 #include <CLI/CLI.hpp>
 #include <iostream>
 
@@ -35,7 +36,10 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (*run_cmd) coatfft::cli::run_command(run);
+    if (*run_cmd && coatfft::cli::run_command(run) == coatfft::cli::RunStatus::not_converged) {
+      std::cerr << "coatfft: warning: the contact solver did not converge (see summary.json)\n";
+      return 3;
+    }
     if (*frf_cmd) coatfft::cli::frf_command(frf);
   } catch (const coatfft::InvalidArgument& e) {
     std::cerr << "coatfft: error: " << e.what() << '\n';

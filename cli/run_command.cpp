@@ -12,14 +12,21 @@
 #include "cli/operator_from_scene.hpp"
 #include "cli/scene.hpp"
 #include "cli/staged_output.hpp"
+#include "contact/contact_solver.hpp"
 #include "core/error.hpp"
 #include "loads/hertz_pressure.hpp"
 #include "loads/uniform_disk_pressure.hpp"
 #include "validation/hertz.hpp"
+#include "validation/hertz_contact.hpp"
 
 namespace coatfft::cli {
 
 namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
 
 Field read_pressure_file(const std::filesystem::path& file, const Grid& grid) {
   const std::string ext = file.extension().string();
@@ -50,9 +57,51 @@ double median(std::vector<double> values) {
   return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
+// Median wall time of `repeat` applications of `op` to `pressure`; leaves the result in `uz`.
+double time_applications(SurfaceOperator& op, const Field& pressure, Field& uz, int repeat) {
+  std::vector<double> seconds;
+  for (int r = 0; r < repeat; ++r) {
+    const auto start = Clock::now();
+    op.apply(pressure, uz);
+    seconds.push_back(seconds_since(start));
+  }
+  COATFFT_REQUIRE(uz.allFinite(), "internal error: the displacement has non-finite values");
+  return median(seconds);
+}
+
 // Index of the cell centre nearest the origin; for an even count the two middle cells tie and
 // the lower index (centre at -d/2) is taken.
 Eigen::Index centre_index(std::ptrdiff_t n) { return static_cast<Eigen::Index>((n - 1) / 2); }
+
+nlohmann::json common_summary(const Grid& grid, const BuiltOperator& built, double apply_seconds,
+                              int repeat, const Field& pressure, const Field& uz) {
+  nlohmann::json summary;
+  summary["method"] = built.op->name();
+  summary["nx"] = grid.nx();
+  summary["ny"] = grid.ny();
+  summary["lx"] = grid.lx();
+  summary["ly"] = grid.ly();
+  summary["setup_seconds"] = built.setup_seconds;
+  summary["apply_seconds"] = apply_seconds;
+  summary["repeat"] = repeat;
+  summary["total_load"] = pressure.sum() * grid.dx() * grid.dy();
+  summary["uz_center"] = uz(centre_index(grid.nx()), centre_index(grid.ny()));
+  summary["uz_max"] = uz.maxCoeff();
+  for (const auto& [key, value] : built.report.items()) summary[key] = value;
+  return summary;
+}
+
+// The seed's error measure (section 5): max |u_num - u_exact| / u_exact(0).
+double max_error_vs_hertz(const Grid& grid, const Field& uz, double p0, double a, double E_star) {
+  const double u0 = hertz_displacement(0.0, p0, a, E_star);
+  double max_error = 0;
+  for (Eigen::Index j = 0; j < grid.ny(); ++j)
+    for (Eigen::Index i = 0; i < grid.nx(); ++i) {
+      const double exact = hertz_displacement(std::hypot(grid.x(i), grid.y(j)), p0, a, E_star);
+      max_error = std::max(max_error, std::abs(uz(i, j) - exact) / u0);
+    }
+  return max_error;
+}
 
 void write_displacement_csv(const std::filesystem::path& path, const Grid& grid, const Field& p,
                             const Field& uz) {
@@ -65,57 +114,12 @@ void write_displacement_csv(const std::filesystem::path& path, const Grid& grid,
   COATFFT_REQUIRE(out.good(), "failed writing ", path.string());
 }
 
-}  // namespace
-
-void run_command(const RunOptions& options) {
-  COATFFT_REQUIRE(options.repeat >= 1, "--repeat = ", options.repeat, " must be >= 1");
-  const Scene scene = read_scene(options.scene);
-  const Grid& grid = scene.grid;
-  const Field pressure = pressure_from_scene(scene);
-  BuiltOperator built = operator_from_scene(scene);
-
-  Field uz;
-  std::vector<double> apply_seconds;
-  for (int r = 0; r < options.repeat; ++r) {
-    const auto start = std::chrono::steady_clock::now();
-    built.op->apply(pressure, uz);
-    apply_seconds.push_back(
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
-  COATFFT_REQUIRE(uz.allFinite(), "internal error: the displacement has non-finite values");
-
-  nlohmann::json summary;
-  summary["method"] = built.op->name();
-  summary["nx"] = grid.nx();
-  summary["ny"] = grid.ny();
-  summary["lx"] = grid.lx();
-  summary["ly"] = grid.ly();
-  summary["setup_seconds"] = built.setup_seconds;
-  summary["apply_seconds"] = median(apply_seconds);
-  summary["repeat"] = options.repeat;
-  summary["total_load"] = pressure.sum() * grid.dx() * grid.dy();
-  summary["uz_center"] = uz(centre_index(grid.nx()), centre_index(grid.ny()));
-  summary["uz_max"] = uz.maxCoeff();
-  for (const auto& [key, value] : built.report.items()) summary[key] = value;
-
-  const PressureSpec& load = *scene.pressure;
-  if (load.kind == "hertz" && scene.body.is_homogeneous()) {
-    // The seed's error measure (section 5): (u_num - u_exact) / u_exact(0).
-    const double E_star = scene.body.substrate().plane_strain_modulus();
-    const double u0 = hertz_displacement(0.0, load.amplitude, load.radius, E_star);
-    double max_error = 0;
-    for (Eigen::Index j = 0; j < grid.ny(); ++j)
-      for (Eigen::Index i = 0; i < grid.nx(); ++i) {
-        const double exact =
-            hertz_displacement(std::hypot(grid.x(i), grid.y(j)), load.amplitude, load.radius, E_star);
-        max_error = std::max(max_error, std::abs(uz(i, j) - exact) / u0);
-      }
-    summary["max_error_vs_hertz"] = max_error;
-  }
-
-  StagedOutput out(options.outdir);
+void write_outputs(const std::filesystem::path& outdir, const Grid& grid, const Field& pressure,
+                   const Field& uz, const Field* gap, const nlohmann::json& summary) {
+  StagedOutput out(outdir);
   write_npy(out.path("uz.npy"), uz);
   write_npy(out.path("pressure.npy"), pressure);
+  if (gap) write_npy(out.path("gap.npy"), *gap);
   write_displacement_csv(out.path("displacement.csv"), grid, pressure, uz);
   {
     std::ofstream json(out.path("summary.json"));
@@ -123,6 +127,95 @@ void run_command(const RunOptions& options) {
     COATFFT_REQUIRE(json.good(), "failed writing summary.json");
   }
   out.commit();
+}
+
+RunStatus run_pressure(const Scene& scene, const RunOptions& options) {
+  const Grid& grid = scene.grid;
+  const Field pressure = pressure_from_scene(scene);
+  BuiltOperator built = operator_from_scene(scene);
+  Field uz;
+  const double apply_seconds = time_applications(*built.op, pressure, uz, options.repeat);
+
+  nlohmann::json summary = common_summary(grid, built, apply_seconds, options.repeat, pressure, uz);
+  const PressureSpec& load = *scene.pressure;
+  if (load.kind == "hertz" && scene.body.is_homogeneous()) {
+    summary["max_error_vs_hertz"] = max_error_vs_hertz(
+        grid, uz, load.amplitude, load.radius, scene.body.substrate().plane_strain_modulus());
+  }
+  write_outputs(options.outdir, grid, pressure, uz, nullptr, summary);
+  return RunStatus::ok;
+}
+
+RunStatus run_contact(Scene scene, const RunOptions& options) {
+  const ContactSpec& spec = *scene.contact;
+  const Grid& grid = scene.grid;
+  if (spec.indenter_material) {
+    // Two homogeneous elastic bodies in frictionless normal contact deform as one half-space of
+    // the composite modulus (Johnson section 4.2); only E* enters the normal compliance.
+    const Material& body = scene.body.substrate();
+    const double E_star = composite_modulus(body, *spec.indenter_material);
+    const double nu = body.poisson_ratio();
+    scene.body = LayerStack(Material(E_star * (1 - nu * nu), nu));
+  }
+  const Field height_field = height(grid, spec.indenter);
+  BuiltOperator built = operator_from_scene(scene);
+
+  ContactOptions contact_options;
+  contact_options.tolerance = spec.tolerance;
+  contact_options.max_iterations = spec.max_iterations;
+  contact_options.compute_approach = true;  // summary.json reports the approach
+  ContactSolver solver(*built.op, contact_options);
+  const auto start = Clock::now();
+  const ContactResult result = spec.load ? solver.solve_load(height_field, *spec.load)
+                                         : solver.solve_approach(height_field, *spec.approach);
+  const double solve_seconds = seconds_since(start);
+  COATFFT_REQUIRE(!result.touches_boundary,
+                  "[contact] the contact reaches the domain edge: the domain is too small for this "
+                  "load (enlarge lx, ly) ",
+                  result.warning);
+
+  Field uz;
+  const double apply_seconds = time_applications(*built.op, result.pressure, uz, options.repeat);
+  nlohmann::json summary =
+      common_summary(grid, built, apply_seconds, options.repeat, result.pressure, result.displacement);
+  summary["indenter"] = spec.indenter_name;
+  summary["solve_seconds"] = solve_seconds;
+  summary["load"] = result.load;
+  summary["approach"] = result.approach ? nlohmann::json(*result.approach) : nlohmann::json();
+  summary["contact_area"] = result.contact_area;
+  summary["contact_radius"] =
+      result.contact_radius ? nlohmann::json(*result.contact_radius) : nlohmann::json();
+  summary["max_pressure"] = result.max_pressure;
+  summary["iterations"] = result.iterations;
+  summary["residual"] = result.residual;
+  summary["converged"] = result.converged;
+  if (!result.warning.empty()) summary["warning"] = result.warning;
+
+  const bool hertzian = std::holds_alternative<Paraboloid>(spec.indenter) ||
+                        std::holds_alternative<Sphere>(spec.indenter);
+  if (hertzian && scene.body.is_homogeneous()) {
+    const double R = std::holds_alternative<Sphere>(spec.indenter)
+                         ? std::get<Sphere>(spec.indenter).radius
+                         : std::get<Paraboloid>(spec.indenter).radius;
+    const double E_star = scene.body.substrate().plane_strain_modulus();
+    const HertzSphere hertz = spec.load ? hertz_sphere_for_load(*spec.load, R, E_star)
+                                        : hertz_sphere_for_approach(*spec.approach, R, E_star);
+    summary["hertz"] = {{"load", hertz.load},
+                        {"contact_radius", hertz.contact_radius},
+                        {"max_pressure", hertz.max_pressure},
+                        {"approach", hertz.approach}};
+  }
+  write_outputs(options.outdir, grid, result.pressure, result.displacement, &result.gap, summary);
+  return result.converged ? RunStatus::ok : RunStatus::not_converged;
+}
+
+}  // namespace
+
+RunStatus run_command(const RunOptions& options) {
+  COATFFT_REQUIRE(options.repeat >= 1, "--repeat = ", options.repeat, " must be >= 1");
+  Scene scene = read_scene(options.scene);
+  if (scene.contact) return run_contact(std::move(scene), options);
+  return run_pressure(scene, options);
 }
 
 }  // namespace coatfft::cli

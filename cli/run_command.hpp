@@ -1,5 +1,6 @@
 #pragma once
-// `coatfft run SCENE.toml -o OUTDIR`: one displacement computation from a scene file.
+// `coatfft run SCENE.toml -o OUTDIR`: one displacement computation (known [pressure]) or one
+// contact solve ([contact]) from a scene file.
 #include <filesystem>
 
 namespace coatfft::cli {
@@ -7,11 +8,14 @@ namespace coatfft::cli {
 struct RunOptions {
   std::filesystem::path scene;
   std::filesystem::path outdir;
-  int repeat = 1;  ///< applications timed; apply_seconds is their median
+  int repeat = 1;  ///< operator applications timed; apply_seconds is their median
 };
 
-/// Runs the scene and writes OUTDIR/{uz.npy, pressure.npy, displacement.csv, summary.json}.
-/// Throws InvalidArgument on bad input before anything is written.
-void run_command(const RunOptions& options);
+/// What the run reports to the shell besides exceptions.
+enum class RunStatus { ok, not_converged };
+
+/// Runs the scene and writes OUTDIR/{uz.npy, pressure.npy, displacement.csv, summary.json}
+/// (+ gap.npy for a contact). Throws InvalidArgument on bad input before anything is written.
+RunStatus run_command(const RunOptions& options);
 
 }  // namespace coatfft::cli

@@ -5,6 +5,7 @@
 #include <toml++/toml.h>
 #include <vector>
 
+#include "cli/npy.hpp"
 #include "core/error.hpp"
 #include "materials/catalog.hpp"
 
@@ -193,6 +194,79 @@ PressureSpec read_pressure(const toml::table& table, const Grid& grid,
   return spec;
 }
 
+double positive(SectionReader& reader, std::string_view key) {
+  const double value = reader.number(key);
+  COATFFT_REQUIRE(value > 0, reader.where(key), " = ", value, " must be > 0");
+  return value;
+}
+
+Field read_height_map(const std::filesystem::path& file) {
+  const std::string ext = file.extension().string();
+  COATFFT_REQUIRE(ext == ".npy" || ext == ".csv", "[contact] path = ", file.string(),
+                  ": must end in .npy or .csv");
+  return ext == ".npy" ? read_npy(file) : read_csv_matrix(file);
+}
+
+ContactSpec read_contact(const toml::table& table, const Grid& grid, const LayerStack& body,
+                         const std::filesystem::path& scene_dir) {
+  SectionReader reader(table, "contact");
+  ContactSpec spec;
+  spec.indenter_name = reader.choice("indenter", "",
+                                     {"sphere", "paraboloid", "cylinder", "flat_punch", "height_map"});
+  const std::string& kind = spec.indenter_name;
+  const double half_domain = 0.5 * std::min(grid.lx(), grid.ly());
+  if (kind == "sphere") {
+    spec.indenter = Sphere{positive(reader, "radius")};
+  } else if (kind == "paraboloid") {
+    spec.indenter = Paraboloid{positive(reader, "radius")};
+  } else if (kind == "cylinder") {
+    spec.indenter = Cylinder{positive(reader, "radius"), reader.number("length", 0.0),
+                             positive(reader, "end_radius")};
+    const double length = std::get<Cylinder>(spec.indenter).flat_length;
+    COATFFT_REQUIRE(length >= 0 && length < grid.lx(), reader.where("length"), " = ", length,
+                    " m must be >= 0 and shorter than the domain (lx = ", grid.lx(), " m)");
+  } else if (kind == "flat_punch") {
+    spec.indenter = FlatPunch{positive(reader, "radius"), positive(reader, "edge_radius")};
+    const double a = std::get<FlatPunch>(spec.indenter).radius;
+    COATFFT_REQUIRE(a < half_domain, reader.where("radius"), " = ", a,
+                    " m: the punch must fit in the domain (radius < ", half_domain, " m)");
+  } else {
+    std::filesystem::path file = reader.string("path");
+    if (file.is_relative()) file = scene_dir / file;
+    spec.indenter = HeightMap{read_height_map(file)};
+    const Field& h = std::get<HeightMap>(spec.indenter).heights;
+    COATFFT_REQUIRE(h.rows() == grid.nx() && h.cols() == grid.ny(), file.string(), ": shape (",
+                    h.cols(), ", ", h.rows(), ") but the grid needs (ny, nx) = (", grid.ny(), ", ",
+                    grid.nx(), ")");
+    COATFFT_REQUIRE(h.allFinite(), file.string(), ": the height map has non-finite values");
+  }
+  COATFFT_REQUIRE(reader.has("load") != reader.has("approach"),
+                  "[contact] give exactly one of load (N) and approach (m)");
+  if (reader.has("load")) spec.load = positive(reader, "load");
+  if (reader.has("approach")) spec.approach = positive(reader, "approach");
+  spec.tolerance = reader.number("tolerance", spec.tolerance);
+  COATFFT_REQUIRE(spec.tolerance > 0 && spec.tolerance < 1, reader.where("tolerance"), " = ",
+                  spec.tolerance, " must be in (0, 1)");
+  const auto max_iterations = reader.integer("max_iterations", spec.max_iterations);
+  COATFFT_REQUIRE(max_iterations >= 1 && max_iterations <= 1000000, reader.where("max_iterations"),
+                  " = ", max_iterations, " must be in 1..1000000");
+  spec.max_iterations = static_cast<int>(max_iterations);
+  if (reader.has("indenter_material") || reader.has("indenter_E") || reader.has("indenter_nu")) {
+    COATFFT_REQUIRE(body.is_homogeneous(),
+                    "[contact] an elastic indenter needs a homogeneous body (composite modulus); "
+                    "for a coated body the indenter must be rigid");
+    if (reader.has("indenter_material")) {
+      spec.indenter_material = material_by_name(reader.string("indenter_material"));
+    } else {
+      spec.indenter_material = Material(reader.number("indenter_E"), reader.number("indenter_nu"));
+    }
+  }
+  // Catch geometry errors (a sphere smaller than the domain) before any work is done.
+  in_section("contact", [&] { return height(grid, spec.indenter); });
+  reader.finish();
+  return spec;
+}
+
 MethodSpec read_method(const toml::table& root, const std::filesystem::path& scene_dir) {
   SectionReader reader(section(root, "method", false), "method");
   MethodSpec spec;
@@ -220,7 +294,8 @@ MethodSpec read_method(const toml::table& root, const std::filesystem::path& sce
 toml::table parse_scene_file(const std::filesystem::path& path) {
   try {
     toml::table root = toml::parse_file(path.string());
-    const std::set<std::string> known{"grid", "substrate", "coating", "pressure", "method"};
+    const std::set<std::string> known{"grid",     "substrate", "coating",
+                                      "pressure", "contact",   "method"};
     for (auto&& [key, node] : root) {
       COATFFT_REQUIRE(known.count(std::string(key.str())), "unknown section or key \"", key.str(),
                       "\"");
@@ -248,8 +323,16 @@ Scene read_scene(const std::filesystem::path& path) {
   return with_file_name(path, [&] {
     const toml::table root = parse_scene_file(path);
     const std::filesystem::path scene_dir = path.parent_path();
-    Scene scene{read_grid(root), read_body(root), std::nullopt, read_method(root, scene_dir)};
-    scene.pressure = read_pressure(section(root, "pressure", true), scene.grid, scene_dir);
+    Scene scene{read_grid(root), read_body(root), std::nullopt, read_method(root, scene_dir),
+                std::nullopt};
+    COATFFT_REQUIRE(root.contains("pressure") != root.contains("contact"),
+                    "a scene needs exactly one of [pressure] (known load) and [contact]");
+    if (root.contains("pressure"))
+      scene.pressure = read_pressure(section(root, "pressure", true), scene.grid, scene_dir);
+    else
+      scene.contact = in_section("contact", [&] {
+        return read_contact(section(root, "contact", true), scene.grid, scene.body, scene_dir);
+      });
     return scene;
   });
 }

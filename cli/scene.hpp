@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "contact/indenter.hpp"
 #include "core/grid.hpp"
 #include "layers/layer_stack.hpp"
 
@@ -31,11 +32,26 @@ struct MethodSpec {
   std::filesystem::path wisdom;    ///< FFTW wisdom file to load and save (optional)
 };
 
+/// [contact]: a frictionless normal contact with an indenter (contact/).
+struct ContactSpec {
+  std::string indenter_name;  ///< "sphere", "paraboloid", "cylinder", "flat_punch", "height_map"
+  Indenter indenter;
+  std::optional<double> load;      ///< total normal load [N] (load control), or
+  std::optional<double> approach;  ///< rigid-body approach [m] (approach control)
+  double tolerance = 1e-10;
+  int max_iterations = 1000;
+  /// Elastic indenter (homogeneous bodies only): the body's modulus is replaced by the
+  /// composite modulus 1/E* = 1/E*_body + 1/E*_indenter (Johnson section 4.2).
+  std::optional<Material> indenter_material;
+};
+
+/// Exactly one of `pressure` and `contact` is set.
 struct Scene {
   Grid grid;
   LayerStack body;
   std::optional<PressureSpec> pressure;
   MethodSpec method;
+  std::optional<ContactSpec> contact;
 };
 
 /// Parses and validates a scene file. Throws InvalidArgument with a one-line message

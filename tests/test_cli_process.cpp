@@ -220,3 +220,114 @@ TEST_CASE("coatfft frf prints the FRF table of a scene's body", "[cli]") {
   CHECK(bad.status == 2);
   CHECK(bad.stderr_text.find("--k-min") != std::string::npos);
 }
+
+namespace {
+
+const char* kContactScene = R"([grid]
+nx = 64
+ny = 64
+lx = 0.8e-3
+ly = 0.8e-3
+[substrate]
+material = "steel"
+[contact]
+indenter = "sphere"
+radius = 0.01
+load = 100.0
+)";
+
+fs::path contact_scene_with(const std::string& name, const std::string& from, const std::string& to) {
+  std::string text = kContactScene;
+  if (!from.empty()) {
+    const auto pos = text.find(from);
+    REQUIRE(pos != std::string::npos);
+    text.replace(pos, from.size(), to);
+  }
+  const fs::path path = scratch(name + ".toml");
+  std::ofstream(path) << text;
+  return path;
+}
+
+}  // namespace
+
+TEST_CASE("coatfft run solves a sphere contact and reports it", "[cli][contact]") {
+  const fs::path out = scratch("contact_out");
+  fs::remove_all(out);
+  const auto result = run_coatfft("run " + contact_scene_with("contact_good", "", "").string() +
+                                  " -o " + out.string());
+  INFO(result.stderr_text);
+  REQUIRE(result.status == 0);
+  for (const char* file : {"uz.npy", "pressure.npy", "gap.npy", "summary.json"})
+    CHECK(fs::exists(out / file));
+  nlohmann::json s;
+  std::ifstream(out / "summary.json") >> s;
+  CHECK(s["converged"] == true);
+  CHECK(s["load"].get<double>() == Approx(100.0).epsilon(1e-10));  // load balance is exact
+  // 64 x 64 over 5.4 a: dx = a/12, so radius and peak carry a few percent of discretisation
+  // error; the approach (an integral quantity) is within 1%.
+  CHECK(s["contact_radius"].get<double>() ==
+        Approx(s["hertz"]["contact_radius"].get<double>()).epsilon(0.05));
+  CHECK(s["max_pressure"].get<double>() ==
+        Approx(s["hertz"]["max_pressure"].get<double>()).epsilon(0.05));
+  CHECK(s["approach"].get<double>() == Approx(s["hertz"]["approach"].get<double>()).epsilon(0.01));
+  for (const char* key : {"contact_area", "iterations", "residual"}) CHECK(s.contains(key));
+}
+
+TEST_CASE("coatfft run refuses bad contact scenes with exit 2 and no output",
+          "[cli][contact][bad_input]") {
+  struct Case {
+    const char* name;
+    std::string from, to;
+    const char* must_mention;
+  };
+  {
+    std::ofstream csv(scratch("h_nan.csv"));
+    for (int j = 0; j < 64; ++j) {
+      for (int i = 0; i < 64; ++i) csv << (i ? "," : "") << (i == 3 && j == 9 ? "nan" : "0.0");
+      csv << "\n";
+    }
+  }
+  coatfft::cli::write_npy(scratch("h_shape.npy"), coatfft::Field::Zero(64, 32));
+  const std::string sphere = "indenter = \"sphere\"\nradius = 0.01";
+  const std::array cases{
+      Case{"zero_load", "load = 100.0", "load = 0.0", "load"},
+      Case{"negative_load", "load = 100.0", "load = -5.0", "load"},
+      Case{"load_and_approach", "load = 100.0", "load = 100.0\napproach = 1e-6", "approach"},
+      Case{"sphere_too_small", "radius = 0.01", "radius = 0.0004", "radius"},
+      Case{"punch_too_large", sphere, "indenter = \"flat_punch\"\nradius = 0.5e-3\nedge_radius = 1e-5",
+           "radius"},
+      Case{"reaches_edge", "load = 100.0", "load = 20000.0", "domain"},
+      Case{"height_map_nan", sphere, "indenter = \"height_map\"\npath = \"h_nan.csv\"", "h_nan.csv"},
+      Case{"height_map_shape", sphere, "indenter = \"height_map\"\npath = \"h_shape.npy\"",
+           "h_shape.npy"},
+      Case{"unknown_indenter", "\"sphere\"", "\"cone\"", "cone"},
+      Case{"pressure_and_contact", "[contact]", "[pressure]\nkind = \"hertz\"\np0 = 1e9\na = 1e-4\n[contact]",
+           "exactly one"},
+  };
+  for (const auto& c : cases) {
+    INFO(c.name);
+    const fs::path scene = contact_scene_with(c.name, c.from, c.to);
+    const fs::path out = scratch(std::string(c.name) + "_out");
+    fs::remove_all(out);
+    const auto result = run_coatfft("run " + scene.string() + " -o " + out.string());
+    INFO(result.stderr_text);
+    CHECK(result.status == 2);
+    CHECK(std::count(result.stderr_text.begin(), result.stderr_text.end(), '\n') == 1);
+    CHECK(result.stderr_text.find(c.must_mention) != std::string::npos);
+    CHECK_FALSE(fs::exists(out));
+  }
+}
+
+TEST_CASE("coatfft run reports a contact solve that does not converge", "[cli][contact]") {
+  const fs::path out = scratch("contact_nc_out");
+  fs::remove_all(out);
+  const auto result =
+      run_coatfft("run " + contact_scene_with("contact_nc", "load = 100.0", "load = 100.0\nmax_iterations = 2").string() +
+                  " -o " + out.string());
+  CHECK(result.status == 3);
+  CHECK(result.stderr_text.find("did not converge") != std::string::npos);
+  nlohmann::json s;
+  std::ifstream(out / "summary.json") >> s;
+  CHECK(s["converged"] == false);
+  CHECK(s["residual"].get<double>() > 1e-10);
+}

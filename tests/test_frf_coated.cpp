@@ -85,7 +85,8 @@ TEST_CASE("Identical media, frictionless interface: softer than the half-space",
   for (double t : log_space(1e-2, 30.0, 41)) {
     const double c = coated.factor(t);
     worst = std::max(worst, rel_err(c, frictionless_by_decomposition(1.0, t)));
-    CHECK(c > 1.0);  // slip can only add compliance: C_f > 1 for identical media
+    if (t < 15)
+      CHECK(c > 1.0);  // slip adds compliance (C_f - 1 ~ 2 t^2 X/(1 + 2t) > eps up to t ~ 15)
   }
   INFO("worst relative difference to the decomposition formula: " << worst);
   CHECK(worst < 1e-13);  // measured 2.2e-16; reference good to ~1e-15
@@ -114,11 +115,12 @@ TEST_CASE("Thick and thin coating limits, c0() and c_inf()", "[frf][coated]") {
         const HalfSpaceFrf coating_alone(coating);
         CHECK(rel_err(frf(50.0 / h), coating_alone(50.0 / h)) < 1e-12);
         CHECK(rel_err(frf(1e8 / h), coating_alone(1e8 / h)) < 1e-12);
-        // kh -> 0: C - C(0) = O(t) with |C'(0)/C(0)| < 100 for these materials, so at t = 1e-15
-        // the substrate alone to < 1e-13.
+        // kh -> 0: C - C(0) = O(t) with |C'(0)/C(0)| up to ~1e4 here (a thin soft coating on a
+        // stiff substrate: C(0) = R ~ 5e-5 while C' ~ 0.3), so at t = 1e-17 the substrate alone
+        // to ~1e-13.
         const HalfSpaceFrf substrate_alone(substrate);
-        CHECK(rel_err(frf(1e-15 / h), substrate_alone(1e-15 / h)) < 1e-12);
-        CHECK(rel_err(frf.factor(1e-15),
+        CHECK(rel_err(frf(1e-17 / h), substrate_alone(1e-17 / h)) < 1e-12);
+        CHECK(rel_err(frf.factor(1e-17),
                       coating.plane_strain_modulus() / substrate.plane_strain_modulus()) < 1e-12);
       }
     }
@@ -126,27 +128,29 @@ TEST_CASE("Thick and thin coating limits, c0() and c_inf()", "[frf][coated]") {
 }
 
 TEST_CASE("Thin layers on a rigid-ish substrate follow theory.md 2.6(c)", "[frf][coated]") {
-  // Substrate 1e12 times stiffer: its own compliance shifts C by ~1e-12, far below the O(t)
-  // truncation of the asymptotes checked here.
-  const Material substrate(1e21, 0.3);
+  // Substrate 1e21 times stiffer: its own compliance adds C(0) = R ~ 1e-21 to C ~ t/2, i.e.
+  // < 1e-17 relative for t >= 1e-4, far below the truncation of the asymptotes checked here.
+  const Material substrate(1e30, 0.3);
   for (double nu : {0.0, 0.3, 0.45}) {
     const Material layer(1e9, nu);
     const CoatedFrf bonded(layer, 1.0, substrate, Interface::bonded);
     const CoatedFrf frictionless(layer, 1.0, substrate, Interface::frictionless);
     // Oedometric: u/p = h / (lambda + 2 mu) <=> C = t (1 - 2nu)/(2 (1 - nu)^2).
     const double oedometric = (1 - 2 * nu) / (2 * (1 - nu) * (1 - nu));
+    const double e3 = rel_err(bonded.factor(1e-3), 1e-3 * oedometric);
     const double e4 = rel_err(bonded.factor(1e-4), 1e-4 * oedometric);
-    const double e5 = rel_err(bonded.factor(1e-5), 1e-5 * oedometric);
     // Frictionless base: u/p = h / E1* <=> C = t/2, independent of nu.
+    const double f3 = rel_err(frictionless.factor(1e-3), 0.5e-3);
     const double f4 = rel_err(frictionless.factor(1e-4), 0.5e-4);
-    const double f5 = rel_err(frictionless.factor(1e-5), 0.5e-5);
-    INFO("nu = " << nu << ": bonded " << e4 << ", " << e5 << "; frictionless " << f4 << ", " << f5);
-    // The next term is O(t) relative (theory.md: 9e-8 and 2e-8 at t = 1e-4 for nu = 0.3), and it
-    // must shrink ~10x per decade of t: a convergence check, not just a tolerance.
-    CHECK(e4 < 1e-6);
-    CHECK(f4 < 1e-6);
-    CHECK(e5 < 0.2 * e4);
-    CHECK(f5 < 0.2 * f4);
+    INFO("nu = " << nu << ": bonded " << e3 << ", " << e4 << "; frictionless " << f3 << ", " << f4);
+    // The relative truncation is O(t^2): mainly the squeeze-film term (2/3) t^3 over the linear
+    // one, 1.3e-5 t^2/(1 - 2nu) ~ 2e-6 at nu = 0.45, t = 1e-3 (measured 2.2e-6; 7e-8 for nu = 0.3;
+    // frictionless and nu = 0 at rounding level). So: small, and falling >= 5x per decade of t
+    // unless already at rounding level -- a convergence check, not just a tolerance.
+    CHECK(e3 < 1e-5);
+    CHECK(f3 < 1e-6);
+    CHECK((e4 < 0.2 * e3 || e4 < 1e-13));
+    CHECK((f4 < 0.2 * f3 || f4 < 1e-13));
   }
   // Nearly incompressible bonded layer: C = t (1 - 2nu)/(2 (1-nu)^2) + (2/3) t^3 + O(t^4) for
   // nu -> 1/2; at nu = 0.4999 both terms matter around t = 0.02 (theory.md: crossover 0.024).
@@ -168,15 +172,16 @@ TEST_CASE("factor_minus_one agrees with factor - 1 and resolves tiny C - 1", "[f
       // where |C - 1| is not small the two routes agree to rounding of 1 + x
       CHECK(std::abs(frf.factor_minus_one(t) - (frf.factor(t) - 1.0)) < 4e-16 * frf.factor(t));
     }
-    // Large t: C - 1 ~ X [4 beta t^2] / 1 (bonded) or 4 R t^2 X (frictionless) as the leading
-    // terms; at t = 30 the O(1/t) corrections of those leading terms are ~3%, so check the
-    // ratio to the leading term is within 10% -- a value that 1 + x could not represent at all.
+    // Large t: C - 1 -> 4 beta t^2 X (bonded, D -> 1) or 4 R t^2 X / (1 + R) (frictionless,
+    // D_f -> 1 + R) as the leading terms; at t = 30 their O(1/t) corrections are ~3%, so check
+    // the ratio within 10% -- a value (~1e-23) that 1 + x could not represent at all.
     const double t = 30.0;
     const double X = std::exp(-2 * t);
     const double m = c.shear_modulus() / s.shear_modulus();
     const double beta = (m - 1) / (m + c.kolosov());
     const double R = c.plane_strain_modulus() / s.plane_strain_modulus();
-    const double lead = interface == Interface::bonded ? 4 * beta * t * t * X : 4 * R * t * t * X;
+    const double lead =
+        interface == Interface::bonded ? 4 * beta * t * t * X : 4 * R * t * t * X / (1 + R);
     CHECK(frf.factor_minus_one(t) / lead == Approx(1.0).epsilon(0.1));
     CHECK(frf.factor_minus_one(1e9) == 0.0);
   }

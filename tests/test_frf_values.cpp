@@ -37,10 +37,16 @@ std::vector<Row> read_rows() {
   std::ifstream in(path);
   if (!in) FAIL("cannot open " << path.string() << " (expected beside the repository, in shared/)");
   std::string line;
-  std::getline(in, line);
+  // The file has CRLF line endings; drop the '\r' so that the last column parses cleanly.
+  const auto next_line = [&in, &line]() {
+    if (!std::getline(in, line)) return false;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    return true;
+  };
+  next_line();
   REQUIRE(line == "set,E1,nu1,E2,nu2,interface,t,C,LLn,ZLn,TTn");
   std::vector<Row> rows;
-  while (std::getline(in, line)) {
+  while (next_line()) {
     if (line.empty()) continue;
     std::vector<std::string> f;
     std::stringstream ss(line);

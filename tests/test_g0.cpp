@@ -98,8 +98,9 @@ TEST_CASE("Homogeneous g(0) equals the closed form (3.2)", "[g0]") {
 TEST_CASE("Coated g(0): regularized agrees with an independent polar-sector evaluation", "[g0]") {
   // theory.md 3.2 check case (E1 = 5, nu1 = .3, E2 = 1, nu2 = .45, h = 2, dk = 0.8) plus a stiff
   // thin coating, a soft coating and a thick coating (h dk >> 1, where C(kh) changes inside the
-  // cell), both interfaces. Reference: composite 8 x 30-point Gauss-Legendre per direction
-  // (converged to round-off; checked by comparing 4 and 8 panels below). Target 1e-12 relative.
+  // cell), both interfaces. Reference: composite 32 x 30-point Gauss-Legendre per direction,
+  // converged to round-off (checked against 16 panels: the thick coating, whose C(kh) has complex
+  // poles ~1/h from the real axis, needs ~16 panels). Target 1e-12 relative.
   struct Case {
     double E1, nu1, E2, nu2, h, dkx, dky;
   };
@@ -110,27 +111,30 @@ TEST_CASE("Coated g(0): regularized agrees with an independent polar-sector eval
   for (const auto& c : cases)
     for (const bool bonded : {true, false}) {
       const CoatingFrf frf(c.E1, c.nu1, c.E2, c.nu2, c.h, bonded);
-      const double ref8 = polar_sector_g0(frf, c.dkx, c.dky, 8);
-      const double ref4 = polar_sector_g0(frf, c.dkx, c.dky, 4);
-      REQUIRE(ref4 == Approx(ref8).epsilon(1e-14));
+      const double ref = polar_sector_g0(frf, c.dkx, c.dky, 32);
+      REQUIRE(polar_sector_g0(frf, c.dkx, c.dky, 16) == Approx(ref).epsilon(1e-13));
       const G0Result g = compute_g0(frf, c.dkx, c.dky, G0Method::regularized, 1e-13);
-      CAPTURE(c.E1, c.h, bonded, g.value, ref8);
-      CHECK(g.value == Approx(ref8).epsilon(1e-12));
+      CAPTURE(c.E1, c.h, bonded, g.value, ref);
+      CHECK(g.value == Approx(ref).epsilon(1e-12));
       CHECK(g.estimated_error < 1e-12 * g.value);
     }
 }
 
 TEST_CASE("Plain quadrature of the singular cell converges to the regularized g(0)", "[g0]") {
-  // The seed's approach: it must approach the regularized value as the tolerance shrinks, with an
-  // actual error not much above the requested tolerance (factor 10 allowed: the error estimate
-  // of nested adaptive quadrature is heuristic).
-  const CoatingFrf frf(5, .3, 1, .45, 2, true);
-  const double ref = compute_g0(frf, .8, .8, G0Method::regularized).value;
-  for (const double tol : {1e-4, 1e-6, 1e-8}) {
-    const G0Result q = compute_g0(frf, .8, .8, G0Method::quadrature, tol);
-    CAPTURE(tol, q.value, ref, q.estimated_error);
-    CHECK(std::abs(q.value / ref - 1) < 10 * tol);
-    CHECK(q.method == G0Method::quadrature);
+  // The seed's approach: as the tolerance shrinks it must approach the regularized value
+  // (checked above to 1e-12) with an actual error below the requested tolerance (measured:
+  // ~tol/8, always an underestimate: the corner rectangle misses part of the singular mass) and
+  // an error estimate that bounds the actual error.
+  for (const bool bonded : {true, false}) {
+    const CoatingFrf frf(5, .3, 1, .45, 2, bonded);
+    const double ref = compute_g0(frf, .8, .6, G0Method::regularized).value;
+    for (const double tol : {1e-4, 1e-7, 1e-10}) {
+      const G0Result q = compute_g0(frf, .8, .6, G0Method::quadrature, tol);
+      CAPTURE(bonded, tol, q.value, ref, q.estimated_error);
+      CHECK(std::abs(q.value / ref - 1) < tol);
+      CHECK(q.estimated_error >= std::abs(q.value - ref));
+      CHECK(q.method == G0Method::quadrature);
+    }
   }
 }
 
