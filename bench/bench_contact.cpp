@@ -1,6 +1,7 @@
 // Contact solver cost on the Hertz problem (DC-FFT operator): Polonsky-Keer iterations to a
-// relative pressure change of 1e-10 at N = 128 ... 1024, and the wall time of a solve as a multiple
-// of one operator application timed in the same run. Prints `# key = value` headers and CSV rows,
+// relative pressure change of 1e-10 at N = 128 ... 1024, classic and preconditioned, under load and
+// approach control, and the wall time of a solve as a multiple of one operator application timed
+// in the same run. Prints `# key = value` headers and CSV rows,
 // and writes the same to bench/results/contact.csv (or the path given as first argument).
 // Usage: bench_contact [output.csv] [--measure]   (FFTW_ESTIMATE unless --measure)
 #include <fftw3.h>
@@ -27,9 +28,9 @@ namespace {
 using namespace coatfft;
 using Clock = std::chrono::steady_clock;
 
-constexpr double kModulus = 1e11;  // E* [Pa]
-constexpr double kRadius = 0.01;   // R [m]
-constexpr double kLoad = 10.0;     // W [N]
+constexpr double kModulus = 1e11;   // E* [Pa]
+constexpr double kRadius = 0.01;    // R [m]
+constexpr double kLoad = 10.0;      // W [N]
 constexpr double kHalfWidth = 1.5;  // domain [-1.5 a, 1.5 a]^2, as in contact_table
 
 double ms_since(Clock::time_point start) {
@@ -48,6 +49,7 @@ std::string cpu_name() {
 struct Row {
   std::ptrdiff_t n;
   std::string control;
+  bool preconditioned;
   int iterations;
   double residual;
   bool converged;
@@ -60,7 +62,7 @@ struct Row {
   double load_or_approach_error;
 };
 
-Row run(std::ptrdiff_t n, ContactControl control, Planning planning) {
+Row run(std::ptrdiff_t n, ContactControl control, bool preconditioned, Planning planning) {
   const HertzSphere ref = hertz_sphere_for_load(kLoad, kRadius, kModulus);
   const double width = 2 * kHalfWidth * ref.contact_radius;
   const Grid grid(n, n, width, width);
@@ -87,7 +89,8 @@ Row run(std::ptrdiff_t n, ContactControl control, Planning planning) {
   std::sort(times.begin(), times.end());
   ContactOptions opts;
   opts.compute_approach = true;
-  ContactSolver solver(op, opts);
+  opts.preconditioned = preconditioned;
+  ContactSolver solver(op, opts);  // plans the preconditioner: outside the timed solve
   const auto start = Clock::now();
   const ContactResult res = control == ContactControl::load
                                 ? solver.solve_load(h, kLoad)
@@ -98,6 +101,7 @@ Row run(std::ptrdiff_t n, ContactControl control, Planning planning) {
                                  : res.load / ref.load - 1;
   return {n,
           control == ContactControl::load ? "load" : "approach",
+          preconditioned,
           res.iterations,
           res.residual,
           res.converged && !res.touches_boundary,
@@ -131,30 +135,34 @@ int main(int argc, char** argv) {
         << "# compiler = g++ " << __VERSION__ << "\n"
         << "# build_flags = " << COATFFT_BENCH_FLAGS << "\n"
         << "# fftw = " << fftw_version << "\n"
-        << "# fftw_flags = "
-        << (planning == Planning::measure ? "FFTW_MEASURE" : "FFTW_ESTIMATE") << "\n"
+        << "# fftw_flags = " << (planning == Planning::measure ? "FFTW_MEASURE" : "FFTW_ESTIMATE")
+        << "\n"
         << "# fftw_threads = 1\n"
         << "# problem = R " << kRadius << " m, E* " << kModulus << " Pa, W " << kLoad
         << " N, domain [-" << kHalfWidth << " a, " << kHalfWidth << " a]^2, exact sphere\n"
         << "# tolerance = 1e-10 (relative pressure change per iteration)\n"
-        << "# applies_per_solve = 2 iterations + 1 (load) or + 2 (approach)\n"
+        << "# applies_per_solve = 2 iterations + 1 (load) or + 2 (approach); preconditioned = 1\n"
+        << "#   adds one periodic N x N FFT pair per iteration (the |k| multiplier)\n"
         << "# columns: errors are relative to Hertz (a from sqrt(A/pi)); third_error is the\n"
         << "#   approach error under load control and the load error under approach control\n"
-        << "control,N,iterations,residual,converged,plan_ms,apply_ms_min,apply_ms_median,"
+        << "control,preconditioned,N,iterations,residual,converged,plan_ms,apply_ms_min,apply_ms_"
+           "median,"
            "solve_ms,solve_over_apply,a_error,p0_error,third_error\n";
     std::cout << out.str() << std::flush;
     for (const std::ptrdiff_t n : {128, 256, 512, 1024}) {
       for (const ContactControl control : {ContactControl::load, ContactControl::approach}) {
-        const Row r = run(n, control, planning);
-        std::ostringstream row;
-        row.precision(4);
-        row << r.control << "," << r.n << "," << r.iterations << "," << r.residual << ","
-            << (r.converged ? 1 : 0) << "," << r.plan_ms << "," << r.apply_ms_min << ","
-            << r.apply_ms_median << "," << r.solve_ms << ","
-            << r.solve_ms / r.apply_ms_median << "," << r.radius_error << ","
-            << r.pressure_error << "," << r.load_or_approach_error << "\n";
-        std::cout << row.str() << std::flush;
-        out << row.str();
+        for (const bool preconditioned : {true, false}) {
+          const Row r = run(n, control, preconditioned, planning);
+          std::ostringstream row;
+          row.precision(4);
+          row << r.control << "," << (r.preconditioned ? 1 : 0) << "," << r.n << "," << r.iterations
+              << "," << r.residual << "," << (r.converged ? 1 : 0) << "," << r.plan_ms << ","
+              << r.apply_ms_min << "," << r.apply_ms_median << "," << r.solve_ms << ","
+              << r.solve_ms / r.apply_ms_median << "," << r.radius_error << "," << r.pressure_error
+              << "," << r.load_or_approach_error << "\n";
+          std::cout << row.str() << std::flush;
+          out << row.str();
+        }
       }
     }
     std::ofstream file(path);

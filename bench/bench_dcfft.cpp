@@ -23,6 +23,8 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "convolution/dcfft_operator.hpp"
@@ -46,8 +48,8 @@ struct Timing {
   int reps;
 };
 
-// Runs `f` once to warm up, then repeatedly for about `budget_s` seconds (at least 5, at most
-// 101 times); the median is robust to the other processes sharing the machine.
+// Runs `f` once to warm up, then repeatedly for about `budget_s` seconds (5 to 101 times); the
+// median is robust to the other processes sharing the machine.
 Timing time_it(const std::function<void()>& f, double budget_s = 1.5) {
   f();
   const auto t0 = Clock::now();
@@ -167,35 +169,64 @@ std::string csv(const Row& r) {
   return os.str();
 }
 
-void dcfft_vs_bare(std::ptrdiff_t n, int threads, std::vector<Row>& rows, std::ostream& log,
-                   double* rss_after_dcfft) {
+// Times `f` and `g` alternately (one warm-up each, then about `budget_s` seconds, 5 to 101
+// pairs), so that both see the same load from other processes on a shared machine.
+std::pair<Timing, Timing> time_pair(const std::function<void()>& f, const std::function<void()>& g,
+                                    double budget_s = 3.0) {
+  const auto t0 = Clock::now();
+  f();
+  g();
+  const double once = std::chrono::duration<double>(Clock::now() - t0).count();
+  const int reps = std::clamp(static_cast<int>(budget_s / std::max(once, 1e-9)), 5, 101);
+  std::vector<double> tf, tg;
+  for (int r = 0; r < reps; ++r) {
+    auto s = Clock::now();
+    f();
+    tf.push_back(std::chrono::duration<double, std::milli>(Clock::now() - s).count());
+    s = Clock::now();
+    g();
+    tg.push_back(std::chrono::duration<double, std::milli>(Clock::now() - s).count());
+  }
+  std::sort(tf.begin(), tf.end());
+  std::sort(tg.begin(), tg.end());
+  return {{tf.front(), tf[tf.size() / 2], reps}, {tg.front(), tg[tg.size() / 2], reps}};
+}
+
+void dcfft_vs_bare(std::ptrdiff_t n, int threads, std::vector<Row>& rows, std::ostream& log) {
   const coatfft::Grid grid(n, n, 2e-3, 2e-3);
   const coatfft::Field p = random_pressure(n, 42u);
   coatfft::Field u;
   Row dc{"dcfft", n, threads, 0, {}, 0, 0, 0};
-  {
-    coatfft::DcfftOperator op(coatfft::love_kernel(grid, e_star), coatfft::Planning::measure,
-                              threads);
-    dc.plan_ms = op.setup_seconds() * 1e3;
-    dc.t = time_it([&] { op.apply(p, u); });
-    if (rss_after_dcfft != nullptr) *rss_after_dcfft = peak_rss_mb();
-  }
   Row bare{"bare_fftw_padded", n, threads, 0, {}, 1.0, 0, 0};
-  {
-    BarePadded b(coatfft::love_kernel(grid, e_star), threads);
-    b.load(p);
-    bare.plan_ms = b.plan_ms();
-    bare.t = time_it([&] { b.run(); });
-    b.load(p);
-    b.run();
-    const coatfft::Field plain = b.crop();
-    dc.err_l2 = coatfft::rel_l2(u, plain);
-    dc.err_inf = coatfft::rel_linf(u, plain);
-  }
+  coatfft::DcfftOperator op(coatfft::love_kernel(grid, e_star), coatfft::Planning::measure,
+                            threads);
+  dc.plan_ms = op.setup_seconds() * 1e3;
+  BarePadded b(coatfft::love_kernel(grid, e_star), threads);
+  b.load(p);
+  bare.plan_ms = b.plan_ms();
+  std::tie(dc.t, bare.t) = time_pair([&] { op.apply(p, u); }, [&] { b.run(); });
+  b.load(p);
+  b.run();
+  const coatfft::Field plain = b.crop();
+  dc.err_l2 = coatfft::rel_l2(u, plain);
+  dc.err_inf = coatfft::rel_linf(u, plain);
   dc.ratio = dc.t.median_ms / bare.t.median_ms;
   rows.push_back(dc);
   rows.push_back(bare);
   log << csv(dc) << '\n' << csv(bare) << std::endl;
+}
+
+// Peak RSS of a child process that builds and applies one N^2 DcfftOperator and nothing else.
+double child_peak_rss_mb(const char* self, std::ptrdiff_t n) {
+  const std::string cmd = std::string(self) + " --rss " + std::to_string(n);
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (pipe == nullptr) return -1.0;
+  char line[256];
+  double mb = -1.0;
+  while (std::fgets(line, sizeof line, pipe) != nullptr)
+    std::sscanf(line, "# peak_rss_MB = %lf", &mb);
+  pclose(pipe);
+  return mb;
 }
 
 void direct_vs_dcfft(std::ptrdiff_t n, std::vector<Row>& rows, std::ostream& log) {
@@ -257,20 +288,18 @@ int main(int argc, char** argv) {
         << "method,N,threads,plan_ms,apply_ms_min,apply_ms_median,ratio,rel_err_l2,rel_err_inf\n";
     std::cout << header.str() << std::flush;
     std::vector<Row> rows;
-    double rss_2048 = 0.0;
-    for (std::ptrdiff_t n : {256, 512, 1024, 2048}) {
-      if (n > max_n) break;
-      dcfft_vs_bare(n, 1, rows, std::cout, n == 2048 ? &rss_2048 : nullptr);
-    }
+    for (std::ptrdiff_t n : {256, 512, 1024, 2048})
+      if (n <= max_n) dcfft_vs_bare(n, 1, rows, std::cout);
     for (std::ptrdiff_t n : {1024, 2048})
-      if (n <= max_n) dcfft_vs_bare(n, 2, rows, std::cout, nullptr);
+      if (n <= max_n) dcfft_vs_bare(n, 2, rows, std::cout);
     for (std::ptrdiff_t n : {32, 64}) direct_vs_dcfft(n, rows, std::cout);
 
     std::ostringstream body;
     for (const Row& r : rows) body << csv(r) << '\n';
     std::ostringstream footer;
-    if (rss_2048 > 0) footer << "# peak_rss_MB_after_dcfft_2048 = " << rss_2048 << "\n";
-    footer << "# peak_rss_MB_total = " << peak_rss_mb() << "\n";
+    footer << "# peak_rss_MB_dcfft_only_" << max_n << " = " << child_peak_rss_mb(argv[0], max_n)
+           << "   (child process: love_kernel + DcfftOperator + p + u, FFTW_MEASURE)\n";
+    footer << "# peak_rss_MB_this_run = " << peak_rss_mb() << "   (includes the bare pipeline)\n";
     std::cout << footer.str();
     std::filesystem::create_directories(std::filesystem::path(out_path).parent_path());
     std::ofstream out(out_path);

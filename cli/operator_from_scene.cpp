@@ -5,14 +5,31 @@
 #include "convolution/dcfft_operator.hpp"
 #include "convolution/direct_operator.hpp"
 #include "convolution/fftw_plan.hpp"
+#include "convolution/frf_influence_kernel.hpp"
+#include "convolution/frf_spectral_operator.hpp"
+#include "convolution/g0.hpp"
 #include "convolution/influence_kernel.hpp"
+#include "convolution/split_frf_kernel.hpp"
 #include "core/error.hpp"
+#include "frf/frf.hpp"
 
 namespace coatfft::cli {
+
+namespace {
+
+nlohmann::json g0_report(const G0Result& g0) {
+  return {{"g0", g0.value},
+          {"g0_method", std::string(to_string(g0.method))},
+          {"g0_seconds", g0.seconds},
+          {"g0_estimated_error", g0.estimated_error}};
+}
+
+}  // namespace
 
 BuiltOperator operator_from_scene(const Scene& scene) {
   const MethodSpec& method = scene.method;
   const Planning planning = method.planning == "measure" ? Planning::measure : Planning::estimate;
+  const G0Method g0_method = method.g0 == "quadrature" ? G0Method::quadrature : G0Method::regularized;
   if (!method.wisdom.empty()) load_fftw_wisdom(method.wisdom.string());
 
   BuiltOperator built;
@@ -29,7 +46,29 @@ BuiltOperator operator_from_scene(const Scene& scene) {
     else
       built.op = std::make_unique<DirectOperator>(kernel);
   } else {
-    throw InvalidArgument(detail::concat("[method] name = \"", method.name, "\" is not built in"));
+    const auto frf = make_frf(scene.body);
+    built.report["frf"] = frf->name();
+    if (method.name == "frf-spectral") {
+      auto op = std::make_unique<FrfSpectralOperator>(scene.grid, *frf, method.alpha, g0_method,
+                                                      method.g0_tol, planning, method.threads);
+      built.report.update(g0_report(op->g0()));
+      built.report["alpha"] = method.alpha;
+      built.op = std::move(op);
+    } else if (method.name == "frf-dcfft") {
+      G0Result g0{};
+      const InfluenceKernel kernel =
+          frf_influence_kernel(scene.grid, *frf, method.alpha, g0_method, method.g0_tol, &g0);
+      built.report.update(g0_report(g0));
+      built.report["alpha"] = method.alpha;
+      built.op = std::make_unique<DcfftOperator>(kernel, planning, method.threads);
+    } else {
+      // The split kernel needs no g(0): the singular part of H is taken in closed form in space.
+      SplitKernelReport report;
+      const InfluenceKernel kernel = split_frf_kernel(scene.grid, *frf, {}, &report);
+      built.report["split_beta"] = report.beta;
+      built.report["split_seconds"] = report.seconds;
+      built.op = std::make_unique<DcfftOperator>(kernel, planning, method.threads);
+    }
   }
   built.setup_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -73,10 +73,12 @@ double time_applications(SurfaceOperator& op, const Field& pressure, Field& uz, 
 // the lower index (centre at -d/2) is taken.
 Eigen::Index centre_index(std::ptrdiff_t n) { return static_cast<Eigen::Index>((n - 1) / 2); }
 
-nlohmann::json common_summary(const Grid& grid, const BuiltOperator& built, double apply_seconds,
+nlohmann::json common_summary(const Scene& scene, const BuiltOperator& built, double apply_seconds,
                               int repeat, const Field& pressure, const Field& uz) {
+  const Grid& grid = scene.grid;
   nlohmann::json summary;
-  summary["method"] = built.op->name();
+  // The scene's method name: frf-dcfft and frf-split run the DcfftOperator on their own kernels.
+  summary["method"] = scene.method.name;
   summary["nx"] = grid.nx();
   summary["ny"] = grid.ny();
   summary["lx"] = grid.lx();
@@ -136,7 +138,7 @@ RunStatus run_pressure(const Scene& scene, const RunOptions& options) {
   Field uz;
   const double apply_seconds = time_applications(*built.op, pressure, uz, options.repeat);
 
-  nlohmann::json summary = common_summary(grid, built, apply_seconds, options.repeat, pressure, uz);
+  nlohmann::json summary = common_summary(scene, built, apply_seconds, options.repeat, pressure, uz);
   const PressureSpec& load = *scene.pressure;
   if (load.kind == "hertz" && scene.body.is_homogeneous()) {
     summary["max_error_vs_hertz"] = max_error_vs_hertz(
@@ -177,7 +179,7 @@ RunStatus run_contact(Scene scene, const RunOptions& options) {
   Field uz;
   const double apply_seconds = time_applications(*built.op, result.pressure, uz, options.repeat);
   nlohmann::json summary =
-      common_summary(grid, built, apply_seconds, options.repeat, result.pressure, result.displacement);
+      common_summary(scene, built, apply_seconds, options.repeat, result.pressure, result.displacement);
   summary["indenter"] = spec.indenter_name;
   summary["solve_seconds"] = solve_seconds;
   summary["load"] = result.load;

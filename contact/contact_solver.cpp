@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 
+#include "contact/fourier_preconditioner.hpp"
 #include "core/error.hpp"
 
 namespace coatfft {
@@ -36,9 +37,15 @@ ContactSolver::ContactSolver(SurfaceOperator& op, ContactOptions options)
   COATFFT_REQUIRE(std::isfinite(options_.tolerance) && options_.tolerance > 0,
                   "ContactSolver: tolerance = ", options_.tolerance,
                   ", but it must be finite and > 0");
-  COATFFT_REQUIRE(options_.max_iterations >= 1, "ContactSolver: max_iterations = ",
-                  options_.max_iterations, ", but it must be >= 1");
+  COATFFT_REQUIRE(options_.max_iterations >= 1,
+                  "ContactSolver: max_iterations = ", options_.max_iterations,
+                  ", but it must be >= 1");
+  if (options_.preconditioned) {
+    preconditioner_ = std::make_unique<detail::FourierPreconditioner>(op_.grid());
+  }
 }
+
+ContactSolver::~ContactSolver() = default;
 
 ContactResult ContactSolver::solve_load(const Field& height, double load) {
   COATFFT_REQUIRE(std::isfinite(load) && load > 0, "ContactSolver: load = ", load,
@@ -83,6 +90,7 @@ ContactResult ContactSolver::run(const Field& h, ContactControl control, double 
   Field t = Field::Zero(nx, ny);
   Field r(nx, ny);
   Field p_old(nx, ny);
+  Field z(nx, ny);  // preconditioned gap (aliases g's role when not preconditioned)
 
   if (load_control) {
     // Polonsky & Keer's start: the load spread uniformly over the whole domain.
@@ -94,8 +102,8 @@ ContactResult ContactSolver::run(const Field& h, ContactControl control, double 
     const auto n_overlap = overlap.count();
     p = overlap.cast<double>();
     op_.apply(p, u);
-    const double scale = masked_mean(delta - h, overlap, n_overlap) /
-                         masked_mean(u, overlap, n_overlap);
+    const double scale =
+        masked_mean(delta - h, overlap, n_overlap) / masked_mean(u, overlap, n_overlap);
     COATFFT_REQUIRE(std::isfinite(scale) && scale > 0, "ContactSolver: operator '", op_.name(),
                     "' returned a non-positive mean displacement under a positive pressure");
     p *= scale;
@@ -111,7 +119,8 @@ ContactResult ContactSolver::run(const Field& h, ContactControl control, double 
   double* td = t.data();
   double* rd = r.data();
   double* qd = p_old.data();
-  double g_norm_old = 1.0;
+  double* zd = z.data();
+  double g_dot_z_old = 1.0;
   bool conjugate = false;  // Polonsky & Keer's delta: keep the previous direction (no new contacts)
   double residual = std::numeric_limits<double>::infinity();
   int iteration = 0;
@@ -144,10 +153,35 @@ ContactResult ContactSolver::run(const Field& h, ContactControl control, double 
       result.converged = true;
       break;
     }
-    // Step 2: conjugate direction on I_c (PK eqs. for t); restart when the set grew.
-    const double beta = conjugate ? g_norm / g_norm_old : 0.0;
-    for (std::ptrdiff_t k = 0; k < n_cells; ++k) td[k] = pd[k] > 0 ? gd[k] + beta * td[k] : 0.0;
-    g_norm_old = g_norm;
+    // Step 2: search direction. Preconditioned: z = P M P g with M ~ K^-1 (the |k| multiplier) and
+    // P the restriction to I_c (and, under load control, to zero mean on I_c, the tangent space of
+    // the load constraint); P M P is symmetric positive definite there, so this is preconditioned
+    // CG on the contact block, and a constant in g still cancels. Unpreconditioned: z = g.
+    double g_dot_z = g_norm;
+    const double* direction = gd;
+    if (preconditioner_) {
+      for (std::ptrdiff_t k = 0; k < n_cells; ++k) zd[k] = pd[k] > 0 ? gd[k] : 0.0;
+      preconditioner_->apply(z);
+      double z_mean = 0.0;
+      if (load_control) {
+        for (std::ptrdiff_t k = 0; k < n_cells; ++k) {
+          if (pd[k] > 0) z_mean += zd[k];
+        }
+        z_mean /= static_cast<double>(n_contact);
+      }
+      g_dot_z = 0.0;
+      for (std::ptrdiff_t k = 0; k < n_cells; ++k) {
+        zd[k] = pd[k] > 0 ? zd[k] - z_mean : 0.0;
+        g_dot_z += gd[k] * zd[k];
+      }
+      direction = zd;
+    }
+    // Conjugate direction on I_c (PK eqs. for t); restart when the set grew.
+    const double beta = conjugate ? g_dot_z / g_dot_z_old : 0.0;
+    for (std::ptrdiff_t k = 0; k < n_cells; ++k) {
+      td[k] = pd[k] > 0 ? direction[k] + beta * td[k] : 0.0;
+    }
+    g_dot_z_old = g_dot_z;
     // Step 3: step length along t. Under load control the mean of K t over I_c is removed: a
     // constant displacement is absorbed by the approach, so it must not steer the step. This is
     // also what makes the iterates independent of the operator's g(0).
@@ -226,9 +260,9 @@ ContactResult ContactSolver::run(const Field& h, ContactControl control, double 
            "small for this load");
   }
   if (!result.converged && result.warning.find("breakdown") == std::string::npos) {
-    append(result.warning, detail::concat("not converged after ", iteration,
-                                          " iterations (residual ", residual, ", tolerance ",
-                                          options_.tolerance, ")"));
+    append(result.warning,
+           detail::concat("not converged after ", iteration, " iterations (residual ", residual,
+                          ", tolerance ", options_.tolerance, ")"));
   }
   return result;
 }

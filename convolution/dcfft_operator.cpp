@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <complex>
-#include <cstdlib>
 #include <thread>
 
 #include "core/error.hpp"
@@ -13,7 +12,8 @@ namespace {
 
 // Bytes of one worker's block of y transforms: small enough to stay in L2 while it is gathered,
 // transformed forward, filtered, transformed back and scattered (one pass over main memory).
-constexpr std::ptrdiff_t block_bytes = 128 * 1024;
+// 32-256 KiB measured alike at 1024^2 and 2048^2; 128 KiB and more lost ~20% at 256^2.
+constexpr std::ptrdiff_t block_bytes = 64 * 1024;
 
 // True when K(di, dj) = K(-di, dj) = K(di, -dj) exactly; then the DFT of the wrapped array is
 // real and even, and equals a 2-D DCT-I of its (nx + 1) x (ny + 1) corner.
@@ -60,9 +60,7 @@ DcfftOperator::DcfftOperator(const InfluenceKernel& kernel, Planning planning, i
   });
 
   // y transforms (length 2ny) of the hx spectrum columns, by blocks of block_ columns.
-  std::ptrdiff_t bb = block_bytes;
-  if (const char* e = std::getenv("COATFFT_TUNE_BLOCK")) bb = std::atol(e);  // TUNING ONLY
-  block_ = std::clamp<std::ptrdiff_t>(bb / (my_ * 16), 1, hx_);
+  block_ = std::clamp<std::ptrdiff_t>(block_bytes / (my_ * 16), 1, hx_);
   nb_blocks_ = (hx_ + block_ - 1) / block_;
   const auto nb_workers = static_cast<std::size_t>(std::min<std::ptrdiff_t>(threads, nb_blocks_));
   const int n_y[1] = {static_cast<int>(my_)};
@@ -73,8 +71,8 @@ DcfftOperator::DcfftOperator(const InfluenceKernel& kernel, Planning planning, i
     for (auto [plan, sign] :
          {std::pair{&w.forward_y, FFTW_FORWARD}, {&w.backward_y, FFTW_BACKWARD}})
       *plan = FftwPlan::create(1, [&] {
-        return fftw_plan_many_dft(1, n_y, bw, w.block.data(), nullptr, bw, 1, w.block.data(),
-                                  nullptr, bw, 1, sign, flags);
+        return fftw_plan_many_dft(1, n_y, bw, w.block.data(), nullptr, 1, 2 * ny, w.block.data(),
+                                  nullptr, 1, 2 * ny, sign, flags);
       });
   }
 
@@ -90,35 +88,48 @@ DcfftOperator::DcfftOperator(const InfluenceKernel& kernel, Planning planning, i
 
 void DcfftOperator::compute_even_spectrum(const Field& wrapped) {
   // DFT of the 2n-periodic even sequence = DCT-I (FFTW REDFT00) of its first n + 1 entries; the
-  // slots nx, ny are the zeros the wrap-around layout leaves there. One-off: FFTW_ESTIMATE.
-  const std::ptrdiff_t rows = ny_ + 1;
-  kernel_even_ = FftwRealBuffer(static_cast<std::size_t>(rows * hx_));
+  // slots nx, ny are the zeros the wrap-around layout leaves there. Stored column-major, [kx][ky],
+  // like the blocks it multiplies. One-off: FFTW_ESTIMATE.
+  const std::ptrdiff_t len = ny_ + 1;
+  kernel_even_ = FftwRealBuffer(static_cast<std::size_t>(hx_ * len));
   double* k = kernel_even_.data();
   const FftwPlan dct = FftwPlan::create(threads_, [&] {
-    return fftw_plan_r2r_2d(static_cast<int>(rows), static_cast<int>(hx_), k, k, FFTW_REDFT00,
+    return fftw_plan_r2r_2d(static_cast<int>(hx_), static_cast<int>(len), k, k, FFTW_REDFT00,
                             FFTW_REDFT00, FFTW_ESTIMATE);
   });
-  for (std::ptrdiff_t ky = 0; ky < rows; ++ky)
-    for (std::ptrdiff_t kx = 0; kx < hx_; ++kx) k[ky * hx_ + kx] = wrapped(kx, ky);
+  for (std::ptrdiff_t kx = 0; kx < hx_; ++kx)
+    for (std::ptrdiff_t ky = 0; ky < len; ++ky) k[kx * len + ky] = wrapped(kx, ky);
   dct.execute();
   const double scale = 1.0 / static_cast<double>(mx_ * my_);
-  std::for_each(k, k + rows * hx_, [scale](double& v) { v *= scale; });
+  std::for_each(k, k + hx_ * len, [scale](double& v) { v *= scale; });
 }
 
 void DcfftOperator::compute_general_spectrum(const Field& wrapped) {
-  // In-place 2-D r2c of the whole wrapped array: its padded real layout (row stride 2 hx) has
-  // exactly the size of the half spectrum kept, so no second full-size array is needed.
-  kernel_general_ = FftwComplexBuffer(static_cast<std::size_t>(my_ * hx_));
-  double* real = reinterpret_cast<double*>(kernel_general_.data());
-  const FftwPlan r2c = FftwPlan::create(threads_, [&] {
-    return fftw_plan_dft_r2c_2d(static_cast<int>(my_), static_cast<int>(mx_), real,
-                                kernel_general_.data(), FFTW_ESTIMATE);
-  });
-  for (std::ptrdiff_t j = 0; j < my_; ++j) std::copy_n(&wrapped(0, j), mx_, real + j * 2 * hx_);
-  r2c.execute();
-  const double scale = 1.0 / static_cast<double>(mx_ * my_);
+  // Column-major [kx][ky] half spectrum, built without a second full-size array: r2c of each of
+  // the 2ny rows through a one-row buffer, scattered into the columns, then the y transforms in
+  // place. One-off: FFTW_ESTIMATE.
+  kernel_general_ = FftwComplexBuffer(static_cast<std::size_t>(hx_ * my_));
   std::complex<double>* k = as_complex(kernel_general_.data());
-  std::for_each(k, k + my_ * hx_, [scale](std::complex<double>& v) { v *= scale; });
+  FftwRealBuffer row(static_cast<std::size_t>(mx_));
+  FftwComplexBuffer row_hat(static_cast<std::size_t>(hx_));
+  const FftwPlan r2c = FftwPlan::create(1, [&] {
+    return fftw_plan_dft_r2c_1d(static_cast<int>(mx_), row.data(), row_hat.data(), FFTW_ESTIMATE);
+  });
+  const int n_y[1] = {static_cast<int>(my_)};
+  const FftwPlan dft_y = FftwPlan::create(threads_, [&] {
+    return fftw_plan_many_dft(1, n_y, static_cast<int>(hx_), kernel_general_.data(), nullptr, 1,
+                              static_cast<int>(my_), kernel_general_.data(), nullptr, 1,
+                              static_cast<int>(my_), FFTW_FORWARD, FFTW_ESTIMATE);
+  });
+  const std::complex<double>* h = as_complex(row_hat.data());
+  for (std::ptrdiff_t j = 0; j < my_; ++j) {
+    std::copy_n(&wrapped(0, j), mx_, row.data());
+    r2c.execute();
+    for (std::ptrdiff_t kx = 0; kx < hx_; ++kx) k[kx * my_ + j] = h[kx];
+  }
+  dft_y.execute();
+  const double scale = 1.0 / static_cast<double>(mx_ * my_);
+  std::for_each(k, k + hx_ * my_, [scale](std::complex<double>& v) { v *= scale; });
 }
 
 void DcfftOperator::convolve_columns(Worker& worker, std::ptrdiff_t first_block,
@@ -126,36 +137,41 @@ void DcfftOperator::convolve_columns(Worker& worker, std::ptrdiff_t first_block,
   std::complex<double>* rows = as_complex(rows_.data());
   std::complex<double>* t = as_complex(worker.block.data());
   const std::ptrdiff_t bw = block_;
+  const std::ptrdiff_t my = my_;
+  const std::ptrdiff_t ny = ny_;
   const std::complex<double> zero(0.0, 0.0);
   for (std::ptrdiff_t b = first_block; b < end_block; ++b) {
     const std::ptrdiff_t c0 = b * bw;
     const std::ptrdiff_t width = std::min(bw, hx_ - c0);
-    // Gather the ny data rows of these columns; the rows ny..2ny-1 are the zero padding in y.
-    for (std::ptrdiff_t ky = 0; ky < ny_; ++ky) {
-      std::copy_n(rows + ky * hx_ + c0, width, t + ky * bw);
-      std::fill(t + ky * bw + width, t + (ky + 1) * bw, zero);
+    // Gather (transpose) the ny data rows of these columns into contiguous columns of length
+    // 2ny, whose second half is the zero padding in y: stride-1 y transforms are ~30% faster
+    // than strided ones, and the block stays in cache from gather to scatter.
+    for (std::ptrdiff_t ky = 0; ky < ny; ++ky) {
+      const std::complex<double>* src = rows + ky * hx_ + c0;
+      for (std::ptrdiff_t c = 0; c < width; ++c) t[c * my + ky] = src[c];
     }
-    std::fill(t + ny_ * bw, t + my_ * bw, zero);
+    for (std::ptrdiff_t c = 0; c < bw; ++c) {
+      std::fill(t + c * my + (c < width ? ny : 0), t + (c + 1) * my, zero);
+    }
     worker.forward_y.execute();
-    if (even_) {
-      const double* k = kernel_even_.data();
-      for (std::ptrdiff_t ky = 0; ky < my_; ++ky) {
-        const double* kr = k + (ky <= ny_ ? ky : my_ - ky) * hx_ + c0;
-        std::complex<double>* tr = t + ky * bw;
-        for (std::ptrdiff_t c = 0; c < width; ++c) tr[c] *= kr[c];
-      }
-    } else {
-      const std::complex<double>* k = as_complex(kernel_general_.data());
-      for (std::ptrdiff_t ky = 0; ky < my_; ++ky) {
-        const std::complex<double>* kr = k + ky * hx_ + c0;
-        std::complex<double>* tr = t + ky * bw;
-        for (std::ptrdiff_t c = 0; c < width; ++c) tr[c] *= kr[c];
+    for (std::ptrdiff_t c = 0; c < width; ++c) {
+      std::complex<double>* col = t + c * my;
+      if (even_) {
+        // Real, even spectrum: rows ky > ny mirror 2ny - ky.
+        const double* k = kernel_even_.data() + (c0 + c) * (ny + 1);
+        for (std::ptrdiff_t ky = 0; ky <= ny; ++ky) col[ky] *= k[ky];
+        for (std::ptrdiff_t ky = ny + 1; ky < my; ++ky) col[ky] *= k[my - ky];
+      } else {
+        const std::complex<double>* k = as_complex(kernel_general_.data()) + (c0 + c) * my;
+        for (std::ptrdiff_t ky = 0; ky < my; ++ky) col[ky] *= k[ky];
       }
     }
     worker.backward_y.execute();
     // Only the rows ky < ny of the inverse are inside the crop.
-    for (std::ptrdiff_t ky = 0; ky < ny_; ++ky)
-      std::copy_n(t + ky * bw, width, rows + ky * hx_ + c0);
+    for (std::ptrdiff_t ky = 0; ky < ny; ++ky) {
+      std::complex<double>* dst = rows + ky * hx_ + c0;
+      for (std::ptrdiff_t c = 0; c < width; ++c) dst[c] = t[c * my + ky];
+    }
   }
 }
 

@@ -39,8 +39,8 @@ class DcfftOperator final : public SurfaceOperator {
   bool even_kernel() const { return even_; }
 
  private:
-  // One worker's scratch: a block of `block_` spectrum columns, all 2ny rows, row-major
-  // (row ky holds block_ complex numbers), with its own in-place y plans.
+  // One worker's scratch: a block of `block_` spectrum columns of all 2ny rows, column-major
+  // (each column contiguous), with its own in-place y plans.
   struct Worker {
     FftwComplexBuffer block;
     FftwPlan forward_y;
@@ -66,8 +66,8 @@ class DcfftOperator final : public SurfaceOperator {
   FftwComplexBuffer rows_;
   FftwPlan forward_x_;
   FftwPlan backward_x_;
-  // Kernel spectrum times 1/(4 nx ny), row-major [ky][kx]: real (ny + 1) x hx when even_ (the
-  // rows ky > ny mirror ky' = 2ny - ky), else complex 2ny x hx.
+  // Kernel spectrum times 1/(4 nx ny), column-major [kx][ky]: real hx x (ny + 1) when even_
+  // (ky > ny mirrors 2ny - ky), else complex hx x 2ny.
   FftwRealBuffer kernel_even_;
   FftwComplexBuffer kernel_general_;
   std::vector<Worker> workers_;

@@ -56,13 +56,16 @@ class OffsetOperator final : public SurfaceOperator {
 
 TEST_CASE("Hertz sphere on DC-FFT: radius, peak pressure and approach", "[contact][hertz]") {
   const std::ptrdiff_t n = GENERATE(64, 128);
+  const bool preconditioned = GENERATE(true, false);
   const HertzProblem hp(n);
   DcfftOperator op(love_kernel(hp.grid, kModulus));
   ContactOptions opts;
   opts.compute_approach = true;
+  opts.preconditioned = preconditioned;
   ContactSolver solver(op, opts);
   const ContactResult res = solver.solve_load(hp.h, kLoad);
-  INFO("n = " << n << ", iterations = " << res.iterations << ", residual = " << res.residual);
+  INFO("n = " << n << ", preconditioned = " << preconditioned << ", iterations = " << res.iterations
+              << ", residual = " << res.residual);
   REQUIRE(res.converged);
   REQUIRE(res.contact_radius.has_value());
   REQUIRE(res.approach.has_value());
@@ -78,16 +81,16 @@ TEST_CASE("Hertz sphere on DC-FFT: radius, peak pressure and approach", "[contac
   const double tol2 = 0.5 * (dx / a) * (dx / a);
   CHECK(std::abs(res.max_pressure / hp.reference.max_pressure - 1) <= tol2);
   CHECK(std::abs(*res.approach / hp.reference.approach - 1) <= tol2);
-  // Pointwise pressure against p0 sqrt(1 - r^2/a^2): the edge cells carry the O(sqrt(dx/a))
-  // error of the square-root profile, so measure it in the relative l2 norm (measured 1.4e-2 and
-  // 8e-3): below sqrt(dx/a)/4.
+  // Pointwise pressure against p0 sqrt(1 - r^2/a^2): the cells of the ring r ~ a carry an error of
+  // order p0 sqrt(dx/a) on an area ~ a dx, so the relative l2 error is O(dx/a) (measured 9.1e-3
+  // and 4.5e-3, i.e. 0.15 dx/a). Tolerance 0.3 dx/a.
   Field p_ref(n, n);
   for (std::ptrdiff_t j = 0; j < n; ++j) {
     for (std::ptrdiff_t i = 0; i < n; ++i) {
       p_ref(i, j) = hp.reference.pressure(std::hypot(hp.grid.x(i), hp.grid.y(j)));
     }
   }
-  CHECK(rel_l2(res.pressure, p_ref) <= 0.25 * std::sqrt(dx / a));
+  CHECK(rel_l2(res.pressure, p_ref) <= 0.3 * dx / a);
 }
 
 TEST_CASE("Solver constraints: load balance, p >= 0, complementary gap", "[contact]") {
@@ -95,6 +98,8 @@ TEST_CASE("Solver constraints: load balance, p >= 0, complementary gap", "[conta
   DcfftOperator op(love_kernel(hp.grid, kModulus));
   ContactOptions opts;
   opts.compute_approach = true;
+  opts.preconditioned = GENERATE(true, false);
+  INFO("preconditioned = " << opts.preconditioned);
   const ContactResult res = ContactSolver(op, opts).solve_load(hp.h, kLoad);
   REQUIRE(res.converged);
   // The load is imposed by a rescaling in every iteration: exact up to rounding of the sum.
@@ -107,14 +112,14 @@ TEST_CASE("Solver constraints: load balance, p >= 0, complementary gap", "[conta
   CHECK((!contact).select(res.gap, 1.0).minCoeff() >= -1e-12 * delta);
   // Inside, the gap vanishes to the solver tolerance: the last pressure change (relative 1e-10)
   // moves u by about that fraction times the condition of the contact block (tens): 1e-9.
-  // Measured 1e-11.
+  // Measured 1.3e-11 (classic), 5.5e-12 (preconditioned).
   CHECK(contact.select(res.gap.abs(), 0.0).maxCoeff() <= 1e-9 * delta);
   // Gap, displacement and approach are consistent: g = h + u - delta.
   CHECK(rel_linf(res.gap, hp.h + res.displacement - delta) <= 1e-14);
   CHECK_FALSE(res.touches_boundary);
   CHECK(res.warning.empty());
-  CHECK(res.contact_area == Approx(static_cast<double>(contact.count()) * hp.grid.dx() *
-                                   hp.grid.dy()));
+  CHECK(res.contact_area ==
+        Approx(static_cast<double>(contact.count()) * hp.grid.dx() * hp.grid.dy()));
 }
 
 TEST_CASE("Flat punch: load at a given approach is 2 a E* delta", "[contact][punch]") {
@@ -128,8 +133,11 @@ TEST_CASE("Flat punch: load at a given approach is 2 a E* delta", "[contact][pun
   // whose centres lie within that sliver: the solve sees a sharp punch of radius a + O(0.14 dx).
   const Field h = height(grid, FlatPunch{a, 0.01 * dx * dx / delta});
   DcfftOperator op(love_kernel(grid, kModulus));
-  const ContactResult res = ContactSolver(op).solve_approach(h, delta);
-  INFO("n = " << n << ", iterations = " << res.iterations);
+  ContactOptions opts;
+  opts.preconditioned = GENERATE(true, false);
+  const ContactResult res = ContactSolver(op, opts).solve_approach(h, delta);
+  INFO("n = " << n << ", preconditioned = " << opts.preconditioned
+              << ", iterations = " << res.iterations);
   REQUIRE(res.converged);
   REQUIRE(res.approach.has_value());
   CHECK(*res.approach == delta);
@@ -149,18 +157,21 @@ TEST_CASE("Approach control and load control give the same solution", "[contact]
   DcfftOperator op(love_kernel(hp.grid, kModulus));
   ContactOptions opts;
   opts.compute_approach = true;
+  opts.preconditioned = GENERATE(true, false);
+  INFO("preconditioned = " << opts.preconditioned);
   ContactSolver solver(op, opts);
   const ContactResult by_load = solver.solve_load(hp.h, kLoad);
   REQUIRE(by_load.converged);
   const ContactResult by_approach = solver.solve_approach(hp.h, *by_load.approach);
   REQUIRE(by_approach.converged);
-  // Both stop at a relative pressure change of 1e-10; the remaining error in the load is a small
-  // multiple of that (measured 2e-12). 1e-8 is the solver-consistency tier.
+  // Both stop at a relative pressure change of 1e-10; the remaining errors are a small multiple of
+  // that (measured 4e-12 / 7e-12 in the load, 1e-9 / 2.5e-10 in max-norm pressure, classic /
+  // preconditioned). 1e-8 is the solver-consistency tier.
   CHECK(std::abs(by_approach.load / kLoad - 1) <= 1e-8);
   CHECK(rel_linf(by_approach.pressure, by_load.pressure) <= 1e-8);
   CHECK(by_approach.contact_area == by_load.contact_area);
   // And the approach-controlled solve meets Hertz's W(delta) = (4/3) E* sqrt(R) delta^(3/2) to the
-  // discretisation tier (0.5 (dx/a)^2, times 3/2 for the power of delta): 3e-3.
+  // discretisation tier (0.5 (dx/a)^2, times 3/2 for the power of delta): 2.9e-3 (measured 3.4e-4).
   const double w_hertz = hertz_sphere_for_approach(*by_load.approach, kRadius, kModulus).load;
   CHECK(std::abs(by_approach.load / w_hertz - 1) <= 1.5 * 0.5 * std::pow(4.0 / 64.0, 2));
 }
@@ -168,30 +179,54 @@ TEST_CASE("Approach control and load control give the same solution", "[contact]
 TEST_CASE("Load control does not depend on g(0); the approach shifts by c W", "[contact][g0]") {
   const HertzProblem hp(64);
   DcfftOperator exact(love_kernel(hp.grid, kModulus));
-  // Tolerance 1e-12: two solves agree only to their stopping tolerance (different rounding sends
-  // the CG iterates along slightly different paths; measured differences 3e-11, 9e-11, 3e-13 at
-  // tolerances 1e-8, 1e-10, 1e-12), so the comparison needs a tolerance near the rounding floor
-  // (~1e-12 relative, where the iteration count starts to explode: 1e-14 needs 100-170).
+  // Two solves agree only to their stopping tolerance: different rounding sends the CG iterates
+  // along slightly different paths. The classic iteration amplifies it to the tolerance (measured
+  // pressure differences 3e-11, 6e-11, 3e-13 at tolerances 1e-8, 1e-10, 1e-12), so it is compared
+  // at 1e-12, near its rounding floor; the preconditioned one needs fewer iterations and stays at
+  // 5e-14 already at the default 1e-10.
   ContactOptions opts;
-  opts.tolerance = 1e-12;
+  opts.preconditioned = GENERATE(true, false);
+  opts.tolerance = opts.preconditioned ? 1e-10 : 1e-12;
   opts.compute_approach = true;
   const ContactResult ref = ContactSolver(exact, opts).solve_load(hp.h, kLoad);
   REQUIRE(ref.converged);
-  // c W = +-delta: a g(0) error as large as the whole approach, and one that would make it negative.
+  // c W = +-delta: a g(0) error as large as the whole approach, and one that would make it
+  // negative.
   const double c = GENERATE(1.0, -1.0) * hp.reference.approach / kLoad;
   OffsetOperator shifted(exact, c);
   const ContactResult res = ContactSolver(shifted, opts).solve_load(hp.h, kLoad);
-  INFO("c W / delta = " << c * kLoad / hp.reference.approach);
+  INFO("preconditioned = " << opts.preconditioned
+                           << ", c W / delta = " << c * kLoad / hp.reference.approach);
   REQUIRE(res.converged);
   // In exact arithmetic the iterates are identical (the constant is removed with the mean over the
-  // contact set, of both g and K t); what remains is rounding (measured 3e-13).
+  // contact set, of both g and K t); what remains is rounding (measured 3.4e-13 and 5e-14).
   CHECK(rel_linf(res.pressure, ref.pressure) <= 2e-12);
   CHECK(res.contact_area == ref.contact_area);
   CHECK(rel_linf(res.gap, ref.gap) <= 1e-10);
-  // The approach carries the error: delta -> delta + c W (measured to 1.4e-15 relative to c W).
+  // The approach carries the error: delta -> delta + c W (measured to 2e-14 relative to c W).
   CHECK(*res.approach - *ref.approach == Approx(c * kLoad).epsilon(1e-11));
   // Without compute_approach none is reported under load control.
-  CHECK_FALSE(ContactSolver(shifted).solve_load(hp.h, kLoad).approach.has_value());
+  opts.compute_approach = false;
+  CHECK_FALSE(ContactSolver(shifted, opts).solve_load(hp.h, kLoad).approach.has_value());
+}
+
+TEST_CASE("Preconditioned and classic iterations reach the same solution", "[contact]") {
+  const HertzProblem hp(128);
+  DcfftOperator op(love_kernel(hp.grid, kModulus));
+  ContactOptions classic_opts;
+  classic_opts.preconditioned = false;
+  const ContactResult classic = ContactSolver(op, classic_opts).solve_load(hp.h, kLoad);
+  const ContactResult fast = ContactSolver(op).solve_load(hp.h, kLoad);
+  REQUIRE(classic.converged);
+  REQUIRE(fast.converged);
+  // Two different algorithms for one discrete problem: equal to the solver tier.
+  CHECK(rel_linf(fast.pressure, classic.pressure) <= 1e-8);
+  CHECK(fast.contact_area == classic.contact_area);
+  // The |k| preconditioner makes the count nearly N-independent: measured 26 against 53 classic
+  // iterations here (and 28-33 from 64^2 to 1024^2). 40 flags a preconditioner that stopped
+  // working without tying the test to rounding-level details.
+  CHECK(fast.iterations <= 40);
+  CHECK(fast.iterations < classic.iterations);
 }
 
 TEST_CASE("DC-FFT and direct summation give the same contact", "[contact]") {
@@ -201,8 +236,10 @@ TEST_CASE("DC-FFT and direct summation give the same contact", "[contact]") {
   DcfftOperator fast(kernel);
   DirectOperator direct(kernel);
   const Field h = height(grid, Cylinder{0.01, 1e-4, 0.005});
-  const ContactResult a = ContactSolver(fast).solve_load(h, 0.5);
-  const ContactResult b = ContactSolver(direct).solve_load(h, 0.5);
+  ContactOptions opts;
+  opts.preconditioned = GENERATE(true, false);
+  const ContactResult a = ContactSolver(fast, opts).solve_load(h, 0.5);
+  const ContactResult b = ContactSolver(direct, opts).solve_load(h, 0.5);
   REQUIRE(a.converged);
   REQUIRE(b.converged);
   // Same discrete operator up to FFT rounding (1e-15 relative): same solution to the solver tier.

@@ -54,8 +54,9 @@ TEST_CASE("Sphere and paraboloid agree to O(r^4 / R^3)", "[contact][indenter]") 
       // here r^2/R^2 <= 1.3e-3, so the first omitted term is <= 5e-7 of the difference, and the
       // difference itself is formed to ~1e-16 * 2R^2/r^2 <= 1e-12: 1e-6 relative.
       const double r4 = r2 * r2;
-      CHECK(s(i, j) - p(i, j) ==
-            Approx(r4 / (8 * R * R * R) + r4 * r2 / (16 * std::pow(R, 5))).epsilon(1e-6).margin(1e-30));
+      CHECK(s(i, j) - p(i, j) == Approx(r4 / (8 * R * R * R) + r4 * r2 / (16 * std::pow(R, 5)))
+                                     .epsilon(1e-6)
+                                     .margin(1e-30));
     }
   }
 }

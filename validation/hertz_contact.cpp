@@ -38,7 +38,8 @@ HertzSphere hertz_sphere_for_approach(double approach, double radius, double pla
   require_positive(radius, "hertz_sphere_for_approach: radius [m]");
   require_positive(plane_strain_modulus, "hertz_sphere_for_approach: plane-strain modulus [Pa]");
   const double a = std::sqrt(radius * approach);
-  const double load = 4.0 / 3.0 * plane_strain_modulus * std::sqrt(radius) * std::pow(approach, 1.5);
+  const double load =
+      4.0 / 3.0 * plane_strain_modulus * std::sqrt(radius) * std::pow(approach, 1.5);
   return {load, a, 3.0 * load / (2.0 * std::numbers::pi * a * a), approach};
 }
 

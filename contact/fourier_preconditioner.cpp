@@ -1,0 +1,50 @@
+#include "contact/fourier_preconditioner.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace coatfft::detail {
+
+FourierPreconditioner::FourierPreconditioner(const Grid& grid)
+    : nx_(grid.nx()), ny_(grid.ny()), hx_(grid.nx() / 2 + 1) {
+  const auto n_real = static_cast<std::size_t>(nx_ * ny_);
+  const auto n_complex = static_cast<std::size_t>(hx_ * ny_);
+  real_ = FftwRealBuffer(n_real);
+  spectrum_ = FftwComplexBuffer(n_complex);
+  // Row-major dimensions {ny, nx}: a Field (x fastest) is a C-order (ny, nx) array.
+  const int nyi = static_cast<int>(ny_);
+  const int nxi = static_cast<int>(nx_);
+  const unsigned flags = fftw_flags(Planning::estimate);
+  forward_ = FftwPlan::create(
+      1, [&] { return fftw_plan_dft_r2c_2d(nyi, nxi, real_.data(), spectrum_.data(), flags); });
+  backward_ = FftwPlan::create(
+      1, [&] { return fftw_plan_dft_c2r_2d(nyi, nxi, spectrum_.data(), real_.data(), flags); });
+  const double dkx = 2.0 * std::numbers::pi / grid.lx();
+  const double dky = 2.0 * std::numbers::pi / grid.ly();
+  const double norm = 1.0 / static_cast<double>(nx_ * ny_);
+  sigma_.resize(hx_, ny_);
+  for (std::ptrdiff_t j = 0; j < ny_; ++j) {
+    const double ky = dky * static_cast<double>(j <= ny_ / 2 ? j : j - ny_);
+    for (std::ptrdiff_t i = 0; i < hx_; ++i)
+      sigma_(i, j) = std::hypot(dkx * static_cast<double>(i), ky) * norm;
+  }
+  // Mean of 1/|k| over the central cell [-dkx/2, dkx/2] x [-dky/2, dky/2] (theory.md 3.1).
+  const double mean_inverse_k =
+      2.0 / dky * std::asinh(dky / dkx) + 2.0 / dkx * std::asinh(dkx / dky);
+  sigma_(0, 0) = norm / mean_inverse_k;
+}
+
+void FourierPreconditioner::apply(Field& field) {
+  const auto n_real = static_cast<std::size_t>(nx_ * ny_);
+  std::copy_n(field.data(), n_real, real_.data());
+  forward_.execute();
+  std::complex<double>* s = as_complex(spectrum_.data());
+  const double* sigma = sigma_.data();
+  const auto n_complex = static_cast<std::size_t>(hx_ * ny_);
+  for (std::size_t q = 0; q < n_complex; ++q) s[q] *= sigma[q];
+  backward_.execute();
+  std::copy_n(real_.data(), n_real, field.data());
+}
+
+}  // namespace coatfft::detail

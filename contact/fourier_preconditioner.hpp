@@ -1,0 +1,36 @@
+#pragma once
+// Preconditioner for the contact iteration: an approximate inverse of the half-space operator,
+// z = F^-1 [ sigma(k) F[g] ] with sigma(k) = |k| (up to a constant) on the periodic nx x ny grid.
+// The half-space compliance is 2/(E* k) (docs/conventions.md), so sigma K ~ identity, and the
+// condition number of the preconditioned contact block stays nearly independent of N. The scale of
+// sigma is irrelevant: the conjugate-gradient step length absorbs it.
+#include "convolution/fftw_plan.hpp"
+#include "core/grid.hpp"
+#include "core/types.hpp"
+
+namespace coatfft::detail {
+
+class FourierPreconditioner {
+ public:
+  /// Plans the periodic r2c/c2r pair on `grid` (FFTW_ESTIMATE, one thread).
+  explicit FourierPreconditioner(const Grid& grid);
+
+  /// field <- F^-1 [sigma F[field]] in place; `field` has the grid's shape (nx, ny).
+  /// sigma(k) = |k| [rad/m]; at k = 0, where |k| vanishes, sigma is the inverse of the mean of
+  /// 1/|k| over the central frequency cell (theory.md eq. 3.1), the same zero-frequency rule as
+  /// g(0) of the spectral operators. Only the approach-controlled iteration sees this value: under
+  /// load control the preconditioned field has zero mean.
+  void apply(Field& field);
+
+ private:
+  std::ptrdiff_t nx_;
+  std::ptrdiff_t ny_;
+  std::ptrdiff_t hx_;  // nx/2 + 1 complex entries per r2c row
+  FftwRealBuffer real_;
+  FftwComplexBuffer spectrum_;
+  Field sigma_;  // (hx, ny): sigma(k) / (nx ny), FFTW's normalisation folded in
+  FftwPlan forward_;
+  FftwPlan backward_;
+};
+
+}  // namespace coatfft::detail

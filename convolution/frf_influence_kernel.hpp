@@ -1,0 +1,26 @@
+#pragma once
+// Influence coefficients from an FRF (seed paper, Spinu 2021, section 4, second algorithm;
+// theory.md 4.4; Liu & Wang, J. Tribol. 124 (2002) 36): the FRF is sampled on the frequency
+// lattice of an alpha-times extended periodic domain, multiplied by the transform of a uniformly
+// loaded cell, and brought back to space by an inverse FFT; the offsets |di| <= nx - 1,
+// |dj| <= ny - 1 then feed DC-FFT (DcfftOperator). Used where no space-domain coefficient is known
+// (coated and layered bodies); it inherits the periodicity error of the spectral pipeline.
+#include "convolution/g0.hpp"
+#include "convolution/influence_kernel.hpp"
+#include "frf/frf.hpp"
+
+namespace coatfft {
+
+/// K(di, dj) = IFFT_M[ H(k) sinc(kx dx/2) sinc(ky dy/2) ] (theory.md (4.1)) on the M = alpha N
+/// lattice with H(0) = g(0) by `g0_method` to relative `g0_tolerance` [m/Pa]. alpha >= 2 with
+/// alpha nx, alpha ny integers (so that offsets up to N - 1 are not wrapped onto each other);
+/// throws InvalidArgument otherwise. If `g0_used` is given it receives the g(0) computed.
+InfluenceKernel frf_influence_kernel(const Grid& grid, const Frf& frf, double alpha,
+                                     G0Method g0_method, double g0_tolerance = default_g0_tolerance,
+                                     G0Result* g0_used = nullptr);
+
+/// As above with a given g(0) (`g0.value` finite) instead of computing it.
+InfluenceKernel frf_influence_kernel(const Grid& grid, const Frf& frf, double alpha,
+                                     const G0Result& g0);
+
+}  // namespace coatfft

@@ -1,0 +1,623 @@
+#include "convolution/split_frf_kernel.hpp"
+
+#include <fftw3.h>
+#include <gsl/gsl_sf_bessel.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <numbers>
+#include <utility>
+#include <vector>
+
+#include "convolution/fftw_plan.hpp"
+#include "core/error.hpp"
+
+namespace coatfft {
+namespace detail {
+
+namespace {
+
+// F(X, Y) of split_rectangle_integral; odd in X and in Y, F(0, Y) = F(X, 0) = 0.
+double corner_beta(double X, double Y, double beta) {
+  if (X == 0.0 || Y == 0.0) return 0.0;
+  const double X2 = X * X;
+  const double Y2 = Y * Y;
+  const double b2 = beta * beta;
+  return X * std::asinh(Y / std::sqrt(X2 + b2)) + Y * std::asinh(X / std::sqrt(Y2 + b2)) -
+         beta * std::atan(X * Y / (beta * std::sqrt(X2 + Y2 + b2)));
+}
+
+}  // namespace
+
+double split_rectangle_integral(double x, double y, double dx, double dy, double beta) {
+  COATFFT_REQUIRE(std::isfinite(beta) && beta > 0, "split_rectangle_integral: beta = ", beta,
+                  " m, but beta must be finite and > 0");
+  COATFFT_REQUIRE(std::isfinite(dx) && dx > 0 && std::isfinite(dy) && dy > 0,
+                  "split_rectangle_integral: cell (", dx, ", ", dy, ") m must be finite and > 0");
+  const double a = 0.5 * dx;
+  const double b = 0.5 * dy;
+  return corner_beta(x + a, y + b, beta) - corner_beta(x + a, y - b, beta) -
+         corner_beta(x - a, y + b, beta) + corner_beta(x - a, y - b, beta);
+}
+
+}  // namespace detail
+
+namespace {
+
+constexpr double pi = std::numbers::pi;
+constexpr double eps = std::numeric_limits<double>::epsilon();
+
+// Gauss-Legendre nodes and weights on [-1, 1] (Newton on P_n from the Chebyshev-like guess; the
+// standard Golub-Welsch-free construction, accurate to a few ulps for the n <= 32 used here).
+void gauss_legendre(int n, std::vector<double>& t, std::vector<double>& w) {
+  t.assign(static_cast<std::size_t>(n), 0.0);
+  w.assign(static_cast<std::size_t>(n), 0.0);
+  for (int i = 0; i < n; ++i) {
+    double x = std::cos(pi * (i + 0.75) / (n + 0.5));
+    double dp = 1.0;
+    for (int it = 0; it < 100; ++it) {
+      double p0 = 1.0;
+      double p1 = x;
+      for (int j = 2; j <= n; ++j) {
+        const double p2 = ((2.0 * j - 1.0) * x * p1 - (j - 1.0) * p0) / j;
+        p0 = p1;
+        p1 = p2;
+      }
+      dp = n * (x * p1 - p0) / (x * x - 1.0);
+      const double step = p1 / dp;
+      x -= step;
+      if (std::abs(step) < 1e-16) break;
+    }
+    t[static_cast<std::size_t>(i)] = -x;
+    w[static_cast<std::size_t>(i)] = 2.0 / ((1.0 - x * x) * dp * dp);
+  }
+}
+
+// The remainder R(k) = H(k) - Cinf/k - A exp(-beta k)/k of the split, A = C0 - Cinf: bounded at
+// k = 0 (H = C0/k + O(1)) and decaying like max(exp(-beta k), |k H - Cinf|)/k.
+class Remainder {
+ public:
+  Remainder(const Frf& frf, double c_inf, double A, double beta)
+      : frf_(frf), c_inf_(c_inf), A_(A), beta_(beta) {}
+
+  // k H(k) - Cinf (dimension of C), checked.
+  double q(double k) const {
+    const double h = frf_(k);
+    COATFFT_REQUIRE(std::isfinite(h) && h > 0, "split_frf_kernel: the FRF '", frf_.name(),
+                    "' gives H(", k, " rad/m) = ", h, " m/Pa, but it must be finite and > 0");
+    return k * h - c_inf_;
+  }
+  double exponential(double k) const { return A_ == 0.0 ? 0.0 : A_ * std::exp(-beta_ * k); }
+  double exact(double k) const { return (q(k) - exponential(k)) / k; }
+
+  // Tabulates R on [k_lo, k_hi], log-spaced; beyond k_hi k H - Cinf is negligible, below k_lo R
+  // is constant to the table's accuracy.
+  void tabulate(double k_lo, double k_hi, int per_decade) {
+    u0_ = std::log(k_lo);
+    du_ = std::log(10.0) / per_decade;
+    const auto n = static_cast<std::ptrdiff_t>(std::ceil((std::log(k_hi) - u0_) / du_)) + 1;
+    table_.resize(static_cast<std::size_t>(std::max<std::ptrdiff_t>(n, 4)));
+    for (std::size_t i = 0; i < table_.size(); ++i)
+      table_[i] = exact(std::exp(u0_ + du_ * static_cast<double>(i)));
+    k_lo_ = k_lo;
+    k_hi_ = std::exp(u0_ + du_ * static_cast<double>(table_.size() - 1));
+  }
+  double k_hi() const { return k_hi_; }
+
+  // R(k) from the table (cubic Lagrange in log k); k = 0 gives R(0).
+  double operator()(double k) const {
+    if (k <= k_lo_) return table_.front();
+    if (k >= k_hi_) return -exponential(k) / k;
+    const double s = (std::log(k) - u0_) / du_;
+    const auto last = static_cast<std::ptrdiff_t>(table_.size()) - 1;
+    auto i = static_cast<std::ptrdiff_t>(s) - 1;
+    i = std::clamp<std::ptrdiff_t>(i, 0, last - 3);
+    const double x = s - static_cast<double>(i);  // in [0, 3] (1..2 inside the table)
+    const double* f = table_.data() + i;
+    // Lagrange weights for nodes 0, 1, 2, 3.
+    const double w0 = -(x - 1.0) * (x - 2.0) * (x - 3.0) / 6.0;
+    const double w1 = x * (x - 2.0) * (x - 3.0) / 2.0;
+    const double w2 = -x * (x - 1.0) * (x - 3.0) / 2.0;
+    const double w3 = x * (x - 1.0) * (x - 2.0) / 6.0;
+    return w0 * f[0] + w1 * f[1] + w2 * f[2] + w3 * f[3];
+  }
+
+ private:
+  const Frf& frf_;
+  double c_inf_;
+  double A_;
+  double beta_;
+  double u0_ = 0.0;
+  double du_ = 1.0;
+  double k_lo_ = 0.0;
+  double k_hi_ = 0.0;
+  std::vector<double> table_;
+};
+
+// What a log-spaced scan of k H(k) - Cinf tells about the FRF's length scales.
+struct Scan {
+  double k_lo = 0.0;  // below: R constant to ~1e-7 relative
+  double k_hi = 0.0;  // above: |k H - Cinf| negligible
+  double beta = 0.0;  // automatic beta
+  bool remainder_zero = false;
+};
+
+Scan scan_frf(const Remainder& rem, double A, double c_max, double l_min, double l_max) {
+  Scan s;
+  const double tol_q = 64.0 * eps * c_max;
+  double k_a = 1e-6 / l_max;
+  double k_b = 1e6 / l_min;
+  // Extend until the ends are in the asymptotic regimes (k H -> C0 below, -> Cinf above).
+  for (int it = 0; it < 6 && std::abs(rem.q(k_a) - A) > 1e-9 * c_max; ++it) k_a *= 1e-3;
+  for (int it = 0; it < 6 && std::abs(rem.q(k_b)) > tol_q; ++it) k_b *= 1e3;
+  constexpr int per_decade = 8;
+  const auto n = static_cast<int>(std::ceil(std::log10(k_b / k_a) * per_decade)) + 1;
+  std::vector<double> k(static_cast<std::size_t>(n));
+  std::vector<double> q(static_cast<std::size_t>(n));
+  double q_max = 0.0;
+  for (int i = 0; i < n; ++i) {
+    k[static_cast<std::size_t>(i)] = k_a * std::pow(10.0, static_cast<double>(i) / per_decade);
+    q[static_cast<std::size_t>(i)] = rem.q(k[static_cast<std::size_t>(i)]);
+    q_max = std::max(q_max, std::abs(q[static_cast<std::size_t>(i)]));
+  }
+  s.remainder_zero = A == 0.0 && q_max <= tol_q;
+  // k_hi: a decade past the last wavenumber where k H - Cinf is above rounding.
+  int last = 0;
+  for (int i = 0; i < n; ++i)
+    if (std::abs(q[static_cast<std::size_t>(i)]) > tol_q) last = i;
+  s.k_hi = 10.0 * k[static_cast<std::size_t>(last)];
+  // k_lo: a decade below the first wavenumber where k H departs from C0 by 1e-7 of its range.
+  const double range = std::max(q_max, std::abs(A));
+  int first = n - 1;
+  for (int i = n - 1; i >= 0; --i)
+    if (std::abs(q[static_cast<std::size_t>(i)] - A) > 1e-7 * range) first = i;
+  s.k_lo = 0.1 * k[static_cast<std::size_t>(first)];
+  s.k_lo = std::min(s.k_lo, 0.01 * s.k_hi);
+  if (A != 0.0) {
+    // beta: the exponential with the same first moment, int_0^inf (k H - Cinf) dk = A / beta
+    // (trapezoid in log k; accuracy is irrelevant, any beta > 0 is exact, a good one keeps R
+    // small).
+    double m1 = A * k[0];
+    for (int i = 1; i < n; ++i) {
+      const auto a = static_cast<std::size_t>(i - 1);
+      const auto b = static_cast<std::size_t>(i);
+      m1 += 0.5 * (q[a] * k[a] + q[b] * k[b]) * std::log(k[b] / k[a]);
+    }
+    if (m1 / A > 0 && std::isfinite(m1)) {
+      s.beta = A / m1;
+    } else {
+      // Non-monotone k H: take the first half-way crossing instead.
+      double kt = k[static_cast<std::size_t>(last)];
+      for (int i = 0; i < n; ++i)
+        if (std::abs(q[static_cast<std::size_t>(i)] - A) > 0.5 * std::abs(A)) {
+          kt = k[static_cast<std::size_t>(i)];
+          break;
+        }
+      s.beta = std::log(2.0) / kt;
+    }
+  }
+  return s;
+}
+
+// The smallest k above which |R(k)| k <= tol c_max (R from the table, the analytic tail beyond).
+double remainder_cutoff(const Remainder& rem, double A, double beta, double tol_abs) {
+  double k_cut = 0.0;
+  if (A != 0.0 && std::abs(A) > tol_abs) k_cut = std::log(std::abs(A) / tol_abs) / beta;
+  k_cut = std::min(k_cut, 1e300);
+  // Scan the tabulated part downwards from k_hi.
+  const double k_hi = rem.k_hi();
+  constexpr int per_decade = 64;
+  for (int i = 0; i < 40 * per_decade; ++i) {
+    const double k = k_hi * std::pow(10.0, -static_cast<double>(i) / per_decade);
+    if (std::abs(rem(k)) * k > tol_abs) {
+      k_cut = std::max(k_cut, k * std::pow(10.0, 1.0 / per_decade));
+      break;
+    }
+  }
+  return k_cut;
+}
+
+// Radial kernel g(r) = (1/2 pi) int_0^kc f(k) J0(k r) k dk on a uniform r table, with 6-point
+// Lagrange interpolation (g is even in r and smooth on the scale 1/kc).
+class RadialTable {
+ public:
+  RadialTable(const std::vector<double>& kw, const std::vector<double>& kn, double dr,
+              double r_max) {
+    dr_ = dr;
+    const auto n = static_cast<std::ptrdiff_t>(std::ceil(r_max / dr)) + 4;
+    g_.assign(static_cast<std::size_t>(n), 0.0);
+    for (std::ptrdiff_t i = 0; i < n; ++i) {
+      const double r = dr * static_cast<double>(i);
+      double sum = 0.0;
+      for (std::size_t j = 0; j < kn.size(); ++j) sum += kw[j] * gsl_sf_bessel_J0(kn[j] * r);
+      g_[static_cast<std::size_t>(i)] = sum;
+    }
+  }
+  std::ptrdiff_t size() const { return static_cast<std::ptrdiff_t>(g_.size()); }
+
+  double operator()(double r) const {
+    const double s = r / dr_;
+    const auto i0 = static_cast<std::ptrdiff_t>(s);
+    const double x = s - static_cast<double>(i0);  // in [0, 1)
+    double sum = 0.0;
+    // Nodes i0 - 2 .. i0 + 3; negative indices mirror (g even).
+    for (int a = -2; a <= 3; ++a) {
+      double w = 1.0;
+      for (int b = -2; b <= 3; ++b)
+        if (b != a) w *= (x - b) / static_cast<double>(a - b);
+      const auto idx = static_cast<std::size_t>(std::abs(i0 + a));
+      sum += w * g_[idx];
+    }
+    return sum;
+  }
+
+ private:
+  double dr_;
+  std::vector<double> g_;
+};
+
+double img_factor() {
+  const char* e = std::getenv("SPLIT_IMG");
+  return e ? std::atof(e) : 32.0;
+}
+// f on [0, k_max] at uniform spacing dk, cubic Lagrange interpolation; 0 beyond k_max.
+class UniformTable {
+ public:
+  UniformTable() = default;
+  template <typename F>
+  UniformTable(const F& f, double dk, double k_max) : dk_(dk), k_max_(k_max) {
+    const auto n = static_cast<std::ptrdiff_t>(std::ceil(k_max / dk)) + 6;
+    v_.resize(static_cast<std::size_t>(n));
+    for (std::ptrdiff_t i = 0; i < n; ++i) v_[static_cast<std::size_t>(i)] = f(dk * static_cast<double>(i));
+  }
+  std::ptrdiff_t size() const { return static_cast<std::ptrdiff_t>(v_.size()); }
+  double operator()(double k) const {
+    if (k >= k_max_) return 0.0;
+    // 6-point Lagrange (quintic): error ~ dk^6 f^(6) / 1000.
+    const double s = k / dk_;
+    auto i = static_cast<std::ptrdiff_t>(s) - 2;
+    i = std::clamp<std::ptrdiff_t>(i, 0, size() - 6);
+    const double x = s - static_cast<double>(i);
+    const double* f = v_.data() + i;
+    const double x0 = x, x1 = x - 1.0, x2 = x - 2.0, x3 = x - 3.0, x4 = x - 4.0, x5 = x - 5.0;
+    return -f[0] * x1 * x2 * x3 * x4 * x5 / 120.0 + f[1] * x0 * x2 * x3 * x4 * x5 / 24.0 -
+           f[2] * x0 * x1 * x3 * x4 * x5 / 12.0 + f[3] * x0 * x1 * x2 * x4 * x5 / 12.0 -
+           f[4] * x0 * x1 * x2 * x3 * x5 / 24.0 + f[5] * x0 * x1 * x2 * x3 * x4 / 120.0;
+  }
+
+ private:
+  double dk_ = 1.0;
+  double k_max_ = 0.0;
+  std::vector<double> v_;
+};
+
+// sin(pi x) / (pi x).
+double sinc_pi(double x) {
+  if (x == 0.0) return 1.0;
+  return std::sin(pi * x) / (pi * x);
+}
+
+}  // namespace
+
+InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
+                                 const SplitKernelOptions& options, SplitKernelReport* report) {
+  const auto t_start = std::chrono::steady_clock::now();
+  auto t_last = t_start;
+  const auto debug_time = [&](const char* what) {
+    if (!std::getenv("SPLIT_DEBUG")) return;
+    const auto now = std::chrono::steady_clock::now();
+    std::fprintf(stderr, "%s: %.3f s\n", what, std::chrono::duration<double>(now - t_last).count());
+    t_last = now;
+  };
+  COATFFT_REQUIRE(std::isfinite(options.beta) && options.beta >= 0,
+                  "split_frf_kernel: beta = ", options.beta,
+                  " m, but beta must be finite and >= 0 (0 = automatic)");
+  COATFFT_REQUIRE(std::isfinite(options.sigma) && options.sigma >= 0,
+                  "split_frf_kernel: sigma = ", options.sigma,
+                  " m, but sigma must be finite and >= 0 (0 = automatic)");
+  COATFFT_REQUIRE(options.tolerance > 0 && options.tolerance <= 1e-3,
+                  "split_frf_kernel: tolerance = ", options.tolerance,
+                  ", but it must be in (0, 1e-3]");
+  COATFFT_REQUIRE(options.max_alias_order >= 0 && options.max_alias_order <= 4096,
+                  "split_frf_kernel: max_alias_order = ", options.max_alias_order,
+                  ", but it must be in [0, 4096]");
+  const double c0 = frf.c0();
+  const double c_inf = frf.c_inf();
+  COATFFT_REQUIRE(std::isfinite(c0) && c0 > 0, "split_frf_kernel: c0 = ", c0, " 1/Pa of FRF '",
+                  frf.name(), "', but it must be finite and > 0");
+  COATFFT_REQUIRE(std::isfinite(c_inf) && c_inf > 0, "split_frf_kernel: c_inf = ", c_inf,
+                  " 1/Pa of FRF '", frf.name(), "', but it must be finite and > 0");
+
+  SplitKernelReport rep;
+  rep.c0 = c0;
+  rep.c_inf = c_inf;
+  const std::ptrdiff_t nx = grid.nx();
+  const std::ptrdiff_t ny = grid.ny();
+  const double dx = grid.dx();
+  const double dy = grid.dy();
+  const double d_max = std::max(dx, dy);
+  const double c_max = std::max(c0, c_inf);
+  const double A = c0 - c_inf;
+
+  // (a) Cinf/k <-> Cinf/(2 pi r): Love's coefficients for E* = 2/Cinf (theory.md 1.5).
+  Field wrapped = love_kernel(grid, 2.0 / c_inf).wrapped();
+  Field quarter = Field::Zero(nx, ny);  // (b) + (c) for di, dj >= 0
+
+  Remainder probe(frf, c_inf, A, 1.0);
+  const Scan scan = scan_frf(probe, A, c_max, std::min(dx, dy), std::max(grid.lx(), grid.ly()));
+  const double beta = A == 0.0 ? 0.0 : (options.beta > 0 ? options.beta : scan.beta);
+  rep.beta = beta;
+  rep.remainder_zero = scan.remainder_zero;
+
+  // (b) A exp(-beta k)/k <-> A/(2 pi sqrt(r^2 + beta^2)): corner table of F, differenced.
+  if (A != 0.0) {
+    std::vector<double> X(static_cast<std::size_t>(nx + 1));
+    std::vector<double> Y(static_cast<std::size_t>(ny + 1));
+    for (std::ptrdiff_t c = 0; c <= nx; ++c)
+      X[static_cast<std::size_t>(c)] = (static_cast<double>(c) - 0.5) * dx;
+    for (std::ptrdiff_t c = 0; c <= ny; ++c)
+      Y[static_cast<std::size_t>(c)] = (static_cast<double>(c) - 0.5) * dy;
+    Field F(nx + 1, ny + 1);
+    for (std::ptrdiff_t j = 0; j <= ny; ++j)
+      for (std::ptrdiff_t i = 0; i <= nx; ++i)
+        F(i, j) = detail::corner_beta(X[static_cast<std::size_t>(i)],
+                                      Y[static_cast<std::size_t>(j)], beta);
+    const double scale = A / (2.0 * pi);
+    for (std::ptrdiff_t j = 0; j < ny; ++j)
+      for (std::ptrdiff_t i = 0; i < nx; ++i)
+        quarter(i, j) += scale * (F(i + 1, j + 1) - F(i + 1, j) - F(i, j + 1) + F(i, j));
+  }
+
+  if (!scan.remainder_zero) {
+    Remainder rem(frf, c_inf, A, beta);
+    rem.tabulate(scan.k_lo, std::max(scan.k_hi, A != 0.0 ? 50.0 / beta : 0.0), 400);
+    const double tol_abs = options.tolerance * c_max;
+    const double k_r = remainder_cutoff(rem, A, beta, tol_abs);  // R negligible beyond
+
+    // The Gaussian window splitting R between the Hankel (long-range) and lattice parts.
+    double sigma = options.sigma > 0 ? options.sigma
+                                     : std::max(std::min(grid.lx(), grid.ly()) / 32.0, 1.5 * d_max);
+    if (options.route == SplitRoute::periodic) sigma = 0.0;
+    if (options.route == SplitRoute::hankel) sigma = std::numeric_limits<double>::infinity();
+    rep.sigma = sigma;
+    // The window w = exp(-s) (1 + s + s^2/2), s = (sigma k)^2, and 1 - w = exp(-s) sum_{j>=3}
+    // s^j/j! = O(k^6): the short-range part R (1 - w) then has the far field (sigma^6/6) (-lap)^3
+    // of R's r^-3 tail, 1837 (sigma/r)^6 of it, so its periodic images (>= 32 sigma away) are
+    // negligible (a plain Gaussian, 1 - w = O(k^2), leaves 9 (sigma/r)^2: 1e-2 at 32 sigma).
+    const auto window = [&](double k) {
+      if (sigma == 0.0) return 0.0;
+      if (std::isinf(sigma)) return 1.0;
+      const double s = (sigma * k) * (sigma * k);
+      return std::exp(-s) * (1.0 + s * (1.0 + 0.5 * s));
+    };
+    const auto one_minus_window = [&](double k) {
+      if (sigma == 0.0) return 1.0;
+      if (std::isinf(sigma)) return 0.0;
+      const double s = (sigma * k) * (sigma * k);
+      if (s >= 1.0) return 1.0 - std::exp(-s) * (1.0 + s * (1.0 + 0.5 * s));
+      // exp(-s) s^3/6 (1 + s/4 + s^2/20 + ...), 12 terms: converged to rounding for s < 1.
+      double term = 1.0;
+      double sum = 1.0;
+      for (int j = 4; j < 16; ++j) {
+        term *= s / j;
+        sum += term;
+      }
+      return std::exp(-s) * s * s * s / 6.0 * sum;
+    };
+
+      debug_time("setup");
+    // ---- Long-range part R w: Hankel table in r, Gauss-Legendre over each cell. ----
+    const double log_tol = std::log(1.0 / options.tolerance);
+    // w < tol beyond k_c: exp(-s) s^2/2 < tol at s = log_tol + 2 log(log_tol) (two Newton-free
+    // fixed-point steps suffice for the tolerances allowed).
+    double s_c = log_tol;
+    for (int it = 0; it < 4; ++it) s_c = log_tol + 2.0 * std::log(s_c) - std::log(2.0);
+    const double k_c = std::isinf(sigma) ? k_r : std::min(k_r, std::sqrt(s_c) / sigma);
+    if (sigma > 0.0 && k_c > 0.0) {
+      const double r_max = std::hypot(grid.lx(), grid.ly());
+      // Panels: geometric (halving) from the first uniform panel down to R's smallest scale, then
+      // uniform of width <= 2 pi / r_max (one J0 period at r_max) up to k_c; 16 nodes each.
+      const double dk_u = std::min(2.0 * pi / r_max, k_c);
+      std::vector<double> edges = {0.0};
+      {
+        std::vector<double> geo;
+        for (double e = dk_u * 0.5; e > scan.k_lo; e *= 0.5) geo.push_back(e);
+        std::reverse(geo.begin(), geo.end());
+        edges.insert(edges.end(), geo.begin(), geo.end());
+        const auto nu = static_cast<std::ptrdiff_t>(std::ceil(k_c / dk_u));
+        for (std::ptrdiff_t i = 1; i <= nu; ++i)
+          edges.push_back(k_c * static_cast<double>(i) / static_cast<double>(nu));
+      }
+      std::vector<double> t16;
+      std::vector<double> w16;
+      gauss_legendre(16, t16, w16);
+      std::vector<double> kn;
+      std::vector<double> kw;
+      for (std::size_t e = 0; e + 1 < edges.size(); ++e) {
+        const double mid = 0.5 * (edges[e] + edges[e + 1]);
+        const double half = 0.5 * (edges[e + 1] - edges[e]);
+        for (std::size_t q = 0; q < t16.size(); ++q) {
+          const double k = mid + half * t16[q];
+          kn.push_back(k);
+          kw.push_back(half * w16[q] * rem.exact(k) * window(k) * k / (2.0 * pi));
+        }
+      }
+      // g is band-limited to k_c: 6-point interpolation with k_c dr = 0.3 is accurate to ~1e-9
+      // of g's scale (checked against a table with half the step in the tests).
+      const double dr = 0.3 / k_c;
+      const double cost = static_cast<double>(kn.size()) * (r_max / dr);
+      COATFFT_REQUIRE(cost < 4e9, "split_frf_kernel: the Hankel table would need ", cost,
+                      " Bessel evaluations (a layer much thinner than the domain with the hankel "
+                      "route); use SplitRoute::automatic");
+      const RadialTable table(kw, kn, dr, r_max + 4.0 * d_max);
+      debug_time("hankel table");
+      rep.hankel_r_points = table.size();
+      rep.hankel_k_nodes = static_cast<std::ptrdiff_t>(kn.size());
+      // Cell rule: the kernel is smooth on the scale ell = sqrt(log_tol)/k_c (= sigma for the
+      // Gaussian window, whose kernel is a Gaussian of width sqrt(2) sigma at worst). The n-point
+      // Gauss-Legendre error on a cell of side d is about c_n (d/(sqrt(2) ell))^(2n) with
+      // c_3 = 7e-7, c_4 = 7e-9, c_5 = 3e-11, c_6 = 2e-12: n is picked for < 1e-14 relative, and
+      // cells larger than 1.5 ell are subdivided.
+      const double ell = std::sqrt(log_tol) / k_c;
+      const int sub = static_cast<int>(std::clamp(std::ceil(d_max / (ell / 1.5)), 1.0, 64.0));
+      const double ratio = ell * sub / d_max;
+      const int n_gl = ratio >= 12.0 ? 3 : ratio >= 4.0 ? 4 : ratio >= 2.5 ? 5 : 6;
+      std::vector<double> tg;
+      std::vector<double> wg;
+      gauss_legendre(n_gl, tg, wg);
+      std::vector<double> ox;
+      std::vector<double> wx;
+      std::vector<double> oy;
+      std::vector<double> wy;
+      for (int s = 0; s < sub; ++s)
+        for (int q = 0; q < n_gl; ++q) {
+          const double c = -0.5 + (s + 0.5) / sub;
+          ox.push_back((c + 0.5 * tg[static_cast<std::size_t>(q)] / sub) * dx);
+          wx.push_back(0.5 * wg[static_cast<std::size_t>(q)] / sub * dx);
+          oy.push_back((c + 0.5 * tg[static_cast<std::size_t>(q)] / sub) * dy);
+          wy.push_back(0.5 * wg[static_cast<std::size_t>(q)] / sub * dy);
+        }
+      rep.cell_rule = n_gl * sub;
+      std::vector<double> y2(oy.size());
+      for (std::ptrdiff_t j = 0; j < ny; ++j) {
+        for (std::size_t b = 0; b < oy.size(); ++b) {
+          const double y = static_cast<double>(j) * dy + oy[b];
+          y2[b] = y * y;
+        }
+        for (std::ptrdiff_t i = 0; i < nx; ++i) {
+          double sum = 0.0;
+          for (std::size_t a = 0; a < ox.size(); ++a) {
+            const double x = static_cast<double>(i) * dx + ox[a];
+            const double x2 = x * x;
+            double row = 0.0;
+            for (std::size_t b = 0; b < oy.size(); ++b) row += wy[b] * table(std::sqrt(x2 + y2[b]));
+            sum += wx[a] * row;
+          }
+          quarter(i, j) += sum;
+        }
+      }
+    }
+
+      debug_time("cells");
+    // ---- Short-range part R (1 - w): periodic lattice with the aliases folded. ----
+    if (!std::isinf(sigma)) {
+      // Half periods (in cells): the images of the short-range kernel stay >= 32 sigma away.
+      const std::ptrdiff_t hx = std::max<std::ptrdiff_t>(
+          nx, static_cast<std::ptrdiff_t>(std::ceil(img_factor() * sigma / dx)));
+      const std::ptrdiff_t hy = std::max<std::ptrdiff_t>(
+          ny, static_cast<std::ptrdiff_t>(std::ceil(img_factor() * sigma / dy)));
+      const double k_s = k_r;
+      // R (1 - w) on a uniform k grid (cubic interpolation, no logarithm per lookup: the fold
+      // makes ~N^2 pi P^2 lookups), refined until the midpoints match the exact R to tol/k_s.
+      UniformTable short_table;
+      {
+        const auto f = [&](double k) {
+          if (k == 0.0) return sigma == 0.0 ? rem(0.0) : 0.0;
+          return rem.exact(k) * one_minus_window(k);
+        };
+        double dk = k_s / 2048.0;
+        if (sigma > 0.0) dk = std::min(dk, 0.02 / sigma);
+        double f_max = 0.0;
+        for (int i = 1; i <= 4096; ++i) f_max = std::max(f_max, std::abs(rem(k_s * i / 4096.0)));
+        const double tol_r = options.tolerance * f_max;
+        for (int it = 0; it < 12; ++it) {
+          short_table = UniformTable(f, dk, k_s);
+          double err = 0.0;
+          for (std::ptrdiff_t i = 0; i + 1 < short_table.size(); ++i) {
+            const double k = (static_cast<double>(i) + 0.5) * dk;
+            if (k > 0.0 && k < k_s) err = std::max(err, std::abs(short_table(k) - f(k)));
+          }
+          if (std::getenv("SPLIT_DEBUG")) std::fprintf(stderr, "table n=%ld err=%g tol=%g\n", (long)short_table.size(), err, tol_r);
+          if (err <= tol_r) break;
+          dk *= 0.5;
+        }
+      }
+      const auto order = [&](double d) {
+        const double need = std::ceil(k_s * d / (2.0 * pi) + 0.5);
+        if (need > options.max_alias_order) rep.alias_capped = true;
+        return static_cast<int>(std::min<double>(need, options.max_alias_order));
+      };
+      const int px = order(dx);
+      const int py = order(dy);
+      rep.alias_order = std::max(px, py);
+      const std::ptrdiff_t sx = hx + 1;
+      const std::ptrdiff_t sy = hy + 1;
+      FftwRealBuffer buf(static_cast<std::size_t>(sx * sy));
+      FftwPlan plan = FftwPlan::create(1, [&] {
+        return fftw_plan_r2r_2d(static_cast<int>(sy), static_cast<int>(sx), buf.data(), buf.data(),
+                                FFTW_REDFT00, FFTW_REDFT00, FFTW_ESTIMATE);
+      });
+      // Per-axis alias wavenumbers and sincs: k = 2 pi (xi + p)/d with xi = m/(2h) in [0, 1/2].
+      const auto axis = [](std::ptrdiff_t h, int p_max, double d, std::vector<double>& kk,
+                           std::vector<double>& ss) {
+        const auto np = static_cast<std::size_t>(2 * p_max + 1);
+        kk.assign(static_cast<std::size_t>(h + 1) * np, 0.0);
+        ss.assign(kk.size(), 0.0);
+        for (std::ptrdiff_t m = 0; m <= h; ++m)
+          for (int p = -p_max; p <= p_max; ++p) {
+            const double xi = static_cast<double>(m) / (2.0 * static_cast<double>(h)) + p;
+            const auto idx = static_cast<std::size_t>(m) * np + static_cast<std::size_t>(p + p_max);
+            kk[idx] = 2.0 * pi * xi / d;
+            ss[idx] = sinc_pi(xi);
+          }
+      };
+      std::vector<double> kxs;
+      std::vector<double> sxs;
+      std::vector<double> kys;
+      std::vector<double> sys;
+      axis(hx, px, dx, kxs, sxs);
+      axis(hy, py, dy, kys, sys);
+      const auto npx = static_cast<std::size_t>(2 * px + 1);
+      const auto npy = static_cast<std::size_t>(2 * py + 1);
+      const double k_s2 = k_s * k_s;
+      for (std::ptrdiff_t n = 0; n < sy; ++n) {
+        for (std::ptrdiff_t m = 0; m < sx; ++m) {
+          double sum = 0.0;
+          for (std::size_t q = 0; q < npy; ++q) {
+            const std::size_t iy = static_cast<std::size_t>(n) * npy + q;
+            const double ky2 = kys[iy] * kys[iy];
+            if (ky2 > k_s2) continue;
+            double row = 0.0;
+            for (std::size_t p = 0; p < npx; ++p) {
+              const std::size_t ix = static_cast<std::size_t>(m) * npx + p;
+              const double k2 = kxs[ix] * kxs[ix] + ky2;
+              if (k2 > k_s2) continue;
+              const double k = std::sqrt(k2);
+              row += sxs[ix] * short_table(k);
+            }
+            sum += sys[iy] * row;
+          }
+          buf.data()[n * sx + m] = sum;
+        }
+      }
+      debug_time("fold");
+      plan.execute();
+      // DCT-I of the even spectrum = the sum over the full period (1/(Mx My) = 1/(4 hx hy)).
+      const double norm = 1.0 / (4.0 * static_cast<double>(hx) * static_cast<double>(hy));
+      for (std::ptrdiff_t j = 0; j < ny; ++j)
+        for (std::ptrdiff_t i = 0; i < nx; ++i) quarter(i, j) += norm * buf.data()[j * sx + i];
+    }
+  }
+
+      debug_time("dct");
+  // Mirror the quarter (the split kernel is even in x and y) into the wrapped Love array.
+  for (std::ptrdiff_t dj = 0; dj < ny; ++dj)
+    for (std::ptrdiff_t di = 0; di < nx; ++di) {
+      const double v = quarter(di, dj);
+      const std::ptrdiff_t mi = di == 0 ? 0 : 2 * nx - di;
+      const std::ptrdiff_t mj = dj == 0 ? 0 : 2 * ny - dj;
+      wrapped(di, dj) += v;
+      if (mi != di) wrapped(mi, dj) += v;
+      if (mj != dj) wrapped(di, mj) += v;
+      if (mi != di && mj != dj) wrapped(mi, mj) += v;
+    }
+  rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+  if (report != nullptr) *report = rep;
+  return InfluenceKernel(grid, std::move(wrapped));
+}
+
+}  // namespace coatfft

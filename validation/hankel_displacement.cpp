@@ -1,0 +1,246 @@
+#include "validation/hankel_displacement.hpp"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_integration.h>
+#include <gsl/gsl_sf_bessel.h>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <functional>
+#include <memory>
+#include <numbers>
+
+#include "core/error.hpp"
+#include "validation/hertz.hpp"
+
+namespace coatfft {
+
+namespace {
+
+using std::numbers::pi;
+
+// Dimensionless load shape Phi(s), s = k a, with P^(k) = 2 pi amplitude a^2 Phi(ka)
+// (theory.md §1.4: Phi_H = j1(s)/s; §1.5: Phi_U = J1(s)/s).
+double load_shape(AxisymmetricLoad load, double s) {
+  if (load == AxisymmetricLoad::hertz) {
+    if (s < 1e-4) return 1.0 / 3.0 - s * s / 30.0;  // next term s^4/840 < 1e-19
+    return gsl_sf_bessel_j1(s) / s;
+  }
+  if (s < 1e-4) return 0.5 - s * s / 16.0;  // next term s^4/384 < 1e-18
+  return gsl_sf_bessel_J1(s) / s;
+}
+
+// GSL's default handler aborts; turn it off while we integrate and report failures ourselves.
+class GslHandlerOff {
+ public:
+  GslHandlerOff() : previous_(gsl_set_error_handler_off()) {}
+  ~GslHandlerOff() { gsl_set_error_handler(previous_); }
+  GslHandlerOff(const GslHandlerOff&) = delete;
+  GslHandlerOff& operator=(const GslHandlerOff&) = delete;
+
+ private:
+  gsl_error_handler_t* previous_;
+};
+
+struct WorkspaceDeleter {
+  void operator()(gsl_integration_workspace* w) const { gsl_integration_workspace_free(w); }
+};
+using Workspace = std::unique_ptr<gsl_integration_workspace, WorkspaceDeleter>;
+constexpr std::size_t kLimit = 1000;
+
+double call(double x, void* params) {
+  return (*static_cast<const std::function<double(double)>*>(params))(x);
+}
+
+// Adaptive Gauss-Kronrod (21 points) on [lo, hi]; the nodes are interior, so k = 0 is never hit.
+double integrate_panel(const std::function<double(double)>& f, double lo, double hi, double epsabs,
+                       double epsrel, gsl_integration_workspace* ws) {
+  gsl_function gf{&call, const_cast<std::function<double(double)>*>(&f)};
+  double result = 0.0, abserr = 0.0;
+  const int status = gsl_integration_qag(&gf, lo, hi, epsabs, epsrel, kLimit, GSL_INTEG_GAUSS21, ws,
+                                         &result, &abserr);
+  // GSL_EROUND means the requested tolerance is below the attainable rounding: keep the result if
+  // its error estimate is still within a generous multiple of the request.
+  if (status != GSL_SUCCESS &&
+      !(status == GSL_EROUND && abserr <= 100.0 * std::max(epsabs, epsrel * std::abs(result)))) {
+    throw Error(detail::concat("hankel_displacement: quadrature on [", lo, ", ", hi,
+                               "] rad/m failed (", gsl_strerror(status), ", error ", abserr, ")"));
+  }
+  return result;
+}
+
+// Smallest K (a power-of-two multiple of 1e-3/a) from which k H(k) = c_inf to `threshold`
+// relative over 8 consecutive doublings: beyond it, H - c_inf/k is negligible. Coated and layered
+// FRFs converge like (kh)^2 exp(-2 k h_top) (theory.md §2.2), so K ~ 20/h_top.
+double converged_wavenumber(const Frf& frf, double a, double threshold) {
+  const double c_inf = frf.c_inf();
+  int run = 0;
+  double start = 0.0;
+  double k = 1e-3 / a;
+  for (int j = 0; j < 400; ++j, k *= 2.0) {
+    if (std::abs(k * frf(k) / c_inf - 1.0) <= threshold) {
+      if (run == 0) start = k;
+      if (++run == 8) return start;
+    } else {
+      run = 0;
+    }
+  }
+  throw Error(detail::concat("hankel_displacement: k H(k) of FRF \"", frf.name(),
+                             "\" does not approach c_inf() = ", c_inf, " as k grows"));
+}
+
+// \int_lo^hi f dk on panels no wider than a half period of the fastest oscillation of
+// Phi(ka) J0(kr), i.e. pi/(a + r).
+double integrate_panels(const std::function<double(double)>& f, double hi, double a, double r,
+                        double epsabs_total, double epsrel, gsl_integration_workspace* ws) {
+  const double width = pi / (a + r);
+  const auto nb = static_cast<long>(std::ceil(hi / width));
+  const double epsabs = epsabs_total / static_cast<double>(nb);
+  double sum = 0.0;
+  for (long i = 0; i < nb; ++i) {
+    const double lo = static_cast<double>(i) * width;
+    sum += integrate_panel(f, lo, std::min(hi, lo + width), epsabs, epsrel, ws);
+  }
+  return sum;
+}
+
+// Hankel asymptotic expansion of J_nu(x) = sqrt(2/(pi x)) Re[(P + iQ) exp(i(x - nu pi/2 - pi/4))]
+// (DLMF 10.17.3), with 8 terms: at x >= 500 the first omitted term is < 1e-20 relative.
+std::complex<double> hankel_pq(int nu, double x) {
+  const double mu = 4.0 * nu * nu;
+  double coef = 1.0;  // a_k(nu) / x^k
+  std::complex<double> sum = 1.0;
+  for (int k = 1; k <= 8; ++k) {
+    coef *= (mu - (2.0 * k - 1.0) * (2.0 * k - 1.0)) / (k * 8.0 * x);
+    // P = sum (-1)^m a_2m / x^2m, Q = sum (-1)^m a_(2m+1) / x^(2m+1)
+    const double sign = (k / 2) % 2 == 0 ? 1.0 : -1.0;
+    if (k % 2 == 0)
+      sum += sign * coef;
+    else
+      sum += std::complex<double>(0.0, sign * coef);
+  }
+  return sum;
+}
+
+// Amplitudes F, G of Phi(s) = Re[F(s) e^{is}] and J0(rho s) = Re[G(s) e^{i rho s}].
+std::complex<double> shape_amplitude(AxisymmetricLoad load, double s) {
+  if (load == AxisymmetricLoad::hertz) {  // (sin s - s cos s)/s^3, exact
+    return {-1.0 / (s * s), -1.0 / (s * s * s)};
+  }
+  return std::sqrt(2.0 / (pi * s)) / s * hankel_pq(1, s) * std::polar(1.0, -0.75 * pi);
+}
+
+std::complex<double> j0_amplitude(double rho, double s) {
+  if (rho == 0.0) return 1.0;
+  const double x = rho * s;
+  return std::sqrt(2.0 / (pi * x)) * hankel_pq(0, x) * std::polar(1.0, -0.25 * pi);
+}
+
+// \int_S^inf Re[g(s) e^{i omega s}] ds for a smooth, algebraically decaying g.
+double oscillatory_tail(const std::function<std::complex<double>(double)>& g, double omega,
+                        double S, double epsabs) {
+  Workspace ws(gsl_integration_workspace_alloc(kLimit));
+  double total = 0.0;
+  if (omega == 0.0) {
+    const std::function<double(double)> f = [&g](double s) { return g(s).real(); };
+    gsl_function gf{&call, const_cast<std::function<double(double)>*>(&f)};
+    double result = 0.0, abserr = 0.0;
+    const int status =
+        gsl_integration_qagiu(&gf, S, epsabs, 0.0, kLimit, ws.get(), &result, &abserr);
+    if (status != GSL_SUCCESS && !(status == GSL_EROUND && abserr <= 100.0 * epsabs)) {
+      throw Error(detail::concat("hankel_displacement: tail quadrature failed (",
+                                 gsl_strerror(status), ")"));
+    }
+    return result;
+  }
+  // Re[g e^{i w s}] = Re g cos(w s) - Im g sin(w s); for w < 0 use |w| and flip the sine.
+  const double w = std::abs(omega);
+  const double sine_sign = omega > 0 ? -1.0 : 1.0;
+  Workspace cycles(gsl_integration_workspace_alloc(kLimit));
+  for (auto kind : {GSL_INTEG_COSINE, GSL_INTEG_SINE}) {
+    const std::function<double(double)> f = [&g, kind, sine_sign](double s) {
+      return kind == GSL_INTEG_COSINE ? g(s).real() : sine_sign * g(s).imag();
+    };
+    gsl_function gf{&call, const_cast<std::function<double(double)>*>(&f)};
+    gsl_integration_qawo_table* table = gsl_integration_qawo_table_alloc(w, 1.0, kind, 50);
+    double result = 0.0, abserr = 0.0;
+    const int status = gsl_integration_qawf(&gf, S, epsabs, kLimit, ws.get(), cycles.get(), table,
+                                            &result, &abserr);
+    gsl_integration_qawo_table_free(table);
+    if (status != GSL_SUCCESS && !(status == GSL_EROUND && abserr <= 100.0 * epsabs)) {
+      throw Error(detail::concat("hankel_displacement: oscillatory tail quadrature failed (",
+                                 gsl_strerror(status), ", error ", abserr, ")"));
+    }
+    total += result;
+  }
+  return total;
+}
+
+// \int_S^inf Phi(s) J0(rho s) ds by Phi J0 = (1/2) Re[F G e^{i(1+rho)s}] + (1/2) Re[F conj(G)
+// e^{i(1-rho)s}], valid once s and rho s are in the asymptotic range.
+double asymptotic_tail(AxisymmetricLoad load, double rho, double S, double epsabs) {
+  const auto sum_part = [load, rho](double s) {
+    return 0.5 * shape_amplitude(load, s) * j0_amplitude(rho, s);
+  };
+  const auto difference_part = [load, rho](double s) {
+    return 0.5 * shape_amplitude(load, s) * std::conj(j0_amplitude(rho, s));
+  };
+  return oscillatory_tail(sum_part, 1.0 + rho, S, 0.5 * epsabs) +
+         oscillatory_tail(difference_part, 1.0 - rho, S, 0.5 * epsabs);
+}
+
+}  // namespace
+
+double axisymmetric_load_transform(AxisymmetricLoad load, double amplitude, double a, double k) {
+  COATFFT_REQUIRE(std::isfinite(a) && a > 0, "axisymmetric_load_transform: a = ", a,
+                  " m, but a must be finite and > 0");
+  COATFFT_REQUIRE(std::isfinite(k) && k >= 0, "axisymmetric_load_transform: k = ", k,
+                  " rad/m, but k must be finite and >= 0");
+  return 2.0 * pi * amplitude * a * a * load_shape(load, k * a);
+}
+
+double hankel_displacement(const Frf& frf, AxisymmetricLoad load, double amplitude, double a,
+                           double r, double rel_tol, HankelRoute route) {
+  COATFFT_REQUIRE(std::isfinite(a) && a > 0, "hankel_displacement: a = ", a,
+                  " m, but a must be finite and > 0");
+  COATFFT_REQUIRE(std::isfinite(r) && r >= 0, "hankel_displacement: r = ", r,
+                  " m, but r must be finite and >= 0");
+  COATFFT_REQUIRE(std::isfinite(amplitude), "hankel_displacement: amplitude = ", amplitude,
+                  " Pa, but it must be finite");
+  COATFFT_REQUIRE(rel_tol >= 1e-14 && rel_tol < 1e-2, "hankel_displacement: rel_tol = ", rel_tol,
+                  ", but it must lie in [1e-14, 1e-2)");
+  const GslHandlerOff handler_off;
+  Workspace ws(gsl_integration_workspace_alloc(kLimit));
+  const double c_inf = frf.c_inf();
+  // u ~ amplitude a C: the dimensionless integrals below are O(max(C0, Cinf)/a) or O(1).
+  const double scale = std::max(frf.c0(), c_inf) / a;
+  const double k_converged = converged_wavenumber(frf, a, 1e-3 * rel_tol);
+  // u = amplitude a^2 \int_0^inf k H(k) Phi(ka) J0(kr) dk (the 2 pi of P^ cancels the 1/2pi).
+  if (route == HankelRoute::split) {
+    const std::function<double(double)> remainder = [&](double k) {
+      return (k * frf(k) - c_inf) * load_shape(load, k * a) * gsl_sf_bessel_J0(k * r);
+    };
+    const double rest = integrate_panels(remainder, k_converged, a, r, 1e-2 * rel_tol * scale,
+                                         1e-2 * rel_tol, ws.get());
+    const double e_star_top = 2.0 / c_inf;
+    const double homogeneous = load == AxisymmetricLoad::hertz
+                                   ? hertz_displacement(r, amplitude, a, e_star_top)
+                                   : uniform_disk_displacement(r, amplitude, a, e_star_top);
+    return homogeneous + amplitude * a * a * rest;
+  }
+  // Direct: beyond K both k H = c_inf (to 1e-3 rel_tol) and the Hankel expansions hold
+  // (k a >= 500 and k r >= 500, where 8 terms are exact to double precision).
+  const double rho = r / a;
+  const double K = std::max(k_converged, 500.0 / a * (rho > 0 ? std::max(1.0, 1.0 / rho) : 1.0));
+  const std::function<double(double)> full = [&](double k) {
+    return k * frf(k) * load_shape(load, k * a) * gsl_sf_bessel_J0(k * r);
+  };
+  const double head =
+      integrate_panels(full, K, a, r, 1e-2 * rel_tol * scale, 1e-2 * rel_tol, ws.get());
+  // \int_K^inf Phi(ka) J0(kr) dk = (1/a) \int_{Ka}^inf Phi(s) J0(rho s) ds.
+  const double tail = c_inf / a * asymptotic_tail(load, rho, K * a, 1e-3 * rel_tol);
+  return amplitude * a * a * (head + tail);
+}
+
+}  // namespace coatfft

@@ -1,0 +1,36 @@
+#pragma once
+// Continuous reference for any FRF under an axisymmetric surface pressure: the surface normal
+// displacement as a Hankel integral (theory.md §0, §1.4-1.5),
+//   u_z(r) = (1/2pi) \int_0^inf H(k) P^(k) J0(k r) k dk,   P^(k) = 2 pi \int_0^a p(s) J0(k s) s ds.
+// It checks FFT pipelines for coated and layered bodies, where no closed form exists.
+#include "frf/frf.hpp"
+
+namespace coatfft {
+
+/// Axisymmetric pressures on the disk r < a: Hertz p0 sqrt(1 - r^2/a^2), or uniform p.
+enum class AxisymmetricLoad { hertz, uniform_disk };
+
+/// How the Hankel integral is evaluated (both target the same rel_tol).
+enum class HankelRoute {
+  /// H = c_inf/k + (H - c_inf/k): the first part in closed form (theory.md (1.6)-(1.9) with
+  /// E* = 2/c_inf), the remainder, which decays like exp(-2 k h_top), by panel quadrature on a
+  /// finite range. Fast and accurate; the default.
+  split,
+  /// The full integrand by panel quadrature up to a large K, plus the tail beyond K from the
+  /// Hankel asymptotic expansions of the load transform and J0 (GSL qawf). Slower; an
+  /// independent cross-check of `split` that does not use the homogeneous closed forms.
+  direct,
+};
+
+/// 2-D Fourier transform P^(k) [N] of the load at k >= 0 [rad/m]: Hertz 2 pi p0 a^2 j1(ka)/(ka),
+/// uniform disk 2 pi p a^2 J1(ka)/(ka). amplitude = p0 or p [Pa], a = load radius [m].
+double axisymmetric_load_transform(AxisymmetricLoad load, double amplitude, double a, double k);
+
+/// u_z(r) [m] at radius r >= 0 [m] for the load of `amplitude` [Pa] and radius a > 0 [m] on the
+/// body of FRF `frf`, to relative accuracy ~rel_tol (1e-14 <= rel_tol < 1e-2). Throws
+/// InvalidArgument on bad arguments and Error when the quadrature fails to reach the tolerance.
+double hankel_displacement(const Frf& frf, AxisymmetricLoad load, double amplitude, double a,
+                           double r, double rel_tol = 1e-10,
+                           HankelRoute route = HankelRoute::split);
+
+}  // namespace coatfft
