@@ -325,6 +325,18 @@ Scene read_scene(const std::filesystem::path& path) {
     const std::filesystem::path scene_dir = path.parent_path();
     Scene scene{read_grid(root), read_body(root), std::nullopt, read_method(root, scene_dir),
                 std::nullopt};
+    const MethodSpec& method = scene.method;
+    if (method.name == "frf-spectral" || method.name == "frf-dcfft") {
+      for (const double n : {static_cast<double>(scene.grid.nx()), static_cast<double>(scene.grid.ny())}) {
+        const double m = method.alpha * n;
+        COATFFT_REQUIRE(std::abs(m - std::round(m)) < 1e-9 * m, "[method] alpha = ", method.alpha,
+                        ": alpha * nx and alpha * ny must be whole numbers of cells (alpha * ",
+                        n, " = ", m, ")");
+      }
+      // Offsets up to N - 1 must not wrap onto each other on the extended lattice.
+      COATFFT_REQUIRE(method.name != "frf-dcfft" || method.alpha >= 2, "[method] alpha = ",
+                      method.alpha, ": frf-dcfft needs alpha >= 2");
+    }
     COATFFT_REQUIRE(root.contains("pressure") != root.contains("contact"),
                     "a scene needs exactly one of [pressure] (known load) and [contact]");
     if (root.contains("pressure"))

@@ -6,8 +6,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <numbers>
 #include <utility>
@@ -260,10 +258,6 @@ class RadialTable {
   std::vector<double> g_;
 };
 
-double img_factor() {
-  const char* e = std::getenv("SPLIT_IMG");
-  return e ? std::atof(e) : 32.0;
-}
 // f on [0, k_max] at uniform spacing dk, cubic Lagrange interpolation; 0 beyond k_max.
 class UniformTable {
  public:
@@ -272,7 +266,8 @@ class UniformTable {
   UniformTable(const F& f, double dk, double k_max) : dk_(dk), k_max_(k_max) {
     const auto n = static_cast<std::ptrdiff_t>(std::ceil(k_max / dk)) + 6;
     v_.resize(static_cast<std::size_t>(n));
-    for (std::ptrdiff_t i = 0; i < n; ++i) v_[static_cast<std::size_t>(i)] = f(dk * static_cast<double>(i));
+    for (std::ptrdiff_t i = 0; i < n; ++i)
+      v_[static_cast<std::size_t>(i)] = f(dk * static_cast<double>(i));
   }
   std::ptrdiff_t size() const { return static_cast<std::ptrdiff_t>(v_.size()); }
   double operator()(double k) const {
@@ -306,12 +301,8 @@ double sinc_pi(double x) {
 InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
                                  const SplitKernelOptions& options, SplitKernelReport* report) {
   const auto t_start = std::chrono::steady_clock::now();
-  auto t_last = t_start;
-  const auto debug_time = [&](const char* what) {
-    if (!std::getenv("SPLIT_DEBUG")) return;
-    const auto now = std::chrono::steady_clock::now();
-    std::fprintf(stderr, "%s: %.3f s\n", what, std::chrono::duration<double>(now - t_last).count());
-    t_last = now;
+  const auto since = [](std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
   };
   COATFFT_REQUIRE(std::isfinite(options.beta) && options.beta >= 0,
                   "split_frf_kernel: beta = ", options.beta,
@@ -409,7 +400,6 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
       return std::exp(-s) * s * s * s / 6.0 * sum;
     };
 
-      debug_time("setup");
     // ---- Long-range part R w: Hankel table in r, Gauss-Legendre over each cell. ----
     const double log_tol = std::log(1.0 / options.tolerance);
     // w < tol beyond k_c: exp(-s) s^2/2 < tol at s = log_tol + 2 log(log_tol) (two Newton-free
@@ -418,10 +408,11 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
     for (int it = 0; it < 4; ++it) s_c = log_tol + 2.0 * std::log(s_c) - std::log(2.0);
     const double k_c = std::isinf(sigma) ? k_r : std::min(k_r, std::sqrt(s_c) / sigma);
     if (sigma > 0.0 && k_c > 0.0) {
+      const auto t_long = std::chrono::steady_clock::now();
       const double r_max = std::hypot(grid.lx(), grid.ly());
       // Panels: geometric (halving) from the first uniform panel down to R's smallest scale, then
       // uniform of width <= 2 pi / r_max (one J0 period at r_max) up to k_c; 16 nodes each.
-      const double dk_u = std::min(2.0 * pi / r_max, k_c);
+      const double dk_u = std::min(4.0 * pi / r_max, k_c);
       std::vector<double> edges = {0.0};
       {
         std::vector<double> geo;
@@ -448,13 +439,12 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
       }
       // g is band-limited to k_c: 6-point interpolation with k_c dr = 0.3 is accurate to ~1e-9
       // of g's scale (checked against a table with half the step in the tests).
-      const double dr = 0.3 / k_c;
+      const double dr = 0.5 / k_c;
       const double cost = static_cast<double>(kn.size()) * (r_max / dr);
       COATFFT_REQUIRE(cost < 4e9, "split_frf_kernel: the Hankel table would need ", cost,
                       " Bessel evaluations (a layer much thinner than the domain with the hankel "
                       "route); use SplitRoute::automatic");
       const RadialTable table(kw, kn, dr, r_max + 4.0 * d_max);
-      debug_time("hankel table");
       rep.hankel_r_points = table.size();
       rep.hankel_k_nodes = static_cast<std::ptrdiff_t>(kn.size());
       // Cell rule: the kernel is smooth on the scale ell = sqrt(log_tol)/k_c (= sigma for the
@@ -500,16 +490,17 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
           quarter(i, j) += sum;
         }
       }
+      rep.seconds_long = since(t_long);
     }
 
-      debug_time("cells");
     // ---- Short-range part R (1 - w): periodic lattice with the aliases folded. ----
     if (!std::isinf(sigma)) {
+      const auto t_short = std::chrono::steady_clock::now();
       // Half periods (in cells): the images of the short-range kernel stay >= 32 sigma away.
-      const std::ptrdiff_t hx = std::max<std::ptrdiff_t>(
-          nx, static_cast<std::ptrdiff_t>(std::ceil(img_factor() * sigma / dx)));
-      const std::ptrdiff_t hy = std::max<std::ptrdiff_t>(
-          ny, static_cast<std::ptrdiff_t>(std::ceil(img_factor() * sigma / dy)));
+      const std::ptrdiff_t hx =
+          std::max<std::ptrdiff_t>(nx, static_cast<std::ptrdiff_t>(std::ceil(32.0 * sigma / dx)));
+      const std::ptrdiff_t hy =
+          std::max<std::ptrdiff_t>(ny, static_cast<std::ptrdiff_t>(std::ceil(32.0 * sigma / dy)));
       const double k_s = k_r;
       // R (1 - w) on a uniform k grid (cubic interpolation, no logarithm per lookup: the fold
       // makes ~N^2 pi P^2 lookups), refined until the midpoints match the exact R to tol/k_s.
@@ -531,7 +522,6 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
             const double k = (static_cast<double>(i) + 0.5) * dk;
             if (k > 0.0 && k < k_s) err = std::max(err, std::abs(short_table(k) - f(k)));
           }
-          if (std::getenv("SPLIT_DEBUG")) std::fprintf(stderr, "table n=%ld err=%g tol=%g\n", (long)short_table.size(), err, tol_r);
           if (err <= tol_r) break;
           dk *= 0.5;
         }
@@ -574,8 +564,14 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
       const auto npx = static_cast<std::size_t>(2 * px + 1);
       const auto npy = static_cast<std::size_t>(2 * py + 1);
       const double k_s2 = k_s * k_s;
+      // Square cells on a square lattice: F(m, n) = F(n, m) (R is radial), fold half of it.
+      const bool symmetric = dx == dy && hx == hy && px == py;
       for (std::ptrdiff_t n = 0; n < sy; ++n) {
         for (std::ptrdiff_t m = 0; m < sx; ++m) {
+          if (symmetric && m < n) {
+            buf.data()[n * sx + m] = buf.data()[m * sx + n];
+            continue;
+          }
           double sum = 0.0;
           for (std::size_t q = 0; q < npy; ++q) {
             const std::size_t iy = static_cast<std::size_t>(n) * npy + q;
@@ -594,16 +590,15 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
           buf.data()[n * sx + m] = sum;
         }
       }
-      debug_time("fold");
       plan.execute();
       // DCT-I of the even spectrum = the sum over the full period (1/(Mx My) = 1/(4 hx hy)).
       const double norm = 1.0 / (4.0 * static_cast<double>(hx) * static_cast<double>(hy));
       for (std::ptrdiff_t j = 0; j < ny; ++j)
         for (std::ptrdiff_t i = 0; i < nx; ++i) quarter(i, j) += norm * buf.data()[j * sx + i];
+      rep.seconds_short = since(t_short);
     }
   }
 
-      debug_time("dct");
   // Mirror the quarter (the split kernel is even in x and y) into the wrapped Love array.
   for (std::ptrdiff_t dj = 0; dj < ny; ++dj)
     for (std::ptrdiff_t di = 0; di < nx; ++di) {
@@ -615,7 +610,7 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
       if (mj != dj) wrapped(di, mj) += v;
       if (mi != di && mj != dj) wrapped(mi, mj) += v;
     }
-  rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+  rep.seconds = since(t_start);
   if (report != nullptr) *report = rep;
   return InfluenceKernel(grid, std::move(wrapped));
 }

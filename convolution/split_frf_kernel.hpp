@@ -9,9 +9,10 @@
 // (b) exp(-beta k)/k <-> 1/(2 pi sqrt(r^2 + beta^2)): its cell integral in closed form;
 // (c) R(k): bounded, O(k^0) at k = 0, decaying fast. R is split once more with a Gaussian window
 //     w = exp(-(sigma k)^2) (an Ewald-type split): R w has a smooth, long-range kernel that is
-//     tabulated by a 1-D Hankel transform and integrated over each cell in space (no periodisation),
-//     and R (1 - w) has a short-range kernel whose cell-averaged coefficients are summed on a
-//     periodic lattice with every alias k + 2 pi (p/dx, q/dy) folded in (no truncation at Nyquist).
+//     tabulated by a 1-D Hankel transform and integrated over each cell in space (no
+//     periodisation), and R (1 - w) has a short-range kernel whose cell-averaged coefficients are
+//     summed on a periodic lattice with every alias k + 2 pi (p/dx, q/dy) folded in (no truncation
+//     at Nyquist).
 #include <cstddef>
 
 #include "convolution/influence_kernel.hpp"
@@ -22,7 +23,8 @@ namespace coatfft {
 
 /// How the bounded remainder R(k) of the split is turned into influence coefficients.
 enum class SplitRoute {
-  automatic,  ///< the Gaussian-windowed split: long-range part by Hankel, short-range on the lattice
+  automatic,  ///< the Gaussian-windowed split: long-range part by Hankel, short-range on the
+              ///< lattice
   periodic,   ///< all of R on the periodic lattice of period (2nx dx, 2ny dy), aliases folded
               ///< (periodisation error of R's r^-3 tail: accurate for coatings thin against L only)
   hankel,     ///< all of R by the Hankel table and space quadrature (cost grows like (L/h)^2 and
@@ -47,10 +49,10 @@ struct SplitKernelOptions {
 
 /// What split_frf_kernel did, for benchmarks and the validation table.
 struct SplitKernelReport {
-  double c0 = 0.0;     ///< lim k H [1/Pa]
-  double c_inf = 0.0;  ///< lim_{k->inf} k H [1/Pa]
-  double beta = 0.0;   ///< beta used [m]
-  double sigma = 0.0;  ///< Gaussian window used [m] (0: periodic route, inf: Hankel route)
+  double c0 = 0.0;              ///< lim k H [1/Pa]
+  double c_inf = 0.0;           ///< lim_{k->inf} k H [1/Pa]
+  double beta = 0.0;            ///< beta used [m]
+  double sigma = 0.0;           ///< Gaussian window used [m] (0: periodic route, inf: Hankel route)
   bool remainder_zero = false;  ///< R vanished to rounding (homogeneous or identical layers)
   int alias_order = 0;          ///< largest alias order folded
   bool alias_capped = false;    ///< the fold needed more than max_alias_order
@@ -58,6 +60,8 @@ struct SplitKernelReport {
   std::ptrdiff_t hankel_k_nodes = 0;   ///< quadrature nodes per radius
   int cell_rule = 0;                   ///< Gauss-Legendre nodes per cell side (incl. subdivision)
   double seconds = 0.0;                ///< wall-clock time of the whole construction [s]
+  double seconds_long = 0.0;           ///< of which the Hankel table and cell quadrature [s]
+  double seconds_short = 0.0;          ///< of which the alias fold and its DCT [s]
 };
 
 /// Influence coefficients K(di, dj) [m/Pa] of the FRF `frf` on `grid` by the split above, in the

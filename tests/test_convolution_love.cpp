@@ -98,9 +98,10 @@ TEST_CASE("love_influence equals a polar quadrature of 1/(pi R) over the rectang
     const double reference = polar_quadrature(c.x, c.y, c.dx, c.dy);
     const double value = love_influence(c.x, c.y, c.dx, c.dy);
     INFO("x = " << c.x << ", y = " << c.y << ", dx = " << c.dx << ", dy = " << c.dy);
-    // QAGP at epsrel 2e-14 on a piecewise-smooth integrand is good to ~1e-14; the closed form
-    // loses ~log10((r/d)^2) digits to cancellation (3e-13 at r = 32 d); 1e-12 covers both.
-    CHECK(value == Approx(reference).epsilon(1e-12).margin(0.0));
+    // QAGP at epsrel 2e-14 on a piecewise-smooth integrand; the closed form loses
+    // ~log10((r/d)^2) digits to cancellation near the 32 d switch (measured differences: <= 1.1e-14
+    // everywhere, 1.07e-14 at r = 31.9 d). 5e-14 leaves margin and still catches any formula slip.
+    CHECK(value == Approx(reference).epsilon(5e-14).margin(0.0));
   }
 }
 

@@ -9,6 +9,7 @@
 #include <complex>
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <numbers>
 
 #include "core/error.hpp"
@@ -32,15 +33,34 @@ double load_shape(AxisymmetricLoad load, double s) {
 }
 
 // GSL's default handler aborts; turn it off while we integrate and report failures ourselves.
+// The handler is process-global: a reference count under a mutex lets concurrent calls overlap
+// (the first one in saves the caller's handler, the last one out restores it).
 class GslHandlerOff {
  public:
-  GslHandlerOff() : previous_(gsl_set_error_handler_off()) {}
-  ~GslHandlerOff() { gsl_set_error_handler(previous_); }
+  GslHandlerOff() {
+    const std::lock_guard<std::mutex> lock(mutex());
+    if (count()++ == 0) previous() = gsl_set_error_handler_off();
+  }
+  ~GslHandlerOff() {
+    const std::lock_guard<std::mutex> lock(mutex());
+    if (--count() == 0) gsl_set_error_handler(previous());
+  }
   GslHandlerOff(const GslHandlerOff&) = delete;
   GslHandlerOff& operator=(const GslHandlerOff&) = delete;
 
  private:
-  gsl_error_handler_t* previous_;
+  static std::mutex& mutex() {
+    static std::mutex m;
+    return m;
+  }
+  static int& count() {
+    static int n = 0;
+    return n;
+  }
+  static gsl_error_handler_t*& previous() {
+    static gsl_error_handler_t* handler = nullptr;
+    return handler;
+  }
 };
 
 struct WorkspaceDeleter {

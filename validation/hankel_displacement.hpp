@@ -29,6 +29,8 @@ double axisymmetric_load_transform(AxisymmetricLoad load, double amplitude, doub
 /// u_z(r) [m] at radius r >= 0 [m] for the load of `amplitude` [Pa] and radius a > 0 [m] on the
 /// body of FRF `frf`, to relative accuracy ~rel_tol (1e-14 <= rel_tol < 1e-2). Throws
 /// InvalidArgument on bad arguments and Error when the quadrature fails to reach the tolerance.
+/// Cost: ~(a + r)/h_top quadrature panels of 21 FRF calls (split route); safe to call from
+/// several threads at once (GSL's error handler is switched off for the duration, ref-counted).
 double hankel_displacement(const Frf& frf, AxisymmetricLoad load, double amplitude, double a,
                            double r, double rel_tol = 1e-10,
                            HankelRoute route = HankelRoute::split);

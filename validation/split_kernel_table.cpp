@@ -37,10 +37,10 @@ namespace {
 
 using namespace coatfft;
 
-constexpr double a = 1.0;          // contact radius [m]
-constexpr double p0 = 1.0;         // peak pressure [Pa]
-constexpr double cell = a / 32.0;  // cell size [m]
-constexpr std::ptrdiff_t n = 129;  // cells per side
+constexpr double a = 1.0;                                // contact radius [m]
+constexpr double p0 = 1.0;                               // peak pressure [Pa]
+constexpr double cell = a / 32.0;                        // cell size [m]
+constexpr std::ptrdiff_t n = 129;                        // cells per side
 const std::vector<double> radii = {0.0, 0.5, 1.0, 2.0};  // r / a
 
 struct Case {
@@ -49,17 +49,18 @@ struct Case {
 };
 
 struct Result {
-  std::vector<double> split;    // error / u_ref(0) at radii
-  std::vector<double> seed2;    // seed frf-dcfft alpha = 2
-  std::vector<double> seed4;    // alpha = 4
+  std::vector<double> split;  // error / u_ref(0) at radii
+  std::vector<double> seed2;  // seed frf-dcfft alpha = 2
+  std::vector<double> seed4;  // alpha = 4
   double u0_ref = 0.0;
-  double seconds_split = 0.0;   // split kernel construction [s]
+  double seconds_split = 0.0;  // split kernel construction [s]
   SplitKernelReport report;
   bool finite = true;
   std::string failure;
 };
 
-std::vector<double> errors(const Field& u, const std::vector<double>& ref, double u0, bool& finite) {
+std::vector<double> errors(const Field& u, const std::vector<double>& ref, double u0,
+                           bool& finite) {
   std::vector<double> e;
   const std::ptrdiff_t c = n / 2;
   for (std::size_t i = 0; i < radii.size(); ++i) {
@@ -118,11 +119,12 @@ int main(int argc, char** argv) {
   }
   try {
     std::vector<Case> cases;
-    const std::vector<double> ratios = quick ? std::vector<double>{0.1, 10.0}
-                                             : std::vector<double>{0.01, 0.1, 10.0, 100.0};
-    const std::vector<double> thick = quick ? std::vector<double>{0.1, 1.0}
-                                            : std::vector<double>{0.01, 0.1, 1.0, 10.0, 50.0};
-    const std::vector<double> nus = quick ? std::vector<double>{0.3} : std::vector<double>{0.3, 0.4999};
+    const std::vector<double> ratios =
+        quick ? std::vector<double>{0.1, 10.0} : std::vector<double>{0.01, 0.1, 10.0, 100.0};
+    const std::vector<double> thick =
+        quick ? std::vector<double>{0.1, 1.0} : std::vector<double>{0.01, 0.1, 1.0, 10.0, 50.0};
+    const std::vector<double> nus =
+        quick ? std::vector<double>{0.3} : std::vector<double>{0.3, 0.4999};
     for (Interface itf : {Interface::bonded, Interface::frictionless})
       for (double nu : nus)
         for (double ratio : ratios)
@@ -139,10 +141,10 @@ int main(int argc, char** argv) {
       os << "2 coatings: E " << e1 << "/" << e2 << ", h " << h1 << "/" << h2 << "a, "
          << (i1 == Interface::bonded ? "b" : "f") << "/" << (i2 == Interface::bonded ? "b" : "f")
          << " | | | 0.3";
-      cases.push_back({os.str(), std::make_unique<MultilayerFrf>(LayerStack(
-                                     {Coating{Material(e1, 0.3), h1 * a, i1},
-                                      Coating{Material(e2, 0.3), h2 * a, i2}},
-                                     Material(1.0, 0.3)))});
+      cases.push_back({os.str(), std::make_unique<MultilayerFrf>(
+                                     LayerStack({Coating{Material(e1, 0.3), h1 * a, i1},
+                                                 Coating{Material(e2, 0.3), h2 * a, i2}},
+                                                Material(1.0, 0.3)))});
     };
     stack(100.0, 0.05, Interface::bonded, 0.1, 0.5, Interface::bonded);
     stack(0.1, 0.1, Interface::frictionless, 10.0, 1.0, Interface::bonded);
@@ -183,14 +185,15 @@ int main(int argc, char** argv) {
       std::ostringstream line;
       line << "| " << c.label << " | " << sci(r.split[0]) << " | " << sci(r.split[1]) << " | "
            << sci(r.split[2]) << " | " << sci(r.split[3]) << " | " << (pass ? "yes" : "**no**")
-           << " | " << sci(worst_required(r.seed2)) << " | " << sci(worst_required(r.seed4)) << " | "
-           << r.report.beta / a << " | " << r.report.alias_order
+           << " | " << sci(worst_required(r.seed2)) << " | " << sci(worst_required(r.seed4))
+           << " | " << r.report.beta / a << " | " << r.report.alias_order
            << (r.report.alias_capped ? " (capped)" : "") << " | " << r.seconds_split << " |\n";
       md << line.str();
       std::cout << line.str() << std::flush;
     }
-    md << "\n" << nb_pass << " of " << nb_cases << " cases pass; worst split error "
-       << sci(worst) << " of u(0).\n";
+    md << "\n"
+       << nb_pass << " of " << nb_cases << " cases pass; worst split error " << sci(worst)
+       << " of u(0).\n";
     std::cout << nb_pass << " of " << nb_cases << " pass, worst " << worst << "\n";
     std::ofstream out(out_path);
     if (!out) {
