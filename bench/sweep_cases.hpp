@@ -31,12 +31,14 @@ struct SweepCase {
   std::string reference;  ///< how u_ref is obtained (for the CSV header)
   LayerStack stack;
   Sampling sampling;
-  double p0 = 1e9;   ///< Hertz peak pressure [Pa]
-  double a = 1e-3;   ///< contact radius [m]
+  double p0 = 1e9;             ///< Hertz peak pressure [Pa]
+  double a = 1e-3;             ///< contact radius [m]
   double half_width = 1.5e-3;  ///< the domain is [-half_width, half_width]^2 [m]
 };
 
-inline Material steel() { return Material(210e9, 0.3); }
+inline Material steel() {
+  return Material(210e9, 0.3);
+}
 
 inline SweepCase coated_case(const std::string& name, double modulus_ratio, double h_over_a) {
   const double a = 1e-3;
@@ -180,8 +182,8 @@ class RadialReference {
     if (w_.empty()) return 0.0;
     const double t = r / dr_;
     const auto base = static_cast<std::ptrdiff_t>(std::floor(t)) - 2;  // nodes base..base+5
-    COATFFT_REQUIRE(base + 5 < static_cast<std::ptrdiff_t>(w_.size()),
-                    "RadialReference: r = ", r, " beyond the table");
+    COATFFT_REQUIRE(base + 5 < static_cast<std::ptrdiff_t>(w_.size()), "RadialReference: r = ", r,
+                    " beyond the table");
     double sum = 0.0;
     for (std::ptrdiff_t m = 0; m < 6; ++m) {
       double weight = 1.0;
@@ -201,7 +203,9 @@ class RadialReference {
 };
 
 /// The largest cell-centre radius of a case's grids [m] (the domain's half diagonal).
-inline double max_radius(const SweepCase& c) { return std::sqrt(2.0) * c.half_width; }
+inline double max_radius(const SweepCase& c) {
+  return std::sqrt(2.0) * c.half_width;
+}
 
 /// The reference displacement of case `c` on `grid`, from the radial reference `u_ref`.
 inline Reference reference(const RadialReference& u_ref, const Grid& grid) {

@@ -114,10 +114,8 @@ ContactResult ContactSolver::run(const Field& h, ContactControl control, double 
   const std::ptrdiff_t n_cells = nx * ny;
   const double* hd = h.data();
   double* pd = p.data();
-  double* ud = u.data();
   double* gd = g.data();
   double* td = t.data();
-  double* rd = r.data();
   double* qd = p_old.data();
   double* zd = z.data();
   double g_dot_z_old = 1.0;
@@ -129,6 +127,7 @@ ContactResult ContactSolver::run(const Field& h, ContactControl control, double 
     // Step 1: gap of the current pressure; on the contact set I_c = {p > 0} it should be constant
     // (load control: its mean is the unknown approach) or zero (approach control).
     op_.apply(p, u);
+    const double* ud = u.data();  // fetched after apply: an operator may reallocate its output
     std::ptrdiff_t n_contact = 0;
     double g_sum = 0.0;
     for (std::ptrdiff_t k = 0; k < n_cells; ++k) {
@@ -186,6 +185,7 @@ ContactResult ContactSolver::run(const Field& h, ContactControl control, double 
     // constant displacement is absorbed by the approach, so it must not steer the step. This is
     // also what makes the iterates independent of the operator's g(0).
     op_.apply(t, r);
+    const double* rd = r.data();
     double r_mean = 0.0;
     if (load_control) {
       for (std::ptrdiff_t k = 0; k < n_cells; ++k) {

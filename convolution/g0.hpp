@@ -16,8 +16,9 @@ enum class G0Method {
   /// accurate to ~1e-14 relative.
   regularized,
   /// Plain adaptive quadrature of the singular H over the cell (the seed's quad2d approach):
-  /// nested adaptive Gauss-Kronrod on a quadrant, the 1/k singularity at its corner. Slow and
-  /// only as accurate as its error estimate; kept to reproduce the seed's Figure 3(b).
+  /// globally adaptive 15 x 15 Gauss-Kronrod on rectangles of a quadrant, whose corner holds the
+  /// 1/k singularity. Slower, accurate to about its tolerance (measured: ~tol/8, from below);
+  /// kept to reproduce the seed's Figure 3(b).
   quadrature,
 };
 
@@ -40,9 +41,9 @@ inline constexpr double default_g0_tolerance = 1e-13;
 double mean_inverse_wavenumber(double dkx, double dky);
 
 /// g(0) for `frf` on a frequency lattice of spacings dkx = 2 pi / period_x and
-/// dky = 2 pi / period_y [rad/m]. `tolerance` is the requested relative accuracy (> 0, finite; for
-/// `regularized` it applies to the numerical remainder, for `quadrature` to the whole integral).
-/// Throws InvalidArgument on bad spacings or tolerance.
+/// dky = 2 pi / period_y [rad/m]. `tolerance` (> 0, finite) is the requested accuracy relative to
+/// g(0) (for `regularized`, relative to its closed-form part C0 mean(1/|k|), the same order).
+/// Throws InvalidArgument on bad spacings or tolerance, or if H is not finite on the cell.
 G0Result compute_g0(const Frf& frf, double dkx, double dky, G0Method method,
                     double tolerance = default_g0_tolerance);
 

@@ -258,22 +258,24 @@ class RadialTable {
   std::vector<double> g_;
 };
 
-// f on [0, k_max] at uniform spacing dk, cubic Lagrange interpolation; 0 beyond k_max.
+// f on [k0, k_max] at uniform spacing dk (nodes from k0 - 2 dk, so that every lookup has a
+// centred 6-point stencil), quintic Lagrange interpolation; 0 beyond k_max.
 class UniformTable {
  public:
   UniformTable() = default;
   template <typename F>
-  UniformTable(const F& f, double dk, double k_max) : dk_(dk), k_max_(k_max) {
-    const auto n = static_cast<std::ptrdiff_t>(std::ceil(k_max / dk)) + 6;
+  UniformTable(const F& f, double k0, double dk, double k_max)
+      : k0_(k0 - 2.0 * dk), dk_(dk), k_max_(k_max) {
+    const auto n = static_cast<std::ptrdiff_t>(std::ceil((k_max - k0) / dk)) + 6;
     v_.resize(static_cast<std::size_t>(n));
     for (std::ptrdiff_t i = 0; i < n; ++i)
-      v_[static_cast<std::size_t>(i)] = f(dk * static_cast<double>(i));
+      v_[static_cast<std::size_t>(i)] = f(std::abs(k0_ + dk * static_cast<double>(i)));
   }
   std::ptrdiff_t size() const { return static_cast<std::ptrdiff_t>(v_.size()); }
   double operator()(double k) const {
     if (k >= k_max_) return 0.0;
     // 6-point Lagrange (quintic): error ~ dk^6 f^(6) / 1000.
-    const double s = k / dk_;
+    const double s = (k - k0_) / dk_;
     auto i = static_cast<std::ptrdiff_t>(s) - 2;
     i = std::clamp<std::ptrdiff_t>(i, 0, size() - 6);
     const double x = s - static_cast<double>(i);
@@ -285,6 +287,7 @@ class UniformTable {
   }
 
  private:
+  double k0_ = 0.0;
   double dk_ = 1.0;
   double k_max_ = 0.0;
   std::vector<double> v_;
@@ -494,7 +497,7 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
     }
 
     // ---- Short-range part R (1 - w): periodic lattice with the aliases folded. ----
-    if (!std::isinf(sigma)) {
+    if (!std::isinf(sigma) && k_r > 0.0) {
       const auto t_short = std::chrono::steady_clock::now();
       // Half periods (in cells): the images of the short-range kernel stay >= 32 sigma away.
       const std::ptrdiff_t hx =
@@ -502,30 +505,6 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
       const std::ptrdiff_t hy =
           std::max<std::ptrdiff_t>(ny, static_cast<std::ptrdiff_t>(std::ceil(32.0 * sigma / dy)));
       const double k_s = k_r;
-      // R (1 - w) on a uniform k grid (cubic interpolation, no logarithm per lookup: the fold
-      // makes ~N^2 pi P^2 lookups), refined until the midpoints match the exact R to tol/k_s.
-      UniformTable short_table;
-      {
-        const auto f = [&](double k) {
-          if (k == 0.0) return sigma == 0.0 ? rem(0.0) : 0.0;
-          return rem.exact(k) * one_minus_window(k);
-        };
-        double dk = k_s / 2048.0;
-        if (sigma > 0.0) dk = std::min(dk, 0.02 / sigma);
-        double f_max = 0.0;
-        for (int i = 1; i <= 4096; ++i) f_max = std::max(f_max, std::abs(rem(k_s * i / 4096.0)));
-        const double tol_r = options.tolerance * f_max;
-        for (int it = 0; it < 12; ++it) {
-          short_table = UniformTable(f, dk, k_s);
-          double err = 0.0;
-          for (std::ptrdiff_t i = 0; i + 1 < short_table.size(); ++i) {
-            const double k = (static_cast<double>(i) + 0.5) * dk;
-            if (k > 0.0 && k < k_s) err = std::max(err, std::abs(short_table(k) - f(k)));
-          }
-          if (err <= tol_r) break;
-          dk *= 0.5;
-        }
-      }
       const auto order = [&](double d) {
         const double need = std::ceil(k_s * d / (2.0 * pi) + 0.5);
         if (need > options.max_alias_order) rep.alias_capped = true;
@@ -534,6 +513,39 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
       const int px = order(dx);
       const int py = order(dy);
       rep.alias_order = std::max(px, py);
+      // R (1 - w) on a uniform k grid up to the largest folded |k| (quintic interpolation, no
+      // logarithm per lookup: the fold makes ~N^2 pi P^2 lookups), refined until the midpoints
+      // match the exact R to tolerance x max|R|.
+      const double k_table = std::min(
+          k_s, std::hypot(2.0 * pi * (px + 0.5) / dx, 2.0 * pi * (py + 0.5) / dy));
+      // Two segments: [0, k1] resolves the window (scale 1/sigma), [k1, k_table] R's own decay;
+      // one table at the finer step would not stay in cache (the fold's lookups jump in k).
+      const double k1 = sigma > 0.0 ? std::min(12.0 / sigma, k_table) : 0.0;
+      const auto f = [&](double k) {
+        if (k == 0.0) return sigma == 0.0 ? rem(0.0) : 0.0;
+        return rem.exact(k) * one_minus_window(k);
+      };
+      double f_max = 0.0;
+      for (int i = 1; i <= 4096; ++i) f_max = std::max(f_max, std::abs(rem(k_s * i / 4096.0)));
+      const double tol_r = options.tolerance * f_max;
+      // R carries rounding noise ~ eps c_max / k (k H and Cinf cancel): the check allows it.
+      const double noise = 64.0 * eps * c_max;
+      const auto build = [&](double k_from, double k_to, double dk) {
+        UniformTable t;
+        for (int it = 0; it < 10; ++it) {
+          t = UniformTable(f, k_from, dk, k_to);
+          double err = 0.0;
+          for (double k = k_from + 0.5 * dk; k < k_to; k += dk)
+            if (k > 0.0) err = std::max(err, std::abs(t(k) - f(k)) - noise / k);
+          if (err <= tol_r) break;
+          dk *= 0.5;
+        }
+        return t;
+      };
+      const UniformTable table_lo = k1 > 0.0 ? build(0.0, k1, 0.02 / sigma) : UniformTable();
+      const UniformTable table_hi =
+          k_table > k1 ? build(k1, k_table, (k_table - k1) / 1024.0) : UniformTable();
+      const auto short_table = [&](double k) { return k < k1 ? table_lo(k) : table_hi(k); };
       const std::ptrdiff_t sx = hx + 1;
       const std::ptrdiff_t sy = hy + 1;
       FftwRealBuffer buf(static_cast<std::size_t>(sx * sy));
