@@ -516,8 +516,8 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
       // R (1 - w) on a uniform k grid up to the largest folded |k| (quintic interpolation, no
       // logarithm per lookup: the fold makes ~N^2 pi P^2 lookups), refined until the midpoints
       // match the exact R to tolerance x max|R|.
-      const double k_table = std::min(
-          k_s, std::hypot(2.0 * pi * (px + 0.5) / dx, 2.0 * pi * (py + 0.5) / dy));
+      const double k_table =
+          std::min(k_s, std::hypot(2.0 * pi * (px + 0.5) / dx, 2.0 * pi * (py + 0.5) / dy));
       // Two segments: [0, k1] resolves the window (scale 1/sigma), [k1, k_table] R's own decay;
       // one table at the finer step would not stay in cache (the fold's lookups jump in k).
       const double k1 = sigma > 0.0 ? std::min(12.0 / sigma, k_table) : 0.0;

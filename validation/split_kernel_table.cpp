@@ -19,6 +19,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "convolution/dcfft_operator.hpp"
@@ -103,6 +104,126 @@ std::string sci(double v) {
 
 double worst_required(const std::vector<double>& e) {  // r = 0, 0.5a, 2a
   return std::max({std::abs(e[0]), std::abs(e[1]), std::abs(e[3])});
+}
+
+// Homogeneous limits, hard cases, convergence in dx and cost: the rest of the report.
+std::string extra_sections() {
+  std::ostringstream md;
+  const Material steel(2.1e11, 0.3);
+  {
+    md << "\n## Homogeneous limits (split vs Love's DC-FFT, same grid)\n\n"
+          "| FRF | max abs(K_split - K_Love) / K_Love(0,0) | abs(u_split(0) - u_Love(0)) / u(0) | "
+          "remainder zero |\n|---|---|---|---|\n";
+    const Grid grid(n, n, static_cast<double>(n) * cell, static_cast<double>(n) * cell);
+    const Field p = hertz_pressure(grid, 1e8, a, Sampling::cell_average);
+    const InfluenceKernel love = love_kernel(grid, steel.plane_strain_modulus());
+    DcfftOperator love_op(love);
+    const double u_love = love_op.apply(p)(n / 2, n / 2);
+    const HalfSpaceFrf half(steel);
+    const CoatedFrf same(steel, 0.3 * a, steel, Interface::bonded);
+    for (const Frf* frf : std::vector<const Frf*>{&half, &same}) {
+      SplitKernelReport rep;
+      const InfluenceKernel k = split_frf_kernel(grid, *frf, {}, &rep);
+      DcfftOperator op(k);
+      const double u = op.apply(p)(n / 2, n / 2);
+      md << "| " << frf->name() << " | "
+         << sci((k.wrapped() - love.wrapped()).abs().maxCoeff() / love.at(0, 0)) << " | "
+         << sci(std::abs(u - u_love) / u_love) << " | " << (rep.remainder_zero ? "yes" : "no")
+         << " |\n";
+    }
+  }
+  {
+    md << "\n## Hard cases (same grid; errors vs Hankel as above)\n\n"
+          "| case | r=0 | r=0.5a | r=a | r=2a | finite | alias | t [s] |\n"
+          "|---|---|---|---|---|---|---|---|\n";
+    struct Hard {
+      const char* what;
+      CoatedFrf frf;
+    };
+    const std::vector<Hard> hard = {
+        {"h/a = 1e-3, E1/E2 = 100, bonded",
+         CoatedFrf(Material(100.0, 0.3), 1e-3 * a, Material(1.0, 0.3), Interface::bonded)},
+        {"h/a = 1e-3, E1/E2 = 0.01, nu 0.4999/0.2, frictionless",
+         CoatedFrf(Material(0.01, 0.4999), 1e-3 * a, Material(1.0, 0.2), Interface::frictionless)},
+        {"h/a = 50, E1/E2 = 0.01, bonded",
+         CoatedFrf(Material(0.01, 0.3), 50.0 * a, Material(1.0, 0.3), Interface::bonded)},
+        {"h/a = 0.1, nu = 0.4999 on a 100x stiffer substrate, bonded",
+         CoatedFrf(Material(1.0, 0.4999), 0.1 * a, Material(100.0, 0.4999), Interface::bonded)},
+    };
+    for (const Hard& h : hard) {
+      const Result r = run(h.frf, false);
+      md << "| " << h.what << " | " << sci(r.split[0]) << " | " << sci(r.split[1]) << " | "
+         << sci(r.split[2]) << " | " << sci(r.split[3]) << " | " << (r.finite ? "yes" : "**no**")
+         << " | " << r.report.alias_order << (r.report.alias_capped ? " (capped)" : "") << " | "
+         << r.seconds_split << " |\n";
+      std::cout << h.what << " done\n" << std::flush;
+    }
+  }
+  {
+    md << "\n## Convergence in the cell size (error / u(0) at r = 0)\n\n"
+          "The residual error is the pressure discretisation if it falls like dx^2 and does "
+          "not depend on the body.\n\n| body | a/16 | a/32 | a/64 |\n|---|---|---|---|\n";
+    const HalfSpaceFrf half(Material(1.0, 0.3));
+    const CoatedFrf stiff(Material(10.0, 0.3), 0.5 * a, Material(1.0, 0.3), Interface::bonded);
+    const CoatedFrf soft(Material(0.01, 0.3), 0.01 * a, Material(1.0, 0.3), Interface::bonded);
+    const MultilayerFrf two(
+        LayerStack({Coating{Material(100.0, 0.3), 0.05 * a, Interface::bonded},
+                    Coating{Material(0.1, 0.3), 0.5 * a, Interface::frictionless}},
+                   Material(1.0, 0.3)));
+    const std::vector<std::pair<const char*, const Frf*>> bodies = {
+        {"half-space (Love)", &half},
+        {"E1/E2 = 10, h = a/2, bonded", &stiff},
+        {"E1/E2 = 0.01, h = a/100, bonded", &soft},
+        {"two coatings 100/0.1, 0.05a/0.5a, b/f", &two}};
+    for (const auto& [what, frf] : bodies) {
+      md << "| " << what;
+      const double u0 = hankel_displacement(*frf, AxisymmetricLoad::hertz, p0, a, 0.0, 1e-10);
+      for (int div : {16, 32, 64}) {
+        const double d = a / div;
+        const std::ptrdiff_t m = 4 * div + 1;
+        const Grid grid(m, m, static_cast<double>(m) * d, static_cast<double>(m) * d);
+        DcfftOperator op(split_frf_kernel(grid, *frf));
+        const double u =
+            op.apply(hertz_pressure(grid, p0, a, Sampling::cell_average))(m / 2, m / 2);
+        md << " | " << sci((u - u0) / u0);
+      }
+      md << " |\n";
+      std::cout << what << " done\n" << std::flush;
+    }
+  }
+  {
+    md << "\n## Cost (one thread, this machine; E1/E2 = 10, h = a/2 bonded, and E1/E2 = 0.01, "
+          "h = a/100, on L = 4a)\n\n"
+          "| N | body | split kernel [s] | of which Hankel part | of which fold | Love kernel [s] "
+          "| "
+          "DcfftOperator setup [s] | one apply [s] |\n|---|---|---|---|---|---|---|---|\n";
+    const CoatedFrf stiff(Material(10.0, 0.3), 0.5 * a, Material(1.0, 0.3), Interface::bonded);
+    const CoatedFrf soft(Material(0.01, 0.3), 0.01 * a, Material(1.0, 0.3), Interface::bonded);
+    for (std::ptrdiff_t m : {128, 256, 512, 1024}) {
+      const Grid grid(m, m, 4.0 * a, 4.0 * a);
+      for (const CoatedFrf* frf : {&stiff, &soft}) {
+        SplitKernelReport rep;
+        const InfluenceKernel k = split_frf_kernel(grid, *frf, {}, &rep);
+        auto t0 = std::chrono::steady_clock::now();
+        const InfluenceKernel love = love_kernel(grid, 1.0);
+        const double t_love =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        DcfftOperator op(k);
+        const Field p = hertz_pressure(grid, p0, a, Sampling::cell_average);
+        Field u;
+        op.apply(p, u);
+        t0 = std::chrono::steady_clock::now();
+        op.apply(p, u);
+        const double t_apply =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        md << "| " << m << " | h/a = " << frf->thickness() << " | " << rep.seconds << " | "
+           << rep.seconds_long << " | " << rep.seconds_short << " | " << t_love << " | "
+           << op.setup_seconds() << " | " << t_apply << " |\n";
+        std::cout << "cost " << m << " done\n" << std::flush;
+      }
+    }
+  }
+  return md.str();
 }
 
 }  // namespace
