@@ -28,7 +28,7 @@ struct ContactOptions {
   bool compute_approach = false;
   /// Precondition the conjugate gradient with the inverse half-space symbol |k| (an FFT pair on
   /// the nx x ny grid per iteration; docs/contact.md). Keeps the iteration count nearly
-  /// independent of N (about 30 for Hertz from 64^2 to 1024^2, against 46-135 without). Off gives
+  /// independent of N (24-33 for Hertz from 64^2 to 1024^2, against 46-139 without). Off gives
   /// the classic Polonsky-Keer iteration.
   bool preconditioned = true;
 };
@@ -40,8 +40,9 @@ enum class ContactControl { load, approach };
 struct ContactResult {
   Field pressure;      ///< p [Pa], >= 0 everywhere
   Field displacement;  ///< u = K p [m], positive into the body, as the operator returns it
-  /// g = h + u - delta [m]: 0 (to solver accuracy) on contact cells, >= 0 elsewhere. Computed with
-  /// delta = mean over contact cells of (h + u), so it is independent of a g(0) error.
+  /// g = h + u - delta [m]: 0 (to solver accuracy) on contact cells, >= 0 elsewhere. Under load
+  /// control delta is the mean over contact cells of (h + u), which makes the gap independent of
+  /// a g(0) error; under approach control it is the given approach.
   Field gap;
   ContactControl control = ContactControl::load;
   double load = 0;  ///< total force W = sum p dx dy [N]

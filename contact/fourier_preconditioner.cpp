@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "convolution/g0.hpp"
+
 namespace coatfft::detail {
 
 FourierPreconditioner::FourierPreconditioner(const Grid& grid)
@@ -30,9 +32,7 @@ FourierPreconditioner::FourierPreconditioner(const Grid& grid)
       sigma_(i, j) = std::hypot(dkx * static_cast<double>(i), ky) * norm;
   }
   // Mean of 1/|k| over the central cell [-dkx/2, dkx/2] x [-dky/2, dky/2] (theory.md 3.1).
-  const double mean_inverse_k =
-      2.0 / dky * std::asinh(dky / dkx) + 2.0 / dkx * std::asinh(dkx / dky);
-  sigma_(0, 0) = norm / mean_inverse_k;
+  sigma_(0, 0) = norm / mean_inverse_wavenumber(dkx, dky);
 }
 
 void FourierPreconditioner::apply(Field& field) {

@@ -8,10 +8,12 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <thread>
 #include <utility>
 #include <vector>
 
 #include "convolution/fftw_plan.hpp"
+#include "convolution/love_influence.hpp"
 #include "core/error.hpp"
 
 namespace coatfft {
@@ -49,8 +51,8 @@ namespace {
 constexpr double pi = std::numbers::pi;
 constexpr double eps = std::numeric_limits<double>::epsilon();
 
-// Gauss-Legendre nodes and weights on [-1, 1] (Newton on P_n from the Chebyshev-like guess; the
-// standard Golub-Welsch-free construction, accurate to a few ulps for the n <= 32 used here).
+// Gauss-Legendre nodes and weights on [-1, 1]: Newton's iteration on P_n from the asymptotic
+// initial guess (Numerical Recipes' gauleg), accurate to a few ulps for the n <= 16 used here.
 void gauss_legendre(int n, std::vector<double>& t, std::vector<double>& w) {
   t.assign(static_cast<std::size_t>(n), 0.0);
   w.assign(static_cast<std::size_t>(n), 0.0);
@@ -178,20 +180,26 @@ Scan scan_frf(const Remainder& rem, double A, double c_max, double l_min, double
   if (A != 0.0) {
     // beta: the exponential with the same first moment, int_0^inf (k H - Cinf) dk = A / beta
     // (trapezoid in log k; accuracy is irrelevant, any beta > 0 is exact, a good one keeps R
-    // small).
+    // small). When k H overshoots the range [Cinf, C0] (e.g. a soft interlayer under a stiff top)
+    // the moment is dominated by the overshoot; then beta = ln 2 / k_t at the last (largest-k)
+    // half-way crossing, which follows the top layer.
     double m1 = A * k[0];
+    bool overshoot = false;
     for (int i = 1; i < n; ++i) {
       const auto a = static_cast<std::size_t>(i - 1);
       const auto b = static_cast<std::size_t>(i);
       m1 += 0.5 * (q[a] * k[a] + q[b] * k[b]) * std::log(k[b] / k[a]);
     }
-    if (m1 / A > 0 && std::isfinite(m1)) {
+    for (int i = 0; i < n; ++i) {
+      const double f = q[static_cast<std::size_t>(i)] / A;  // 1 at k = 0, 0 at infinity
+      if (f > 1.05 || f < -0.05) overshoot = true;
+    }
+    if (!overshoot && m1 / A > 0 && std::isfinite(m1)) {
       s.beta = A / m1;
     } else {
-      // Non-monotone k H: take the first half-way crossing instead.
       double kt = k[static_cast<std::size_t>(last)];
-      for (int i = 0; i < n; ++i)
-        if (std::abs(q[static_cast<std::size_t>(i)] - A) > 0.5 * std::abs(A)) {
+      for (int i = n - 1; i >= 0; --i)
+        if (q[static_cast<std::size_t>(i)] / A > 0.5) {
           kt = k[static_cast<std::size_t>(i)];
           break;
         }
@@ -219,21 +227,39 @@ double remainder_cutoff(const Remainder& rem, double A, double beta, double tol_
   return k_cut;
 }
 
+// Runs body(i) for i in [0, n) on `threads` threads (contiguous blocks; the bodies write disjoint
+// outputs).
+template <typename Body>
+void parallel_for(std::ptrdiff_t n, int threads, const Body& body) {
+  const auto t = static_cast<std::ptrdiff_t>(
+      std::max(1, std::min<int>(threads, static_cast<int>(std::min<std::ptrdiff_t>(n, 1024)))));
+  if (t <= 1) {
+    for (std::ptrdiff_t i = 0; i < n; ++i) body(i);
+    return;
+  }
+  std::vector<std::thread> pool;
+  for (std::ptrdiff_t w = 0; w < t; ++w)
+    pool.emplace_back([&, w] {
+      for (std::ptrdiff_t i = w * n / t; i < (w + 1) * n / t; ++i) body(i);
+    });
+  for (std::thread& th : pool) th.join();
+}
+
 // Radial kernel g(r) = (1/2 pi) int_0^kc f(k) J0(k r) k dk on a uniform r table, with 6-point
 // Lagrange interpolation (g is even in r and smooth on the scale 1/kc).
 class RadialTable {
  public:
-  RadialTable(const std::vector<double>& kw, const std::vector<double>& kn, double dr,
-              double r_max) {
+  RadialTable(const std::vector<double>& kw, const std::vector<double>& kn, double dr, double r_max,
+              int threads) {
     dr_ = dr;
     const auto n = static_cast<std::ptrdiff_t>(std::ceil(r_max / dr)) + 4;
     g_.assign(static_cast<std::size_t>(n), 0.0);
-    for (std::ptrdiff_t i = 0; i < n; ++i) {
+    parallel_for(n, threads, [&](std::ptrdiff_t i) {
       const double r = dr * static_cast<double>(i);
       double sum = 0.0;
       for (std::size_t j = 0; j < kn.size(); ++j) sum += kw[j] * gsl_sf_bessel_J0(kn[j] * r);
       g_[static_cast<std::size_t>(i)] = sum;
-    }
+    });
   }
   std::ptrdiff_t size() const { return static_cast<std::ptrdiff_t>(g_.size()); }
 
@@ -316,6 +342,9 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
   COATFFT_REQUIRE(options.tolerance > 0 && options.tolerance <= 1e-3,
                   "split_frf_kernel: tolerance = ", options.tolerance,
                   ", but it must be in (0, 1e-3]");
+  COATFFT_REQUIRE(options.threads >= 1 && options.threads <= 1024,
+                  "split_frf_kernel: threads = ", options.threads, ", but it must be in [1, 1024]");
+  const int threads = options.threads;
   COATFFT_REQUIRE(options.max_alias_order >= 0 && options.max_alias_order <= 4096,
                   "split_frf_kernel: max_alias_order = ", options.max_alias_order,
                   ", but it must be in [0, 4096]");
@@ -337,9 +366,16 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
   const double c_max = std::max(c0, c_inf);
   const double A = c0 - c_inf;
 
-  // (a) Cinf/k <-> Cinf/(2 pi r): Love's coefficients for E* = 2/Cinf (theory.md 1.5).
-  Field wrapped = love_kernel(grid, 2.0 / c_inf).wrapped();
-  Field quarter = Field::Zero(nx, ny);  // (b) + (c) for di, dj >= 0
+  // (a) Cinf/k <-> Cinf/(2 pi r): Love's coefficients for E* = 2/Cinf (theory.md 1.5), as
+  // love_kernel computes them (love_influence / E*), here on `threads` threads.
+  const double love_E_star = 2.0 / c_inf;
+  Field quarter(nx, ny);  // the coefficients for di, dj >= 0
+  parallel_for(ny, threads, [&](std::ptrdiff_t j) {
+    for (std::ptrdiff_t i = 0; i < nx; ++i)
+      quarter(i, j) =
+          love_influence(static_cast<double>(i) * dx, static_cast<double>(j) * dy, dx, dy) /
+          love_E_star;
+  });
 
   Remainder probe(frf, c_inf, A, 1.0);
   const Scan scan = scan_frf(probe, A, c_max, std::min(dx, dy), std::max(grid.lx(), grid.ly()));
@@ -356,10 +392,11 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
     for (std::ptrdiff_t c = 0; c <= ny; ++c)
       Y[static_cast<std::size_t>(c)] = (static_cast<double>(c) - 0.5) * dy;
     Field F(nx + 1, ny + 1);
-    for (std::ptrdiff_t j = 0; j <= ny; ++j)
+    parallel_for(ny + 1, threads, [&](std::ptrdiff_t j) {
       for (std::ptrdiff_t i = 0; i <= nx; ++i)
         F(i, j) = detail::corner_beta(X[static_cast<std::size_t>(i)],
                                       Y[static_cast<std::size_t>(j)], beta);
+    });
     const double scale = A / (2.0 * pi);
     for (std::ptrdiff_t j = 0; j < ny; ++j)
       for (std::ptrdiff_t i = 0; i < nx; ++i)
@@ -447,18 +484,22 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
       COATFFT_REQUIRE(cost < 4e9, "split_frf_kernel: the Hankel table would need ", cost,
                       " Bessel evaluations (a layer much thinner than the domain with the hankel "
                       "route); use SplitRoute::automatic");
-      const RadialTable table(kw, kn, dr, r_max + 4.0 * d_max);
+      const RadialTable table(kw, kn, dr, r_max + 4.0 * d_max, threads);
       rep.hankel_r_points = table.size();
       rep.hankel_k_nodes = static_cast<std::ptrdiff_t>(kn.size());
-      // Cell rule: the kernel is smooth on the scale ell = sqrt(log_tol)/k_c (= sigma for the
-      // Gaussian window, whose kernel is a Gaussian of width sqrt(2) sigma at worst). The n-point
-      // Gauss-Legendre error on a cell of side d is about c_n (d/(sqrt(2) ell))^(2n) with
-      // c_3 = 7e-7, c_4 = 7e-9, c_5 = 3e-11, c_6 = 2e-12: n is picked for < 1e-14 relative, and
-      // cells larger than 1.5 ell are subdivided.
+      // Cell rule: the kernel is smooth on the scale ell = sqrt(log_tol)/k_c (about sigma; its
+      // spectrum is cut like a Gaussian of width sqrt(2) sigma). The n-point Gauss-Legendre error
+      // on a cell of side d is about c_n (d/(sqrt(2) ell))^(2n) with c_2 = 2e-4, c_3 = 7e-7,
+      // c_4 = 7e-9, c_5 = 3e-11, c_6 = 2e-12: n is picked for ~1e-13 relative (2 x 2 and 3 x 3
+      // differ by 8e-14 of K(0,0) at N = 1024), and cells larger than 1.5 ell are subdivided.
       const double ell = std::sqrt(log_tol) / k_c;
       const int sub = static_cast<int>(std::clamp(std::ceil(d_max / (ell / 1.5)), 1.0, 64.0));
       const double ratio = ell * sub / d_max;
-      const int n_gl = ratio >= 12.0 ? 3 : ratio >= 4.0 ? 4 : ratio >= 2.5 ? 5 : 6;
+      const int n_gl = ratio >= 24.0   ? 2
+                       : ratio >= 12.0 ? 3
+                       : ratio >= 4.0  ? 4
+                       : ratio >= 2.5  ? 5
+                                       : 6;
       std::vector<double> tg;
       std::vector<double> wg;
       gauss_legendre(n_gl, tg, wg);
@@ -475,8 +516,8 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
           wy.push_back(0.5 * wg[static_cast<std::size_t>(q)] / sub * dy);
         }
       rep.cell_rule = n_gl * sub;
-      std::vector<double> y2(oy.size());
-      for (std::ptrdiff_t j = 0; j < ny; ++j) {
+      parallel_for(ny, threads, [&](std::ptrdiff_t j) {
+        std::vector<double> y2(oy.size());
         for (std::size_t b = 0; b < oy.size(); ++b) {
           const double y = static_cast<double>(j) * dy + oy[b];
           y2[b] = y * y;
@@ -492,7 +533,7 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
           }
           quarter(i, j) += sum;
         }
-      }
+      });
       rep.seconds_long = since(t_long);
     }
 
@@ -578,12 +619,9 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
       const double k_s2 = k_s * k_s;
       // Square cells on a square lattice: F(m, n) = F(n, m) (R is radial), fold half of it.
       const bool symmetric = dx == dy && hx == hy && px == py;
-      for (std::ptrdiff_t n = 0; n < sy; ++n) {
-        for (std::ptrdiff_t m = 0; m < sx; ++m) {
-          if (symmetric && m < n) {
-            buf.data()[n * sx + m] = buf.data()[m * sx + n];
-            continue;
-          }
+      double* const fold = buf.data();
+      parallel_for(sy, threads, [&](std::ptrdiff_t n) {
+        for (std::ptrdiff_t m = symmetric ? n : 0; m < sx; ++m) {
           double sum = 0.0;
           for (std::size_t q = 0; q < npy; ++q) {
             const std::size_t iy = static_cast<std::size_t>(n) * npy + q;
@@ -599,9 +637,12 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
             }
             sum += sys[iy] * row;
           }
-          buf.data()[n * sx + m] = sum;
+          fold[n * sx + m] = sum;
         }
-      }
+      });
+      if (symmetric)
+        for (std::ptrdiff_t n = 1; n < sy; ++n)
+          for (std::ptrdiff_t m = 0; m < n; ++m) fold[n * sx + m] = fold[m * sx + n];
       plan.execute();
       // DCT-I of the even spectrum = the sum over the full period (1/(Mx My) = 1/(4 hx hy)).
       const double norm = 1.0 / (4.0 * static_cast<double>(hx) * static_cast<double>(hy));
@@ -611,16 +652,17 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
     }
   }
 
-  // Mirror the quarter (the split kernel is even in x and y) into the wrapped Love array.
+  // Mirror the quarter (the split kernel is even in x and y) into the wrap-around layout.
+  Field wrapped = Field::Zero(2 * nx, 2 * ny);
   for (std::ptrdiff_t dj = 0; dj < ny; ++dj)
     for (std::ptrdiff_t di = 0; di < nx; ++di) {
       const double v = quarter(di, dj);
       const std::ptrdiff_t mi = di == 0 ? 0 : 2 * nx - di;
       const std::ptrdiff_t mj = dj == 0 ? 0 : 2 * ny - dj;
-      wrapped(di, dj) += v;
-      if (mi != di) wrapped(mi, dj) += v;
-      if (mj != dj) wrapped(di, mj) += v;
-      if (mi != di && mj != dj) wrapped(mi, mj) += v;
+      wrapped(di, dj) = v;
+      wrapped(mi, dj) = v;
+      wrapped(di, mj) = v;
+      wrapped(mi, mj) = v;
     }
   rep.seconds = since(t_start);
   if (report != nullptr) *report = rep;

@@ -45,6 +45,9 @@ struct SplitKernelOptions {
   /// Largest alias order |p|, |q| folded on the lattice (>= 0). Only coatings much thinner than a
   /// cell need many (about 3 dx/h); beyond the cap the fold is truncated (see report).
   int max_alias_order = 48;
+  /// Threads for the coefficient loops (Love, corner table, Hankel table, cell quadrature, alias
+  /// fold); the result does not depend on it. In [1, 1024].
+  int threads = 1;
 };
 
 /// What split_frf_kernel did, for benchmarks and the validation table.

@@ -315,6 +315,7 @@ int main(int argc, char** argv) {
     md << "\n"
        << nb_pass << " of " << nb_cases << " cases pass; worst split error " << sci(worst)
        << " of u(0).\n";
+    if (!quick) md << extra_sections();
     std::cout << nb_pass << " of " << nb_cases << " pass, worst " << worst << "\n";
     std::ofstream out(out_path);
     if (!out) {
