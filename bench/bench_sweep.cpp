@@ -100,6 +100,7 @@ coatfft::Planning planning_from(const std::string& name) {
 
 struct RowTiming {
   double setup_s = 0.0;
+  double coeff_s = 0.0;
   double apply_s_median = 0.0;
   int reps = 0;
 };
@@ -126,32 +127,34 @@ RowTiming time_applications(coatfft::SurfaceOperator& op, const Field& p, Field&
   return timing;
 }
 
+// Builds the row's operator; `coeff_s` receives the wall time [s] of the influence coefficients
+// alone (Love, FRF -> IFFT, or split), 0 for frf-spectral, which has none.
 std::unique_ptr<coatfft::SurfaceOperator> build_operator(const RowSpec& row,
                                                          const sweep::SweepCase& c,
                                                          const Grid& grid,
-                                                         coatfft::Planning planning, int threads) {
+                                                         coatfft::Planning planning, int threads,
+                                                         double& coeff_s) {
   const auto frf = coatfft::make_frf(c.stack);
-  if (row.method == "direct") {
-    COATFFT_REQUIRE(c.stack.is_homogeneous(), "bench_sweep: direct needs a homogeneous body");
-    return std::make_unique<coatfft::DirectOperator>(
-        coatfft::love_kernel(grid, c.stack.substrate().plane_strain_modulus()));
-  }
-  if (row.method == "dcfft") {
-    COATFFT_REQUIRE(c.stack.is_homogeneous(), "bench_sweep: dcfft needs a homogeneous body");
-    return std::make_unique<coatfft::DcfftOperator>(
-        coatfft::love_kernel(grid, c.stack.substrate().plane_strain_modulus()), planning, threads);
-  }
+  coeff_s = 0.0;
   if (row.method == "frf-spectral")
     return std::make_unique<coatfft::FrfSpectralOperator>(grid, *frf, row.alpha, g0_method(row.g0),
                                                           row.g0_tol, planning, threads);
-  if (row.method == "frf-dcfft")
-    return std::make_unique<coatfft::DcfftOperator>(
-        coatfft::frf_influence_kernel(grid, *frf, row.alpha, g0_method(row.g0), row.g0_tol),
-        planning, threads);
-  if (row.method == "frf-split")
-    return std::make_unique<coatfft::DcfftOperator>(coatfft::split_frf_kernel(grid, *frf), planning,
-                                                    threads);
-  throw coatfft::InvalidArgument("bench_sweep: unknown method '" + row.method + "'");
+  const auto t0 = Clock::now();
+  std::optional<coatfft::InfluenceKernel> kernel;
+  if (row.method == "direct" || row.method == "dcfft") {
+    COATFFT_REQUIRE(c.stack.is_homogeneous(), "bench_sweep: ", row.method,
+                    " needs a homogeneous body");
+    kernel = coatfft::love_kernel(grid, c.stack.substrate().plane_strain_modulus());
+  } else if (row.method == "frf-dcfft") {
+    kernel = coatfft::frf_influence_kernel(grid, *frf, row.alpha, g0_method(row.g0), row.g0_tol);
+  } else if (row.method == "frf-split") {
+    kernel = coatfft::split_frf_kernel(grid, *frf);
+  } else {
+    throw coatfft::InvalidArgument("bench_sweep: unknown method '" + row.method + "'");
+  }
+  coeff_s = seconds_since(t0);
+  if (row.method == "direct") return std::make_unique<coatfft::DirectOperator>(*kernel);
+  return std::make_unique<coatfft::DcfftOperator>(*kernel, planning, threads);
 }
 
 struct RowResult {
@@ -164,16 +167,18 @@ RowResult run_row(const RowSpec& row, coatfft::Planning planning, int threads, d
   const Grid grid = sweep::case_grid(c, row.n);
   const Field p = coatfft::hertz_pressure(grid, c.p0, c.a, c.sampling);
   const auto t0 = Clock::now();
-  auto op = build_operator(row, c, grid, planning, threads);
+  double coeff_s = 0.0;
+  auto op = build_operator(row, c, grid, planning, threads, coeff_s);
   const double setup_s = seconds_since(t0);
   RowResult result;
   result.timing = time_applications(*op, p, result.u, budget_s);
   result.timing.setup_s = setup_s;
+  result.timing.coeff_s = coeff_s;
   return result;
 }
 
 // Child entry: --row CASE METHOD N ALPHA G0 TOL PLANNING THREADS BUDGET UFILE. Writes nx*ny
-// doubles (x fastest) to UFILE and "setup_s apply_s reps" to UFILE.txt.
+// doubles (x fastest) to UFILE and "setup_s apply_s reps coeff_s" to UFILE.txt.
 int row_main(const std::vector<std::string>& a) {
   COATFFT_REQUIRE(a.size() == 10, "bench_sweep --row: expected 10 arguments, got ", a.size());
   RowSpec row{a[0], a[1], std::stol(a[2]), std::stod(a[3]), a[4], std::stod(a[5])};
@@ -186,7 +191,7 @@ int row_main(const std::vector<std::string>& a) {
   }
   std::ofstream txt(a[9] + ".txt");
   txt << std::setprecision(17) << r.timing.setup_s << ' ' << r.timing.apply_s_median << ' '
-      << r.timing.reps << '\n';
+      << r.timing.reps << ' ' << r.timing.coeff_s << '\n';
   return txt.good() ? 0 : 1;
 }
 
@@ -379,7 +384,10 @@ int sweep_main(const SweepConfig& cfg) {
          << "# planning = " << cfg.planning << "\n"
          << "# load = Hertz p0 = 1 GPa, a = 1 mm on [-1.5a, 1.5a]^2 (N x N cells)\n"
          << "# error = (u - u_ref) / u_ref(0): max_err = max |.|, rms_err = RMS over all cells\n"
-         << "# setup_s = wall time of building the operator (kernel, g(0), FFTW plans)\n"
+         << "# setup_s = wall time of building the operator (coefficients or FRF samples, g(0), "
+            "kernel transform, FFTW plans)\n"
+         << "# coeff_s = the part of setup_s spent on the influence coefficients (Love, FRF -> "
+            "IFFT, split); 0 for frf-spectral\n"
          << "# apply_s_median = median of repeated applications after one warm-up\n"
          << "# peak_rss_mb = peak resident set of a child process doing only this row "
             "(pressure, operator, output; wait4 rusage)\n"
@@ -391,7 +399,7 @@ int sweep_main(const SweepConfig& cfg) {
       header << "# case " << c.name << " = " << c.description << "; reference: " << c.reference
              << "\n";
   header << "case,method,N,alpha,g0,g0_tol,sampling,setup_s,apply_s_median,peak_rss_mb,max_err,"
-            "rms_err\n";
+            "rms_err,coeff_s\n";
   std::cout << header.str() << std::flush;
 
   std::filesystem::path out_path(cfg.output);
@@ -444,7 +452,7 @@ int sweep_main(const SweepConfig& cfg) {
         const Field u = read_field(tmp, n);
         std::ifstream txt(tmp + ".txt");
         RowTiming timing;
-        txt >> timing.setup_s >> timing.apply_s_median >> timing.reps;
+        txt >> timing.setup_s >> timing.apply_s_median >> timing.reps >> timing.coeff_s;
         const Field diff = (u - ref.u) / ref.u_centre;
         const double max_err = diff.abs().maxCoeff();
         const double rms_err = std::sqrt(diff.square().mean());
@@ -454,7 +462,8 @@ int sweep_main(const SweepConfig& cfg) {
         line << row.case_name << ',' << row.method << ',' << n << ',' << fmt(row.alpha) << ','
              << row.g0 << ',' << fmt(row.g0_tol) << ',' << sweep::to_string(c.sampling) << ','
              << fmt(timing.setup_s) << ',' << fmt(timing.apply_s_median) << ','
-             << fmt(child.peak_rss_mb) << ',' << fmt(max_err) << ',' << fmt(rms_err) << '\n';
+             << fmt(child.peak_rss_mb) << ',' << fmt(max_err) << ',' << fmt(rms_err) << ','
+             << fmt(timing.coeff_s) << '\n';
         std::cout << line.str() << std::flush;
         out << line.str() << std::flush;
       }

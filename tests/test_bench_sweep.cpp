@@ -50,7 +50,7 @@ struct Row {
   long n;
   double alpha;
   std::string g0;
-  double g0_tol, setup_s, apply_s, rss_mb, max_err, rms_err;
+  double g0_tol, setup_s, apply_s, rss_mb, max_err, rms_err, coeff_s;
 };
 
 }  // namespace
@@ -75,12 +75,12 @@ TEST_CASE("bench_sweep --tiny writes a complete, consistent CSV", "[bench_sweep]
     if (!seen_columns) {
       CHECK(line ==
             "case,method,N,alpha,g0,g0_tol,sampling,setup_s,apply_s_median,peak_rss_mb,max_err,"
-            "rms_err");
+            "rms_err,coeff_s");
       seen_columns = true;
       continue;
     }
     const auto f = split(line);
-    REQUIRE(f.size() == 12);
+    REQUIRE(f.size() == 13);
     CHECK(f[0] == "hertz_homogeneous");
     CHECK(f[6] == "centre");
     rows.push_back({f[1], std::stol(f[2]), std::stod(f[3]), f[4], std::stod(f[5]), std::stod(f[7]),
@@ -105,6 +105,8 @@ TEST_CASE("bench_sweep --tiny writes a complete, consistent CSV", "[bench_sweep]
     CHECK(std::isfinite(r.max_err));
     CHECK(r.rms_err <= r.max_err);
     CHECK(r.setup_s >= 0.0);
+    CHECK(r.coeff_s >= 0.0);
+    CHECK(r.coeff_s <= r.setup_s);
     CHECK(r.apply_s > 0.0);
     // A child that built an operator holds at least its own code and data: > 1 MB.
     CHECK(r.rss_mb > 1.0);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "convolution/dcfft_operator.hpp"
@@ -167,6 +168,7 @@ TEST_CASE("split remainder reproduces the closed form of an exponential FRF", "[
       {"b < cell/10", Grid(17, 17, 1.7, 1.7), 0.01},
       // R's kernel reaches far beyond the domain: the Hankel part must carry it.
       {"b >> domain", Grid(20, 16, 2.0, 1.6), 10.0},
+      {"rectangular cells", Grid(16, 12, 2.0, 0.9), 0.1},
   };
   for (const Setup& s : setups) {
     INFO(s.what);
@@ -309,6 +311,27 @@ TEST_CASE("split kernel: hard cases stay finite", "[split]") {
     const double hi = 0.5 * std::max(frf.c0(), frf.c_inf()) * love_influence(0, 0, 0.125, 0.125);
     CHECK(k.at(0, 0) >= lo);
     CHECK(k.at(0, 0) <= hi);
+  }
+}
+
+TEST_CASE("split coefficients depend on the cell, not on the grid", "[split]") {
+  // K(di, dj) is a property of (dx, dy) and the body: small and degenerate grids (whose window,
+  // lattice and tables all differ) must reproduce a large grid's coefficients; 1e-9 of K(0, 0).
+  const CoatedFrf frf(Material(5.0, 0.25), 0.08, Material(1.0, 0.35), Interface::frictionless);
+  const double dx = 0.05;
+  const double dy = 0.04;
+  const InfluenceKernel big = split_frf_kernel(Grid(40, 40, 40 * dx, 40 * dy), frf);
+  for (const auto& [nx, ny] : std::vector<std::pair<std::ptrdiff_t, std::ptrdiff_t>>{
+           {1, 1}, {1, 7}, {7, 1}, {2, 3}, {9, 5}}) {
+    INFO(nx << " x " << ny);
+    const InfluenceKernel small = split_frf_kernel(
+        Grid(nx, ny, static_cast<double>(nx) * dx, static_cast<double>(ny) * dy), frf);
+    double worst = 0.0;
+    for (std::ptrdiff_t j = 1 - ny; j < ny; ++j)
+      for (std::ptrdiff_t i = 1 - nx; i < nx; ++i)
+        worst = std::max(worst, std::abs(small.at(i, j) - big.at(i, j)));
+    CHECK(small.wrapped().allFinite());
+    CHECK(worst <= 1e-9 * big.at(0, 0));
   }
 }
 
