@@ -64,7 +64,9 @@ BuiltOperator operator_from_scene(const Scene& scene) {
     } else {
       // The split kernel needs no g(0): the singular part of H is taken in closed form in space.
       SplitKernelReport report;
-      const InfluenceKernel kernel = split_frf_kernel(scene.grid, *frf, {}, &report);
+      SplitKernelOptions options;
+      options.threads = method.threads;
+      const InfluenceKernel kernel = split_frf_kernel(scene.grid, *frf, options, &report);
       built.report["split_beta"] = report.beta;
       built.report["split_seconds"] = report.seconds;
       built.op = std::make_unique<DcfftOperator>(kernel, planning, method.threads);

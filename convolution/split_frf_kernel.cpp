@@ -4,6 +4,7 @@
 #include <gsl/gsl_sf_bessel.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -366,41 +367,60 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
   const double c_max = std::max(c0, c_inf);
   const double A = c0 - c_inf;
 
-  // (a) Cinf/k <-> Cinf/(2 pi r): Love's coefficients for E* = 2/Cinf (theory.md 1.5), as
-  // love_kernel computes them (love_influence / E*), here on `threads` threads.
-  const double love_E_star = 2.0 / c_inf;
-  Field quarter(nx, ny);  // the coefficients for di, dj >= 0
-  parallel_for(ny, threads, [&](std::ptrdiff_t j) {
-    for (std::ptrdiff_t i = 0; i < nx; ++i)
-      quarter(i, j) =
-          love_influence(static_cast<double>(i) * dx, static_cast<double>(j) * dy, dx, dy) /
-          love_E_star;
-  });
-
   Remainder probe(frf, c_inf, A, 1.0);
   const Scan scan = scan_frf(probe, A, c_max, std::min(dx, dy), std::max(grid.lx(), grid.ly()));
   const double beta = A == 0.0 ? 0.0 : (options.beta > 0 ? options.beta : scan.beta);
   rep.beta = beta;
   rep.remainder_zero = scan.remainder_zero;
 
-  // (b) A exp(-beta k)/k <-> A/(2 pi sqrt(r^2 + beta^2)): corner table of F, differenced.
-  if (A != 0.0) {
-    std::vector<double> X(static_cast<std::size_t>(nx + 1));
-    std::vector<double> Y(static_cast<std::size_t>(ny + 1));
-    for (std::ptrdiff_t c = 0; c <= nx; ++c)
-      X[static_cast<std::size_t>(c)] = (static_cast<double>(c) - 0.5) * dx;
-    for (std::ptrdiff_t c = 0; c <= ny; ++c)
-      Y[static_cast<std::size_t>(c)] = (static_cast<double>(c) - 0.5) * dy;
-    Field F(nx + 1, ny + 1);
-    parallel_for(ny + 1, threads, [&](std::ptrdiff_t j) {
-      for (std::ptrdiff_t i = 0; i <= nx; ++i)
-        F(i, j) = detail::corner_beta(X[static_cast<std::size_t>(i)],
-                                      Y[static_cast<std::size_t>(j)], beta);
+  // (a) Cinf/k <-> Cinf/(2 pi r): Love's coefficients for E* = 2/Cinf (theory.md 1.5), computed
+  // as love_kernel does (love_influence / E*) near the origin.
+  // (b) A exp(-beta k)/k <-> A/(2 pi sqrt(r^2 + beta^2)): split_rectangle_integral near the origin.
+  // Far from the cell (r >= 32 d) both kernels are analytic over it and the 4-corner sums cancel
+  // (log10((r/d)^2) digits lost), so both are integrated there by one n x n Gauss-Legendre rule,
+  // which converges like rho^(-2n), rho ~ 4 r/d (Bernstein ellipse of the nearest singularity):
+  // n = 4 from 32 d (love_influence's own far-field rule), 3 from 64 d (rho^-6 < 4e-15), 2 from
+  // 512 d (rho^-4 < 6e-14 of a coefficient 512x smaller than K(0,0)).
+  const double love_E_star = 2.0 / c_inf;
+  Field quarter(nx, ny);  // the coefficients for di, dj >= 0
+  {
+    std::array<std::vector<double>, 5> gt;
+    std::array<std::vector<double>, 5> gw;
+    for (int n = 2; n <= 4; ++n)
+      gauss_legendre(n, gt[static_cast<std::size_t>(n)], gw[static_cast<std::size_t>(n)]);
+    const double ca = 0.25 * dx * dy * c_inf / (2.0 * pi);
+    const double cb = 0.25 * dx * dy * A / (2.0 * pi);
+    const double b2 = beta * beta;
+    parallel_for(ny, threads, [&](std::ptrdiff_t j) {
+      const double y = static_cast<double>(j) * dy;
+      for (std::ptrdiff_t i = 0; i < nx; ++i) {
+        const double x = static_cast<double>(i) * dx;
+        const double r = std::hypot(x, y);
+        if (r < 32.0 * d_max) {
+          double v = love_influence(x, y, dx, dy) / love_E_star;
+          if (A != 0.0) v += A / (2.0 * pi) * detail::split_rectangle_integral(x, y, dx, dy, beta);
+          quarter(i, j) = v;
+          continue;
+        }
+        const auto n = static_cast<std::size_t>(r >= 512.0 * d_max ? 2 : r >= 64.0 * d_max ? 3 : 4);
+        const std::vector<double>& t = gt[n];
+        const std::vector<double>& w = gw[n];
+        double sum = 0.0;
+        for (std::size_t a = 0; a < n; ++a) {
+          const double ex = x - 0.5 * dx * t[a];
+          double row = 0.0;
+          for (std::size_t b = 0; b < n; ++b) {
+            const double ey = y - 0.5 * dy * t[b];
+            const double r2 = ex * ex + ey * ey;
+            double f = ca / std::sqrt(r2);
+            if (A != 0.0) f += cb / std::sqrt(r2 + b2);
+            row += w[b] * f;
+          }
+          sum += w[a] * row;
+        }
+        quarter(i, j) = sum;
+      }
     });
-    const double scale = A / (2.0 * pi);
-    for (std::ptrdiff_t j = 0; j < ny; ++j)
-      for (std::ptrdiff_t i = 0; i < nx; ++i)
-        quarter(i, j) += scale * (F(i + 1, j + 1) - F(i + 1, j) - F(i, j + 1) + F(i, j));
   }
 
   if (!scan.remainder_zero) {
@@ -409,7 +429,7 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
     const double tol_abs = options.tolerance * c_max;
     const double k_r = remainder_cutoff(rem, A, beta, tol_abs);  // R negligible beyond
 
-    // The Gaussian window splitting R between the Hankel (long-range) and lattice parts.
+    // The window length sigma splitting R between the Hankel (long-range) and lattice parts.
     double sigma = options.sigma > 0 ? options.sigma
                                      : std::max(std::min(grid.lx(), grid.ly()) / 32.0, 1.5 * d_max);
     if (options.route == SplitRoute::periodic) sigma = 0.0;

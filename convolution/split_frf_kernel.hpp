@@ -7,12 +7,12 @@
 //
 // (a) Cinf/k: Love's cell-averaged coefficients (theory.md 1.5), exact;
 // (b) exp(-beta k)/k <-> 1/(2 pi sqrt(r^2 + beta^2)): its cell integral in closed form;
-// (c) R(k): bounded, O(k^0) at k = 0, decaying fast. R is split once more with a Gaussian window
-//     w = exp(-(sigma k)^2) (an Ewald-type split): R w has a smooth, long-range kernel that is
-//     tabulated by a 1-D Hankel transform and integrated over each cell in space (no
-//     periodisation), and R (1 - w) has a short-range kernel whose cell-averaged coefficients are
-//     summed on a periodic lattice with every alias k + 2 pi (p/dx, q/dy) folded in (no truncation
-//     at Nyquist).
+// (c) R(k): bounded, O(k^0) at k = 0, decaying fast. R is split once more with the window
+//     w = exp(-s) (1 + s + s^2/2), s = (sigma k)^2 (an Ewald-type split): R w has a smooth,
+//     long-range kernel that is tabulated by a 1-D Hankel transform and integrated over each cell
+//     in space (no periodisation), and R (1 - w) = O(k^6) R has a short-range kernel whose
+//     cell-averaged coefficients are summed on a periodic lattice with every alias
+//     k + 2 pi (p/dx, q/dy) folded in (no truncation at Nyquist).
 #include <cstddef>
 
 #include "convolution/influence_kernel.hpp"
@@ -23,8 +23,7 @@ namespace coatfft {
 
 /// How the bounded remainder R(k) of the split is turned into influence coefficients.
 enum class SplitRoute {
-  automatic,  ///< the Gaussian-windowed split: long-range part by Hankel, short-range on the
-              ///< lattice
+  automatic,  ///< the windowed split: long-range part by Hankel, short-range on the lattice
   periodic,   ///< all of R on the periodic lattice of period (2nx dx, 2ny dy), aliases folded
               ///< (periodisation error of R's r^-3 tail: accurate for coatings thin against L only)
   hankel,     ///< all of R by the Hankel table and space quadrature (cost grows like (L/h)^2 and
@@ -35,8 +34,9 @@ struct SplitKernelOptions {
   /// Length beta [m] of the (C0 - Cinf) exp(-beta k)/k term; 0 picks it from the FRF so that the
   /// exponential has the same first moment as k H - Cinf (about the coating thickness).
   double beta = 0.0;
-  /// Width sigma [m] of the Gaussian window of the automatic route; 0 picks
-  /// max(min(lx, ly)/32, 1.5 max(dx, dy)).
+  /// Length sigma [m] of the window of the automatic route; 0 picks
+  /// max(min(lx, ly)/32, 1.5 max(dx, dy)). The result does not depend on it (to the tolerance);
+  /// the cost does.
   double sigma = 0.0;
   SplitRoute route = SplitRoute::automatic;
   /// Relative tolerance [-] of every truncation (k cut-offs, alias series, Hankel table, cell
@@ -55,7 +55,7 @@ struct SplitKernelReport {
   double c0 = 0.0;              ///< lim k H [1/Pa]
   double c_inf = 0.0;           ///< lim_{k->inf} k H [1/Pa]
   double beta = 0.0;            ///< beta used [m]
-  double sigma = 0.0;           ///< Gaussian window used [m] (0: periodic route, inf: Hankel route)
+  double sigma = 0.0;           ///< window length used [m] (0: periodic route, inf: Hankel route)
   bool remainder_zero = false;  ///< R vanished to rounding (homogeneous or identical layers)
   int alias_order = 0;          ///< largest alias order folded
   bool alias_capped = false;    ///< the fold needed more than max_alias_order

@@ -84,7 +84,8 @@ TEST_CASE("bench_sweep --tiny writes a complete, consistent CSV", "[bench_sweep]
     CHECK(f[0] == "hertz_homogeneous");
     CHECK(f[6] == "centre");
     rows.push_back({f[1], std::stol(f[2]), std::stod(f[3]), f[4], std::stod(f[5]), std::stod(f[7]),
-                    std::stod(f[8]), std::stod(f[9]), std::stod(f[10]), std::stod(f[11])});
+                    std::stod(f[8]), std::stod(f[9]), std::stod(f[10]), std::stod(f[11]),
+                    std::stod(f[12])});
   }
   for (const char* key : {"cpu", "compiler", "flags", "fftw", "threads", "date", "planning"}) {
     INFO("header key " << key);

@@ -196,6 +196,28 @@ TEST_CASE("split remainder reproduces the closed form of an exponential FRF", "[
   }
 }
 
+TEST_CASE("split kernel far field: Gauss rules beyond 32, 64 and 512 cells", "[split]") {
+  // A 700 x 2 strip reaches offsets of 699 cells, where (a) and (b) switch from the corner
+  // formulas to 4 x 4, 3 x 3 and 2 x 2 Gauss-Legendre rules. Reference: the corner formulas
+  // themselves, whose cancellation costs ~eps (r/d)^2 = 1e-10 of a coefficient ~K(0,0) r/d
+  // smaller, i.e. ~2e-13 of K(0,0): tolerance 1e-12 of K(0,0).
+  const double b = 2.0;
+  const ExponentialFrf frf(3.0, 1.0, b);
+  const Grid grid(700, 2, 7.0, 0.02);
+  SplitKernelOptions exact;
+  exact.beta = b;
+  const InfluenceKernel k = split_frf_kernel(grid, frf, exact);
+  const double k00 = closed_form(frf, b, 0.0, 0.0, 0.01, 0.01);
+  double worst = 0.0;
+  for (std::ptrdiff_t j = 0; j < 2; ++j)
+    for (std::ptrdiff_t i = 0; i < 700; ++i) {
+      const double ref = closed_form(frf, b, static_cast<double>(i) * 0.01,
+                                     static_cast<double>(j) * 0.01, 0.01, 0.01);
+      worst = std::max(worst, std::abs(k.at(i, j) - ref));
+    }
+  CHECK(worst <= 1e-12 * k00);
+}
+
 TEST_CASE("split remainder: the fold and the Hankel part are both needed", "[split]") {
   // Sensitivity checks for the test above: truncating R at Nyquist (no aliases) or periodising all
   // of R must both miss the closed form by far more than its tolerance.
