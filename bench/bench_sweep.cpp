@@ -10,8 +10,9 @@
 //
 // Usage: bench_sweep [--tiny | --quick | --full] [--output PATH] [--threads T]
 //                    [--planning estimate|measure] [--cases c1,c2] [--methods m1,m2]
+//                    [--grids N1,N2]
 //        bench_sweep --figures DIR [--tiny]   small CSVs for the seed's Figures 2 and 3
-//        bench_sweep --check-reference [--output PATH]  convergence of the coated references
+//        bench_sweep --check-reference [--output PATH]  convergence of the references
 //        bench_sweep --peak-rss CMD [ARGS...]  runs CMD and prints its peak RSS [MB]
 //        bench_sweep --row ...                 (internal: one row, in the child)
 #include <fftw3.h>
@@ -30,10 +31,8 @@
 #include <exception>
 #include <filesystem>
 #include <fstream>
-#include <functional>
 #include <iomanip>
 #include <iostream>
-#include <map>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -641,7 +640,7 @@ int main(int argc, char** argv) {
       return peak_rss_main(std::vector<std::string>(args.begin() + 1, args.end()));
 
     std::string mode = "full";
-    std::optional<std::string> output, threads, planning, cases, methods, figures;
+    std::optional<std::string> output, threads, planning, cases, methods, figures, grids;
     bool check_reference = false;
     for (std::size_t i = 0; i < args.size(); ++i) {
       const std::string& a = args[i];
@@ -661,6 +660,8 @@ int main(int argc, char** argv) {
         value(cases);
       else if (a == "--methods")
         value(methods);
+      else if (a == "--grids")
+        value(grids);
       else if (a == "--figures")
         value(figures);
       else if (a == "--check-reference")
@@ -679,6 +680,12 @@ int main(int argc, char** argv) {
     planning_from(cfg.planning);
     if (cases) cfg.cases = split_list(*cases);
     if (methods) cfg.methods = split_list(*methods);
+    if (grids) {
+      cfg.grids.clear();
+      for (const std::string& g : split_list(*grids)) cfg.grids.push_back(std::stol(g));
+      for (std::ptrdiff_t n : cfg.grids)
+        COATFFT_REQUIRE(n >= 2, "bench_sweep: grid N = ", n, ", must be >= 2");
+    }
     return sweep_main(cfg);
   } catch (const std::exception& e) {
     std::cerr << "bench_sweep: " << e.what() << "\n";
