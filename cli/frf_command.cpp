@@ -28,7 +28,8 @@ void frf_command(const FrfOptions& options) {
   std::ostringstream table;
   table << "k,kh_total,frf,frf_over_substrate\n" << std::setprecision(17);
   for (const auto& row : frf_table(body, *frf, k_min, k_max, options.points))
-    table << row.k << ',' << row.kh_total << ',' << row.frf << ',' << row.ratio_to_substrate << '\n';
+    table << row.k << ',' << row.kh_total << ',' << row.frf << ',' << row.ratio_to_substrate
+          << '\n';
 
   if (options.output.empty()) {
     std::cout << table.str();

@@ -21,7 +21,9 @@ int main(int argc, char** argv) {
 
   coatfft::cli::FrfOptions frf;
   CLI::App* frf_cmd = app.add_subcommand("frf", "Print the FRF of a scene's body as a CSV table");
-  frf_cmd->add_option("scene", frf.scene, "Scene file (TOML); only [substrate] and [[coating]] are used")
+  frf_cmd
+      ->add_option("scene", frf.scene,
+                   "Scene file (TOML); only [substrate] and [[coating]] are used")
       ->required();
   frf_cmd->add_option("-o,--output", frf.output, "CSV file (default: standard output)");
   frf_cmd->add_option("--k-min", frf.k_min, "Smallest wavenumber [rad/m]");

@@ -21,8 +21,7 @@ constexpr std::size_t kMagicSize = 6;
 
 void write_npy(const std::filesystem::path& path, const Field& field) {
   std::string header = "{'descr': '<f8', 'fortran_order': False, 'shape': (" +
-                       std::to_string(field.cols()) + ", " + std::to_string(field.rows()) +
-                       "), }";
+                       std::to_string(field.cols()) + ", " + std::to_string(field.rows()) + "), }";
   // NumPy format 1.0: magic(6) + version(2) + header length(2) + header, padded with blanks and
   // terminated by '\n' so that the data starts on a 64-byte boundary.
   const std::size_t unpadded = kMagicSize + 4 + header.size() + 1;
@@ -60,7 +59,8 @@ Field read_npy(const std::filesystem::path& path) {
     unsigned char len[4] = {};
     in.read(reinterpret_cast<char*>(len), 4);
     header_size = len[0] | (static_cast<std::size_t>(len[1]) << 8) |
-                  (static_cast<std::size_t>(len[2]) << 16) | (static_cast<std::size_t>(len[3]) << 24);
+                  (static_cast<std::size_t>(len[2]) << 16) |
+                  (static_cast<std::size_t>(len[3]) << 24);
   }
   COATFFT_REQUIRE(in.good() && header_size < (1u << 20), path.string(), ": corrupt .npy header");
   std::string header(header_size, '\0');
@@ -84,7 +84,8 @@ Field read_npy(const std::filesystem::path& path) {
   in.read(reinterpret_cast<char*>(field.data()),
           static_cast<std::streamsize>(field.size() * sizeof(double)));
   COATFFT_REQUIRE(in.gcount() == static_cast<std::streamsize>(field.size() * sizeof(double)),
-                  path.string(), ": truncated data, expected ", rows, " x ", cols, " float64 values");
+                  path.string(), ": truncated data, expected ", rows, " x ", cols,
+                  " float64 values");
   return field;
 }
 
@@ -116,11 +117,13 @@ Field read_csv_matrix(const std::filesystem::path& path) {
     }
     if (row.empty()) continue;
     COATFFT_REQUIRE(rows.empty() || row.size() == rows.front().size(), path.string(), ":",
-                    line_number, ": row has ", row.size(), " values, expected ", rows.front().size());
+                    line_number, ": row has ", row.size(), " values, expected ",
+                    rows.front().size());
     rows.push_back(std::move(row));
   }
   COATFFT_REQUIRE(!rows.empty(), path.string(), ": no data");
-  Field field(static_cast<Eigen::Index>(rows.front().size()), static_cast<Eigen::Index>(rows.size()));
+  Field field(static_cast<Eigen::Index>(rows.front().size()),
+              static_cast<Eigen::Index>(rows.size()));
   for (std::size_t j = 0; j < rows.size(); ++j)
     for (std::size_t i = 0; i < rows[j].size(); ++i)
       field(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = rows[j][i];

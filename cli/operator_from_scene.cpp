@@ -29,7 +29,8 @@ nlohmann::json g0_report(const G0Result& g0) {
 BuiltOperator operator_from_scene(const Scene& scene) {
   const MethodSpec& method = scene.method;
   const Planning planning = method.planning == "measure" ? Planning::measure : Planning::estimate;
-  const G0Method g0_method = method.g0 == "quadrature" ? G0Method::quadrature : G0Method::regularized;
+  const G0Method g0_method =
+      method.g0 == "quadrature" ? G0Method::quadrature : G0Method::regularized;
   if (!method.wisdom.empty()) load_fftw_wisdom(method.wisdom.string());
 
   BuiltOperator built;

@@ -46,8 +46,10 @@ Field read_pressure_file(const std::filesystem::path& file, const Grid& grid) {
 Field pressure_from_scene(const Scene& scene) {
   const PressureSpec& spec = *scene.pressure;
   if (spec.kind == "file") return read_pressure_file(spec.file, scene.grid);
-  const Sampling sampling = spec.sampling == "cell_average" ? Sampling::cell_average : Sampling::centre;
-  if (spec.kind == "hertz") return hertz_pressure(scene.grid, spec.amplitude, spec.radius, sampling);
+  const Sampling sampling =
+      spec.sampling == "cell_average" ? Sampling::cell_average : Sampling::centre;
+  if (spec.kind == "hertz")
+    return hertz_pressure(scene.grid, spec.amplitude, spec.radius, sampling);
   return uniform_disk_pressure(scene.grid, spec.amplitude, spec.radius, sampling);
 }
 
@@ -71,7 +73,9 @@ double time_applications(SurfaceOperator& op, const Field& pressure, Field& uz, 
 
 // Index of the cell centre nearest the origin; for an even count the two middle cells tie and
 // the lower index (centre at -d/2) is taken.
-Eigen::Index centre_index(std::ptrdiff_t n) { return static_cast<Eigen::Index>((n - 1) / 2); }
+Eigen::Index centre_index(std::ptrdiff_t n) {
+  return static_cast<Eigen::Index>((n - 1) / 2);
+}
 
 nlohmann::json common_summary(const Scene& scene, const BuiltOperator& built, double apply_seconds,
                               int repeat, const Field& pressure, const Field& uz) {
@@ -138,7 +142,8 @@ RunStatus run_pressure(const Scene& scene, const RunOptions& options) {
   Field uz;
   const double apply_seconds = time_applications(*built.op, pressure, uz, options.repeat);
 
-  nlohmann::json summary = common_summary(scene, built, apply_seconds, options.repeat, pressure, uz);
+  nlohmann::json summary =
+      common_summary(scene, built, apply_seconds, options.repeat, pressure, uz);
   const PressureSpec& load = *scene.pressure;
   if (load.kind == "hertz" && scene.body.is_homogeneous()) {
     summary["max_error_vs_hertz"] = max_error_vs_hertz(
@@ -178,8 +183,8 @@ RunStatus run_contact(Scene scene, const RunOptions& options) {
 
   Field uz;
   const double apply_seconds = time_applications(*built.op, result.pressure, uz, options.repeat);
-  nlohmann::json summary =
-      common_summary(scene, built, apply_seconds, options.repeat, result.pressure, result.displacement);
+  nlohmann::json summary = common_summary(scene, built, apply_seconds, options.repeat,
+                                          result.pressure, result.displacement);
   summary["indenter"] = spec.indenter_name;
   summary["solve_seconds"] = solve_seconds;
   summary["load"] = result.load;

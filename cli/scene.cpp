@@ -1,8 +1,9 @@
 #include "cli/scene.hpp"
 
+#include <toml++/toml.h>
+
 #include <cmath>
 #include <set>
-#include <toml++/toml.h>
 #include <vector>
 
 #include "cli/npy.hpp"
@@ -17,7 +18,8 @@ namespace {
 // are refused instead of silently ignored.
 class SectionReader {
  public:
-  SectionReader(const toml::table& table, std::string name) : table_(table), name_(std::move(name)) {}
+  SectionReader(const toml::table& table, std::string name)
+      : table_(table), name_(std::move(name)) {}
 
   bool has(std::string_view key) const { return table_.contains(key); }
 
@@ -146,7 +148,8 @@ Grid read_grid(const toml::table& root) {
 
 LayerStack read_body(const toml::table& root) {
   SectionReader substrate_reader(section(root, "substrate", true), "substrate");
-  const Material substrate = in_section("substrate", [&] { return read_material(substrate_reader); });
+  const Material substrate =
+      in_section("substrate", [&] { return read_material(substrate_reader); });
   substrate_reader.finish();
 
   std::vector<Coating> coatings;
@@ -161,7 +164,8 @@ LayerStack read_body(const toml::table& root) {
         Coating coating{read_material(reader), reader.number("thickness"), Interface::bonded};
         const std::string interface =
             reader.choice("interface", "bonded", {"bonded", "frictionless"});
-        coating.interface_below = interface == "bonded" ? Interface::bonded : Interface::frictionless;
+        coating.interface_below =
+            interface == "bonded" ? Interface::bonded : Interface::frictionless;
         return coating;
       }));
       reader.finish();
@@ -211,8 +215,8 @@ ContactSpec read_contact(const toml::table& table, const Grid& grid, const Layer
                          const std::filesystem::path& scene_dir) {
   SectionReader reader(table, "contact");
   ContactSpec spec;
-  spec.indenter_name = reader.choice("indenter", "",
-                                     {"sphere", "paraboloid", "cylinder", "flat_punch", "height_map"});
+  spec.indenter_name = reader.choice(
+      "indenter", "", {"sphere", "paraboloid", "cylinder", "flat_punch", "height_map"});
   const std::string& kind = spec.indenter_name;
   const double half_domain = 0.5 * std::min(grid.lx(), grid.ly());
   if (kind == "sphere") {
@@ -327,15 +331,16 @@ Scene read_scene(const std::filesystem::path& path) {
                 std::nullopt};
     const MethodSpec& method = scene.method;
     if (method.name == "frf-spectral" || method.name == "frf-dcfft") {
-      for (const double n : {static_cast<double>(scene.grid.nx()), static_cast<double>(scene.grid.ny())}) {
+      for (const double n :
+           {static_cast<double>(scene.grid.nx()), static_cast<double>(scene.grid.ny())}) {
         const double m = method.alpha * n;
         COATFFT_REQUIRE(std::abs(m - std::round(m)) < 1e-9 * m, "[method] alpha = ", method.alpha,
-                        ": alpha * nx and alpha * ny must be whole numbers of cells (alpha * ",
-                        n, " = ", m, ")");
+                        ": alpha * nx and alpha * ny must be whole numbers of cells (alpha * ", n,
+                        " = ", m, ")");
       }
       // Offsets up to N - 1 must not wrap onto each other on the extended lattice.
-      COATFFT_REQUIRE(method.name != "frf-dcfft" || method.alpha >= 2, "[method] alpha = ",
-                      method.alpha, ": frf-dcfft needs alpha >= 2");
+      COATFFT_REQUIRE(method.name != "frf-dcfft" || method.alpha >= 2,
+                      "[method] alpha = ", method.alpha, ": frf-dcfft needs alpha >= 2");
     }
     COATFFT_REQUIRE(root.contains("pressure") != root.contains("contact"),
                     "a scene needs exactly one of [pressure] (known load) and [contact]");

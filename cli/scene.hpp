@@ -14,11 +14,11 @@ namespace coatfft::cli {
 
 /// [pressure]: a known surface pressure.
 struct PressureSpec {
-  std::string kind;              ///< "hertz", "uniform_disk" or "file"
-  double amplitude = 0;          ///< p0 (hertz) or p (uniform_disk) [Pa]
-  double radius = 0;             ///< a [m]
+  std::string kind;                 ///< "hertz", "uniform_disk" or "file"
+  double amplitude = 0;             ///< p0 (hertz) or p (uniform_disk) [Pa]
+  double radius = 0;                ///< a [m]
   std::string sampling = "centre";  ///< "centre" or "cell_average"
-  std::filesystem::path file;    ///< .npy or .csv of shape (ny, nx) [Pa], for kind = "file"
+  std::filesystem::path file;       ///< .npy or .csv of shape (ny, nx) [Pa], for kind = "file"
 };
 
 /// [method]: how displacements are computed.
@@ -28,8 +28,8 @@ struct MethodSpec {
   std::string g0 = "regularized";  ///< "regularized" or "quadrature"
   double g0_tol = 1e-10;           ///< relative tolerance of the g(0) quadrature
   std::string planning = "estimate";  ///< FFTW planning: "estimate" or "measure"
-  int threads = 1;                 ///< FFTW threads
-  std::filesystem::path wisdom;    ///< FFTW wisdom file to load and save (optional)
+  int threads = 1;                    ///< FFTW threads
+  std::filesystem::path wisdom;       ///< FFTW wisdom file to load and save (optional)
 };
 
 /// [contact]: a frictionless normal contact with an indenter (contact/).

@@ -33,7 +33,8 @@ InfluenceKernel frf_influence_kernel(const Grid& grid, const Frf& frf, double al
 }
 
 InfluenceKernel frf_influence_kernel(const Grid& grid, const Frf& frf, double alpha,
-                                     const G0Result& g0) {
+                                     const G0Result& g0, int threads) {
+  (void)threads;
   using std::numbers::pi;
   const std::ptrdiff_t nx = grid.nx(), ny = grid.ny();
   const std::ptrdiff_t mx = extended_size(nx, alpha, 2.0, who);

@@ -19,8 +19,9 @@ InfluenceKernel frf_influence_kernel(const Grid& grid, const Frf& frf, double al
                                      G0Method g0_method, double g0_tolerance = default_g0_tolerance,
                                      G0Result* g0_used = nullptr);
 
-/// As above with a given g(0) (`g0.value` finite) instead of computing it.
+/// As above with a given g(0) (`g0.value` finite) instead of computing it; `threads` (>= 1)
+/// threads sample the FRF (the Frf must be safe to call concurrently, as every Frf of frf/ is).
 InfluenceKernel frf_influence_kernel(const Grid& grid, const Frf& frf, double alpha,
-                                     const G0Result& g0);
+                                     const G0Result& g0, int threads = 1);
 
 }  // namespace coatfft

@@ -29,7 +29,8 @@ double InfluenceKernel::at(std::ptrdiff_t di, std::ptrdiff_t dj) const {
   return wrapped_(di >= 0 ? di : 2 * nx + di, dj >= 0 ? dj : 2 * ny + dj);
 }
 
-InfluenceKernel love_kernel(const Grid& grid, double plane_strain_modulus) {
+InfluenceKernel love_kernel(const Grid& grid, double plane_strain_modulus, int threads) {
+  (void)threads;
   COATFFT_REQUIRE(std::isfinite(plane_strain_modulus) && plane_strain_modulus > 0,
                   "love_kernel: E* = ", plane_strain_modulus, " Pa, but E* must be finite and > 0");
   const std::ptrdiff_t nx = grid.nx();

@@ -32,7 +32,8 @@ class InfluenceKernel {
 
 /// Love's coefficients for a homogeneous half-space of plane-strain modulus E* [Pa]:
 /// K(di, dj) = love_influence(di dx, dj dy, dx, dy) / E* (theory.md 1.5). Throws
-/// InvalidArgument unless E* is finite and > 0.
-InfluenceKernel love_kernel(const Grid& grid, double plane_strain_modulus);
+/// InvalidArgument unless E* is finite and > 0. `threads` (>= 1) threads share the rows; the
+/// result does not depend on it.
+InfluenceKernel love_kernel(const Grid& grid, double plane_strain_modulus, int threads = 1);
 
 }  // namespace coatfft

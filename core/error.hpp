@@ -32,7 +32,7 @@ std::string concat(const Parts&... parts) {
 
 /// Throws coatfft::InvalidArgument with the streamed message parts when `cond` is false.
 /// Messages say what is wrong and what was expected: "Grid: nx = 0, but nx must be >= 1".
-#define COATFFT_REQUIRE(cond, ...)                                              \
-  do {                                                                          \
+#define COATFFT_REQUIRE(cond, ...)                                                         \
+  do {                                                                                     \
     if (!(cond)) throw ::coatfft::InvalidArgument(::coatfft::detail::concat(__VA_ARGS__)); \
   } while (false)

@@ -11,8 +11,8 @@ class Grid {
 
   std::ptrdiff_t nx() const { return nx_; }
   std::ptrdiff_t ny() const { return ny_; }
-  double lx() const { return lx_; }  ///< domain length along x [m]
-  double ly() const { return ly_; }  ///< domain length along y [m]
+  double lx() const { return lx_; }                             ///< domain length along x [m]
+  double ly() const { return ly_; }                             ///< domain length along y [m]
   double dx() const { return lx_ / static_cast<double>(nx_); }  ///< cell size along x [m]
   double dy() const { return ly_ / static_cast<double>(ny_); }  ///< cell size along y [m]
   std::ptrdiff_t nb_cells() const { return nx_ * ny_; }

@@ -20,7 +20,7 @@ int main() {
   const auto frf = make_frf(body);
   DcfftOperator op(split_frf_kernel(grid, *frf));  // plan once ...
   const Field p = hertz_pressure(grid, 1e9, 1e-3, Sampling::cell_average);
-  const Field u = op.apply(p);                      // ... apply many times
+  const Field u = op.apply(p);  // ... apply many times
   const double u_ref = hankel_displacement(*frf, AxisymmetricLoad::hertz, 1e9, 1e-3, 0.0);
   std::printf("u(0) = %.6e m (Hankel reference %.6e m, difference %.1e of u(0))\n", u(48, 48),
               u_ref, (u(48, 48) - u_ref) / u_ref);

@@ -12,7 +12,8 @@ class Material {
 
   double youngs_modulus() const { return E_; }  ///< E [Pa]
   double poisson_ratio() const { return nu_; }  ///< nu [-]
-  /// Plane-strain (reduced) modulus E* = E / (1 - nu^2) [Pa]; the half-space compliance is 2/(E* k).
+  /// Plane-strain (reduced) modulus E* = E / (1 - nu^2) [Pa]; the half-space compliance is 2/(E*
+  /// k).
   double plane_strain_modulus() const { return E_ / (1.0 - nu_ * nu_); }
   /// Shear modulus mu = E / (2 (1 + nu)) [Pa].
   double shear_modulus() const { return E_ / (2.0 * (1.0 + nu_)); }

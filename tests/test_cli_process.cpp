@@ -1,17 +1,17 @@
 // End-to-end tests of the `coatfft` program: the bundled example, and every bad-input path
 // ending with exit status 2, one line on stderr, and no output folder.
+#include <algorithm>
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <nlohmann/json.hpp>
-#include <algorithm>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <sstream>
-#include <vector>
 #include <string>
+#include <vector>
 
 #include "cli/npy.hpp"
 #include "frf/frf.hpp"
@@ -33,7 +33,8 @@ ProcessResult run_coatfft(const std::string& args) {
   // ctest runs test cases in parallel: one stderr file per command line.
   const fs::path err = fs::temp_directory_path() /
                        ("coatfft_test_stderr_" + std::to_string(std::hash<std::string>{}(args)));
-  const std::string command = std::string(COATFFT_EXE) + " " + args + " 2>" + err.string() + " >/dev/null";
+  const std::string command =
+      std::string(COATFFT_EXE) + " " + args + " 2>" + err.string() + " >/dev/null";
   const int raw = std::system(command.c_str());
   std::ifstream in(err);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -61,9 +62,10 @@ a = 1.0e-3
 name = "dcfft"
 )";
 
-// Writes kGoodScene with `from` replaced by `to` (the one change under test).
-fs::path scene_with(const std::string& name, const std::string& from, const std::string& to) {
-  std::string text = kGoodScene;
+// Writes `base` with `from` replaced by `to` (the one change under test) to NAME.toml.
+fs::path write_scene(const std::string& base, const std::string& name, const std::string& from,
+                     const std::string& to) {
+  std::string text = base;
   if (!from.empty()) {
     const auto pos = text.find(from);
     REQUIRE(pos != std::string::npos);
@@ -72,6 +74,31 @@ fs::path scene_with(const std::string& name, const std::string& from, const std:
   const fs::path path = scratch(name + ".toml");
   std::ofstream(path) << text;
   return path;
+}
+
+fs::path scene_with(const std::string& name, const std::string& from, const std::string& to) {
+  return write_scene(kGoodScene, name, from, to);
+}
+
+// A scene edit that must be refused: exit 2, one line on stderr mentioning `must_mention`, and
+// no output folder.
+struct BadCase {
+  const char* name;
+  std::string from, to;
+  const char* must_mention;
+};
+
+void check_refused(const std::string& base, const BadCase& c) {
+  INFO(c.name);
+  const fs::path scene = write_scene(base, c.name, c.from, c.to);
+  const fs::path out = scratch(std::string(c.name) + "_out");
+  fs::remove_all(out);
+  const auto result = run_coatfft("run " + scene.string() + " -o " + out.string());
+  INFO(result.stderr_text);
+  CHECK(result.status == 2);
+  CHECK(std::count(result.stderr_text.begin(), result.stderr_text.end(), '\n') == 1);
+  CHECK(result.stderr_text.find(c.must_mention) != std::string::npos);
+  CHECK_FALSE(fs::exists(out));
 }
 
 }  // namespace
@@ -105,51 +132,37 @@ TEST_CASE("coatfft run on the bundled example matches Hertz", "[cli]") {
 }
 
 TEST_CASE("coatfft run refuses bad scenes with exit 2, one line, no output", "[cli][bad_input]") {
-  struct Case {
-    const char* name;
-    std::string from, to;
-    const char* must_mention;
-  };
   const std::array cases{
-      Case{"unknown_key", "nx = 33\n", "nx = 33\nnz = 4\n", "nz"},
-      Case{"unknown_section", "[method]", "[solver]\nfoo = 1\n[method]", "solver"},
-      Case{"wrong_type", "nx = 33", "nx = \"33\"", "nx"},
-      Case{"float_for_int", "nx = 33", "nx = 33.5", "nx"},
-      Case{"missing_key", "lx = 3.0e-3\n", "", "lx"},
-      Case{"missing_section", "[substrate]\nmaterial = \"steel\"\n", "", "substrate"},
-      Case{"nx_zero", "nx = 33", "nx = 0", "nx = 0"},
-      Case{"negative_modulus", "material = \"steel\"", "E = -1e9\nnu = 0.3", "E = -1"},
-      Case{"nu_too_large", "material = \"steel\"", "E = 1e9\nnu = 0.5", "nu = 0.5"},
-      Case{"unknown_material", "\"steel\"", "\"unobtainium\"", "unobtainium"},
-      Case{"radius_too_large", "a = 1.0e-3", "a = 2.0e-3", "a"},
-      Case{"negative_p0", "p0 = 1.0e9", "p0 = -1.0e9", "p0"},
-      Case{"unknown_method", "\"dcfft\"", "\"magic\"", "magic"},
-      Case{"alpha_not_integer", "name = \"dcfft\"", "name = \"frf-spectral\"\nalpha = 2.5",
-           "alpha = 2.5"},
-      Case{"alpha_too_small", "name = \"dcfft\"", "name = \"frf-dcfft\"\nalpha = 1.0", "alpha = 1"},
-      Case{"bad_g0", "name = \"dcfft\"", "name = \"frf-spectral\"\ng0 = \"exact\"", "g0"},
-      Case{"unknown_kind", "\"hertz\"", "\"gaussian\"", "gaussian"},
-      Case{"syntax_error", "[grid]", "[grid", "syntax"},
-      Case{"missing_file", "kind = \"hertz\"\np0 = 1.0e9\na = 1.0e-3",
-           "kind = \"file\"\npath = \"does_not_exist.npy\"", "does_not_exist.npy"},
-      Case{"coated_dcfft", "[pressure]",
-           "[[coating]]\nmaterial = \"titanium_nitride\"\nthickness = 1e-6\n[pressure]", "dcfft"},
-      Case{"bad_thickness", "[pressure]",
-           "[[coating]]\nmaterial = \"titanium_nitride\"\nthickness = -1e-6\n[pressure]",
-           "thickness"},
+      BadCase{"unknown_key", "nx = 33\n", "nx = 33\nnz = 4\n", "nz"},
+      BadCase{"unknown_section", "[method]", "[solver]\nfoo = 1\n[method]", "solver"},
+      BadCase{"wrong_type", "nx = 33", "nx = \"33\"", "nx"},
+      BadCase{"float_for_int", "nx = 33", "nx = 33.5", "nx"},
+      BadCase{"missing_key", "lx = 3.0e-3\n", "", "lx"},
+      BadCase{"missing_section", "[substrate]\nmaterial = \"steel\"\n", "", "substrate"},
+      BadCase{"nx_zero", "nx = 33", "nx = 0", "nx = 0"},
+      BadCase{"negative_modulus", "material = \"steel\"", "E = -1e9\nnu = 0.3", "E = -1"},
+      BadCase{"nu_too_large", "material = \"steel\"", "E = 1e9\nnu = 0.5", "nu = 0.5"},
+      BadCase{"unknown_material", "\"steel\"", "\"unobtainium\"", "unobtainium"},
+      BadCase{"radius_too_large", "a = 1.0e-3", "a = 2.0e-3", "a"},
+      BadCase{"negative_p0", "p0 = 1.0e9", "p0 = -1.0e9", "p0"},
+      BadCase{"unknown_method", "\"dcfft\"", "\"magic\"", "magic"},
+      BadCase{"alpha_not_integer", "name = \"dcfft\"", "name = \"frf-spectral\"\nalpha = 2.5",
+              "alpha = 2.5"},
+      BadCase{"alpha_too_small", "name = \"dcfft\"", "name = \"frf-dcfft\"\nalpha = 1.0",
+              "alpha = 1"},
+      BadCase{"bad_g0", "name = \"dcfft\"", "name = \"frf-spectral\"\ng0 = \"exact\"", "g0"},
+      BadCase{"unknown_kind", "\"hertz\"", "\"gaussian\"", "gaussian"},
+      BadCase{"syntax_error", "[grid]", "[grid", "syntax"},
+      BadCase{"missing_file", "kind = \"hertz\"\np0 = 1.0e9\na = 1.0e-3",
+              "kind = \"file\"\npath = \"does_not_exist.npy\"", "does_not_exist.npy"},
+      BadCase{"coated_dcfft", "[pressure]",
+              "[[coating]]\nmaterial = \"titanium_nitride\"\nthickness = 1e-6\n[pressure]",
+              "dcfft"},
+      BadCase{"bad_thickness", "[pressure]",
+              "[[coating]]\nmaterial = \"titanium_nitride\"\nthickness = -1e-6\n[pressure]",
+              "thickness"},
   };
-  for (const auto& c : cases) {
-    INFO(c.name);
-    const fs::path scene = scene_with(c.name, c.from, c.to);
-    const fs::path out = scratch(std::string(c.name) + "_out");
-    fs::remove_all(out);
-    const auto result = run_coatfft("run " + scene.string() + " -o " + out.string());
-    INFO(result.stderr_text);
-    CHECK(result.status == 2);
-    CHECK(std::count(result.stderr_text.begin(), result.stderr_text.end(), '\n') == 1);
-    CHECK(result.stderr_text.find(c.must_mention) != std::string::npos);
-    CHECK_FALSE(fs::exists(out));
-  }
+  for (const auto& c : cases) check_refused(kGoodScene, c);
 }
 
 TEST_CASE("coatfft run reads pressure files and refuses malformed ones", "[cli][bad_input]") {
@@ -171,8 +184,9 @@ TEST_CASE("coatfft run reads pressure files and refuses malformed ones", "[cli][
   SECTION("wrong shape") {
     coatfft::cli::write_npy(scratch("p.npy"), coatfft::Field::Constant(32, 33, 1e8));
     fs::remove_all(out);
-    const auto result = run_coatfft(
-        "run " + scene_with("file_shape", hertz_keys, file_pressure).string() + " -o " + out.string());
+    const auto result =
+        run_coatfft("run " + scene_with("file_shape", hertz_keys, file_pressure).string() + " -o " +
+                    out.string());
     CHECK(result.status == 2);
     CHECK(result.stderr_text.find("shape") != std::string::npos);
     CHECK_FALSE(fs::exists(out));
@@ -185,11 +199,9 @@ TEST_CASE("coatfft run reads pressure files and refuses malformed ones", "[cli][
     }
     csv.close();
     fs::remove_all(out);
-    const auto result = run_coatfft("run " +
-                                    scene_with("file_nan", hertz_keys,
-                                               "kind = \"file\"\npath = \"p.csv\"")
-                                        .string() +
-                                    " -o " + out.string());
+    const auto result = run_coatfft(
+        "run " + scene_with("file_nan", hertz_keys, "kind = \"file\"\npath = \"p.csv\"").string() +
+        " -o " + out.string());
     CHECK(result.status == 2);
     CHECK(result.stderr_text.find("p.csv") != std::string::npos);
     CHECK_FALSE(fs::exists(out));
@@ -199,9 +211,9 @@ TEST_CASE("coatfft run reads pressure files and refuses malformed ones", "[cli][
 TEST_CASE("coatfft frf prints the FRF table of a scene's body", "[cli]") {
   const fs::path table = scratch("frf_table.csv");
   fs::remove(table);
-  const auto result = run_coatfft("frf " + std::string(COATFFT_SOURCE_DIR) +
-                                  "/examples/scenes/coated_hertz.toml --points 5 -o " +
-                                  table.string());
+  const auto result =
+      run_coatfft("frf " + std::string(COATFFT_SOURCE_DIR) +
+                  "/examples/scenes/coated_hertz.toml --points 5 -o " + table.string());
   INFO(result.stderr_text);
   REQUIRE(result.status == 0);
   std::ifstream in(table);
@@ -244,16 +256,9 @@ radius = 0.01
 load = 100.0
 )";
 
-fs::path contact_scene_with(const std::string& name, const std::string& from, const std::string& to) {
-  std::string text = kContactScene;
-  if (!from.empty()) {
-    const auto pos = text.find(from);
-    REQUIRE(pos != std::string::npos);
-    text.replace(pos, from.size(), to);
-  }
-  const fs::path path = scratch(name + ".toml");
-  std::ofstream(path) << text;
-  return path;
+fs::path contact_scene_with(const std::string& name, const std::string& from,
+                            const std::string& to) {
+  return write_scene(kContactScene, name, from, to);
 }
 
 }  // namespace
@@ -283,11 +288,6 @@ TEST_CASE("coatfft run solves a sphere contact and reports it", "[cli][contact]"
 
 TEST_CASE("coatfft run refuses bad contact scenes with exit 2 and no output",
           "[cli][contact][bad_input]") {
-  struct Case {
-    const char* name;
-    std::string from, to;
-    const char* must_mention;
-  };
   {
     std::ofstream csv(scratch("h_nan.csv"));
     for (int j = 0; j < 64; ++j) {
@@ -298,40 +298,32 @@ TEST_CASE("coatfft run refuses bad contact scenes with exit 2 and no output",
   coatfft::cli::write_npy(scratch("h_shape.npy"), coatfft::Field::Zero(64, 32));
   const std::string sphere = "indenter = \"sphere\"\nradius = 0.01";
   const std::array cases{
-      Case{"zero_load", "load = 100.0", "load = 0.0", "load"},
-      Case{"negative_load", "load = 100.0", "load = -5.0", "load"},
-      Case{"load_and_approach", "load = 100.0", "load = 100.0\napproach = 1e-6", "approach"},
-      Case{"sphere_too_small", "radius = 0.01", "radius = 0.0004", "radius"},
-      Case{"punch_too_large", sphere, "indenter = \"flat_punch\"\nradius = 0.5e-3\nedge_radius = 1e-5",
-           "radius"},
-      Case{"reaches_edge", "load = 100.0", "load = 20000.0", "domain"},
-      Case{"height_map_nan", sphere, "indenter = \"height_map\"\npath = \"h_nan.csv\"", "h_nan.csv"},
-      Case{"height_map_shape", sphere, "indenter = \"height_map\"\npath = \"h_shape.npy\"",
-           "h_shape.npy"},
-      Case{"unknown_indenter", "\"sphere\"", "\"cone\"", "cone"},
-      Case{"pressure_and_contact", "[contact]", "[pressure]\nkind = \"hertz\"\np0 = 1e9\na = 1e-4\n[contact]",
-           "exactly one"},
+      BadCase{"zero_load", "load = 100.0", "load = 0.0", "load"},
+      BadCase{"negative_load", "load = 100.0", "load = -5.0", "load"},
+      BadCase{"load_and_approach", "load = 100.0", "load = 100.0\napproach = 1e-6", "approach"},
+      BadCase{"sphere_too_small", "radius = 0.01", "radius = 0.0004", "radius"},
+      BadCase{"punch_too_large", sphere,
+              "indenter = \"flat_punch\"\nradius = 0.5e-3\nedge_radius = 1e-5", "radius"},
+      BadCase{"reaches_edge", "load = 100.0", "load = 20000.0", "domain"},
+      BadCase{"height_map_nan", sphere, "indenter = \"height_map\"\npath = \"h_nan.csv\"",
+              "h_nan.csv"},
+      BadCase{"height_map_shape", sphere, "indenter = \"height_map\"\npath = \"h_shape.npy\"",
+              "h_shape.npy"},
+      BadCase{"unknown_indenter", "\"sphere\"", "\"cone\"", "cone"},
+      BadCase{"pressure_and_contact", "[contact]",
+              "[pressure]\nkind = \"hertz\"\np0 = 1e9\na = 1e-4\n[contact]", "exactly one"},
   };
-  for (const auto& c : cases) {
-    INFO(c.name);
-    const fs::path scene = contact_scene_with(c.name, c.from, c.to);
-    const fs::path out = scratch(std::string(c.name) + "_out");
-    fs::remove_all(out);
-    const auto result = run_coatfft("run " + scene.string() + " -o " + out.string());
-    INFO(result.stderr_text);
-    CHECK(result.status == 2);
-    CHECK(std::count(result.stderr_text.begin(), result.stderr_text.end(), '\n') == 1);
-    CHECK(result.stderr_text.find(c.must_mention) != std::string::npos);
-    CHECK_FALSE(fs::exists(out));
-  }
+  for (const auto& c : cases) check_refused(kContactScene, c);
 }
 
 TEST_CASE("coatfft run reports a contact solve that does not converge", "[cli][contact]") {
   const fs::path out = scratch("contact_nc_out");
   fs::remove_all(out);
-  const auto result =
-      run_coatfft("run " + contact_scene_with("contact_nc", "load = 100.0", "load = 100.0\nmax_iterations = 2").string() +
-                  " -o " + out.string());
+  const auto result = run_coatfft(
+      "run " +
+      contact_scene_with("contact_nc", "load = 100.0", "load = 100.0\nmax_iterations = 2")
+          .string() +
+      " -o " + out.string());
   CHECK(result.status == 3);
   CHECK(result.stderr_text.find("did not converge") != std::string::npos);
   nlohmann::json s;
@@ -350,10 +342,9 @@ TEST_CASE("coatfft run on the coated example matches the Hankel-transform refere
   nlohmann::json s;
   std::ifstream(out / "summary.json") >> s;
   CHECK(s["method"] == "frf-split");
-  const coatfft::LayerStack body(
-      {coatfft::Coating{coatfft::material_by_name("titanium_nitride"), 1e-4,
-                        coatfft::Interface::bonded}},
-      coatfft::material_by_name("steel"));
+  const coatfft::LayerStack body({coatfft::Coating{coatfft::material_by_name("titanium_nitride"),
+                                                   1e-4, coatfft::Interface::bonded}},
+                                 coatfft::material_by_name("steel"));
   const auto frf = coatfft::make_frf(body);
   const double u0 =
       coatfft::hankel_displacement(*frf, coatfft::AxisymmetricLoad::hertz, 1e9, 1e-3, 0.0);
@@ -370,7 +361,8 @@ TEST_CASE("coatfft run with the seed's FRF pipelines reports g(0) and the period
     const fs::path out = scratch(method + "_out");
     fs::remove_all(out);
     const auto result = run_coatfft(
-        "run " + scene_with(method, "name = \"dcfft\"", "name = \"" + method + "\"\nalpha = 4").string() +
+        "run " +
+        scene_with(method, "name = \"dcfft\"", "name = \"" + method + "\"\nalpha = 4").string() +
         " -o " + out.string());
     INFO(result.stderr_text);
     REQUIRE(result.status == 0);

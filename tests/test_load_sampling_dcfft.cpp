@@ -14,8 +14,8 @@ using namespace coatfft;
 namespace {
 
 struct SamplingErrors {
-  double at_edge = 0;     // max |error| over cells within 2 dx of r = a
-  double away_edge = 0;   // max |error| elsewhere
+  double at_edge = 0;    // max |error| over cells within 2 dx of r = a
+  double away_edge = 0;  // max |error| elsewhere
 };
 
 // Domain [-1.5a, 1.5a]^2 with dx = a / cells_per_radius.
