@@ -1,7 +1,10 @@
 #include "convolution/influence_kernel.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <thread>
 #include <utility>
+#include <vector>
 
 #include "convolution/love_influence.hpp"
 #include "core/error.hpp"
@@ -30,29 +33,44 @@ double InfluenceKernel::at(std::ptrdiff_t di, std::ptrdiff_t dj) const {
 }
 
 InfluenceKernel love_kernel(const Grid& grid, double plane_strain_modulus, int threads) {
-  (void)threads;
   COATFFT_REQUIRE(std::isfinite(plane_strain_modulus) && plane_strain_modulus > 0,
                   "love_kernel: E* = ", plane_strain_modulus, " Pa, but E* must be finite and > 0");
+  COATFFT_REQUIRE(threads >= 1, "love_kernel: threads = ", threads, ", but must be >= 1");
   const std::ptrdiff_t nx = grid.nx();
   const std::ptrdiff_t ny = grid.ny();
+  const std::ptrdiff_t mx = 2 * nx;
+  const std::ptrdiff_t my = 2 * ny;
   const double dx = grid.dx();
   const double dy = grid.dy();
-  Field wrapped = Field::Zero(2 * nx, 2 * ny);
-  // Love's coefficient is even in x and in y: evaluate the quarter di, dj >= 0 and mirror it, which
-  // also makes the wrapped array exactly symmetric (DcfftOperator then stores a real spectrum).
-  for (std::ptrdiff_t dj = 0; dj < ny; ++dj) {
-    for (std::ptrdiff_t di = 0; di < nx; ++di) {
-      const double k =
-          love_influence(static_cast<double>(di) * dx, static_cast<double>(dj) * dy, dx, dy) /
-          plane_strain_modulus;
-      const std::ptrdiff_t mi = di == 0 ? 0 : 2 * nx - di;
-      const std::ptrdiff_t mj = dj == 0 ? 0 : 2 * ny - dj;
-      wrapped(di, dj) = k;
-      wrapped(mi, dj) = k;
-      wrapped(di, mj) = k;
-      wrapped(mi, mj) = k;
-    }
+  const double inv_e = 1.0 / plane_strain_modulus;
+  // Every entry is written exactly once (no zero fill of the (2nx, 2ny) array first). Love's
+  // coefficient is even in x and in y: each column dj of the quarter di, dj >= 0 is computed
+  // along x in one vectorised run, mirrored within the column (slot 2nx - di) and copied to
+  // column 2ny - dj, which also makes the wrapped array exactly symmetric (DcfftOperator then
+  // stores a real spectrum). The slots nx and ny are the unused zeros.
+  Field wrapped(mx, my);
+  const auto column = [&](std::ptrdiff_t dj) {
+    double* c = &wrapped(0, dj);
+    detail::love_influence_row(static_cast<double>(dj) * dy, dx, dy, nx, c);
+    for (std::ptrdiff_t di = 0; di < nx; ++di) c[di] *= inv_e;
+    c[nx] = 0.0;
+    for (std::ptrdiff_t di = 1; di < nx; ++di) c[mx - di] = c[di];
+    if (dj > 0) std::copy_n(c, mx, &wrapped(0, my - dj));
+  };
+  const auto workers = static_cast<std::ptrdiff_t>(std::min<std::ptrdiff_t>(threads, ny));
+  if (workers <= 1) {
+    for (std::ptrdiff_t dj = 0; dj < ny; ++dj) column(dj);
+  } else {
+    // Columns are interleaved between the workers: the far-field rule (and so the cost) changes
+    // with dj, and interleaving balances it.
+    std::vector<std::jthread> pool;
+    for (std::ptrdiff_t w = 1; w < workers; ++w)
+      pool.emplace_back([&column, w, workers, ny] {
+        for (std::ptrdiff_t dj = w; dj < ny; dj += workers) column(dj);
+      });
+    for (std::ptrdiff_t dj = 0; dj < ny; dj += workers) column(dj);
   }
+  wrapped.col(ny).setZero();
   return InfluenceKernel(grid, std::move(wrapped));
 }
 
