@@ -147,7 +147,8 @@ int main(int argc, char** argv) {
     const Material steel(210e9, 0.3);
     const Material tin(600e9, 0.25);
     std::vector<Body> bodies;
-    bodies.push_back({"steel", std::make_unique<HalfSpaceFrf>(steel), steel.plane_strain_modulus()});
+    bodies.push_back(
+        {"steel", std::make_unique<HalfSpaceFrf>(steel), steel.plane_strain_modulus()});
     bodies.push_back({"tin50um_on_steel",
                       std::make_unique<CoatedFrf>(tin, 50e-6, steel, Interface::bonded), 0.0});
 

@@ -3,7 +3,6 @@
 #include <bit>
 #include <cstdint>
 #include <fstream>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -17,6 +16,28 @@ static_assert(std::endian::native == std::endian::little, "the .npy writer assum
 namespace {
 constexpr char kMagic[] = "\x93NUMPY";
 constexpr std::size_t kMagicSize = 6;
+// The text after 'key': in a .npy header dict, up to the next top-level comma or the closing
+// brace, blanks trimmed ("'<f8'", "False", "(3, 4)").
+std::string header_value(const std::string& header, const std::string& key) {
+  const auto at = header.find("'" + key + "'");
+  if (at == std::string::npos) return "";
+  auto begin = header.find(':', at);
+  if (begin == std::string::npos) return "";
+  ++begin;
+  int depth = 0;
+  auto end = begin;
+  for (; end < header.size(); ++end) {
+    const char c = header[end];
+    if (c == '(') ++depth;
+    if (c == ')') --depth;
+    if ((c == ',' && depth == 0) || c == '}') break;
+  }
+  std::string value = header.substr(begin, end - begin);
+  value.erase(0, value.find_first_not_of(' '));
+  value.erase(value.find_last_not_of(' ') + 1);
+  return value;
+}
+
 }  // namespace
 
 void write_npy(const std::filesystem::path& path, const Field& field) {
@@ -67,17 +88,17 @@ Field read_npy(const std::filesystem::path& path) {
   in.read(header.data(), static_cast<std::streamsize>(header_size));
   COATFFT_REQUIRE(in.good(), path.string(), ": truncated .npy header");
 
-  std::smatch m;
-  COATFFT_REQUIRE(std::regex_search(header, m, std::regex(R"('descr'\s*:\s*'([^']*)')")) &&
-                      (m[1] == "<f8" || m[1] == "=f8" || m[1] == "f8"),
-                  path.string(), ": dtype must be float64 ('<f8'), header is ", header);
-  COATFFT_REQUIRE(std::regex_search(header, m, std::regex(R"('fortran_order'\s*:\s*False)")),
-                  path.string(), ": array must be in C order (fortran_order False)");
-  COATFFT_REQUIRE(
-      std::regex_search(header, m, std::regex(R"('shape'\s*:\s*\(\s*(\d+)\s*,\s*(\d+)\s*,?\s*\))")),
-      path.string(), ": array must be 2-D, header is ", header);
-  const long rows = std::stol(m[1]);
-  const long cols = std::stol(m[2]);
+  const std::string descr = header_value(header, "descr");
+  COATFFT_REQUIRE(descr == "'<f8'" || descr == "'=f8'" || descr == "'f8'", path.string(),
+                  ": dtype must be float64 ('<f8'), header is ", header);
+  COATFFT_REQUIRE(header_value(header, "fortran_order") == "False", path.string(),
+                  ": array must be in C order (fortran_order False)");
+  long rows = 0, cols = 0;
+  char close = 0;
+  std::istringstream shape(header_value(header, "shape"));
+  shape >> close >> rows >> close >> cols >> close;
+  COATFFT_REQUIRE(shape && (close == ')' || (close == ',' && (shape >> close) && close == ')')),
+                  path.string(), ": array must be 2-D, header is ", header);
   COATFFT_REQUIRE(rows > 0 && cols > 0, path.string(), ": empty array of shape (", rows, ", ", cols,
                   ")");
   Field field(cols, rows);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "core/error.hpp"
@@ -84,8 +85,8 @@ struct GaussLegendre<6> {
 // (with -fno-math-errno, set for this file); a single point (first = 0, end = 1, step = 0) goes
 // through the same arithmetic, so love_kernel and love_influence agree bit for bit.
 template <int N>
-void gauss_legendre_run(double x0, double step, std::ptrdiff_t first, std::ptrdiff_t end,
-                        double y, double a, double b, double* out) {
+void gauss_legendre_run(double x0, double step, int first, int end, double y, double a, double b,
+                        double* out) {
   using G = GaussLegendre<N>;
   std::array<double, N> ey2{};
   std::array<double, N> ax{};
@@ -95,7 +96,8 @@ void gauss_legendre_run(double x0, double step, std::ptrdiff_t first, std::ptrdi
     ax[q] = a * G::t[q];
   }
   const double scale = a * b / std::numbers::pi;
-  for (std::ptrdiff_t i = first; i < end; ++i) {
+  // An int counter: SSE2 converts int32 to double in vectors, not int64.
+  for (int i = first; i < end; ++i) {
     const double x = x0 + static_cast<double>(i) * step;
     double sum = 0.0;
     for (std::size_t p = 0; p < N; ++p) {
@@ -119,14 +121,24 @@ int rule_order(double r2, double d) {
   return n;
 }
 
-void run_with_order(int n, double x0, double step, std::ptrdiff_t first, std::ptrdiff_t end,
-                    double y, double a, double b, double* out) {
+void run_with_order(int n, double x0, double step, int first, int end, double y, double a, double b,
+                    double* out) {
   switch (n) {
-    case 6: gauss_legendre_run<6>(x0, step, first, end, y, a, b, out); break;
-    case 5: gauss_legendre_run<5>(x0, step, first, end, y, a, b, out); break;
-    case 4: gauss_legendre_run<4>(x0, step, first, end, y, a, b, out); break;
-    case 3: gauss_legendre_run<3>(x0, step, first, end, y, a, b, out); break;
-    default: gauss_legendre_run<2>(x0, step, first, end, y, a, b, out); break;
+    case 6:
+      gauss_legendre_run<6>(x0, step, first, end, y, a, b, out);
+      break;
+    case 5:
+      gauss_legendre_run<5>(x0, step, first, end, y, a, b, out);
+      break;
+    case 4:
+      gauss_legendre_run<4>(x0, step, first, end, y, a, b, out);
+      break;
+    case 3:
+      gauss_legendre_run<3>(x0, step, first, end, y, a, b, out);
+      break;
+    default:
+      gauss_legendre_run<2>(x0, step, first, end, y, a, b, out);
+      break;
   }
 }
 
@@ -154,6 +166,8 @@ void love_influence_row(double y, double dx, double dy, std::ptrdiff_t count, do
   COATFFT_REQUIRE(std::isfinite(dx) && dx > 0 && std::isfinite(dy) && dy > 0,
                   "love_influence_row: cell (", dx, ", ", dy, ") m must be finite and > 0");
   COATFFT_REQUIRE(std::isfinite(y), "love_influence_row: y = ", y, " m, but it must be finite");
+  COATFFT_REQUIRE(count >= 0 && count <= std::numeric_limits<int>::max(),
+                  "love_influence_row: count = ", count, ", but it must be in [0, INT_MAX]");
   const double a = 0.5 * dx;
   const double b = 0.5 * dy;
   const double d = std::max(dx, dy);
@@ -173,7 +187,7 @@ void love_influence_row(double y, double dx, double dy, std::ptrdiff_t count, do
         out[k] = closed_form(static_cast<double>(k) * dx, y, a, b);
     } else {
       // x0 = 0, step dx: x = 0 + k dx is the x of love_influence(k dx, y, ...) exactly.
-      run_with_order(n, 0.0, dx, i, end, y, a, b, out);
+      run_with_order(n, 0.0, dx, static_cast<int>(i), static_cast<int>(end), y, a, b, out);
     }
     i = end;
   }
