@@ -89,16 +89,22 @@ DcfftOperator::DcfftOperator(const InfluenceKernel& kernel, Planning planning, i
 void DcfftOperator::compute_even_spectrum(const Field& wrapped) {
   // DFT of the 2n-periodic even sequence = DCT-I (FFTW REDFT00) of its first n + 1 entries; the
   // slots nx, ny are the zeros the wrap-around layout leaves there. Stored column-major, [kx][ky],
-  // like the blocks it multiplies. One-off: FFTW_ESTIMATE.
+  // like the blocks it multiplies. The transform reads the (nx + 1) x (ny + 1) corner of
+  // `wrapped` (x fastest) in place through guru strides and writes the transposed layout
+  // directly, so FFTW's tiled copies do the transposition (a separate strided copy loop cost
+  // about as much as the transform at 1024^2). Out-of-place r2r preserves its input (FFTW manual
+  // 4.3.2, FFTW_PRESERVE_INPUT is the default for r2r), so `wrapped` is only read. One-off:
+  // FFTW_ESTIMATE, which plans without touching the arrays.
   const std::ptrdiff_t len = ny_ + 1;
   kernel_even_ = FftwRealBuffer(static_cast<std::size_t>(hx_ * len));
   double* k = kernel_even_.data();
+  const fftw_iodim dims[2] = {{static_cast<int>(hx_), 1, static_cast<int>(len)},
+                              {static_cast<int>(len), static_cast<int>(mx_), 1}};
+  const fftw_r2r_kind kinds[2] = {FFTW_REDFT00, FFTW_REDFT00};
+  double* in = const_cast<double*>(wrapped.data());
   const FftwPlan dct = FftwPlan::create(threads_, [&] {
-    return fftw_plan_r2r_2d(static_cast<int>(hx_), static_cast<int>(len), k, k, FFTW_REDFT00,
-                            FFTW_REDFT00, FFTW_ESTIMATE);
+    return fftw_plan_guru_r2r(2, dims, 0, nullptr, in, k, kinds, FFTW_ESTIMATE);
   });
-  for (std::ptrdiff_t kx = 0; kx < hx_; ++kx)
-    for (std::ptrdiff_t ky = 0; ky < len; ++ky) k[kx * len + ky] = wrapped(kx, ky);
   dct.execute();
   const double scale = 1.0 / static_cast<double>(mx_ * my_);
   std::for_each(k, k + hx_ * len, [scale](double& v) { v *= scale; });

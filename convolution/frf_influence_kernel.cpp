@@ -1,9 +1,11 @@
 #include "convolution/frf_influence_kernel.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <numbers>
 #include <utility>
+#include <vector>
 
 #include "convolution/fftw_plan.hpp"
 #include "convolution/frf_spectral_operator.hpp"
@@ -34,17 +36,17 @@ InfluenceKernel frf_influence_kernel(const Grid& grid, const Frf& frf, double al
 
 InfluenceKernel frf_influence_kernel(const Grid& grid, const Frf& frf, double alpha,
                                      const G0Result& g0, int threads) {
-  (void)threads;
   using std::numbers::pi;
   const std::ptrdiff_t nx = grid.nx(), ny = grid.ny();
   const std::ptrdiff_t mx = extended_size(nx, alpha, 2.0, who);
   const std::ptrdiff_t my = extended_size(ny, alpha, 2.0, who);
-  const std::ptrdiff_t hx = mx / 2 + 1;
   COATFFT_REQUIRE(std::isfinite(g0.value), who, ": g(0) = ", g0.value,
                   " m/Pa, but it must be finite");
+  COATFFT_REQUIRE(threads >= 1, who, ": threads = ", threads, ", but must be >= 1");
   const double dx = grid.dx(), dy = grid.dy();
   const double dkx = 2.0 * pi / (static_cast<double>(mx) * dx);
   const double dky = 2.0 * pi / (static_cast<double>(my) * dy);
+  const double scale = 1.0 / (static_cast<double>(mx) * static_cast<double>(my));
 
   // theory.md (4.1): the coefficient of a uniformly loaded dx x dy cell is the Fourier series of
   // the periodised G convolved with the cell's indicator, whose transform is
@@ -52,38 +54,70 @@ InfluenceKernel frf_influence_kernel(const Grid& grid, const Frf& frf, double al
   // leaves FFTW's 1/(mx my). The seed paper's step list does not mention the cell factor (it
   // inverts the bare FRF samples, i.e. point-sampled coefficients); we implement (4.1), which is
   // the consistent cell average and differs from the bare samples mostly near the self term.
-  Field h = sample_frf_half_spectrum(frf, mx, my, dx, dy, g0.value);
-  FftwComplexBuffer spectrum(static_cast<std::size_t>(hx * my));
-  FftwRealBuffer space(static_cast<std::size_t>(mx * my));
-  const FftwPlan c2r = FftwPlan::create(1, [&] {
-    return fftw_plan_dft_c2r_2d(static_cast<int>(my), static_cast<int>(mx), spectrum.data(),
-                                space.data(), FFTW_ESTIMATE);
-  });
-  std::complex<double>* s = as_complex(spectrum.data());
-  const double scale = 1.0 / (static_cast<double>(mx) * static_cast<double>(my));
-  for (std::ptrdiff_t jy = 0; jy < my; ++jy) {
-    const std::ptrdiff_t sy = jy < (my + 1) / 2 ? jy : jy - my;
-    const double sy_factor = sinc(0.5 * dky * static_cast<double>(sy) * dy);
-    for (std::ptrdiff_t jx = 0; jx < hx; ++jx) {
-      const double sx_factor = sinc(0.5 * dkx * static_cast<double>(jx) * dx);
-      s[jy * hx + jx] = scale * h(jx, jy) * sx_factor * sy_factor;
-    }
-  }
-  c2r.execute();
+  //
+  // The spectrum H sinc sinc is real and even in kx and in ky, so its inverse DFT on the
+  // (mx, my) lattice is a 2-D DCT-I of the quarter 0 <= jx <= mx/2, 0 <= jy <= my/2 when both
+  // sizes are even (FFTW REDFT00; the same identity DcfftOperator uses): a quarter of the FRF
+  // samples and a transform of (mx/2 + 1) x (my/2 + 1) instead of a c2r of mx x my. The result
+  // is then exactly even, so the offsets -d are copies of +d (alpha >= 2 keeps the images of +d
+  // and -d apart) and DcfftOperator stores a real spectrum. Odd sizes take the c2r route.
+  const std::ptrdiff_t qx = mx / 2 + 1;
+  std::vector<double> sinc_x(static_cast<std::size_t>(qx));
+  for (std::ptrdiff_t j = 0; j < qx; ++j)
+    sinc_x[static_cast<std::size_t>(j)] = sinc(0.5 * dkx * static_cast<double>(j) * dx);
+  const auto sinc_y = [&](std::ptrdiff_t sy) {
+    return sinc(0.5 * dky * static_cast<double>(sy) * dy);
+  };
 
-  // Offsets d with |d| <= n - 1 sit at (d mod m) on the M lattice; alpha >= 2 keeps the images
-  // of +d and -d apart. Copy them into DC-FFT's (2nx, 2ny) wrap-around layout.
-  Field wrapped = Field::Zero(2 * nx, 2 * ny);
-  const double* k = space.data();
-  for (std::ptrdiff_t dj = -(ny - 1); dj <= ny - 1; ++dj) {
-    const std::ptrdiff_t mj = dj >= 0 ? dj : my + dj;
-    const std::ptrdiff_t wj = dj >= 0 ? dj : 2 * ny + dj;
-    for (std::ptrdiff_t di = -(nx - 1); di <= nx - 1; ++di) {
-      const std::ptrdiff_t mi = di >= 0 ? di : mx + di;
-      const std::ptrdiff_t wi = di >= 0 ? di : 2 * nx + di;
-      wrapped(wi, wj) = k[mj * mx + mi];
+  Field wrapped(2 * nx, 2 * ny);
+  const auto fill_column = [&](std::ptrdiff_t dj, const double* k_column) {
+    // k_column holds K(di, dj) for di = 0..nx-1.
+    double* c = &wrapped(0, dj);
+    std::copy_n(k_column, nx, c);
+    c[nx] = 0.0;
+    for (std::ptrdiff_t di = 1; di < nx; ++di) c[2 * nx - di] = c[di];
+    if (dj > 0) std::copy_n(c, 2 * nx, &wrapped(0, 2 * ny - dj));
+  };
+
+  if (mx % 2 == 0 && my % 2 == 0) {
+    const std::ptrdiff_t qy = my / 2 + 1;
+    Field q = detail::sample_frf_quarter(frf, qx, qy, dkx, dky, threads);
+    q(0, 0) = g0.value;
+    for (std::ptrdiff_t jy = 0; jy < qy; ++jy) {
+      const double sy = scale * sinc_y(jy);
+      for (std::ptrdiff_t jx = 0; jx < qx; ++jx)
+        q(jx, jy) *= sinc_x[static_cast<std::size_t>(jx)] * sy;
     }
+    FftwRealBuffer dct(static_cast<std::size_t>(qx * qy));
+    std::copy_n(q.data(), qx * qy, dct.data());
+    // FFTW is row-major: the Field (x fastest) is {qy, qx}.
+    const FftwPlan plan = FftwPlan::create(threads, [&] {
+      return fftw_plan_r2r_2d(static_cast<int>(qy), static_cast<int>(qx), dct.data(), dct.data(),
+                              FFTW_REDFT00, FFTW_REDFT00, FFTW_ESTIMATE);
+    });
+    plan.execute();
+    for (std::ptrdiff_t dj = 0; dj < ny; ++dj) fill_column(dj, dct.data() + dj * qx);
+  } else {
+    const Field h = sample_frf_half_spectrum(frf, mx, my, dx, dy, g0.value, threads);
+    FftwComplexBuffer spectrum(static_cast<std::size_t>(qx * my));
+    FftwRealBuffer space(static_cast<std::size_t>(mx * my));
+    const FftwPlan c2r = FftwPlan::create(threads, [&] {
+      return fftw_plan_dft_c2r_2d(static_cast<int>(my), static_cast<int>(mx), spectrum.data(),
+                                  space.data(), FFTW_ESTIMATE);
+    });
+    std::complex<double>* s = as_complex(spectrum.data());
+    for (std::ptrdiff_t jy = 0; jy < my; ++jy) {
+      const std::ptrdiff_t sy = jy < (my + 1) / 2 ? jy : my - jy;
+      const double fy = scale * sinc_y(sy);
+      for (std::ptrdiff_t jx = 0; jx < qx; ++jx)
+        s[jy * qx + jx] = h(jx, jy) * sinc_x[static_cast<std::size_t>(jx)] * fy;
+    }
+    c2r.execute();
+    // The inverse of a real even spectrum is even up to rounding: the offsets +d (slots d on the
+    // M lattice) are kept and mirrored, as on the DCT route.
+    for (std::ptrdiff_t dj = 0; dj < ny; ++dj) fill_column(dj, space.data() + dj * mx);
   }
+  wrapped.col(ny).setZero();
   return InfluenceKernel(grid, std::move(wrapped));
 }
 

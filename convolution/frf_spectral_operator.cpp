@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <numbers>
+#include <thread>
+#include <vector>
 
 #include "core/error.hpp"
 
@@ -21,23 +24,71 @@ std::ptrdiff_t extended_size(std::ptrdiff_t n, double alpha, double min_alpha, c
   return static_cast<std::ptrdiff_t>(rounded);
 }
 
+namespace detail {
+
+Field sample_frf_quarter(const Frf& frf, std::ptrdiff_t qx, std::ptrdiff_t qy, double dkx,
+                         double dky, int threads) {
+  COATFFT_REQUIRE(threads >= 1, "sample_frf_quarter: threads = ", threads, ", but must be >= 1");
+  // H is radial: on a square lattice (dkx == dky, exactly: same period and cell) the sample at
+  // (jx, jy) equals the one at (jy, jx), so only jy <= jx is evaluated (half the FRF calls) and
+  // the rest is copied. FRF evaluations dominate the cost (exp, expm1, sinh per call for a
+  // coating), so the lower triangle is the work; it is shared by interleaved columns.
+  const bool swap = dkx == dky;
+  Field q(qx, qy);
+  const auto column = [&](std::ptrdiff_t jy) {
+    const double ky = dky * static_cast<double>(jy);
+    // k = 0 is singular (H ~ C0/k): that entry is left 0 for the caller's g(0).
+    const std::ptrdiff_t first = std::max<std::ptrdiff_t>(swap ? std::min(jy, qx) : 0, jy == 0);
+    if (jy == 0 && qx > 0) q(0, 0) = 0.0;
+    for (std::ptrdiff_t jx = first; jx < qx; ++jx)
+      q(jx, jy) = frf(std::hypot(dkx * static_cast<double>(jx), ky));
+  };
+  const auto workers = static_cast<std::ptrdiff_t>(std::min<std::ptrdiff_t>(threads, qy));
+  if (workers <= 1) {
+    for (std::ptrdiff_t jy = 0; jy < qy; ++jy) column(jy);
+  } else {
+    // An exception (an FRF refusing a wavenumber) must not escape a thread: the first one is
+    // kept and rethrown after the join.
+    std::vector<std::exception_ptr> errors(static_cast<std::size_t>(workers));
+    {
+      std::vector<std::jthread> pool;
+      for (std::ptrdiff_t w = 0; w < workers; ++w)
+        pool.emplace_back([&, w] {
+          try {
+            for (std::ptrdiff_t jy = w; jy < qy; jy += workers) column(jy);
+          } catch (...) {
+            errors[static_cast<std::size_t>(w)] = std::current_exception();
+          }
+        });
+    }
+    for (const std::exception_ptr& e : errors)
+      if (e) std::rethrow_exception(e);
+  }
+  if (swap)
+    for (std::ptrdiff_t jy = 1; jy < qy; ++jy)
+      for (std::ptrdiff_t jx = 0; jx < std::min(jy, qx); ++jx) q(jx, jy) = q(jy, jx);
+  return q;
+}
+
+}  // namespace detail
+
 Field sample_frf_half_spectrum(const Frf& frf, std::ptrdiff_t mx, std::ptrdiff_t my, double dx,
-                               double dy, double g0) {
+                               double dy, double g0, int threads) {
   using std::numbers::pi;
   const std::ptrdiff_t hx = mx / 2 + 1;
   const double dkx = 2.0 * pi / (static_cast<double>(mx) * dx);
   const double dky = 2.0 * pi / (static_cast<double>(my) * dy);
+  // Wrap-around order along y: 0..ceil(my/2)-1, then -floor(my/2)..-1. H is radial, so only |ky|
+  // matters (and the Nyquist row of an even my is the same for either sign): the samples are
+  // those of the quarter |jy| <= my/2, mirrored, which halves the FRF evaluations (again on a
+  // square lattice, see sample_frf_quarter).
+  const Field q = detail::sample_frf_quarter(frf, hx, my / 2 + 1, dkx, dky, threads);
   Field h(hx, my);
   for (std::ptrdiff_t jy = 0; jy < my; ++jy) {
-    // Wrap-around order: 0..ceil(my/2)-1, then -floor(my/2)..-1; H is radial, so only |ky|
-    // matters and the Nyquist row (even my) is the same for either sign.
-    const std::ptrdiff_t sy = jy < (my + 1) / 2 ? jy : jy - my;
-    const double ky = dky * static_cast<double>(sy);
-    for (std::ptrdiff_t jx = 0; jx < hx; ++jx) {
-      const double kx = dkx * static_cast<double>(jx);
-      h(jx, jy) = (jx == 0 && jy == 0) ? g0 : frf(std::hypot(kx, ky));
-    }
+    const std::ptrdiff_t sy = jy < (my + 1) / 2 ? jy : my - jy;
+    h.col(jy) = q.col(sy);
   }
+  h(0, 0) = g0;
   return h;
 }
 
@@ -88,7 +139,7 @@ FrfSpectralOperator::FrfSpectralOperator(const Grid& grid, const Frf& frf, doubl
   // FFTW's unnormalised inverse is compensated here, once (docs/conventions.md). With the
   // numpy-style 1/(mx my) no further factor is needed because the period is exactly mx dx
   // (theory.md 4.3).
-  const Field h = sample_frf_half_spectrum(frf, mx_, my_, grid.dx(), grid.dy(), g0.value);
+  const Field h = sample_frf_half_spectrum(frf, mx_, my_, grid.dx(), grid.dy(), g0.value, threads);
   const double scale = 1.0 / (static_cast<double>(mx_) * static_cast<double>(my_));
   for (std::ptrdiff_t jy = 0; jy < my_; ++jy)
     for (std::ptrdiff_t jx = 0; jx < hx_; ++jx) kernel_.data()[jy * hx_ + jx] = scale * h(jx, jy);

@@ -23,15 +23,26 @@ std::ptrdiff_t extended_size(std::ptrdiff_t n, double alpha, double min_alpha, c
 /// entry (jx, jy), jx = 0..mx/2, jy = 0..my-1, is H(|k|) at kx = 2 pi jx / (mx dx),
 /// ky = 2 pi jy' / (my dy) with jy' the wrap-around index (docs/conventions.md); the (0, 0) entry
 /// is `g0` [m/Pa]. Shape (mx/2 + 1, my), x fastest: FFTW's row-major {my, mx/2 + 1} layout.
+/// Evaluates H once per |ky| (and once per unordered pair on a square lattice) on `threads`
+/// threads (>= 1; the Frf must then be safe to call concurrently, as those of frf/ are).
 Field sample_frf_half_spectrum(const Frf& frf, std::ptrdiff_t mx, std::ptrdiff_t my, double dx,
-                               double dy, double g0);
+                               double dy, double g0, int threads = 1);
+
+namespace detail {
+/// H(|k|) at kx = dkx jx, ky = dky jy for jx < qx, jy < qy [m/Pa], x fastest; the singular
+/// (0, 0) entry is 0 (the caller puts g(0) there);
+/// dkx, dky [rad/m]. On `threads` threads; H(jy, jx) is copied from H(jx, jy) when dkx == dky.
+Field sample_frf_quarter(const Frf& frf, std::ptrdiff_t qx, std::ptrdiff_t qy, double dkx,
+                         double dky, int threads);
+}  // namespace detail
 
 /// u = IFFT_M[ H . FFT_M(p zero-padded) ] restricted to the target grid, M = alpha N per axis.
 /// Built once (FRF sampling, g(0), FFTW plans on owned buffers); apply() only transforms.
 class FrfSpectralOperator final : public SurfaceOperator {
  public:
   /// alpha: domain extension ratio (>= 1, alpha nx and alpha ny integers); g(0) is computed by
-  /// `g0_method` to relative tolerance `g0_tolerance`; `planning`/`threads` as for FFTW plans.
+  /// `g0_method` to relative tolerance `g0_tolerance`; `planning`/`threads` as for FFTW plans
+  /// (the threads also sample the FRF, see sample_frf_half_spectrum).
   FrfSpectralOperator(const Grid& grid, const Frf& frf, double alpha, G0Method g0_method,
                       double g0_tolerance = default_g0_tolerance,
                       Planning planning = Planning::estimate, int threads = 1);

@@ -261,28 +261,36 @@ class RadialTable {
       for (std::size_t j = 0; j < kn.size(); ++j) sum += kw[j] * gsl_sf_bessel_J0(kn[j] * r);
       g_[static_cast<std::size_t>(i)] = sum;
     });
+    // Two mirrored nodes in front (g is even), so that a lookup near r = 0 needs no index fold.
+    padded_.resize(g_.size() + 2);
+    padded_[0] = g_.size() > 2 ? g_[2] : 0.0;
+    padded_[1] = g_.size() > 1 ? g_[1] : 0.0;
+    std::copy(g_.begin(), g_.end(), padded_.begin() + 2);
   }
   std::ptrdiff_t size() const { return static_cast<std::ptrdiff_t>(g_.size()); }
 
+  // 6-point Lagrange on the nodes i0 - 2 .. i0 + 3 around r = (i0 + x) dr, with the weights in
+  // product form (prefix and suffix products of X - j, X = x + 2, and the constants 1/(prod of
+  // node differences)): ~20 multiplications and no division, against 30 divisions for the
+  // generic loop this replaced (the long part makes 4 lookups per cell: it was half the cost of
+  // the whole kernel at 1024^2).
   double operator()(double r) const {
     const double s = r / dr_;
     const auto i0 = static_cast<std::ptrdiff_t>(s);
     const double x = s - static_cast<double>(i0);  // in [0, 1)
-    double sum = 0.0;
-    // Nodes i0 - 2 .. i0 + 3; negative indices mirror (g even).
-    for (int a = -2; a <= 3; ++a) {
-      double w = 1.0;
-      for (int b = -2; b <= 3; ++b)
-        if (b != a) w *= (x - b) / static_cast<double>(a - b);
-      const auto idx = static_cast<std::size_t>(std::abs(i0 + a));
-      sum += w * g_[idx];
-    }
-    return sum;
+    const double* f = padded_.data() + i0;         // node i0 - 2 is padded_[i0]
+    const double m0 = x + 2.0, m1 = x + 1.0, m2 = x, m3 = x - 1.0, m4 = x - 2.0, m5 = x - 3.0;
+    const double p01 = m0 * m1, p012 = p01 * m2, p0123 = p012 * m3, p01234 = p0123 * m4;
+    const double s45 = m4 * m5, s345 = m3 * s45, s2345 = m2 * s345, s12345 = m1 * s2345;
+    return (-f[0] * s12345 + f[5] * p01234) * (1.0 / 120.0) +
+           (f[1] * m0 * s2345 - f[4] * p0123 * m5) * (1.0 / 24.0) +
+           (-f[2] * p01 * s345 + f[3] * p012 * s45) * (1.0 / 12.0);
   }
 
  private:
   double dr_;
   std::vector<double> g_;
+  std::vector<double> padded_;
 };
 
 // f on [k0, k_max] at uniform spacing dk (nodes from k0 - 2 dk, so that every lookup has a
@@ -379,11 +387,28 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
   // Far from the cell (r >= 32 d) both kernels are analytic over it and the 4-corner sums cancel
   // (log10((r/d)^2) digits lost), so both are integrated there by one n x n Gauss-Legendre rule,
   // which converges like rho^(-2n), rho ~ 4 r/d (Bernstein ellipse of the nearest singularity):
-  // n = 4 from 32 d (love_influence's own far-field rule), 3 from 64 d (rho^-6 < 4e-15), 2 from
-  // 512 d (rho^-4 < 6e-14 of a coefficient 512x smaller than K(0,0)).
+  // n = 4 from 32 d, 3 from 64 d (rho^-6 < 4e-15), 2 from 512 d (rho^-4 < 6e-14 of a coefficient
+  // 512x smaller than K(0,0)); coarser than love_influence's rules (exact to rounding, docs in
+  // love_influence.cpp), by the tolerance of this kernel.
   const double love_E_star = 2.0 / c_inf;
   Field quarter(nx, ny);  // the coefficients for di, dj >= 0
-  {
+  // Cells whose (a) + (b) rule is the 2 x 2 one (r >= 512 d): where the long part of R uses the
+  // same 2 x 2 rule (N >= 768 with the default sigma), their (a) + (b) terms are added in the
+  // long part's loop, sharing its square roots and its pass over the cells (the first further
+  // cut proposed in docs/split_kernel.md, section 5).
+  const double two_point_r = 512.0 * d_max;
+  // Squared distances decide the rules (hypot per cell was 6 % of the kernel's time).
+  const auto r_squared = [&](std::ptrdiff_t i, std::ptrdiff_t j) {
+    const double x = static_cast<double>(i) * dx;
+    const double y = static_cast<double>(j) * dy;
+    return x * x + y * y;
+  };
+  const auto two_point = [&](std::ptrdiff_t i, std::ptrdiff_t j) {
+    return r_squared(i, j) >= two_point_r * two_point_r;
+  };
+  // Assigns quarter = (a) + (b) everywhere, except that cells with the 2 x 2 rule are set to 0
+  // when `leave_two_point` (the fused loop adds them).
+  const auto love_and_exponential = [&](bool leave_two_point) {
     std::array<std::vector<double>, 5> gt;
     std::array<std::vector<double>, 5> gw;
     for (int n = 2; n <= 4; ++n)
@@ -395,14 +420,21 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
       const double y = static_cast<double>(j) * dy;
       for (std::ptrdiff_t i = 0; i < nx; ++i) {
         const double x = static_cast<double>(i) * dx;
-        const double r = std::hypot(x, y);
-        if (r < 32.0 * d_max) {
+        const double r2c = r_squared(i, j);
+        if (r2c < (32.0 * d_max) * (32.0 * d_max)) {
           double v = love_influence(x, y, dx, dy) / love_E_star;
           if (A != 0.0) v += A / (2.0 * pi) * detail::split_rectangle_integral(x, y, dx, dy, beta);
           quarter(i, j) = v;
           continue;
         }
-        const auto n = static_cast<std::size_t>(r >= 512.0 * d_max ? 2 : r >= 64.0 * d_max ? 3 : 4);
+        const bool far = two_point(i, j);
+        if (leave_two_point && far) {
+          quarter(i, j) = 0.0;
+          continue;
+        }
+        const auto n = static_cast<std::size_t>(far                                      ? 2
+                                                : r2c >= (64.0 * d_max) * (64.0 * d_max) ? 3
+                                                                                         : 4);
         const std::vector<double>& t = gt[n];
         const std::vector<double>& w = gw[n];
         double sum = 0.0;
@@ -421,7 +453,8 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
         quarter(i, j) = sum;
       }
     });
-  }
+  };
+  bool ab_done = false;
 
   if (!scan.remainder_zero) {
     Remainder rem(frf, c_inf, A, beta);
@@ -536,6 +569,15 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
           wy.push_back(0.5 * wg[static_cast<std::size_t>(q)] / sub * dy);
         }
       rep.cell_rule = n_gl * sub;
+      // With the same 2 x 2 rule as (a) + (b)'s far field (same Gauss-Legendre nodes, weights
+      // wx wy = (dx dy / 4) w w), the far cells get Cinf/(2 pi r) + A/(2 pi sqrt(r^2 + beta^2))
+      // here, from the square roots already taken for the table lookups.
+      const bool fuse = n_gl == 2 && sub == 1;
+      love_and_exponential(fuse);
+      ab_done = true;
+      const double fa = c_inf / (2.0 * pi);
+      const double fb = A / (2.0 * pi);
+      const double b2 = beta * beta;
       parallel_for(ny, threads, [&](std::ptrdiff_t j) {
         std::vector<double> y2(oy.size());
         for (std::size_t b = 0; b < oy.size(); ++b) {
@@ -544,12 +586,29 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
         }
         for (std::ptrdiff_t i = 0; i < nx; ++i) {
           double sum = 0.0;
-          for (std::size_t a = 0; a < ox.size(); ++a) {
-            const double x = static_cast<double>(i) * dx + ox[a];
-            const double x2 = x * x;
-            double row = 0.0;
-            for (std::size_t b = 0; b < oy.size(); ++b) row += wy[b] * table(std::sqrt(x2 + y2[b]));
-            sum += wx[a] * row;
+          if (fuse && two_point(i, j)) {
+            for (std::size_t a = 0; a < ox.size(); ++a) {
+              const double x = static_cast<double>(i) * dx + ox[a];
+              const double x2 = x * x;
+              double row = 0.0;
+              for (std::size_t b = 0; b < oy.size(); ++b) {
+                const double r2 = x2 + y2[b];
+                const double r = std::sqrt(r2);
+                double f = table(r) + fa / r;
+                if (A != 0.0) f += fb / std::sqrt(r2 + b2);
+                row += wy[b] * f;
+              }
+              sum += wx[a] * row;
+            }
+          } else {
+            for (std::size_t a = 0; a < ox.size(); ++a) {
+              const double x = static_cast<double>(i) * dx + ox[a];
+              const double x2 = x * x;
+              double row = 0.0;
+              for (std::size_t b = 0; b < oy.size(); ++b)
+                row += wy[b] * table(std::sqrt(x2 + y2[b]));
+              sum += wx[a] * row;
+            }
           }
           quarter(i, j) += sum;
         }
@@ -559,6 +618,10 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
 
     // ---- Short-range part R (1 - w): periodic lattice with the aliases folded. ----
     if (!std::isinf(sigma) && k_r > 0.0) {
+      if (!ab_done) {
+        love_and_exponential(false);
+        ab_done = true;
+      }
       const auto t_short = std::chrono::steady_clock::now();
       // Half periods (in cells): the images of the short-range kernel stay >= 32 sigma away.
       const std::ptrdiff_t hx =
@@ -671,6 +734,8 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
       rep.seconds_short = since(t_short);
     }
   }
+
+  if (!ab_done) love_and_exponential(false);
 
   // Mirror the quarter (the split kernel is even in x and y) into the wrap-around layout.
   Field wrapped = Field::Zero(2 * nx, 2 * ny);

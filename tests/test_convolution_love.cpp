@@ -167,3 +167,104 @@ TEST_CASE("love_kernel holds love_influence / E* at every offset, in wrap-around
                   coatfft::InvalidArgument);
   CHECK_THROWS_AS(coatfft::love_kernel(grid, 0.0), coatfft::InvalidArgument);
 }
+
+// Reference for the far field: a tensor Gauss-Legendre rule of `n` points per side in long double
+// (nodes by Newton's iteration on P_n), independent of love_influence's double-precision tables.
+// Beyond 8 cells it converges like (4 r/d)^(-2n), so 20 and 24 points are exact to long double
+// rounding (~1e-19), which the test checks by comparing the two.
+long double long_double_rule(int n, long double x, long double y, long double a, long double b) {
+  std::vector<long double> t(static_cast<std::size_t>(n));
+  std::vector<long double> w(t.size());
+  for (int i = 0; i < n; ++i) {
+    long double z = std::cos(std::numbers::pi_v<long double> * (i + 0.75L) / (n + 0.5L));
+    long double dp = 1.0L;
+    for (int it = 0; it < 100; ++it) {
+      long double p0 = 1.0L;
+      long double p1 = z;
+      for (int j = 2; j <= n; ++j) {
+        const long double p2 = ((2.0L * j - 1.0L) * z * p1 - (j - 1.0L) * p0) / j;
+        p0 = p1;
+        p1 = p2;
+      }
+      dp = n * (z * p1 - p0) / (z * z - 1.0L);
+      const long double step = p1 / dp;
+      z -= step;
+      if (std::abs(step) < 1e-19L) break;
+    }
+    t[static_cast<std::size_t>(i)] = z;
+    w[static_cast<std::size_t>(i)] = 2.0L / ((1.0L - z * z) * dp * dp);
+  }
+  long double sum = 0.0L;
+  for (std::size_t i = 0; i < t.size(); ++i)
+    for (std::size_t j = 0; j < t.size(); ++j) {
+      const long double ex = x - a * t[i];
+      const long double ey = y - b * t[j];
+      sum += w[i] * w[j] / std::sqrt(ex * ex + ey * ey);
+    }
+  return sum * a * b / std::numbers::pi_v<long double>;
+}
+
+TEST_CASE("love_influence is exact on both sides of each far-field rule switch",
+          "[convolution][love]") {
+  // love_influence changes its Gauss-Legendre order at r = 8, 12, 32, 128 and 4096 max(dx, dy)
+  // (n = 6, 5, 4, 3, 2 beyond them; estimated error <= ~1e-16 relative). Just inside and just
+  // outside each switch, along an axis (the worst direction) and off-axis, for square and
+  // elongated cells, against the long-double rule above. 1e-15 allows the rounding of the sum of
+  // up to 36 terms and still catches a rule one order too low at its switch (n = 4 at 8 d:
+  // 1.7e-12; n = 2 at 1024 d: 7e-15).
+  struct Cell {
+    double dx, dy;
+  };
+  for (const Cell cell : {Cell{1.0, 1.0}, Cell{1.0, 0.3}, Cell{0.3, 1.0}}) {
+    const double d = std::max(cell.dx, cell.dy);
+    for (double ratio : {8.0, 12.0, 32.0, 128.0, 4096.0}) {
+      for (double side : {0.999, 1.001}) {
+        for (double angle : {0.0, 0.6, 0.5 * std::numbers::pi}) {
+          const double r = side * ratio * d;
+          const double x = r * std::cos(angle);
+          const double y = r * std::sin(angle);
+          INFO("dx = " << cell.dx << ", dy = " << cell.dy << ", r/d = " << r / d
+                       << ", angle = " << angle);
+          const long double r20 = long_double_rule(20, x, y, 0.5L * cell.dx, 0.5L * cell.dy);
+          const long double r24 = long_double_rule(24, x, y, 0.5L * cell.dx, 0.5L * cell.dy);
+          REQUIRE(std::abs(r20 / r24 - 1.0L) < 1e-17L);
+          // Just inside 8 d the closed form is used, with its cancellation (~64 eps d/min(dx, dy),
+          // measured up to 1.1e-14 above): the 5e-14 of the first test case there.
+          const double tol = side < 1.0 && ratio == 8.0 ? 5e-14 : 1e-15;
+          CHECK(love_influence(x, y, cell.dx, cell.dy) ==
+                Approx(static_cast<double>(r24)).epsilon(tol).margin(0.0));
+        }
+      }
+    }
+  }
+  // And where QAGP is still reliable (8 d, square cell: cf. the table above) the two references
+  // agree: love_influence within 5e-14 of the polar quadrature just past the first switch.
+  CHECK(love_influence(8.008, 0.0, 1.0, 1.0) ==
+        Approx(polar_quadrature(8.008, 0.0, 1.0, 1.0)).epsilon(5e-14).margin(0.0));
+}
+
+TEST_CASE("love_influence_row equals love_influence along a row through every rule",
+          "[convolution][love]") {
+  // The row version (used by love_kernel) runs the same rules vectorised along x; a row of 4200
+  // cells crosses all five switches. Same arithmetic per point: agreement to rounding (1e-15,
+  // a few ulps in case the compiler contracts differently in its vector and scalar code).
+  for (const double dy : {1.0, 0.3, 2.0}) {
+    const double dx = 1.0;
+    for (const double y : {0.0, 5.0 * dy, 100.0 * dy}) {
+      std::vector<double> row(4200);
+      coatfft::detail::love_influence_row(y, dx, dy, static_cast<std::ptrdiff_t>(row.size()),
+                                          row.data());
+      for (std::size_t i = 0; i < row.size(); ++i) {
+        INFO("dy = " << dy << ", y = " << y << ", i = " << i);
+        REQUIRE(row[i] ==
+                Approx(love_influence(static_cast<double>(i) * dx, y, dx, dy)).epsilon(1e-15));
+      }
+    }
+  }
+  // Threads share the columns of love_kernel: the result does not depend on their number.
+  const coatfft::Grid grid(150, 97, 1.5e-3, 0.8e-3);
+  const auto one = coatfft::love_kernel(grid, 2e11, 1);
+  const auto three = coatfft::love_kernel(grid, 2e11, 3);
+  CHECK((one.wrapped() == three.wrapped()).all());
+  CHECK_THROWS_AS(coatfft::love_kernel(grid, 2e11, 0), coatfft::InvalidArgument);
+}

@@ -235,3 +235,48 @@ TEST_CASE("FRF pipelines refuse bad extension ratios and shapes", "[frf_pipeline
   CHECK(op.name() == "frf-spectral");
   CHECK_THROWS_WITH(op.apply(Field::Zero(8, 10)), Catch::Contains("shape (8, 10)"));
 }
+
+TEST_CASE("FRF sampling and coefficients on square lattices and several threads",
+          "[frf_pipelines]") {
+  // sample_frf_half_spectrum evaluates H once per |ky| and, on a square lattice (dkx == dky),
+  // once per unordered pair (jx, |jy|), on several threads; every entry must still be
+  // H(hypot(kx, ky)) at its own wavenumber (wrap-around signs included). Each value is the FRF at
+  // the same argument up to the order of hypot's operands: 1e-15 relative.
+  const CoatingFrf frf(70e9, .3, 210e9, .3, 1e-4, false);
+  struct Lattice {
+    std::ptrdiff_t mx, my;
+    double dx, dy;
+  };
+  for (const Lattice l : {Lattice{8, 8, 1e-4, 1e-4}, Lattice{9, 7, 1e-4, 1e-4},
+                          Lattice{10, 6, 1e-4, 0.7e-4}, Lattice{7, 11, 1e-4, 1e-4}}) {
+    for (int threads : {1, 3}) {
+      const Field h = sample_frf_half_spectrum(frf, l.mx, l.my, l.dx, l.dy, 1.25e-11, threads);
+      REQUIRE(h.rows() == l.mx / 2 + 1);
+      REQUIRE(h.cols() == l.my);
+      const double dkx = 2 * pi / (l.mx * l.dx), dky = 2 * pi / (l.my * l.dy);
+      for (std::ptrdiff_t jy = 0; jy < l.my; ++jy)
+        for (std::ptrdiff_t jx = 0; jx <= l.mx / 2; ++jx) {
+          CAPTURE(l.mx, l.my, threads, jx, jy);
+          const double expected =
+              jx == 0 && jy == 0
+                  ? 1.25e-11
+                  : frf(std::hypot(dkx * double(jx), dky * double(signed_index(jy, l.my))));
+          CHECK(h(jx, jy) == Approx(expected).epsilon(1e-15).margin(0.0));
+        }
+    }
+  }
+  // frf_influence_kernel on a square lattice (DCT-I route with the swap symmetry) and with 2
+  // threads, against the independent double sum of theory.md (4.1): 1e-12 of K(0, 0) as above.
+  const Grid g(4, 4, 1e-3, 1e-3);
+  const G0Result g0 =
+      compute_g0(frf, 2 * pi / (8 * g.dx()), 2 * pi / (8 * g.dy()), G0Method::regularized);
+  const InfluenceKernel K = frf_influence_kernel(g, frf, 2.0, g0, 2);
+  const double k00 = direct_periodic_kernel(frf, g0.value, g, 8, 8, 0, 0, true);
+  for (std::ptrdiff_t dj = -3; dj <= 3; ++dj)
+    for (std::ptrdiff_t di = -3; di <= 3; ++di) {
+      CAPTURE(di, dj);
+      CHECK(std::abs(K.at(di, dj) - direct_periodic_kernel(frf, g0.value, g, 8, 8, di, dj, true)) <
+            1e-12 * k00);
+    }
+  CHECK_THROWS_AS(frf_influence_kernel(g, frf, 2.0, g0, 0), InvalidArgument);
+}
