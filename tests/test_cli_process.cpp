@@ -382,3 +382,23 @@ TEST_CASE("coatfft run with the seed's FRF pipelines reports g(0) and the period
     CHECK(s["max_error_vs_hertz"].get<double>() > 2e-3);
   }
 }
+
+TEST_CASE("coatfft run saves FFTW wisdom and reuses it", "[cli]") {
+  const fs::path wisdom = scratch("wisdom.fftw");
+  fs::remove(wisdom);
+  const fs::path scene =
+      scene_with("wisdom", "name = \"dcfft\"",
+                 "name = \"dcfft\"\nplanning = \"measure\"\nwisdom = \"" + wisdom.string() + "\"");
+  for (int run = 0; run < 2; ++run) {
+    const fs::path out = scratch("wisdom_out" + std::to_string(run));
+    fs::remove_all(out);
+    const auto result = run_coatfft("run " + scene.string() + " -o " + out.string());
+    INFO(result.stderr_text);
+    REQUIRE(result.status == 0);
+    CHECK(fs::file_size(wisdom) > 0);  // written by the first run, read (and kept) by the second
+  }
+  // Wisdom changes how FFTW computes, not what: both runs give the same displacement.
+  const coatfft::Field u0 = coatfft::cli::read_npy(scratch("wisdom_out0") / "uz.npy");
+  const coatfft::Field u1 = coatfft::cli::read_npy(scratch("wisdom_out1") / "uz.npy");
+  CHECK((u0 - u1).abs().maxCoeff() <= 1e-13 * u0.abs().maxCoeff());
+}
