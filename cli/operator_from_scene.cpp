@@ -41,7 +41,7 @@ BuiltOperator operator_from_scene(const Scene& scene) {
                     "\" uses Love's coefficients of a homogeneous half-space; for a coated body "
                     "use \"frf-split\", \"frf-dcfft\" or \"frf-spectral\"");
     const InfluenceKernel kernel =
-        love_kernel(scene.grid, scene.body.substrate().plane_strain_modulus());
+        love_kernel(scene.grid, scene.body.substrate().plane_strain_modulus(), method.threads);
     if (method.name == "dcfft")
       built.op = std::make_unique<DcfftOperator>(kernel, planning, method.threads);
     else
@@ -57,8 +57,8 @@ BuiltOperator operator_from_scene(const Scene& scene) {
       built.op = std::move(op);
     } else if (method.name == "frf-dcfft") {
       G0Result g0{};
-      const InfluenceKernel kernel =
-          frf_influence_kernel(scene.grid, *frf, method.alpha, g0_method, method.g0_tol, &g0);
+      const InfluenceKernel kernel = frf_influence_kernel(scene.grid, *frf, method.alpha, g0_method,
+                                                          method.g0_tol, &g0, method.threads);
       built.report.update(g0_report(g0));
       built.report["alpha"] = method.alpha;
       built.op = std::make_unique<DcfftOperator>(kernel, planning, method.threads);

@@ -92,9 +92,9 @@ void DcfftOperator::compute_even_spectrum(const Field& wrapped) {
   // like the blocks it multiplies. The transform reads the (nx + 1) x (ny + 1) corner of
   // `wrapped` (x fastest) in place through guru strides and writes the transposed layout
   // directly, so FFTW's tiled copies do the transposition (a separate strided copy loop cost
-  // about as much as the transform at 1024^2). Out-of-place r2r preserves its input (FFTW manual
-  // 4.3.2, FFTW_PRESERVE_INPUT is the default for r2r), so `wrapped` is only read. One-off:
-  // FFTW_ESTIMATE, which plans without touching the arrays.
+  // about as much as the transform at 1024^2). FFTW_PRESERVE_INPUT (the default for out-of-place
+  // r2r anyway, FFTW manual 4.3.2) keeps `wrapped` read-only. One-off: FFTW_ESTIMATE, which
+  // plans without touching the arrays.
   const std::ptrdiff_t len = ny_ + 1;
   kernel_even_ = FftwRealBuffer(static_cast<std::size_t>(hx_ * len));
   double* k = kernel_even_.data();
@@ -103,7 +103,8 @@ void DcfftOperator::compute_even_spectrum(const Field& wrapped) {
   const fftw_r2r_kind kinds[2] = {FFTW_REDFT00, FFTW_REDFT00};
   double* in = const_cast<double*>(wrapped.data());
   const FftwPlan dct = FftwPlan::create(threads_, [&] {
-    return fftw_plan_guru_r2r(2, dims, 0, nullptr, in, k, kinds, FFTW_ESTIMATE);
+    return fftw_plan_guru_r2r(2, dims, 0, nullptr, in, k, kinds,
+                              FFTW_ESTIMATE | FFTW_PRESERVE_INPUT);
   });
   dct.execute();
   const double scale = 1.0 / static_cast<double>(mx_ * my_);

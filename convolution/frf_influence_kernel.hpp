@@ -14,10 +14,11 @@ namespace coatfft {
 /// K(di, dj) = IFFT_M[ H(k) sinc(kx dx/2) sinc(ky dy/2) ] (theory.md (4.1)) on the M = alpha N
 /// lattice with H(0) = g(0) by `g0_method` to relative `g0_tolerance` [m/Pa]. alpha >= 2 with
 /// alpha nx, alpha ny integers (so that offsets up to N - 1 are not wrapped onto each other);
-/// throws InvalidArgument otherwise. If `g0_used` is given it receives the g(0) computed.
+/// throws InvalidArgument otherwise. If `g0_used` is given it receives the g(0) computed;
+/// `threads` as in the overload below.
 InfluenceKernel frf_influence_kernel(const Grid& grid, const Frf& frf, double alpha,
                                      G0Method g0_method, double g0_tolerance = default_g0_tolerance,
-                                     G0Result* g0_used = nullptr);
+                                     G0Result* g0_used = nullptr, int threads = 1);
 
 /// As above with a given g(0) (`g0.value` finite) instead of computing it; `threads` (>= 1)
 /// threads sample the FRF (the Frf must be safe to call concurrently, as every Frf of frf/ is).

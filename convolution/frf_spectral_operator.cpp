@@ -38,7 +38,8 @@ Field sample_frf_quarter(const Frf& frf, std::ptrdiff_t qx, std::ptrdiff_t qy, d
   const auto column = [&](std::ptrdiff_t jy) {
     const double ky = dky * static_cast<double>(jy);
     // k = 0 is singular (H ~ C0/k): that entry is left 0 for the caller's g(0).
-    const std::ptrdiff_t first = std::max<std::ptrdiff_t>(swap ? std::min(jy, qx) : 0, jy == 0);
+    // Rows jx < jy are mirrored from column jx, row jy: possible only where jy < qx.
+    const std::ptrdiff_t first = std::max<std::ptrdiff_t>(swap && jy < qx ? jy : 0, jy == 0);
     if (jy == 0 && qx > 0) q(0, 0) = 0.0;
     for (std::ptrdiff_t jx = first; jx < qx; ++jx)
       q(jx, jy) = frf(std::hypot(dkx * static_cast<double>(jx), ky));
@@ -65,8 +66,8 @@ Field sample_frf_quarter(const Frf& frf, std::ptrdiff_t qx, std::ptrdiff_t qy, d
       if (e) std::rethrow_exception(e);
   }
   if (swap)
-    for (std::ptrdiff_t jy = 1; jy < qy; ++jy)
-      for (std::ptrdiff_t jx = 0; jx < std::min(jy, qx); ++jx) q(jx, jy) = q(jy, jx);
+    for (std::ptrdiff_t jy = 1; jy < std::min(qy, qx); ++jy)
+      for (std::ptrdiff_t jx = 0; jx < jy; ++jx) q(jx, jy) = q(jy, jx);
   return q;
 }
 

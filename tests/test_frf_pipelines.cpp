@@ -247,8 +247,10 @@ TEST_CASE("FRF sampling and coefficients on square lattices and several threads"
     std::ptrdiff_t mx, my;
     double dx, dy;
   };
-  for (const Lattice l : {Lattice{8, 8, 1e-4, 1e-4}, Lattice{9, 7, 1e-4, 1e-4},
-                          Lattice{10, 6, 1e-4, 0.7e-4}, Lattice{7, 11, 1e-4, 1e-4}}) {
+  for (const Lattice l :
+       {Lattice{8, 8, 1e-4, 1e-4}, Lattice{9, 7, 1e-4, 1e-4}, Lattice{10, 6, 1e-4, 0.7e-4},
+        Lattice{7, 11, 1e-4, 1e-4}, Lattice{4, 8, 2e-4, 1e-4}, Lattice{8, 4, 1e-4, 2e-4}}) {
+    // The last two have equal spacings (mx dx == my dy) on a non-square quarter.
     for (int threads : {1, 3}) {
       const Field h = sample_frf_half_spectrum(frf, l.mx, l.my, l.dx, l.dy, 1.25e-11, threads);
       REQUIRE(h.rows() == l.mx / 2 + 1);
