@@ -4,19 +4,17 @@
 // in the same run. Prints `# key = value` headers and CSV rows,
 // and writes the same to bench/results/contact.csv (or the path given as first argument).
 // Usage: bench_contact [output.csv] [--measure]   (FFTW_ESTIMATE unless --measure)
-#include <fftw3.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <exception>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
 
+#include "bench/bench_report.hpp"
 #include "contact/contact_solver.hpp"
 #include "contact/indenter.hpp"
 #include "convolution/dcfft_operator.hpp"
@@ -59,15 +57,6 @@ class TimedOperator final : public SurfaceOperator {
   int count_ = 0;
   double ms_ = 0.0;
 };
-
-std::string cpu_name() {
-  std::ifstream in("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-  }
-  return "unknown";
-}
 
 struct Row {
   std::ptrdiff_t n;
@@ -157,13 +146,9 @@ int main(int argc, char** argv) {
       }
     }
     std::ostringstream out;
-    out << "# benchmark = bench_contact (Polonsky-Keer on DC-FFT, Hertz sphere)\n"
-        << "# cpu = " << cpu_name() << "\n"
-        << "# hardware_threads = " << std::thread::hardware_concurrency() << "\n"
-        << "# compiler = g++ " << __VERSION__ << "\n"
-        << "# build_flags = " << COATFFT_BENCH_FLAGS << "\n"
-        << "# fftw = " << fftw_version << "\n"
-        << "# fftw_flags = " << (planning == Planning::measure ? "FFTW_MEASURE" : "FFTW_ESTIMATE")
+    out << "# benchmark = bench_contact (Polonsky-Keer on DC-FFT, Hertz sphere)\n";
+    coatfft::bench::write_machine_header(out);
+    out << "# fftw_flags = " << (planning == Planning::measure ? "FFTW_MEASURE" : "FFTW_ESTIMATE")
         << "\n"
         << "# fftw_threads = 1\n"
         << "# problem = R " << kRadius << " m, E* " << kModulus << " Pa, W " << kLoad
@@ -198,12 +183,7 @@ int main(int argc, char** argv) {
         }
       }
     }
-    std::ofstream file(path);
-    if (!file) {
-      std::cerr << "bench_contact: cannot write " << path << "\n";
-      return 1;
-    }
-    file << out.str();
+    coatfft::bench::write_text_file(path, out.str());
     return 0;
   } catch (const std::exception& e) {
     std::cerr << "bench_contact: " << e.what() << "\n";

@@ -7,7 +7,6 @@
 // Usage: bench_dcfft [output.csv] [max_n]      (max_n default 2048)
 //        bench_dcfft --rss N                   (peak RSS of one N^2 DC-FFT run, nothing else)
 #include <fftw3.h>
-#include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
@@ -15,27 +14,21 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
-#include <filesystem>
-#include <fstream>
 #include <functional>
 #include <iostream>
 #include <random>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <tuple>
 #include <utility>
 #include <vector>
 
+#include "bench/bench_report.hpp"
 #include "convolution/dcfft_operator.hpp"
 #include "convolution/direct_operator.hpp"
 #include "convolution/fftw_plan.hpp"
 #include "convolution/influence_kernel.hpp"
 #include "core/norms.hpp"
-
-#ifndef COATFFT_BENCH_FLAGS
-#define COATFFT_BENCH_FLAGS "unknown"
-#endif
 
 namespace {
 
@@ -65,20 +58,6 @@ Timing time_it(const std::function<void()>& f, double budget_s = 1.5) {
   }
   std::sort(ms.begin(), ms.end());
   return {ms.front(), ms[ms.size() / 2], reps};
-}
-
-double peak_rss_mb() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
-}
-
-std::string cpu_model() {
-  std::ifstream in("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(in, line))
-    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-  return "unknown";
 }
 
 coatfft::Field random_pressure(std::ptrdiff_t n, unsigned seed) {
@@ -262,7 +241,7 @@ int main(int argc, char** argv) {
       const coatfft::Field p = random_pressure(n, 42u);
       coatfft::DcfftOperator op(coatfft::love_kernel(grid, e_star), coatfft::Planning::measure);
       coatfft::Field u = op.apply(p);
-      std::cout << "# N = " << n << "\n# peak_rss_MB = " << peak_rss_mb()
+      std::cout << "# N = " << n << "\n# peak_rss_MB = " << coatfft::bench::peak_rss_mb()
                 << "\n# setup_s = " << op.setup_seconds() << "\n";
       return 0;
     }
@@ -271,13 +250,9 @@ int main(int argc, char** argv) {
     const std::ptrdiff_t max_n = argc > 2 ? std::stol(argv[2]) : 2048;
 
     std::ostringstream header;
+    header << "# bench = bench_dcfft\n";
+    coatfft::bench::write_machine_header(header);
     header
-        << "# bench = bench_dcfft\n"
-        << "# cpu = " << cpu_model() << "\n"
-        << "# hardware_threads = " << std::thread::hardware_concurrency() << "\n"
-        << "# compiler = g++ " << __VERSION__ << "\n"
-        << "# flags = " << COATFFT_BENCH_FLAGS << "\n"
-        << "# fftw = " << fftw_version << "\n"
         << "# planner = FFTW_MEASURE (both pipelines)\n"
         << "# timing = median and min of repeated single applications, after one warm-up\n"
         << "# bare = 2-D r2c of the full (2N)^2 padded array + complex multiply + 2-D c2r, "
@@ -299,11 +274,10 @@ int main(int argc, char** argv) {
     std::ostringstream footer;
     footer << "# peak_rss_MB_dcfft_only_" << max_n << " = " << child_peak_rss_mb(argv[0], max_n)
            << "   (child process: love_kernel + DcfftOperator + p + u, FFTW_MEASURE)\n";
-    footer << "# peak_rss_MB_this_run = " << peak_rss_mb() << "   (includes the bare pipeline)\n";
+    footer << "# peak_rss_MB_this_run = " << coatfft::bench::peak_rss_mb()
+           << "   (includes the bare pipeline)\n";
     std::cout << footer.str();
-    std::filesystem::create_directories(std::filesystem::path(out_path).parent_path());
-    std::ofstream out(out_path);
-    out << header.str() << body.str() << footer.str();
+    coatfft::bench::write_text_file(out_path, header.str() + body.str() + footer.str());
     std::cout << "written " << out_path << "\n";
     return 0;
   } catch (const std::exception& e) {

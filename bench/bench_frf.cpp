@@ -9,23 +9,18 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <ctime>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "bench/bench_report.hpp"
 #include "frf/coated_frf.hpp"
 #include "frf/half_space_frf.hpp"
 #include "frf/multilayer_frf.hpp"
 #include "layers/layer_stack.hpp"
-
-#ifndef COATFFT_BENCH_FLAGS
-#define COATFFT_BENCH_FLAGS "unknown"
-#endif
 
 namespace {
 
@@ -96,13 +91,8 @@ int main(int argc, char** argv) {
   for (int i = 0; i < nb_k; ++i) ks.push_back(1e-4 / h * std::pow(1e8, i / (nb_k - 1.0)));
 
   std::ostringstream os;
-  const std::time_t now = std::time(nullptr);
-  char date[32];
-  std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
   os << "# benchmark = bench_frf (ns per H(k) evaluation)\n";
-  os << "# date = " << date << "\n";
-  os << "# compiler = " << __VERSION__ << "\n";
-  os << "# flags = " << COATFFT_BENCH_FLAGS << "\n";
+  coatfft::bench::write_machine_header(os);
   os << "# wavenumbers = " << nb_k << " log-spaced, k h_top in [1e-4, 1e4], h_top = " << h
      << " m\n";
   os << "# repetitions = 21 sweeps; min and median over sweeps\n";
@@ -113,12 +103,6 @@ int main(int argc, char** argv) {
        << "," << r.checksum << "\n";
   }
   std::cout << os.str();
-  std::filesystem::create_directories(out_path.parent_path());
-  std::ofstream file(out_path);
-  if (!file) {
-    std::cerr << "bench_frf: cannot write " << out_path << "\n";
-    return 1;
-  }
-  file << os.str();
+  coatfft::bench::write_text_file(out_path.string(), os.str());
   return 0;
 }

@@ -13,17 +13,15 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
-#include <filesystem>
-#include <fstream>
 #include <functional>
 #include <iostream>
 #include <memory>
 #include <numbers>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
 
+#include "bench/bench_report.hpp"
 #include "convolution/dcfft_operator.hpp"
 #include "convolution/frf_influence_kernel.hpp"
 #include "convolution/frf_spectral_operator.hpp"
@@ -34,9 +32,6 @@
 #include "frf/half_space_frf.hpp"
 #include "materials/material.hpp"
 
-#ifndef COATFFT_BENCH_FLAGS
-#define COATFFT_BENCH_FLAGS "unknown"
-#endif
 #ifndef COATFFT_SOURCE_DIR
 #define COATFFT_SOURCE_DIR "."
 #endif
@@ -45,30 +40,11 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 using coatfft::Field;
+using coatfft::bench::median;
+using coatfft::bench::parse_int_list;
 
 double seconds_since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0.0 : v[v.size() / 2];
-}
-
-std::vector<int> parse_list(const std::string& s) {
-  std::vector<int> out;
-  std::stringstream in(s);
-  std::string item;
-  while (std::getline(in, item, ',')) out.push_back(std::stoi(item));
-  return out;
-}
-
-std::string cpu_model() {
-  std::ifstream in("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(in, line))
-    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-  return "unknown";
 }
 
 // One setup: its parts in seconds and the operator it built.
@@ -139,8 +115,8 @@ int main(int argc, char** argv) {
     using namespace coatfft;
     const std::string out_path =
         argc > 1 ? argv[1] : std::string(COATFFT_SOURCE_DIR) + "/bench/results/setup.csv";
-    const std::vector<int> sizes = parse_list(argc > 2 ? argv[2] : "512,1024");
-    const std::vector<int> thread_list = parse_list(argc > 3 ? argv[3] : "1,2");
+    const std::vector<int> sizes = parse_int_list(argc > 2 ? argv[2] : "512,1024");
+    const std::vector<int> thread_list = parse_int_list(argc > 3 ? argv[3] : "1,2");
     const int reps = argc > 4 ? std::max(1, std::atoi(argv[4])) : 5;
     constexpr int applies_per_rep = 3;
 
@@ -155,9 +131,7 @@ int main(int argc, char** argv) {
     std::ostringstream csv;
     csv << "# bench_setup: setup (coefficients/sampling + g0 + plans/kernel transform) vs one "
            "application, medians of interleaved runs\n";
-    csv << "# cpu = " << cpu_model() << "\n";
-    csv << "# hardware_threads = " << std::thread::hardware_concurrency() << "\n";
-    csv << "# flags = " << COATFFT_BENCH_FLAGS << "\n";
+    coatfft::bench::write_machine_header(csv);
     csv << "# planning = FFTW_ESTIMATE\n";
     csv << "# domain = " << length << " m square, alpha = " << alpha << "\n";
     csv << "# bodies = steel (E 210 GPa, nu 0.3); TiN (600 GPa, 0.25) 50 um bonded on steel\n";
@@ -202,8 +176,7 @@ int main(int argc, char** argv) {
             csv << row.str();
           }
     }
-    std::filesystem::create_directories(std::filesystem::path(out_path).parent_path());
-    std::ofstream(out_path) << csv.str();
+    coatfft::bench::write_text_file(out_path, csv.str());
     return 0;
   } catch (const std::exception& e) {
     std::cerr << "bench_setup: " << e.what() << '\n';

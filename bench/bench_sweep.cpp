@@ -27,7 +27,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
 #include <exception>
 #include <filesystem>
 #include <fstream>
@@ -37,9 +36,9 @@
 #include <optional>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
 
+#include "bench/bench_report.hpp"
 #include "bench/sweep_cases.hpp"
 #include "convolution/dcfft_operator.hpp"
 #include "convolution/direct_operator.hpp"
@@ -52,10 +51,6 @@
 #include "loads/hertz_pressure.hpp"
 #include "validation/hankel_displacement.hpp"
 #include "validation/hertz.hpp"
-
-#ifndef COATFFT_BENCH_FLAGS
-#define COATFFT_BENCH_FLAGS "unknown"
-#endif
 
 namespace {
 
@@ -327,33 +322,6 @@ std::vector<RowSpec> plan_rows(const SweepConfig& cfg, const sweep::SweepCase& c
   return rows;
 }
 
-std::string cpu_model() {
-  std::ifstream in("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(in, line))
-    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-  return "unknown";
-}
-
-std::string compiler_id() {
-#if defined(__clang__)
-  return std::string("clang ") + __clang_version__;
-#elif defined(__GNUC__)
-  return std::string("g++ ") + __VERSION__;
-#else
-  return "unknown";
-#endif
-}
-
-std::string utc_now() {
-  const std::time_t t = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
-}
-
 std::string fmt(double v) {
   std::ostringstream os;
   os << std::setprecision(6) << v;
@@ -372,14 +340,9 @@ int sweep_main(const SweepConfig& cfg) {
   const auto t_start = Clock::now();
   std::ostringstream header;
   header << "# bench = bench_sweep (issue 5: speed against error)\n"
-         << "# mode = " << cfg.mode << "\n"
-         << "# date = " << utc_now() << "\n"
-         << "# cpu = " << cpu_model() << "\n"
-         << "# hardware_threads = " << std::thread::hardware_concurrency() << "\n"
-         << "# compiler = " << compiler_id() << "\n"
-         << "# flags = " << COATFFT_BENCH_FLAGS << "\n"
-         << "# fftw = " << fftw_version << "\n"
-         << "# threads = " << cfg.threads << "\n"
+         << "# mode = " << cfg.mode << "\n";
+  coatfft::bench::write_machine_header(header);
+  header << "# threads = " << cfg.threads << "\n"
          << "# planning = " << cfg.planning << "\n"
          << "# load = Hertz p0 = 1 GPa, a = 1 mm on [-1.5a, 1.5a]^2 (N x N cells)\n"
          << "# error = (u - u_ref) / u_ref(0): max_err = max |.|, rms_err = RMS over all cells\n"
@@ -616,7 +579,7 @@ int check_reference_main(const std::string& output) {
        << (c.stack.is_homogeneous() ? fmt(d_closed) : "n/a") << '\n';
   }
   std::cout << os.str();
-  if (!output.empty()) std::ofstream(output) << os.str();
+  if (!output.empty()) coatfft::bench::write_text_file(output, os.str());
   return 0;
 }
 

@@ -1,0 +1,102 @@
+#include "bench/bench_report.hpp"
+
+#include <fftw3.h>
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "core/error.hpp"
+
+#ifndef COATFFT_BENCH_FLAGS
+#define COATFFT_BENCH_FLAGS "unknown"
+#endif
+
+namespace coatfft::bench {
+namespace {
+
+std::string cpu_model() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+  return "unknown";
+}
+
+std::string compiler_id() {
+#if defined(__clang__)
+  return std::string("clang ") + __clang_version__;
+#elif defined(__GNUC__)
+  return std::string("g++ ") + __VERSION__;
+#else
+  return "unknown";
+#endif
+}
+
+std::string utc_now() {
+  const std::time_t t = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buf;
+}
+
+}  // namespace
+
+void write_machine_header(std::ostream& os) {
+  os << "# date = " << utc_now() << "\n"
+     << "# cpu = " << cpu_model() << "\n"
+     << "# hardware_threads = " << std::thread::hardware_concurrency() << "\n"
+     << "# compiler = " << compiler_id() << "\n"
+     << "# flags = " << COATFFT_BENCH_FLAGS << "\n"
+     << "# fftw = " << fftw_version << "\n";
+}
+
+double peak_rss_mb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  return *mid;
+}
+
+std::vector<int> parse_int_list(const std::string& text) {
+  std::vector<int> out;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    std::size_t used = 0;
+    int value = 0;
+    try {
+      value = std::stoi(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    COATFFT_REQUIRE(used == item.size() && !item.empty(), "'", item, "' in the list '", text,
+                    "' is not an integer");
+    out.push_back(value);
+  }
+  return out;
+}
+
+void write_text_file(const std::string& path, const std::string& text) {
+  const std::filesystem::path p(path);
+  std::error_code ec;  // reported below as "cannot write PATH", not as a filesystem_error
+  if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path(), ec);
+  std::ofstream out(p);
+  out << text;
+  out.close();
+  COATFFT_REQUIRE(out.good(), "cannot write '", path, "'");
+}
+
+}  // namespace coatfft::bench
