@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
-# Builds coatfft (Release) and regenerates the speed-against-error results (issue 5):
-#   bench/results/sweep.csv, bench/results/pareto_<case>.png, bench/results/seed_figures/*.csv,
-#   bench/results/sweep_reference_check.csv, bench/results/coatfft_run_rss.txt,
-#   docs/figures/seed_fig{2,3}_*.png and the generated block of docs/benchmarks_sweep.md.
+# Builds coatfft (Release) and regenerates the benchmark results and the generated blocks of
+# docs/benchmarks.md (docs/benchmarks.md, "Regenerate everything"):
+#   speed against error (issue 5): bench/results/sweep.csv, bench/results/pareto_<case>.png,
+#   bench/results/seed_figures/*.csv, bench/results/sweep_reference_check.csv,
+#   bench/results/coatfft_run_rss.txt, docs/figures/seed_fig{2,3}_*.png;
+#   with --full also bench/results/dcfft.csv, setup.csv, setup_2048.csv, frf_eval.csv, contact.csv.
 #
-# Usage: scripts/run_benchmarks.sh [--full | --quick | --tiny]   (default --full, ~10 min on 2 cores)
+# Usage: scripts/run_benchmarks.sh [--full | --quick | --tiny]   (default --full, ~10 min on 2 cores;
+#        --quick and --tiny run the sweep only)
 # Environment: BUILD_DIR (default build-release), JOBS (default 2), SWEEP_ARGS (extra bench_sweep
 # options, e.g. "--threads 2" or "--planning measure").
 set -euo pipefail
@@ -18,7 +21,10 @@ python=/usr/bin/python3
 
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCOATFFT_BUILD_BENCH=ON \
   -DCOATFFT_BUILD_CLI=ON >/dev/null
-cmake --build "$build" -j "${JOBS:-2}" --target bench_sweep coatfft_exe
+targets="bench_sweep coatfft_exe"
+[ "$mode" = "--full" ] && targets="$targets bench_dcfft bench_setup bench_frf bench_contact"
+# shellcheck disable=SC2086
+cmake --build "$build" -j "${JOBS:-2}" --target $targets
 sweep=$build/bench/bench_sweep
 mkdir -p "$results"
 
@@ -67,7 +73,27 @@ EOF
 
 echo "== plots and tables"
 "$python" "$root/scripts/plot_pareto.py" "$results/sweep.csv" --outdir "$results" \
-  --markdown "$root/docs/benchmarks_sweep.md" \
+  --markdown "$root/docs/benchmarks.md" \
   --reference-check "$results/sweep_reference_check.csv" --rss "$results/coatfft_run_rss.txt"
 "$python" "$root/scripts/plot_seed_figures.py" "$results/seed_figures" --outdir "$root/docs/figures"
+
+if [ "$mode" = "--full" ]; then
+  echo "== DC-FFT against the bare padded FFTW pipeline"
+  "$build/bench/bench_dcfft" "$results/dcfft.csv"
+  echo "== setup against application"
+  "$build/bench/bench_setup" "$results/setup.csv" 512,1024 1,2 5
+  "$build/bench/bench_setup" "$results/setup_2048.csv" 2048 1,2 3
+  echo "== FRF evaluation"
+  "$build/bench/bench_frf" "$results/frf_eval.csv"
+  echo "== contact solver"
+  "$build/bench/bench_contact" "$results/contact.csv"
+  blocks="$root/scripts/markdown_blocks.py"
+  doc=$root/docs/benchmarks.md
+  "$python" "$blocks" "$doc" dcfft "$results/dcfft.csv"
+  "$python" "$blocks" "$doc" setup "$results/setup.csv"
+  "$python" "$blocks" "$doc" setup_2048 "$results/setup_2048.csv"
+  "$python" "$blocks" "$doc" frf_eval "$results/frf_eval.csv"
+  "$python" "$blocks" "$doc" contact "$results/contact.csv" \
+    --columns control,preconditioned,N,iterations,converged,solve_ms,applies,solve_over_apply,a_error,p0_error
+fi
 echo "done"
