@@ -178,7 +178,8 @@ TEST_CASE("bench_sweep --peak-rss reports a child's exit code and memory", "[ben
 // matplotlib, installed by scripts/setup.sh) turn the CSVs into the PNGs and the generated blocks
 // of docs/benchmarks.md: on the tiny sweep they must write one plot per case, the "fastest method
 // for a target error" table, keep the text around the markers, and refuse a doc without markers.
-TEST_CASE("plot_pareto.py and markdown_blocks.py fill the docs' generated blocks", "[bench_sweep]") {
+TEST_CASE("plot_pareto.py and markdown_blocks.py fill the docs' generated blocks",
+          "[bench_sweep]") {
   const fs::path dir = scratch_dir("scripts");
   const fs::path csv = dir / "sweep.csv";
   REQUIRE(run("--tiny --output " + csv.string(), dir / "log.txt") == 0);
@@ -191,8 +192,8 @@ TEST_CASE("plot_pareto.py and markdown_blocks.py fill the docs' generated blocks
   }
   const std::string scripts = std::string(COATFFT_SOURCE_DIR) + "/scripts/";
   const auto python = [&](const std::string& args) {
-    const std::string command = "/usr/bin/python3 " + scripts + args + " >>" +
-                                (dir / "python.txt").string() + " 2>&1";
+    const std::string command =
+        "/usr/bin/python3 " + scripts + args + " >>" + (dir / "python.txt").string() + " 2>&1";
     const int raw = std::system(command.c_str());
     return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
   };
