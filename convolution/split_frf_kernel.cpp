@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "convolution/cell_average_stencil.hpp"
 #include "convolution/fftw_plan.hpp"
 #include "convolution/love_influence.hpp"
 #include "core/error.hpp"
@@ -228,8 +229,8 @@ double remainder_cutoff(const Remainder& rem, double A, double beta, double tol_
   return k_cut;
 }
 
-// Runs body(i) for i in [0, n) on `threads` threads (contiguous blocks; the bodies write disjoint
-// outputs).
+// Runs body(i) for i in [0, n) on `threads` threads (interleaved: i = w, w + t, ..., which
+// balances triangular and disk-shaped loops; the bodies write disjoint outputs).
 template <typename Body>
 void parallel_for(std::ptrdiff_t n, int threads, const Body& body) {
   const auto t = static_cast<std::ptrdiff_t>(
@@ -241,45 +242,47 @@ void parallel_for(std::ptrdiff_t n, int threads, const Body& body) {
   std::vector<std::thread> pool;
   for (std::ptrdiff_t w = 0; w < t; ++w)
     pool.emplace_back([&, w] {
-      for (std::ptrdiff_t i = w * n / t; i < (w + 1) * n / t; ++i) body(i);
+      for (std::ptrdiff_t i = w; i < n; i += t) body(i);
     });
   for (std::thread& th : pool) th.join();
 }
 
-// Radial kernel g(r) = (1/2 pi) int_0^kc f(k) J0(k r) k dk on a uniform r table, with 6-point
-// Lagrange interpolation (g is even in r and smooth on the scale 1/kc).
-class RadialTable {
- public:
-  RadialTable(const std::vector<double>& kw, const std::vector<double>& kn, double dr, double r_max,
-              int threads) {
-    dr_ = dr;
-    const auto n = static_cast<std::ptrdiff_t>(std::ceil(r_max / dr)) + 4;
-    g_.assign(static_cast<std::size_t>(n), 0.0);
-    parallel_for(n, threads, [&](std::ptrdiff_t i) {
-      const double r = dr * static_cast<double>(i);
-      double sum = 0.0;
-      for (std::size_t j = 0; j < kn.size(); ++j) sum += kw[j] * gsl_sf_bessel_J0(kn[j] * r);
-      g_[static_cast<std::size_t>(i)] = sum;
-    });
-    // Two mirrored nodes in front (g is even), so that a lookup near r = 0 needs no index fold.
-    padded_.resize(g_.size() + 2);
-    padded_[0] = g_.size() > 2 ? g_[2] : 0.0;
-    padded_[1] = g_.size() > 1 ? g_[1] : 0.0;
-    std::copy(g_.begin(), g_.end(), padded_.begin() + 2);
-  }
-  std::ptrdiff_t size() const { return static_cast<std::ptrdiff_t>(g_.size()); }
+// a[j * stride + i] = a[i * stride + j] for 0 <= i < j < n: completes a symmetric n x n array of
+// which the part i >= j was computed, in 64 x 64 tiles (a plain transposed copy is cache-bound).
+void fill_lower_triangle(double* a, std::ptrdiff_t n, std::ptrdiff_t stride, int threads) {
+  constexpr std::ptrdiff_t tile = 64;
+  parallel_for((n + tile - 1) / tile, threads, [&](std::ptrdiff_t tj) {
+    const std::ptrdiff_t j_end = std::min(n, (tj + 1) * tile);
+    for (std::ptrdiff_t ti = 0; ti <= tj * tile; ti += tile)
+      for (std::ptrdiff_t j = tj * tile; j < j_end; ++j)
+        for (std::ptrdiff_t i = ti; i < std::min(j, ti + tile); ++i)
+          a[j * stride + i] = a[i * stride + j];
+  });
+}
 
-  // 6-point Lagrange on the nodes i0 - 2 .. i0 + 3 around r = (i0 + x) dr, with the weights in
-  // product form (prefix and suffix products of X - j, X = x + 2, and the constants 1/(prod of
+// An even function f(|x|) from its values at x_i = i h, i >= 0, by 6-point Lagrange
+// interpolation; lookups are valid for 0 <= x <= (size - 4) h.
+class EvenTable {
+ public:
+  EvenTable(const std::vector<double>& values, double h) : inv_h_(1.0 / h), size_(values.size()) {
+    // Two mirrored nodes in front (f is even), so that a lookup near 0 needs no index fold.
+    padded_.resize(values.size() + 2);
+    padded_[0] = values.size() > 2 ? values[2] : 0.0;
+    padded_[1] = values.size() > 1 ? values[1] : 0.0;
+    std::copy(values.begin(), values.end(), padded_.begin() + 2);
+  }
+  std::ptrdiff_t size() const { return static_cast<std::ptrdiff_t>(size_); }
+
+  // 6-point Lagrange on the nodes i0 - 2 .. i0 + 3 around x = (i0 + t) h, with the weights in
+  // product form (prefix and suffix products of X - j, X = t + 2, and the constants 1/(prod of
   // node differences)): ~20 multiplications and no division, against 30 divisions for the
-  // generic loop this replaced (the long part makes 4 lookups per cell: it was half the cost of
-  // the whole kernel at 1024^2).
-  double operator()(double r) const {
-    const double s = r / dr_;
+  // generic loop this replaced. Error ~0.005 (h w)^6 for a function band-limited to w.
+  double operator()(double x) const {
+    const double s = x * inv_h_;  // a multiplication: the long part makes ~1.4 M lookups
     const auto i0 = static_cast<std::ptrdiff_t>(s);
-    const double x = s - static_cast<double>(i0);  // in [0, 1)
+    const double t = s - static_cast<double>(i0);  // in [0, 1)
     const double* f = padded_.data() + i0;         // node i0 - 2 is padded_[i0]
-    const double m0 = x + 2.0, m1 = x + 1.0, m2 = x, m3 = x - 1.0, m4 = x - 2.0, m5 = x - 3.0;
+    const double m0 = t + 2.0, m1 = t + 1.0, m2 = t, m3 = t - 1.0, m4 = t - 2.0, m5 = t - 3.0;
     const double p01 = m0 * m1, p012 = p01 * m2, p0123 = p012 * m3, p01234 = p0123 * m4;
     const double s45 = m4 * m5, s345 = m3 * s45, s2345 = m2 * s345, s12345 = m1 * s2345;
     return (-f[0] * s12345 + f[5] * p01234) * (1.0 / 120.0) +
@@ -288,10 +291,41 @@ class RadialTable {
   }
 
  private:
-  double dr_;
-  std::vector<double> g_;
+  double inv_h_;
+  std::size_t size_;
   std::vector<double> padded_;
 };
+
+// Radial kernel g(r) = (1/2 pi) int_0^kc f(k) J0(k r) k dk = sum_j kw_j J0(kn_j r) on the uniform
+// table r_i = i dr up to r_max (g is even in r and smooth on the scale 1/kc).
+// J0 itself comes from a table at step 1/64 (J0 is band-limited to 1: interpolation error
+// < 0.005 / 64^6 = 7e-14, far below the table's own interpolation error in r; 1.2 million
+// gsl_sf_bessel_J0 calls took 0.03 s, a fifth of the kernel at 1024^2), up to arguments of 2^16
+// steps (1024); beyond, gsl_sf_bessel_J0 (only the hankel route gets there).
+EvenTable hankel_table(const std::vector<double>& kw, const std::vector<double>& kn, double dr,
+                       double r_max, int threads) {
+  const auto n = static_cast<std::ptrdiff_t>(std::ceil(r_max / dr)) + 4;
+  const double x_max = (kn.empty() ? 0.0 : kn.back()) * dr * static_cast<double>(n);
+  constexpr double h = 1.0 / 64.0;
+  const auto nj = static_cast<std::ptrdiff_t>(std::min(std::ceil(x_max / h), 65536.0)) + 4;
+  std::vector<double> j0(static_cast<std::size_t>(nj));
+  parallel_for(nj, threads, [&](std::ptrdiff_t i) {
+    j0[static_cast<std::size_t>(i)] = gsl_sf_bessel_J0(h * static_cast<double>(i));
+  });
+  const EvenTable bessel(j0, h);
+  const double x_table = h * static_cast<double>(nj - 4);
+  std::vector<double> g(static_cast<std::size_t>(n));
+  parallel_for(n, threads, [&](std::ptrdiff_t i) {
+    const double r = dr * static_cast<double>(i);
+    double sum = 0.0;
+    for (std::size_t j = 0; j < kn.size(); ++j) {
+      const double x = kn[j] * r;
+      sum += kw[j] * (x <= x_table ? bessel(x) : gsl_sf_bessel_J0(x));
+    }
+    g[static_cast<std::size_t>(i)] = sum;
+  });
+  return EvenTable(g, dr);
+}
 
 // f on [k0, k_max] at uniform spacing dk (nodes from k0 - 2 dk, so that every lookup has a
 // centred 6-point stencil), quintic Lagrange interpolation; 0 beyond k_max.
@@ -391,24 +425,36 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
   // 512x smaller than K(0,0)); coarser than love_influence's rules (exact to rounding, docs in
   // love_influence.cpp), by the tolerance of this kernel.
   const double love_E_star = 2.0 / c_inf;
-  Field quarter(nx, ny);  // the coefficients for di, dj >= 0
-  // Cells whose (a) + (b) rule is the 2 x 2 one (r >= 512 d): where the long part of R uses the
-  // same 2 x 2 rule (N >= 768 with the default sigma), their (a) + (b) terms are added in the
-  // long part's loop, sharing its square roots and its pass over the cells (the first further
-  // cut proposed in docs/split_kernel.md, section 5).
-  const double two_point_r = 512.0 * d_max;
+  // The coefficients for di, dj >= 0 are computed in place in the corner of the wrap-around
+  // array (column-major, columns of 2 nx) and mirrored at the end: no second array (its page
+  // faults and copy cost ~5 ms at 1024^2).
+  const std::ptrdiff_t mx = 2 * nx;
+  const std::ptrdiff_t my = 2 * ny;
+  Field wrapped(mx, my);
+  const auto quarter = [&](std::ptrdiff_t i, std::ptrdiff_t j) -> double& { return wrapped(i, j); };
+  // Scratch space for the long part's point values and the short part's fold: the columns
+  // ny + 1 .. 2 ny - 1 of the wrap-around array, which only the final mirroring writes. First
+  // touches of fresh memory cost ~0.6 ms per MiB on the development VM (the 32 MiB array alone
+  // 20 ms at 1024^2): two more 8 MiB arrays were ~10 ms.
+  std::vector<double> spare;
+  const auto scratch = [&](std::ptrdiff_t n) -> double* {
+    if (ny > 1 && n <= mx * (ny - 1)) return &wrapped(0, ny + 1);
+    spare.resize(static_cast<std::size_t>(n));
+    return spare.data();
+  };
+  const double near_r = 32.0 * d_max;  // closed forms inside, smooth over a cell outside
   // Squared distances decide the rules (hypot per cell was 6 % of the kernel's time).
   const auto r_squared = [&](std::ptrdiff_t i, std::ptrdiff_t j) {
     const double x = static_cast<double>(i) * dx;
     const double y = static_cast<double>(j) * dy;
     return x * x + y * y;
   };
-  const auto two_point = [&](std::ptrdiff_t i, std::ptrdiff_t j) {
-    return r_squared(i, j) >= two_point_r * two_point_r;
+  const auto is_near = [&](std::ptrdiff_t i, std::ptrdiff_t j) {
+    return r_squared(i, j) < near_r * near_r;
   };
-  // Assigns quarter = (a) + (b) everywhere, except that cells with the 2 x 2 rule are set to 0
-  // when `leave_two_point` (the fused loop adds them).
-  const auto love_and_exponential = [&](bool leave_two_point) {
+  // Assigns quarter = (a) + (b) everywhere, or only at the near cells (r < 32 d) when
+  // `leave_far` (the stencil pass of the long part assigns the far cells).
+  const auto love_and_exponential = [&](bool leave_far) {
     std::array<std::vector<double>, 5> gt;
     std::array<std::vector<double>, 5> gw;
     for (int n = 2; n <= 4; ++n)
@@ -421,18 +467,14 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
       for (std::ptrdiff_t i = 0; i < nx; ++i) {
         const double x = static_cast<double>(i) * dx;
         const double r2c = r_squared(i, j);
-        if (r2c < (32.0 * d_max) * (32.0 * d_max)) {
+        if (leave_far && r2c >= near_r * near_r) break;
+        if (r2c < near_r * near_r) {
           double v = love_influence(x, y, dx, dy) / love_E_star;
           if (A != 0.0) v += A / (2.0 * pi) * detail::split_rectangle_integral(x, y, dx, dy, beta);
           quarter(i, j) = v;
           continue;
         }
-        const bool far = two_point(i, j);
-        if (leave_two_point && far) {
-          quarter(i, j) = 0.0;
-          continue;
-        }
-        const auto n = static_cast<std::size_t>(far                                      ? 2
+        const auto n = static_cast<std::size_t>(r2c >= (512.0 * d_max) * (512.0 * d_max) ? 2
                                                 : r2c >= (64.0 * d_max) * (64.0 * d_max) ? 3
                                                                                          : 4);
         const std::vector<double>& t = gt[n];
@@ -537,14 +579,14 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
       COATFFT_REQUIRE(cost < 4e9, "split_frf_kernel: the Hankel table would need ", cost,
                       " Bessel evaluations (a layer much thinner than the domain with the hankel "
                       "route); use SplitRoute::automatic");
-      const RadialTable table(kw, kn, dr, r_max + 4.0 * d_max, threads);
+      const EvenTable table = hankel_table(kw, kn, dr, r_max + 4.0 * d_max, threads);
       rep.hankel_r_points = table.size();
       rep.hankel_k_nodes = static_cast<std::ptrdiff_t>(kn.size());
-      // Cell rule: the kernel is smooth on the scale ell = sqrt(log_tol)/k_c (about sigma; its
-      // spectrum is cut like a Gaussian of width sqrt(2) sigma). The n-point Gauss-Legendre error
-      // on a cell of side d is about c_n (d/(sqrt(2) ell))^(2n) with c_2 = 2e-4, c_3 = 7e-7,
-      // c_4 = 7e-9, c_5 = 3e-11, c_6 = 2e-12: n is picked for ~1e-13 relative (2 x 2 and 3 x 3
-      // differ by 8e-14 of K(0,0) at N = 1024), and cells larger than 1.5 ell are subdivided.
+      // Gauss rule per cell: the kernel is smooth on the scale ell = sqrt(log_tol)/k_c (about
+      // sigma; its spectrum is cut like a Gaussian of width sqrt(2) sigma). The n-point
+      // Gauss-Legendre error on a cell of side d is about c_n (d/(sqrt(2) ell))^(2n) with
+      // c_2 = 2e-4, c_3 = 7e-7, c_4 = 7e-9, c_5 = 3e-11, c_6 = 2e-12: n is picked for ~1e-13
+      // relative, and cells larger than 1.5 ell are subdivided.
       const double ell = std::sqrt(log_tol) / k_c;
       const int sub = static_cast<int>(std::clamp(std::ceil(d_max / (ell / 1.5)), 1.0, 64.0));
       const double ratio = ell * sub / d_max;
@@ -569,50 +611,97 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
           wy.push_back(0.5 * wg[static_cast<std::size_t>(q)] / sub * dy);
         }
       rep.cell_rule = n_gl * sub;
-      // With the same 2 x 2 rule as (a) + (b)'s far field (same Gauss-Legendre nodes, weights
-      // wx wy = (dx dy / 4) w w), the far cells get Cinf/(2 pi r) + A/(2 pi sqrt(r^2 + beta^2))
-      // here, from the square roots already taken for the table lookups.
-      const bool fuse = n_gl == 2 && sub == 1;
-      love_and_exponential(fuse);
-      ab_done = true;
-      const double fa = c_inf / (2.0 * pi);
-      const double fb = A / (2.0 * pi);
-      const double b2 = beta * beta;
-      parallel_for(ny, threads, [&](std::ptrdiff_t j) {
-        std::vector<double> y2(oy.size());
-        for (std::size_t b = 0; b < oy.size(); ++b) {
-          const double y = static_cast<double>(j) * dy + oy[b];
-          y2[b] = y * y;
-        }
-        for (std::ptrdiff_t i = 0; i < nx; ++i) {
-          double sum = 0.0;
-          if (fuse && two_point(i, j)) {
-            for (std::size_t a = 0; a < ox.size(); ++a) {
-              const double x = static_cast<double>(i) * dx + ox[a];
-              const double x2 = x * x;
-              double row = 0.0;
-              for (std::size_t b = 0; b < oy.size(); ++b) {
-                const double r2 = x2 + y2[b];
-                const double r = std::sqrt(r2);
-                double f = table(r) + fa / r;
-                if (A != 0.0) f += fb / std::sqrt(r2 + b2);
-                row += wy[b] * f;
-              }
-              sum += wx[a] * row;
-            }
-          } else {
-            for (std::size_t a = 0; a < ox.size(); ++a) {
-              const double x = static_cast<double>(i) * dx + ox[a];
-              const double x2 = x * x;
-              double row = 0.0;
-              for (std::size_t b = 0; b < oy.size(); ++b)
-                row += wy[b] * table(std::sqrt(x2 + y2[b]));
-              sum += wx[a] * row;
-            }
+      const auto gauss_cell = [&](std::ptrdiff_t i, std::ptrdiff_t j) {
+        double sum = 0.0;
+        for (std::size_t a = 0; a < ox.size(); ++a) {
+          const double x = static_cast<double>(i) * dx + ox[a];
+          double row = 0.0;
+          for (std::size_t b = 0; b < oy.size(); ++b) {
+            const double y = static_cast<double>(j) * dy + oy[b];
+            row += wy[b] * table(std::sqrt(x * x + y * y));
           }
-          quarter(i, j) += sum;
+          sum += wx[a] * row;
         }
-      });
+        return sum;
+      };
+      // Stencil route, where the long kernel is smooth on >= 8 cells: one point value per cell
+      // and the 9-point cell-average stencil along x and y (cell_average_stencil.hpp), whose
+      // error E (k d)^10 (E = 1.06e-5) is weighted by the spectrum R w (cut at k_c = 5.6/sigma,
+      // largest near 2/sigma); its error kernel is concentrated within ~sigma of the origin,
+      // where the near cells (r < 32 d) keep the Gauss rule: the coefficients change by
+      // < 1e-11 of K(0, 0) (docs/split_kernel.md, section 5). The far cells' (a) + (b) are smooth
+      // over a cell beyond 32 d and go through the same stencil, from the point values
+      // Cinf/(2 pi r) + A/(2 pi sqrt(r^2 + beta^2)) (error ~E 10! (d/r)^10 of the coefficient
+      // there): one pass, one table lookup and one or two square roots per cell.
+      const bool stencil = ell >= 8.0 * d_max;
+      if (stencil) rep.cell_rule = 1;
+      love_and_exponential(stencil);
+      ab_done = true;
+      if (stencil) {
+        constexpr std::ptrdiff_t m = detail::cell_average_half_width;
+        const auto& c = detail::cell_average_weights;
+        const double fa = c_inf / (2.0 * pi) * dx * dy;
+        const double fb = A / (2.0 * pi) * dx * dy;
+        const double b2 = beta * beta;
+        // Point values (times the cell area) at i in [0, nx + m), j in [0, ny + m); the kernel is
+        // even, so negative offsets read |i|, |j|. The origin's singular terms are left out: only
+        // near cells reach it. Square cells on a square grid: point(i, j) = point(j, i), only
+        // i >= j is evaluated.
+        const std::ptrdiff_t ex = nx + m;
+        const std::ptrdiff_t ey = ny + m;
+        const bool symmetric = dx == dy && nx == ny;
+        double* const point = scratch(ex * ey);
+        const auto at = [&](std::ptrdiff_t i, std::ptrdiff_t j) -> double& {
+          return point[j * ex + i];
+        };
+        parallel_for(ey, threads, [&](std::ptrdiff_t j) {
+          const double y2 = (static_cast<double>(j) * dy) * (static_cast<double>(j) * dy);
+          for (std::ptrdiff_t i = symmetric ? j : 0; i < ex; ++i) {
+            const double x = static_cast<double>(i) * dx;
+            const double r2 = x * x + y2;
+            const double r = std::sqrt(r2);
+            double f = dx * dy * table(r);
+            if (r2 > 0.0) {
+              f += fa / r;
+              if (A != 0.0) f += fb / std::sqrt(r2 + b2);
+            }
+            at(i, j) = f;
+          }
+        });
+        if (symmetric) fill_lower_triangle(point, ey, ex, threads);
+        // Stencil along x, in place (row j of `point` becomes its x average at i in [0, nx)),
+        // then along y into the far cells.
+        parallel_for(ey, threads, [&](std::ptrdiff_t j) {
+          double* p = point + j * ex;
+          std::vector<double> in(p, p + ex);
+          for (std::ptrdiff_t i = 0; i < nx; ++i) {
+            double v = c[0] * in[static_cast<std::size_t>(i)];
+            for (std::ptrdiff_t a = 1; a <= m; ++a)
+              v += c[static_cast<std::size_t>(a)] * (in[static_cast<std::size_t>(std::abs(i - a))] +
+                                                     in[static_cast<std::size_t>(i + a)]);
+            p[i] = v;
+          }
+        });
+        parallel_for(ny, threads, [&](std::ptrdiff_t j) {
+          std::array<const double*, 2 * m + 1> rows{};
+          for (std::ptrdiff_t a = -m; a <= m; ++a)
+            rows[static_cast<std::size_t>(a + m)] = point + std::abs(j + a) * ex;
+          double* out = &quarter(0, j);
+          std::ptrdiff_t i_far = 0;
+          for (; i_far < nx && is_near(i_far, j); ++i_far) out[i_far] += gauss_cell(i_far, j);
+          for (std::ptrdiff_t i = i_far; i < nx; ++i) {
+            double v = c[0] * rows[m][i];
+            for (std::ptrdiff_t a = 1; a <= m; ++a)
+              v += c[static_cast<std::size_t>(a)] * (rows[static_cast<std::size_t>(m - a)][i] +
+                                                     rows[static_cast<std::size_t>(m + a)][i]);
+            out[i] = v;
+          }
+        });
+      } else {
+        parallel_for(ny, threads, [&](std::ptrdiff_t j) {
+          for (std::ptrdiff_t i = 0; i < nx; ++i) quarter(i, j) += gauss_cell(i, j);
+        });
+      }
       rep.seconds_long = since(t_long);
     }
 
@@ -672,11 +761,7 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
       const auto short_table = [&](double k) { return k < k1 ? table_lo(k) : table_hi(k); };
       const std::ptrdiff_t sx = hx + 1;
       const std::ptrdiff_t sy = hy + 1;
-      FftwRealBuffer buf(static_cast<std::size_t>(sx * sy));
-      FftwPlan plan = FftwPlan::create(1, [&] {
-        return fftw_plan_r2r_2d(static_cast<int>(sy), static_cast<int>(sx), buf.data(), buf.data(),
-                                FFTW_REDFT00, FFTW_REDFT00, FFTW_ESTIMATE);
-      });
+      double* const fold = scratch(sx * sy);
       // Per-axis alias wavenumbers and sincs: k = 2 pi (xi + p)/d with xi = m/(2h) in [0, 1/2].
       const auto axis = [](std::ptrdiff_t h, int p_max, double d, std::vector<double>& kk,
                            std::vector<double>& ss) {
@@ -702,9 +787,20 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
       const double k_s2 = k_s * k_s;
       // Square cells on a square lattice: F(m, n) = F(n, m) (R is radial), fold half of it.
       const bool symmetric = dx == dy && hx == hy && px == py;
-      double* const fold = buf.data();
+      // Terms with |k| > k_s are zero, and the smallest |k| of (m, n) is that of p = q = 0
+      // (|xi + p| >= xi for xi in [0, 1/2]), which grows with m: a row ends at the first m whose
+      // p = q = 0 term is beyond k_s (at 1024^2 for TiN 50 um, k_s dx / 2 pi = 0.34: 63 % of the
+      // lattice is zero).
+      const auto k_min2 = [&](std::size_t ix, std::size_t iy) {
+        return kxs[ix] * kxs[ix] + kys[iy] * kys[iy];
+      };
+      std::vector<std::ptrdiff_t> row_end(static_cast<std::size_t>(sy), 0);
       parallel_for(sy, threads, [&](std::ptrdiff_t n) {
-        for (std::ptrdiff_t m = symmetric ? n : 0; m < sx; ++m) {
+        const std::size_t iy0 = static_cast<std::size_t>(n) * npy + static_cast<std::size_t>(py);
+        std::ptrdiff_t m = symmetric ? n : 0;
+        for (; m < sx; ++m) {
+          if (k_min2(static_cast<std::size_t>(m) * npx + static_cast<std::size_t>(px), iy0) > k_s2)
+            break;
           double sum = 0.0;
           for (std::size_t q = 0; q < npy; ++q) {
             const std::size_t iy = static_cast<std::size_t>(n) * npy + q;
@@ -722,33 +818,54 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
           }
           fold[n * sx + m] = sum;
         }
+        row_end[static_cast<std::size_t>(n)] = m;
+        std::fill(fold + n * sx + m, fold + (n + 1) * sx, 0.0);
       });
-      if (symmetric)
-        for (std::ptrdiff_t n = 1; n < sy; ++n)
-          for (std::ptrdiff_t m = 0; m < n; ++m) fold[n * sx + m] = fold[m * sx + n];
-      plan.execute();
+      if (symmetric) fill_lower_triangle(fold, sy, sx, threads);
+      // Rows beyond the last one with a nonzero entry stay zero through the transform along x.
+      std::ptrdiff_t rows = 0;
+      for (std::ptrdiff_t n = 0; n < sy; ++n)
+        if (row_end[static_cast<std::size_t>(n)] > (symmetric ? n : 0)) rows = n + 1;
+      if (symmetric) rows = std::max(rows, row_end[0]);
+      // The 2-D DCT-I (FFTW REDFT00) as two batches of 1-D transforms: along x over the nonzero
+      // rows only, then along y over every column.
+      const int nx_t = static_cast<int>(sx);
+      const int ny_t = static_cast<int>(sy);
+      FftwPlan along_x = FftwPlan::create(threads, [&] {
+        const fftw_r2r_kind kind = FFTW_REDFT00;
+        return fftw_plan_many_r2r(1, &nx_t, static_cast<int>(std::max<std::ptrdiff_t>(rows, 1)),
+                                  fold, nullptr, 1, nx_t, fold, nullptr, 1, nx_t, &kind,
+                                  FFTW_ESTIMATE);
+      });
+      FftwPlan along_y = FftwPlan::create(threads, [&] {
+        const fftw_r2r_kind kind = FFTW_REDFT00;
+        return fftw_plan_many_r2r(1, &ny_t, nx_t, fold, nullptr, nx_t, 1, fold, nullptr, nx_t, 1,
+                                  &kind, FFTW_ESTIMATE);
+      });
+      along_x.execute();
+      along_y.execute();
       // DCT-I of the even spectrum = the sum over the full period (1/(Mx My) = 1/(4 hx hy)).
       const double norm = 1.0 / (4.0 * static_cast<double>(hx) * static_cast<double>(hy));
-      for (std::ptrdiff_t j = 0; j < ny; ++j)
-        for (std::ptrdiff_t i = 0; i < nx; ++i) quarter(i, j) += norm * buf.data()[j * sx + i];
+      parallel_for(ny, threads, [&](std::ptrdiff_t j) {
+        for (std::ptrdiff_t i = 0; i < nx; ++i) quarter(i, j) += norm * fold[j * sx + i];
+      });
       rep.seconds_short = since(t_short);
     }
   }
 
   if (!ab_done) love_and_exponential(false);
 
-  // Mirror the quarter (the split kernel is even in x and y) into the wrap-around layout.
-  Field wrapped = Field::Zero(2 * nx, 2 * ny);
-  for (std::ptrdiff_t dj = 0; dj < ny; ++dj)
-    for (std::ptrdiff_t di = 0; di < nx; ++di) {
-      const double v = quarter(di, dj);
-      const std::ptrdiff_t mi = di == 0 ? 0 : 2 * nx - di;
-      const std::ptrdiff_t mj = dj == 0 ? 0 : 2 * ny - dj;
-      wrapped(di, dj) = v;
-      wrapped(mi, dj) = v;
-      wrapped(di, mj) = v;
-      wrapped(mi, mj) = v;
-    }
+  // Mirror the quarter (the split kernel is even in x and y) into the rest of the wrap-around
+  // layout, each entry written once (no zero fill first, as love_kernel): column dj is mirrored
+  // within itself (slot 2nx - di) and copied to column 2ny - dj; slots nx and ny are the unused
+  // zeros.
+  parallel_for(ny, threads, [&](std::ptrdiff_t dj) {
+    double* col = &wrapped(0, dj);
+    col[nx] = 0.0;
+    for (std::ptrdiff_t di = 1; di < nx; ++di) col[mx - di] = col[di];
+    if (dj > 0) std::copy_n(col, mx, &wrapped(0, my - dj));
+  });
+  wrapped.col(ny).setZero();
   rep.seconds = since(t_start);
   if (report != nullptr) *report = rep;
   return InfluenceKernel(grid, std::move(wrapped));

@@ -61,10 +61,11 @@ struct SplitKernelReport {
   bool alias_capped = false;    ///< the fold needed more than max_alias_order
   std::ptrdiff_t hankel_r_points = 0;  ///< radii of the Hankel table
   std::ptrdiff_t hankel_k_nodes = 0;   ///< quadrature nodes per radius
-  int cell_rule = 0;                   ///< Gauss-Legendre nodes per cell side (incl. subdivision)
-  double seconds = 0.0;                ///< wall-clock time of the whole construction [s]
-  double seconds_long = 0.0;           ///< of which the Hankel table and cell quadrature [s]
-  double seconds_short = 0.0;          ///< of which the alias fold and its DCT [s]
+  int cell_rule = 0;           ///< Gauss-Legendre nodes per cell side (incl. subdivision); 1: point
+                               ///< values and the 9-point cell-average stencil
+  double seconds = 0.0;        ///< wall-clock time of the whole construction [s]
+  double seconds_long = 0.0;   ///< of which the Hankel table and cell quadrature [s]
+  double seconds_short = 0.0;  ///< of which the alias fold and its DCT [s]
 };
 
 /// Influence coefficients K(di, dj) [m/Pa] of the FRF `frf` on `grid` by the split above, in the

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "convolution/cell_average_stencil.hpp"
 #include "convolution/dcfft_operator.hpp"
 #include "convolution/influence_kernel.hpp"
 #include "convolution/love_influence.hpp"
@@ -193,6 +194,58 @@ TEST_CASE("split remainder reproduces the closed form of an exponential FRF", "[
       }
     CHECK(worst_exact <= 1e-9 * k00);
     CHECK(worst_auto <= 1e-9 * k00);
+  }
+}
+
+TEST_CASE("cell-average stencil is exact for polynomials of degree 9", "[split]") {
+  // sum_j c_|j| j^n = \int_{-1/2}^{1/2} s^n ds (0 for odd n by symmetry), n = 0..9; and not for
+  // n = 10 (the error term of cell_average_stencil.hpp).
+  const auto& c = detail::cell_average_weights;
+  for (int n = 0; n <= 10; n += 2) {
+    double sum = c[0] * (n == 0 ? 1.0 : 0.0);
+    for (int j = 1; j <= detail::cell_average_half_width; ++j)
+      sum += 2.0 * c[static_cast<std::size_t>(j)] * std::pow(j, n);
+    const double exact = 1.0 / ((n + 1) * std::pow(2.0, n));
+    if (n < 10)
+      CHECK(sum == Approx(exact).margin(1e-14 * std::pow(4.0, n)));
+    else
+      CHECK(std::abs(sum - exact) > 1.0);
+  }
+}
+
+TEST_CASE("split kernel stencil route reproduces the closed form", "[split]") {
+  // Grids fine enough (sigma = L/32 >= 8 cells) for the long part's point values and the
+  // 9-point cell-average stencil, which also carries the far cells' (a) + (b): every coefficient
+  // against the closed form of an exponential FRF (beta = 2.5 b, so that R is not zero), square
+  // cells on a square grid (the symmetric paths) and rectangular cells, 1 and 2 threads.
+  struct Setup {
+    const char* what;
+    Grid grid;
+    double b;
+  };
+  const std::vector<Setup> setups = {{"square", Grid(300, 300, 3.0, 3.0), 0.05},
+                                     {"rectangular", Grid(400, 330, 4.0, 3.0), 0.03}};
+  for (const Setup& s : setups) {
+    INFO(s.what);
+    const ExponentialFrf frf(3.0, 1.0, s.b);
+    SplitKernelOptions o;
+    o.beta = 2.5 * s.b;
+    SplitKernelReport report;
+    const InfluenceKernel k = split_frf_kernel(s.grid, frf, o, &report);
+    CHECK(report.cell_rule == 1);  // the stencil route
+    const double dx = s.grid.dx();
+    const double dy = s.grid.dy();
+    const double k00 = closed_form(frf, s.b, 0.0, 0.0, dx, dy);
+    double worst = 0.0;
+    for (std::ptrdiff_t j = 0; j < s.grid.ny(); ++j)
+      for (std::ptrdiff_t i = 0; i < s.grid.nx(); ++i) {
+        const double ref =
+            closed_form(frf, s.b, static_cast<double>(i) * dx, static_cast<double>(j) * dy, dx, dy);
+        worst = std::max(worst, std::abs(k.at(i, j) - ref));
+      }
+    CHECK(worst <= 1e-9 * k00);
+    o.threads = 2;
+    CHECK(max_abs_difference(k, split_frf_kernel(s.grid, frf, o)) == 0.0);
   }
 }
 
