@@ -5,7 +5,7 @@
 #include "convolution/dcfft_operator.hpp"
 #include "convolution/direct_operator.hpp"
 #include "convolution/fftw_plan.hpp"
-#include "convolution/frf_influence_kernel.hpp"
+#include "convolution/frf_dcfft_operator.hpp"
 #include "convolution/frf_spectral_operator.hpp"
 #include "convolution/g0.hpp"
 #include "convolution/influence_kernel.hpp"
@@ -57,11 +57,10 @@ BuiltOperator operator_from_scene(const Scene& scene) {
       built.op = std::move(op);
     } else if (method.name == "frf-dcfft") {
       G0Result g0{};
-      const InfluenceKernel kernel = frf_influence_kernel(scene.grid, *frf, method.alpha, g0_method,
-                                                          method.g0_tol, &g0, method.threads);
+      built.op = frf_dcfft_operator(scene.grid, *frf, method.alpha, g0_method, method.g0_tol, &g0,
+                                    planning, method.threads);
       built.report.update(g0_report(g0));
       built.report["alpha"] = method.alpha;
-      built.op = std::make_unique<DcfftOperator>(kernel, planning, method.threads);
     } else {
       // The split kernel needs no g(0): the singular part of H is taken in closed form in space.
       SplitKernelReport report;

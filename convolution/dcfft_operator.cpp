@@ -31,13 +31,13 @@ bool is_even(const Field& w, std::ptrdiff_t nx, std::ptrdiff_t ny) {
 
 }  // namespace
 
-DcfftOperator::DcfftOperator(const InfluenceKernel& kernel, Planning planning, int threads)
-    : grid_(kernel.grid()),
-      nx_(kernel.grid().nx()),
-      ny_(kernel.grid().ny()),
-      mx_(2 * kernel.grid().nx()),
-      my_(2 * kernel.grid().ny()),
-      hx_(kernel.grid().nx() + 1),
+DcfftOperator::DcfftOperator(const Grid& grid, Planning planning, int threads)
+    : grid_(grid),
+      nx_(grid.nx()),
+      ny_(grid.ny()),
+      mx_(2 * grid.nx()),
+      my_(2 * grid.ny()),
+      hx_(grid.nx() + 1),
       threads_(threads) {
   const auto start = std::chrono::steady_clock::now();
   COATFFT_REQUIRE(threads >= 1, "DcfftOperator: threads = ", threads, ", but must be >= 1");
@@ -76,6 +76,12 @@ DcfftOperator::DcfftOperator(const InfluenceKernel& kernel, Planning planning, i
       });
   }
 
+  setup_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+DcfftOperator::DcfftOperator(const InfluenceKernel& kernel, Planning planning, int threads)
+    : DcfftOperator(kernel.grid(), planning, threads) {
+  const auto start = std::chrono::steady_clock::now();
   const Field& wrapped = kernel.wrapped();
   even_ = is_even(wrapped, nx_, ny_);
   if (even_) {
@@ -83,7 +89,27 @@ DcfftOperator::DcfftOperator(const InfluenceKernel& kernel, Planning planning, i
   } else {
     compute_general_spectrum(wrapped);
   }
-  setup_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  setup_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+DcfftOperator::DcfftOperator(const EvenKernelSpectrum& spectrum, Planning planning, int threads)
+    : DcfftOperator(spectrum.grid, planning, threads) {
+  const auto start = std::chrono::steady_clock::now();
+  const Field& s = spectrum.values;
+  COATFFT_REQUIRE(s.rows() == hx_ && s.cols() == ny_ + 1,
+                  "DcfftOperator: the kernel spectrum has shape (", s.rows(), ", ", s.cols(),
+                  "), but the grid needs (", hx_, ", ", ny_ + 1, ")");
+  COATFFT_REQUIRE(s.allFinite(), "DcfftOperator: the kernel spectrum is not finite");
+  even_ = true;
+  // Stored transposed ([kx][ky], the blocks' layout) with FFTW's 1/(mx my) folded in, as
+  // compute_even_spectrum leaves it.
+  const std::ptrdiff_t len = ny_ + 1;
+  kernel_even_ = FftwRealBuffer(static_cast<std::size_t>(hx_ * len));
+  double* k = kernel_even_.data();
+  const double scale = 1.0 / static_cast<double>(mx_ * my_);
+  for (std::ptrdiff_t jy = 0; jy < len; ++jy)
+    for (std::ptrdiff_t jx = 0; jx < hx_; ++jx) k[jx * len + jy] = scale * s(jx, jy);
+  setup_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 void DcfftOperator::compute_even_spectrum(const Field& wrapped) {

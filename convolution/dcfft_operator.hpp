@@ -12,6 +12,16 @@
 
 namespace coatfft {
 
+/// The spectrum of an even influence kernel on DC-FFT's padded (2nx, 2ny) lattice, given directly
+/// instead of the coefficients: `values(jx, jy)` = sum over the wrapped offsets of
+/// K(di, dj) cos(pi jx di / nx) cos(pi jy dj / ny) for 0 <= jx <= nx, 0 <= jy <= ny (the
+/// unnormalised DFT, real and even). Whatever the spectrum implies at the offsets +-nx, +-ny is
+/// irrelevant: those offsets never reach the cropped output of a grid of nx x ny cells.
+struct EvenKernelSpectrum {
+  Grid grid;
+  Field values;  ///< shape (nx + 1, ny + 1) [m/Pa]
+};
+
 /// Surface operator u = K * p (linear convolution) by DC-FFT for any InfluenceKernel (no symmetry
 /// assumed; an exactly even kernel such as Love's is detected and its real spectrum stored at a
 /// quarter of the memory). Everything is planned in the constructor: the kernel spectrum (with
@@ -24,6 +34,12 @@ class DcfftOperator final : public SurfaceOperator {
   /// `planning` is the FFTW planner effort; `threads` (>= 1) the threads of apply(): FFTW threads
   /// for the x transforms and as many workers for the blocks of y transforms.
   explicit DcfftOperator(const InfluenceKernel& kernel, Planning planning = Planning::estimate,
+                         int threads = 1);
+
+  /// From the kernel's spectrum (skips the kernel transform: used where the coefficients would
+  /// only be the inverse transform of a known spectrum, frf_dcfft_operator at alpha = 2). Throws
+  /// InvalidArgument unless `spectrum.values` has shape (nx + 1, ny + 1) and is finite.
+  explicit DcfftOperator(const EvenKernelSpectrum& spectrum, Planning planning = Planning::estimate,
                          int threads = 1);
 
   const Grid& grid() const override { return grid_; }
@@ -47,6 +63,7 @@ class DcfftOperator final : public SurfaceOperator {
     FftwPlan backward_y;
   };
 
+  DcfftOperator(const Grid& grid, Planning planning, int threads);  // plans and buffers only
   void compute_even_spectrum(const Field& wrapped);
   void compute_general_spectrum(const Field& wrapped);
   void convolve_columns(Worker& worker, std::ptrdiff_t first_block, std::ptrdiff_t end_block);

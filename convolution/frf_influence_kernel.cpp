@@ -35,6 +35,31 @@ InfluenceKernel frf_influence_kernel(const Grid& grid, const Frf& frf, double al
   return frf_influence_kernel(grid, frf, alpha, g0, threads);
 }
 
+namespace detail {
+
+Field frf_cell_spectrum_quarter(const Grid& grid, const Frf& frf, std::ptrdiff_t mx,
+                                std::ptrdiff_t my, const G0Result& g0, int threads) {
+  using std::numbers::pi;
+  const double dx = grid.dx(), dy = grid.dy();
+  const double dkx = 2.0 * pi / (static_cast<double>(mx) * dx);
+  const double dky = 2.0 * pi / (static_cast<double>(my) * dy);
+  const std::ptrdiff_t qx = mx / 2 + 1, qy = my / 2 + 1;
+  Field q = sample_frf_quarter(frf, qx, qy, dkx, dky, threads);
+  q(0, 0) = g0.value;
+  // The cell factors sinc(kx dx/2) sinc(ky dy/2), tabulated per axis (2 sin per point otherwise).
+  std::vector<double> sinc_x(static_cast<std::size_t>(qx));
+  for (std::ptrdiff_t j = 0; j < qx; ++j)
+    sinc_x[static_cast<std::size_t>(j)] = sinc(0.5 * dkx * static_cast<double>(j) * dx);
+  for (std::ptrdiff_t jy = 0; jy < qy; ++jy) {
+    const double sy = sinc(0.5 * dky * static_cast<double>(jy) * dy);
+    for (std::ptrdiff_t jx = 0; jx < qx; ++jx)
+      q(jx, jy) *= sinc_x[static_cast<std::size_t>(jx)] * sy;
+  }
+  return q;
+}
+
+}  // namespace detail
+
 InfluenceKernel frf_influence_kernel(const Grid& grid, const Frf& frf, double alpha,
                                      const G0Result& g0, int threads) {
   using std::numbers::pi;
@@ -82,13 +107,8 @@ InfluenceKernel frf_influence_kernel(const Grid& grid, const Frf& frf, double al
 
   if (mx % 2 == 0 && my % 2 == 0) {
     const std::ptrdiff_t qy = my / 2 + 1;
-    Field q = detail::sample_frf_quarter(frf, qx, qy, dkx, dky, threads);
-    q(0, 0) = g0.value;
-    for (std::ptrdiff_t jy = 0; jy < qy; ++jy) {
-      const double sy = scale * sinc_y(jy);
-      for (std::ptrdiff_t jx = 0; jx < qx; ++jx)
-        q(jx, jy) *= sinc_x[static_cast<std::size_t>(jx)] * sy;
-    }
+    Field q = detail::frf_cell_spectrum_quarter(grid, frf, mx, my, g0, threads);
+    q *= scale;
     // In place on the Field (FFTW_ESTIMATE plans without touching it; Eigen's alignment is
     // checked by FFTW at planning and the plan runs on this same array): no second 8 MiB buffer
     // to zero, copy and page in at 1024^2. FFTW is row-major: the Field (x fastest) is {qy, qx}.

@@ -25,4 +25,12 @@ InfluenceKernel frf_influence_kernel(const Grid& grid, const Frf& frf, double al
 InfluenceKernel frf_influence_kernel(const Grid& grid, const Frf& frf, double alpha,
                                      const G0Result& g0, int threads = 1);
 
+namespace detail {
+/// H(k) sinc(kx dx/2) sinc(ky dy/2) on the quarter 0 <= jx <= mx/2, 0 <= jy <= my/2 of the
+/// (mx, my) lattice of periods (mx dx, my dy), with g0.value at k = 0 (theory.md (4.1) without
+/// FFTW's 1/(mx my)); mx and my even. The spectrum behind frf_influence_kernel.
+Field frf_cell_spectrum_quarter(const Grid& grid, const Frf& frf, std::ptrdiff_t mx,
+                                std::ptrdiff_t my, const G0Result& g0, int threads);
+}  // namespace detail
+
 }  // namespace coatfft

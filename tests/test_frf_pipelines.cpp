@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "convolution/dcfft_operator.hpp"
+#include "convolution/frf_dcfft_operator.hpp"
 #include "convolution/frf_influence_kernel.hpp"
 #include "convolution/frf_spectral_operator.hpp"
 #include "convolution/influence_kernel.hpp"
@@ -281,4 +282,53 @@ TEST_CASE("FRF sampling and coefficients on square lattices and several threads"
             1e-12 * k00);
     }
   CHECK_THROWS_AS(frf_influence_kernel(g, frf, 2.0, g0, 0), InvalidArgument);
+}
+
+TEST_CASE("frf_dcfft_operator at alpha = 2 (spectrum route) equals the coefficient route",
+          "[frf_pipelines]") {
+  // The spectrum route skips the DCT round trip of the coefficients; the reference is the plain
+  // route: coefficients by frf_influence_kernel, then DcfftOperator's own transform. Both compute
+  // the same convolution; they differ only in rounding (two 2-D DCTs, ~1e-15) and in the
+  // offsets +-nx, +-ny, which must not reach the output.
+  const CoatingFrf coated(600e9, 0.25, 210e9, 0.3, 0.05e-3, true);
+  struct Shape {
+    std::ptrdiff_t nx, ny;
+    double lx, ly;
+  };
+  for (const Shape sh :
+       {Shape{1, 1, 1e-3, 1e-3}, Shape{1, 7, 1e-3, 2e-3}, Shape{7, 1, 3e-3, 1e-3},
+        Shape{31, 33, 2e-3, 2e-3}, Shape{64, 64, 2e-3, 2e-3}, Shape{40, 24, 2e-3, 3e-3}}) {
+    INFO(sh.nx << " x " << sh.ny);
+    const Grid g(sh.nx, sh.ny, sh.lx, sh.ly);
+    const Field p = random_pressure(sh.nx, sh.ny);
+    G0Result g0{};
+    const auto fast = frf_dcfft_operator(g, coated, 2.0, G0Method::regularized, 1e-13, &g0);
+    DcfftOperator plain(frf_influence_kernel(g, coated, 2.0, g0));
+    CHECK(fast->even_kernel());
+    CHECK(std::isfinite(g0.value));
+    CHECK(rel_linf(fast->apply(p), plain.apply(p)) < 1e-13);
+    // Other ratios take the coefficient route itself: identical.
+    const auto at3 = frf_dcfft_operator(g, coated, 3.0, g0);
+    DcfftOperator plain3(frf_influence_kernel(g, coated, 3.0, g0));
+    CHECK(rel_linf(at3->apply(p), plain3.apply(p)) == 0.0);
+  }
+}
+
+TEST_CASE("frf_dcfft_operator and the spectrum constructor refuse bad input",
+          "[frf_pipelines][bad_input]") {
+  const Grid g(10, 8, 1e-3, 1e-3);
+  const InverseKFrf frf(1e11);
+  CHECK_THROWS_WITH(frf_dcfft_operator(g, frf, 1.5, G0Method::regularized, 1e-13),
+                    Catch::Contains(">= 2"));
+  CHECK_THROWS_WITH(frf_dcfft_operator(g, frf, 2.05, G0Method::regularized, 1e-13),
+                    Catch::Contains("not an integer"));
+  const G0Result bad{NAN, G0Method::regularized, 0, 0};
+  CHECK_THROWS_WITH(frf_dcfft_operator(g, frf, 2.0, bad), Catch::Contains("g(0) = nan"));
+  CHECK_THROWS_AS(frf_dcfft_operator(g, frf, 4.0, bad), InvalidArgument);
+  CHECK_THROWS_WITH(DcfftOperator(EvenKernelSpectrum{g, Field::Ones(10, 8)}),
+                    Catch::Contains("shape (10, 8)"));
+  Field nan_spectrum = Field::Ones(11, 9);
+  nan_spectrum(3, 4) = NAN;
+  CHECK_THROWS_WITH(DcfftOperator(EvenKernelSpectrum{g, nan_spectrum}),
+                    Catch::Contains("not finite"));
 }
