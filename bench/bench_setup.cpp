@@ -72,7 +72,7 @@ Setup run_setup(const std::string& method, const Body& body, const coatfft::Grid
   const double dky = 2.0 * std::numbers::pi / (alpha * grid.ly());
   if (method == "dcfft") {
     auto t = Clock::now();
-    const InfluenceKernel k = love_kernel(grid, body.e_star, threads);
+    const EvenInfluenceKernel k = love_kernel_quarter(grid, body.e_star, threads);
     s.kernel_s = seconds_since(t);
     t = Clock::now();
     s.op = std::make_unique<DcfftOperator>(k, Planning::estimate, threads);

@@ -143,19 +143,21 @@ std::unique_ptr<coatfft::SurfaceOperator> build_operator(const RowSpec& row,
     coeff_s = seconds_since(t0) - op->setup_seconds();
     return op;
   }
-  std::optional<coatfft::InfluenceKernel> kernel;
   if (row.method == "direct" || row.method == "dcfft") {
     COATFFT_REQUIRE(c.stack.is_homogeneous(), "bench_sweep: ", row.method,
                     " needs a homogeneous body");
-    kernel = coatfft::love_kernel(grid, c.stack.substrate().plane_strain_modulus());
-  } else if (row.method == "frf-split") {
-    kernel = coatfft::split_frf_kernel(grid, *frf);
-  } else {
-    throw coatfft::InvalidArgument("bench_sweep: unknown method '" + row.method + "'");
+    const coatfft::EvenInfluenceKernel quarter =
+        coatfft::love_kernel_quarter(grid, c.stack.substrate().plane_strain_modulus());
+    coeff_s = seconds_since(t0);
+    if (row.method == "direct")
+      return std::make_unique<coatfft::DirectOperator>(coatfft::wrap_even_kernel(quarter));
+    return std::make_unique<coatfft::DcfftOperator>(quarter, planning, threads);
   }
+  if (row.method != "frf-split")
+    throw coatfft::InvalidArgument("bench_sweep: unknown method '" + row.method + "'");
+  const coatfft::InfluenceKernel kernel = coatfft::split_frf_kernel(grid, *frf);
   coeff_s = seconds_since(t0);
-  if (row.method == "direct") return std::make_unique<coatfft::DirectOperator>(*kernel);
-  return std::make_unique<coatfft::DcfftOperator>(*kernel, planning, threads);
+  return std::make_unique<coatfft::DcfftOperator>(kernel, planning, threads);
 }
 
 struct RowResult {

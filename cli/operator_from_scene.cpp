@@ -40,12 +40,13 @@ BuiltOperator operator_from_scene(const Scene& scene) {
     COATFFT_REQUIRE(scene.body.is_homogeneous(), "[method] name = \"", method.name,
                     "\" uses Love's coefficients of a homogeneous half-space; for a coated body "
                     "use \"frf-split\", \"frf-dcfft\" or \"frf-spectral\"");
-    const InfluenceKernel kernel =
-        love_kernel(scene.grid, scene.body.substrate().plane_strain_modulus(), method.threads);
+    // DC-FFT needs only the kernel's quarter (love_kernel_quarter: no (2nx, 2ny) array).
+    const EvenInfluenceKernel quarter = love_kernel_quarter(
+        scene.grid, scene.body.substrate().plane_strain_modulus(), method.threads);
     if (method.name == "dcfft")
-      built.op = std::make_unique<DcfftOperator>(kernel, planning, method.threads);
+      built.op = std::make_unique<DcfftOperator>(quarter, planning, method.threads);
     else
-      built.op = std::make_unique<DirectOperator>(kernel);
+      built.op = std::make_unique<DirectOperator>(wrap_even_kernel(quarter));
   } else {
     const auto frf = make_frf(scene.body);
     built.report["frf"] = frf->name();

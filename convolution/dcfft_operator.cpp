@@ -85,10 +85,23 @@ DcfftOperator::DcfftOperator(const InfluenceKernel& kernel, Planning planning, i
   const Field& wrapped = kernel.wrapped();
   even_ = is_even(wrapped, nx_, ny_);
   if (even_) {
-    compute_even_spectrum(wrapped);
+    compute_even_spectrum(wrapped.data(), mx_);
   } else {
     compute_general_spectrum(wrapped);
   }
+  setup_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+DcfftOperator::DcfftOperator(const EvenInfluenceKernel& kernel, Planning planning, int threads)
+    : DcfftOperator(kernel.grid, planning, threads) {
+  const auto start = std::chrono::steady_clock::now();
+  const Field& q = kernel.quarter;
+  COATFFT_REQUIRE(q.rows() == hx_ && q.cols() == ny_ + 1,
+                  "DcfftOperator: the kernel quarter has shape (", q.rows(), ", ", q.cols(),
+                  "), but the grid needs (", hx_, ", ", ny_ + 1, ")");
+  COATFFT_REQUIRE(q.allFinite(), "DcfftOperator: the kernel quarter is not finite");
+  even_ = true;
+  compute_even_spectrum(q.data(), hx_);
   setup_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -112,22 +125,23 @@ DcfftOperator::DcfftOperator(const EvenKernelSpectrum& spectrum, Planning planni
   setup_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-void DcfftOperator::compute_even_spectrum(const Field& wrapped) {
+void DcfftOperator::compute_even_spectrum(const double* corner, std::ptrdiff_t column_stride) {
   // DFT of the 2n-periodic even sequence = DCT-I (FFTW REDFT00) of its first n + 1 entries; the
-  // slots nx, ny are the zeros the wrap-around layout leaves there. Stored column-major, [kx][ky],
-  // like the blocks it multiplies. The transform reads the (nx + 1) x (ny + 1) corner of
-  // `wrapped` (x fastest) in place through guru strides and writes the transposed layout
+  // slots nx, ny hold the wrap-around layout's zeros (whatever they hold, those offsets never
+  // reach the cropped output). Stored column-major, [kx][ky], like the blocks it multiplies. The
+  // transform reads the (nx + 1) x (ny + 1) corner (x fastest; of the wrapped array or of an
+  // EvenInfluenceKernel's quarter) in place through guru strides and writes the transposed layout
   // directly, so FFTW's tiled copies do the transposition (a separate strided copy loop cost
   // about as much as the transform at 1024^2). FFTW_PRESERVE_INPUT (the default for out-of-place
-  // r2r anyway, FFTW manual 4.3.2) keeps `wrapped` read-only. One-off: FFTW_ESTIMATE, which
+  // r2r anyway, FFTW manual 4.3.2) keeps the input read-only. One-off: FFTW_ESTIMATE, which
   // plans without touching the arrays.
   const std::ptrdiff_t len = ny_ + 1;
   kernel_even_ = FftwRealBuffer(static_cast<std::size_t>(hx_ * len));
   double* k = kernel_even_.data();
   const fftw_iodim dims[2] = {{static_cast<int>(hx_), 1, static_cast<int>(len)},
-                              {static_cast<int>(len), static_cast<int>(mx_), 1}};
+                              {static_cast<int>(len), static_cast<int>(column_stride), 1}};
   const fftw_r2r_kind kinds[2] = {FFTW_REDFT00, FFTW_REDFT00};
-  double* in = const_cast<double*>(wrapped.data());
+  double* in = const_cast<double*>(corner);
   const FftwPlan dct = FftwPlan::create(threads_, [&] {
     return fftw_plan_guru_r2r(2, dims, 0, nullptr, in, k, kinds,
                               FFTW_ESTIMATE | FFTW_PRESERVE_INPUT);

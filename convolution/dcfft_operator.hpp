@@ -36,6 +36,12 @@ class DcfftOperator final : public SurfaceOperator {
   explicit DcfftOperator(const InfluenceKernel& kernel, Planning planning = Planning::estimate,
                          int threads = 1);
 
+  /// From an even kernel's quarter (love_kernel_quarter): the same operator as from its
+  /// wrap-around form, without that (2nx, 2ny) array. Throws InvalidArgument unless the quarter
+  /// has shape (nx + 1, ny + 1) and finite entries.
+  explicit DcfftOperator(const EvenInfluenceKernel& kernel, Planning planning = Planning::estimate,
+                         int threads = 1);
+
   /// From the kernel's spectrum (skips the kernel transform: used where the coefficients would
   /// only be the inverse transform of a known spectrum, frf_dcfft_operator at alpha = 2). Throws
   /// InvalidArgument unless `spectrum.values` has shape (nx + 1, ny + 1) and is finite.
@@ -64,7 +70,8 @@ class DcfftOperator final : public SurfaceOperator {
   };
 
   DcfftOperator(const Grid& grid, Planning planning, int threads);  // plans and buffers only
-  void compute_even_spectrum(const Field& wrapped);
+  // DCT-I of the (nx + 1) x (ny + 1) corner at `corner`, x fastest, columns `column_stride` apart.
+  void compute_even_spectrum(const double* corner, std::ptrdiff_t column_stride);
   void compute_general_spectrum(const Field& wrapped);
   void convolve_columns(Worker& worker, std::ptrdiff_t first_block, std::ptrdiff_t end_block);
 

@@ -32,30 +32,47 @@ double InfluenceKernel::at(std::ptrdiff_t di, std::ptrdiff_t dj) const {
   return wrapped_(di >= 0 ? di : 2 * nx + di, dj >= 0 ? dj : 2 * ny + dj);
 }
 
-InfluenceKernel love_kernel(const Grid& grid, double plane_strain_modulus, int threads) {
+InfluenceKernel wrap_even_kernel(const EvenInfluenceKernel& kernel) {
+  const std::ptrdiff_t nx = kernel.grid.nx();
+  const std::ptrdiff_t ny = kernel.grid.ny();
+  const Field& q = kernel.quarter;
+  COATFFT_REQUIRE(q.rows() == nx + 1 && q.cols() == ny + 1,
+                  "wrap_even_kernel: the quarter has shape (", q.rows(), ", ", q.cols(),
+                  "), but the grid needs (", nx + 1, ", ", ny + 1, ")");
+  // Every entry written once: column dj of the quarter, mirrored within the column (slot
+  // 2nx - di), copied to column 2ny - dj. The slots nx and ny are the unused zeros.
+  const std::ptrdiff_t mx = 2 * nx;
+  const std::ptrdiff_t my = 2 * ny;
+  Field wrapped(mx, my);
+  for (std::ptrdiff_t dj = 0; dj < ny; ++dj) {
+    double* c = &wrapped(0, dj);
+    std::copy_n(&q(0, dj), nx, c);
+    c[nx] = 0.0;
+    for (std::ptrdiff_t di = 1; di < nx; ++di) c[mx - di] = c[di];
+    if (dj > 0) std::copy_n(c, mx, &wrapped(0, my - dj));
+  }
+  wrapped.col(ny).setZero();
+  return InfluenceKernel(kernel.grid, std::move(wrapped));
+}
+
+EvenInfluenceKernel love_kernel_quarter(const Grid& grid, double plane_strain_modulus,
+                                        int threads) {
   COATFFT_REQUIRE(std::isfinite(plane_strain_modulus) && plane_strain_modulus > 0,
                   "love_kernel: E* = ", plane_strain_modulus, " Pa, but E* must be finite and > 0");
   COATFFT_REQUIRE(threads >= 1, "love_kernel: threads = ", threads, ", but must be >= 1");
   const std::ptrdiff_t nx = grid.nx();
   const std::ptrdiff_t ny = grid.ny();
-  const std::ptrdiff_t mx = 2 * nx;
-  const std::ptrdiff_t my = 2 * ny;
   const double dx = grid.dx();
   const double dy = grid.dy();
   const double inv_e = 1.0 / plane_strain_modulus;
-  // Every entry is written exactly once (no zero fill of the (2nx, 2ny) array first). Love's
-  // coefficient is even in x and in y: each column dj of the quarter di, dj >= 0 is computed
-  // along x in one vectorised run, mirrored within the column (slot 2nx - di) and copied to
-  // column 2ny - dj, which also makes the wrapped array exactly symmetric (DcfftOperator then
-  // stores a real spectrum). The slots nx and ny are the unused zeros.
-  Field wrapped(mx, my);
+  // Love's coefficient is even in x and in y: each column dj of the quarter is computed along x
+  // in one vectorised run.
+  Field quarter(nx + 1, ny + 1);
   const auto column = [&](std::ptrdiff_t dj) {
-    double* c = &wrapped(0, dj);
+    double* c = &quarter(0, dj);
     detail::love_influence_row(static_cast<double>(dj) * dy, dx, dy, nx, c);
     for (std::ptrdiff_t di = 0; di < nx; ++di) c[di] *= inv_e;
     c[nx] = 0.0;
-    for (std::ptrdiff_t di = 1; di < nx; ++di) c[mx - di] = c[di];
-    if (dj > 0) std::copy_n(c, mx, &wrapped(0, my - dj));
   };
   const auto workers = static_cast<std::ptrdiff_t>(std::min<std::ptrdiff_t>(threads, ny));
   if (workers <= 1) {
@@ -70,8 +87,12 @@ InfluenceKernel love_kernel(const Grid& grid, double plane_strain_modulus, int t
       });
     for (std::ptrdiff_t dj = 0; dj < ny; dj += workers) column(dj);
   }
-  wrapped.col(ny).setZero();
-  return InfluenceKernel(grid, std::move(wrapped));
+  quarter.col(ny).setZero();
+  return {grid, std::move(quarter)};
+}
+
+InfluenceKernel love_kernel(const Grid& grid, double plane_strain_modulus, int threads) {
+  return wrap_even_kernel(love_kernel_quarter(grid, plane_strain_modulus, threads));
 }
 
 }  // namespace coatfft

@@ -30,10 +30,29 @@ class InfluenceKernel {
   Field wrapped_;
 };
 
+/// A kernel even in x and in y, K(-di, dj) = K(di, -dj) = K(di, dj) (Love's, and every radial
+/// kernel on a symmetric cell), stored as its quarter di, dj >= 0: `quarter` has shape
+/// (nx + 1, ny + 1) and quarter(di, dj) = K(di, dj); the entries di = nx and dj = ny are never used
+/// by the convolution (0 by convention). A quarter of the (2nx, 2ny) wrap-around array, and
+/// DcfftOperator transforms it directly (a DCT-I of the quarter is the kernel's spectrum).
+struct EvenInfluenceKernel {
+  Grid grid;
+  Field quarter;
+};
+
+/// The wrap-around form of an even kernel (for DirectOperator, or any consumer of
+/// InfluenceKernel). Throws InvalidArgument unless the quarter has shape (nx + 1, ny + 1).
+InfluenceKernel wrap_even_kernel(const EvenInfluenceKernel& kernel);
+
 /// Love's coefficients for a homogeneous half-space of plane-strain modulus E* [Pa]:
 /// K(di, dj) = love_influence(di dx, dj dy, dx, dy) / E* (theory.md 1.5). Throws
 /// InvalidArgument unless E* is finite and > 0. `threads` (>= 1) threads share the rows; the
 /// result does not depend on it.
 InfluenceKernel love_kernel(const Grid& grid, double plane_strain_modulus, int threads = 1);
+
+/// The same coefficients as an EvenInfluenceKernel (what DcfftOperator needs: no (2nx, 2ny)
+/// array is formed, a quarter of the memory and of the page faults).
+EvenInfluenceKernel love_kernel_quarter(const Grid& grid, double plane_strain_modulus,
+                                        int threads = 1);
 
 }  // namespace coatfft

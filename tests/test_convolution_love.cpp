@@ -11,10 +11,13 @@
 #include <numbers>
 #include <vector>
 
+#include "convolution/dcfft_operator.hpp"
+#include "convolution/direct_operator.hpp"
 #include "convolution/influence_kernel.hpp"
 #include "convolution/love_influence.hpp"
 #include "core/error.hpp"
 #include "core/grid.hpp"
+#include "core/norms.hpp"
 
 using coatfft::love_influence;
 
@@ -267,4 +270,50 @@ TEST_CASE("love_influence_row equals love_influence along a row through every ru
   const auto three = coatfft::love_kernel(grid, 2e11, 3);
   CHECK((one.wrapped() == three.wrapped()).all());
   CHECK_THROWS_AS(coatfft::love_kernel(grid, 2e11, 0), coatfft::InvalidArgument);
+}
+
+TEST_CASE("DcfftOperator from Love's quarter equals the wrap-around route and direct summation",
+          "[convolution][love]") {
+  // love_kernel_quarter feeds DC-FFT without the (2nx, 2ny) array. References: the same
+  // coefficients through the wrap-around route (love_kernel), and the O(N^4) direct sum of
+  // them, on odd, even, non-square grids with dx != dy.
+  struct Shape {
+    std::ptrdiff_t nx, ny;
+    double lx, ly;
+  };
+  for (const Shape sh : {Shape{1, 1, 1e-3, 1e-3}, Shape{1, 7, 1e-3, 2e-3}, Shape{7, 1, 3e-3, 1e-3},
+                         Shape{31, 33, 2e-3, 2e-3}, Shape{40, 24, 2e-3, 3e-3}}) {
+    INFO(sh.nx << " x " << sh.ny);
+    const coatfft::Grid g(sh.nx, sh.ny, sh.lx, sh.ly);
+    coatfft::Field p(sh.nx, sh.ny);
+    for (std::ptrdiff_t j = 0; j < sh.ny; ++j)
+      for (std::ptrdiff_t i = 0; i < sh.nx; ++i)
+        p(i, j) = 1e6 * (1.0 + std::sin(3.0 * i + 7.0 * j));
+    const coatfft::EvenInfluenceKernel quarter = coatfft::love_kernel_quarter(g, 1.1e11, 2);
+    REQUIRE(quarter.quarter.rows() == sh.nx + 1);
+    REQUIRE(quarter.quarter.cols() == sh.ny + 1);
+    const coatfft::InfluenceKernel wrapped = coatfft::love_kernel(g, 1.1e11);
+    // The quarter is the wrapped array's corner, bit for bit (threads do not change it).
+    for (std::ptrdiff_t dj = 0; dj < sh.ny; ++dj)
+      for (std::ptrdiff_t di = 0; di < sh.nx; ++di)
+        REQUIRE(quarter.quarter(di, dj) == wrapped.at(di, dj));
+    coatfft::DcfftOperator from_quarter(quarter);
+    coatfft::DcfftOperator from_wrapped(wrapped);
+    coatfft::DirectOperator direct(coatfft::wrap_even_kernel(quarter));
+    CHECK(from_quarter.even_kernel());
+    const coatfft::Field u = from_quarter.apply(p);
+    CHECK(coatfft::rel_linf(u, from_wrapped.apply(p)) < 1e-13);
+    CHECK(coatfft::rel_linf(u, direct.apply(p)) < 1e-12);
+  }
+  const coatfft::Grid g(10, 8, 1e-3, 1e-3);
+  CHECK_THROWS_WITH(
+      coatfft::DcfftOperator(coatfft::EvenInfluenceKernel{g, coatfft::Field::Ones(10, 8)}),
+      Catch::Contains("shape (10, 8)"));
+  coatfft::Field bad = coatfft::Field::Ones(11, 9);
+  bad(2, 2) = NAN;
+  CHECK_THROWS_WITH(coatfft::DcfftOperator(coatfft::EvenInfluenceKernel{g, bad}),
+                    Catch::Contains("not finite"));
+  CHECK_THROWS_WITH(
+      coatfft::wrap_even_kernel(coatfft::EvenInfluenceKernel{g, coatfft::Field::Ones(3, 3)}),
+      Catch::Contains("shape (3, 3)"));
 }
