@@ -274,7 +274,7 @@ int main(int argc, char** argv) {
     for (const Row& r : rows) body << csv(r) << '\n';
     std::ostringstream footer;
     footer << "# peak_rss_MB_dcfft_only_" << max_n << " = " << child_peak_rss_mb(argv[0], max_n)
-           << "   (child process: love_kernel + DcfftOperator + p + u, FFTW_MEASURE)\n";
+           << "   (child process: love_kernel_quarter + DcfftOperator + p + u, FFTW_MEASURE)\n";
     footer << "# peak_rss_MB_this_run = " << coatfft::bench::peak_rss_mb()
            << "   (includes the bare pipeline)\n";
     std::cout << footer.str();
