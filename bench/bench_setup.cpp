@@ -100,7 +100,7 @@ Setup run_setup(const std::string& method, const Body& body, const coatfft::Grid
     SplitKernelOptions o;
     o.threads = threads;
     auto t = Clock::now();
-    const InfluenceKernel k = split_frf_kernel(grid, *body.frf, o);
+    const EvenInfluenceKernel k = split_frf_kernel_quarter(grid, *body.frf, o);
     s.kernel_s = seconds_since(t);
     t = Clock::now();
     s.op = std::make_unique<DcfftOperator>(k, Planning::estimate, threads);

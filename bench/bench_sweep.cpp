@@ -155,7 +155,7 @@ std::unique_ptr<coatfft::SurfaceOperator> build_operator(const RowSpec& row,
   }
   if (row.method != "frf-split")
     throw coatfft::InvalidArgument("bench_sweep: unknown method '" + row.method + "'");
-  const coatfft::InfluenceKernel kernel = coatfft::split_frf_kernel(grid, *frf);
+  const coatfft::EvenInfluenceKernel kernel = coatfft::split_frf_kernel_quarter(grid, *frf);
   coeff_s = seconds_since(t0);
   return std::make_unique<coatfft::DcfftOperator>(kernel, planning, threads);
 }

@@ -67,7 +67,8 @@ BuiltOperator operator_from_scene(const Scene& scene) {
       SplitKernelReport report;
       SplitKernelOptions options;
       options.threads = method.threads;
-      const InfluenceKernel kernel = split_frf_kernel(scene.grid, *frf, options, &report);
+      const EvenInfluenceKernel kernel =
+          split_frf_kernel_quarter(scene.grid, *frf, options, &report);
       built.report["split_beta"] = report.beta;
       built.report["split_seconds"] = report.seconds;
       built.op = std::make_unique<DcfftOperator>(kernel, planning, method.threads);

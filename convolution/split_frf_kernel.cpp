@@ -370,8 +370,9 @@ double sinc_pi(double x) {
 
 }  // namespace
 
-InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
-                                 const SplitKernelOptions& options, SplitKernelReport* report) {
+EvenInfluenceKernel split_frf_kernel_quarter(const Grid& grid, const Frf& frf,
+                                             const SplitKernelOptions& options,
+                                             SplitKernelReport* report) {
   const auto t_start = std::chrono::steady_clock::now();
   const auto since = [](std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
@@ -425,21 +426,18 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
   // 512x smaller than K(0,0)); coarser than love_influence's rules (exact to rounding, docs in
   // love_influence.cpp), by the tolerance of this kernel.
   const double love_E_star = 2.0 / c_inf;
-  // The coefficients for di, dj >= 0 are computed in place in the corner of the wrap-around
-  // array (column-major, columns of 2 nx) and mirrored at the end: no second array (its page
-  // faults and copy cost ~5 ms at 1024^2).
-  const std::ptrdiff_t mx = 2 * nx;
-  const std::ptrdiff_t my = 2 * ny;
-  Field wrapped(mx, my);
-  const auto quarter = [&](std::ptrdiff_t i, std::ptrdiff_t j) -> double& { return wrapped(i, j); };
-  // Scratch space for the long part's point values and the short part's fold: the columns
-  // ny + 1 .. 2 ny - 1 of the wrap-around array, which only the final mirroring writes. First
-  // touches of fresh memory cost ~0.6 ms per MiB on the development VM (the 32 MiB array alone
-  // 20 ms at 1024^2): two more 8 MiB arrays were ~10 ms.
+  // The kernel is even in x and y: only its quarter di, dj >= 0 is computed and returned
+  // (EvenInfluenceKernel; DcfftOperator transforms it directly, and the (2nx, 2ny) wrap-around
+  // array, 32 MiB at 1024^2, is never formed). First touches of fresh memory cost ~0.6 ms per
+  // MiB on the development VM, so the long part's point values and the short part's fold share
+  // one scratch buffer (they are used one after the other).
+  Field quarter_field(nx + 1, ny + 1);
+  const auto quarter = [&](std::ptrdiff_t i, std::ptrdiff_t j) -> double& {
+    return quarter_field(i, j);
+  };
   std::vector<double> spare;
   const auto scratch = [&](std::ptrdiff_t n) -> double* {
-    if (ny > 1 && n <= mx * (ny - 1)) return &wrapped(0, ny + 1);
-    spare.resize(static_cast<std::size_t>(n));
+    if (spare.size() < static_cast<std::size_t>(n)) spare.resize(static_cast<std::size_t>(n));
     return spare.data();
   };
   const double near_r = 32.0 * d_max;  // closed forms inside, smooth over a cell outside
@@ -855,20 +853,17 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
 
   if (!ab_done) love_and_exponential(false);
 
-  // Mirror the quarter (the split kernel is even in x and y) into the rest of the wrap-around
-  // layout, each entry written once (no zero fill first, as love_kernel): column dj is mirrored
-  // within itself (slot 2nx - di) and copied to column 2ny - dj; slots nx and ny are the unused
-  // zeros.
-  parallel_for(ny, threads, [&](std::ptrdiff_t dj) {
-    double* col = &wrapped(0, dj);
-    col[nx] = 0.0;
-    for (std::ptrdiff_t di = 1; di < nx; ++di) col[mx - di] = col[di];
-    if (dj > 0) std::copy_n(col, mx, &wrapped(0, my - dj));
-  });
-  wrapped.col(ny).setZero();
+  // The offsets nx and ny are never used by the convolution: 0 by convention.
+  quarter_field.row(nx).setZero();
+  quarter_field.col(ny).setZero();
   rep.seconds = since(t_start);
   if (report != nullptr) *report = rep;
-  return InfluenceKernel(grid, std::move(wrapped));
+  return {grid, std::move(quarter_field)};
+}
+
+InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
+                                 const SplitKernelOptions& options, SplitKernelReport* report) {
+  return wrap_even_kernel(split_frf_kernel_quarter(grid, frf, options, report));
 }
 
 }  // namespace coatfft

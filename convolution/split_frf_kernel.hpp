@@ -76,6 +76,12 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
                                  const SplitKernelOptions& options = {},
                                  SplitKernelReport* report = nullptr);
 
+/// The same coefficients as an EvenInfluenceKernel (the split kernel is even in x and y): what
+/// DcfftOperator needs, without the (2nx, 2ny) array (a quarter of the memory and page faults).
+EvenInfluenceKernel split_frf_kernel_quarter(const Grid& grid, const Frf& frf,
+                                             const SplitKernelOptions& options = {},
+                                             SplitKernelReport* report = nullptr);
+
 namespace detail {
 /// \iint over the dx x dy rectangle centred at the origin of 1/sqrt((x - x')^2 + (y - y')^2 +
 /// beta^2) dx' dy' [m], beta > 0 [m]: the 4-corner sum of F(X, Y) = X asinh(Y/sqrt(X^2 + beta^2))
