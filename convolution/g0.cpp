@@ -1,15 +1,14 @@
 #include "convolution/g0.hpp"
 
 #include <algorithm>
-#include <boost/math/quadrature/gauss.hpp>
-#include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <chrono>
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <numbers>
-#include <queue>
-#include <vector>
 
 #include "core/error.hpp"
+#include "core/gsl_quadrature.hpp"
 
 namespace coatfft {
 namespace {
@@ -21,56 +20,12 @@ struct Estimate {
   double error = 0.0;
 };
 
-// Globally adaptive quadrature (QUADPACK QAG strategy): keep a heap of panels, bisect the one
-// with the largest error estimate until the summed estimate is below max(abs_tol, rel_tol |Q|)
-// or `max_panels` is reached. The panel rule is Boost's Gauss-Kronrod (error |K - G|). Boost's own
-// adaptive driver splits its tolerance in half per level, so with the absolute tolerance needed
-// here (see compute_g0) it could not stop early on a remainder that is pure rounding noise.
-template <unsigned Points, typename F>
-Estimate adaptive_gauss_kronrod(const F& f, double a, double b, double abs_tol, double rel_tol,
-                                int max_panels) {
-  using Rule = boost::math::quadrature::gauss_kronrod<double, Points>;
-  struct Panel {
-    double a, b, value, error;
-    bool operator<(const Panel& o) const { return error < o.error; }
-  };
-  auto make = [&](double lo, double hi) {
-    double err = 0.0;
-    const double v = Rule::integrate(f, lo, hi, 0, 0.0, &err);
-    return Panel{lo, hi, v, err};
-  };
-  std::priority_queue<Panel> heap;
-  const double min_width = 1e-15 * (b - a);
-  Estimate total;
-  const Panel first = make(a, b);
-  heap.push(first);
-  total.value = first.value;
-  total.error = first.error;
-  int panels = 1;
-  while (panels < max_panels && total.error > std::max(abs_tol, rel_tol * std::abs(total.value))) {
-    const Panel worst = heap.top();
-    // Panels narrower than 1e-15 of the interval are not split: below that the nodes of a panel
-    // touching a singular end point round onto it (H(0) = inf), and no tolerance a caller can
-    // meet in double precision needs them.
-    if (worst.b - worst.a < min_width) break;
-    heap.pop();
-    const double mid = 0.5 * (worst.a + worst.b);
-    const Panel left = make(worst.a, mid), right = make(mid, worst.b);
-    total.value += left.value + right.value - worst.value;
-    total.error += left.error + right.error - worst.error;
-    heap.push(left);
-    heap.push(right);
-    ++panels;
-  }
-  // Re-sum to shed the rounding of the running updates.
-  total.value = 0.0;
-  total.error = 0.0;
-  while (!heap.empty()) {
-    total.value += heap.top().value;
-    total.error += heap.top().error;
-    heap.pop();
-  }
-  return total;
+// The QAG subdivision limit of every integral below: far more than any FRF of frf/ needs (a few
+// tens of panels); when it is reached, GSL's estimate of the error is reported, not hidden.
+constexpr std::size_t max_intervals = 200;
+
+Estimate to_estimate(const GslIntegral& r) {
+  return {r.value, r.error};
 }
 
 // \iint_cell (H(|k|) - C0/|k|) dk for the cell [-X, X] x [-Y, Y]. For a radial integrand,
@@ -84,23 +39,27 @@ Estimate remainder_integral(const Frf& frf, double X, double Y, double abs_tol) 
   const double c0 = frf.c0();
   const double m = std::min(X, Y), M = std::max(X, Y), D = std::hypot(X, Y);
   auto s = [&](double rho) { return rho * frf(rho) - c0; };
-  constexpr int max_panels = 200;
+  // Each piece to a third of the absolute tolerance (QAG, 31-point Gauss-Kronrod): the remainder
+  // can be ~0 (homogeneous body: pure rounding noise), so no relative tolerance is asked.
+  const GslWorkspace ws = make_gsl_workspace(max_intervals);
+  const auto qag = [&](const std::function<double(double)>& f, double lo, double hi) {
+    return to_estimate(gsl_qag(f, lo, hi, abs_tol / 3.0, 0.0, GSL_INTEG_GAUSS31, ws.get()));
+  };
   // Piece A: rho in [0, m], full circle.
-  Estimate a = adaptive_gauss_kronrod<31>([&](double rho) { return 2.0 * pi * s(rho); }, 0.0, m,
-                                          abs_tol / 3.0, 0.0, max_panels);
+  Estimate a = qag([&](double rho) { return 2.0 * pi * s(rho); }, 0.0, m);
   // Piece B: rho in [m, M], circle cut by the near sides only.
   Estimate b;
   if (M > m) {
-    b = adaptive_gauss_kronrod<31>(
+    b = qag(
         [&](double phi) {
           const double c = std::cos(phi);
           const double rho = m / c;
           return s(rho) * (2.0 * pi - 4.0 * phi) * m * std::sin(phi) / (c * c);
         },
-        0.0, std::acos(m / M), abs_tol / 3.0, 0.0, max_panels);
+        0.0, std::acos(m / M));
   }
   // Piece C: rho in [M, D], cut by all four sides.
-  Estimate c = adaptive_gauss_kronrod<31>(
+  Estimate c = qag(
       [&](double phi) {
         const double cs = std::cos(phi);
         const double rho = M / cs;
@@ -108,87 +67,38 @@ Estimate remainder_integral(const Frf& frf, double X, double Y, double abs_tol) 
         const double w = std::max(2.0 * pi - 4.0 * phi - 4.0 * other, 0.0);
         return s(rho) * w * M * std::sin(phi) / (cs * cs);
       },
-      0.0, std::acos(M / D), abs_tol / 3.0, 0.0, max_panels);
+      0.0, std::acos(M / D));
   return {a.value + b.value + c.value, a.error + b.error + c.error};
 }
 
-// A 15 x 15 tensor Gauss-Kronrod rule with its embedded 7 x 7 Gauss rule, nodes and weights from
-// Boost.Math on [-1, 1]: the panel rule of the 2-D adaptive quadrature below.
-struct TensorGaussKronrod {
-  std::vector<double> x, wk, wg;  // 15 nodes, Kronrod weights, Gauss weights (0 off the Gauss set)
-  TensorGaussKronrod() {
-    using K = boost::math::quadrature::gauss_kronrod<double, 15>;
-    using G = boost::math::quadrature::gauss<double, 7>;
-    const auto& ka = K::abscissa();
-    const auto& kw = K::weights();
-    const auto& ga = G::abscissa();
-    const auto& gw = G::weights();
-    for (std::size_t i = 0; i < ka.size(); ++i)
-      for (const double sign : {-1.0, 1.0}) {
-        if (i == 0 && sign > 0) continue;  // the centre node appears once
-        double g = 0.0;
-        for (std::size_t j = 0; j < ga.size(); ++j)
-          if (std::abs(ga[j] - ka[i]) < 1e-15) g = gw[j];
-        x.push_back(sign * ka[i]);
-        wk.push_back(kw[i]);
-        wg.push_back(g);
-      }
-  }
-};
-
-// Plain adaptive 2-D quadrature of H over the quadrant [0, X] x [0, Y] (the cell is 4 such
-// quadrants), globally adaptive over rectangles like Matlab's quad2d used by the seed: a heap of
-// rectangles, each integrated by the 15 x 15 Gauss-Kronrod tensor rule with error |K - G|; the
-// worst one is split in four until the summed error is below tol |Q|. The 1/k singularity sits at
-// the corner (0, 0), so refinement piles up there: about log2(1/tol) levels of ever smaller
-// rectangles, and the error estimate is only as good as the rule's on a singular integrand.
+// Plain adaptive quadrature of H over the quadrant [0, X] x [0, Y] (the cell is 4 such
+// quadrants), the seed's approach, as iterated 1-D integrals by GSL's QAGS:
+// I = \int_0^Y F(ky) dky with F(ky) = \int_0^X H(hypot(kx, ky)) dkx. For ky > 0 the inner
+// integrand is bounded (by ~C0/ky) but peaked at kx = 0; F has a logarithmic singularity at ky = 0
+// (F ~ C0 asinh(X/ky)), which QAGS's extrapolation is made for. Neither rule evaluates an end
+// point, so H(0) = inf is never called. The inner integrals get a tenth of the relative
+// tolerance, so that their errors do not dominate the outer one; the reported error is the outer
+// estimate plus the inner estimates integrated over ky (accumulated at the outer rule's nodes).
 Estimate quadrature_integral(const Frf& frf, double X, double Y, double tol) {
-  static const TensorGaussKronrod rule;
-  constexpr int max_rectangles = 20000;
-  struct Rect {
-    double x0, x1, y0, y1, value, error;
-    bool operator<(const Rect& o) const { return error < o.error; }
+  const GslWorkspace outer_ws = make_gsl_workspace(max_intervals);
+  const GslWorkspace inner_ws = make_gsl_workspace(max_intervals);
+  double inner_error_sum = 0.0;  // sum over outer nodes of |inner error|, for the estimate
+  double inner_calls = 0.0;
+  // QAGS refuses relative tolerances below 50 machine epsilons (GSL_EBADTOL): a tighter request is
+  // met as far as double precision allows, and the error estimate says how far that was.
+  const double floor = 50.0 * std::numeric_limits<double>::epsilon() * (1.0 + 1e-6);
+  const double outer_tol = std::max(tol, floor), inner_tol = std::max(0.1 * tol, floor);
+  const std::function<double(double)> inner_integral = [&](double ky) {
+    const GslIntegral r = gsl_qags([&](double kx) { return frf(std::hypot(kx, ky)); }, 0.0, X, 0.0,
+                                   inner_tol, inner_ws.get());
+    inner_error_sum += r.error;
+    inner_calls += 1.0;
+    return r.value;
   };
-  auto make = [&](double x0, double x1, double y0, double y1) {
-    const double cx = 0.5 * (x0 + x1), hx = 0.5 * (x1 - x0);
-    const double cy = 0.5 * (y0 + y1), hy = 0.5 * (y1 - y0);
-    double k = 0.0, g = 0.0;
-    for (std::size_t i = 0; i < rule.x.size(); ++i)
-      for (std::size_t j = 0; j < rule.x.size(); ++j) {
-        const double f = frf(std::hypot(cx + hx * rule.x[i], cy + hy * rule.x[j]));
-        k += rule.wk[i] * rule.wk[j] * f;
-        g += rule.wg[i] * rule.wg[j] * f;
-      }
-    return Rect{x0, x1, y0, y1, hx * hy * k, hx * hy * std::abs(k - g)};
-  };
-  std::priority_queue<Rect> heap;
-  heap.push(make(0.0, X, 0.0, Y));
-  Estimate total{heap.top().value, heap.top().error};
-  int count = 1;
-  const double min_width = 1e-15 * std::min(X, Y);
-  while (count < max_rectangles && total.error > tol * std::abs(total.value)) {
-    const Rect r = heap.top();
-    // Below 1e-15 of the cell the nodes of the corner rectangle round onto k = 0 (H = inf).
-    if (r.x1 - r.x0 < min_width || r.y1 - r.y0 < min_width) break;
-    heap.pop();
-    const double xm = 0.5 * (r.x0 + r.x1), ym = 0.5 * (r.y0 + r.y1);
-    total.value -= r.value;
-    total.error -= r.error;
-    for (const Rect& c : {make(r.x0, xm, r.y0, ym), make(xm, r.x1, r.y0, ym),
-                          make(r.x0, xm, ym, r.y1), make(xm, r.x1, ym, r.y1)}) {
-      heap.push(c);
-      total.value += c.value;
-      total.error += c.error;
-    }
-    count += 3;
-  }
-  total = Estimate{};
-  while (!heap.empty()) {  // re-sum to shed the rounding of the running updates
-    total.value += heap.top().value;
-    total.error += heap.top().error;
-    heap.pop();
-  }
-  return total;
+  const GslIntegral outer = gsl_qags(inner_integral, 0.0, Y, 0.0, outer_tol, outer_ws.get());
+  // The inner errors, averaged over the outer nodes, integrated over [0, Y].
+  const double inner_error = inner_calls > 0 ? Y * inner_error_sum / inner_calls : 0.0;
+  return {outer.value, outer.error + inner_error};
 }
 
 }  // namespace
@@ -199,6 +109,8 @@ std::string_view to_string(G0Method method) {
       return "regularized";
     case G0Method::quadrature:
       return "quadrature";
+    case G0Method::omitted:
+      return "omitted";
   }
   return "unknown";
 }
@@ -222,6 +134,7 @@ G0Result compute_g0(const Frf& frf, double dkx, double dky, G0Method method, dou
   const double area = dkx * dky;
   const double X = 0.5 * dkx, Y = 0.5 * dky;
   G0Result result{0.0, method, 0.0, 0.0};
+  if (method == G0Method::omitted) return result;
   if (method == G0Method::regularized) {
     const double singular = frf.c0() * mean_inverse_wavenumber(dkx, dky);
     // The remainder is judged against the whole g(0): its own size can be ~0 (homogeneous body,

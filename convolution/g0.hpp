@@ -15,14 +15,18 @@ enum class G0Method {
   /// H(k) - C0/k, integrated in polar form where it is smooth (theory.md 3.2-3.3). Fast and
   /// accurate to ~1e-14 relative.
   regularized,
-  /// Plain adaptive quadrature of the singular H over the cell (the seed's quad2d approach):
-  /// globally adaptive 15 x 15 Gauss-Kronrod on rectangles of a quadrant, whose corner holds the
-  /// 1/k singularity. Slower, accurate to about its tolerance (measured: ~tol/8, from below);
-  /// kept to reproduce the seed's Figure 3(b).
+  /// Plain adaptive quadrature of the singular H over the cell (the seed's quad2d approach), by
+  /// GSL: the 2-D integral over a quadrant, whose corner holds the 1/k singularity, iterated as
+  /// 1-D QAGS integrals (Matlab's integral2 'iterated' method; GSL has no 2-D adaptive rule).
+  /// Slower, accurate to about its tolerance; kept to reproduce the seed's Figure 3(b).
   quadrature,
+  /// Not computed: g(0) = 0. A g(0) error only shifts the displacement by a constant
+  /// (dg * load / period area; seed Figure 3(b)), so where only relative displacements matter —
+  /// a load-controlled contact, whose approach then goes unreported — g(0) is not needed at all.
+  omitted,
 };
 
-/// "regularized" or "quadrature".
+/// "regularized", "quadrature" or "omitted".
 std::string_view to_string(G0Method method);
 
 /// g(0) and how it was obtained.
@@ -43,7 +47,10 @@ double mean_inverse_wavenumber(double dkx, double dky);
 /// g(0) for `frf` on a frequency lattice of spacings dkx = 2 pi / period_x and
 /// dky = 2 pi / period_y [rad/m]. `tolerance` (> 0, finite) is the requested accuracy relative to
 /// g(0) (for `regularized`, relative to its closed-form part C0 mean(1/|k|), the same order).
-/// Throws InvalidArgument on bad spacings or tolerance, or if H is not finite on the cell.
+/// `omitted` returns {0, omitted, 0, 0} without evaluating H. If the quadrature cannot reach the
+/// tolerance (GSL's workspace full, or rounding), the result carries GSL's error estimate in
+/// `estimated_error`. Throws InvalidArgument on bad spacings or tolerance, or if g(0) is not
+/// finite (H not finite on the cell).
 G0Result compute_g0(const Frf& frf, double dkx, double dky, G0Method method,
                     double tolerance = default_g0_tolerance);
 

@@ -1,5 +1,7 @@
 #pragma once
 // Errors of coatfft. Library code throws; only the CLI's main turns exceptions into exit codes.
+#include <charconv>
+#include <ostream>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -19,11 +21,22 @@ class InvalidArgument : public Error {
 };
 
 namespace detail {
+// Doubles in messages are written in their shortest round-trip form (std::to_chars), so a value
+// reads as the user wrote it ("nu = 0.6", "1e-06") and still identifies the exact double.
+inline void put(std::ostream& os, double value) {
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  os.write(buffer, result.ptr - buffer);
+}
+template <typename T>
+void put(std::ostream& os, const T& value) {
+  os << value;
+}
+
 template <typename... Parts>
 std::string concat(const Parts&... parts) {
   std::ostringstream os;
-  os.precision(17);
-  (os << ... << parts);
+  (put(os, parts), ...);
   return os.str();
 }
 }  // namespace detail

@@ -19,10 +19,11 @@ struct CatalogEntry {
 constexpr std::array kCatalog{
     // AISI 52100 bearing steel: ASM Handbook Vol. 1 (1990), E = 210 GPa, nu = 0.30.
     CatalogEntry{"steel", 210e9, 0.30},
-    // WC-6%Co cemented carbide: ASM Handbook Vol. 2; Kennametal data, E ~ 600 GPa, nu = 0.22.
+    // WC-6%Co cemented carbide: ASM Handbook Vol. 2 (1990), article "Cemented Carbides":
+    // E = 600-630 GPa for 6 % Co, nu = 0.22.
     CatalogEntry{"tungsten_carbide", 600e9, 0.22},
-    // TiN PVD coating: Holmberg & Matthews, Coatings Tribology, 2nd ed. (2009), Table 2.x,
-    // E = 250-600 GPa; nanoindentation mean ~400 GPa, nu = 0.25.
+    // TiN PVD coating: Holmberg & Matthews, Coatings Tribology, 2nd ed. (2009), ch. 2 (property
+    // ranges of PVD TiN: E = 250-600 GPa); 400 GPa is a typical nanoindentation value, nu = 0.25.
     CatalogEntry{"titanium_nitride", 400e9, 0.25},
     // Hydrogenated diamond-like carbon (a-C:H): Robertson, Mater. Sci. Eng. R 37 (2002) 129,
     // E = 100-300 GPa; mid value 200 GPa, nu = 0.22.

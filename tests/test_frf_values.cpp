@@ -1,5 +1,6 @@
-// Coated FRFs against the 40-digit values of /work/shared/frf_values.csv (one coating of thickness
-// h = 1 on a substrate, k = t; columns C = H_zz E1* k/2, LLn = H_LL mu1 k/(1 - nu1),
+// Coated FRFs against the 40-digit values of tests/data/frf_values.csv (a copy of the project's
+// shared/frf_values.csv, kept in the repository so that a clone runs its tests alone; one coating
+// of thickness h = 1 on a substrate, k = t; columns C = H_zz E1* k/2, LLn = H_LL mu1 k/(1 - nu1),
 // ZLn = 2 H_ZL mu1 k). The file is read at test time; the values were produced from the
 // double-rounded inputs (E, nu, t as doubles), which we confirmed with an independent 50-digit
 // global-matrix solve (agreement <= 6e-17), so the doubles parsed here are the right inputs.
@@ -33,9 +34,9 @@ struct Row {
 
 std::vector<Row> read_rows() {
   const std::filesystem::path path =
-      std::filesystem::path(COATFFT_SOURCE_DIR) / ".." / "shared" / "frf_values.csv";
+      std::filesystem::path(COATFFT_SOURCE_DIR) / "tests" / "data" / "frf_values.csv";
   std::ifstream in(path);
-  if (!in) FAIL("cannot open " << path.string() << " (expected beside the repository, in shared/)");
+  if (!in) FAIL("cannot open " << path.string());
   std::string line;
   // The file has CRLF line endings; drop the '\r' so that the last column parses cleanly.
   const auto next_line = [&in, &line]() {

@@ -56,8 +56,7 @@ TEST_CASE("Test-local coated FRFs match the 40-digit values of frf_values.csv", 
   // Guards the test doubles used below: (C1)/(C2) in double precision agree with the 40-digit
   // solver to ~1e-14 except where theory.md 2.2 documents cancellation (alpha beta -> 1, small t),
   // which the stiffest sets reach; 1e-11 covers all rows (theory.md 2.6 (0): 1.9e-12 worst).
-  std::ifstream in(std::string(COATFFT_SOURCE_DIR) + "/../shared/frf_values.csv");
-  if (!in) in.open("/work/shared/frf_values.csv");
+  std::ifstream in(std::string(COATFFT_SOURCE_DIR) + "/tests/data/frf_values.csv");
   REQUIRE(in.good());
   std::string line;
   std::getline(in, line);
@@ -152,6 +151,44 @@ TEST_CASE("compute_g0 refuses bad spacings and tolerances", "[g0][bad_input]") {
   CHECK_THROWS_AS(mean_inverse_wavenumber(NAN, 1.0), InvalidArgument);
   CHECK(to_string(G0Method::regularized) == "regularized");
   CHECK(to_string(G0Method::quadrature) == "quadrature");
+  CHECK(to_string(G0Method::omitted) == "omitted");
+}
+
+namespace {
+// An FRF that counts its evaluations (H = C0/k, thread-unsafe counter: tests only).
+class CountingFrf final : public Frf {
+ public:
+  double operator()(double k) const override {
+    ++calls;
+    return 2.0 / k;
+  }
+  double c0() const override { return 2.0; }
+  double c_inf() const override { return 2.0; }
+  std::string name() const override { return "counting"; }
+  mutable long calls = 0;
+};
+}  // namespace
+
+TEST_CASE("g(0) omitted: zero, and the FRF is never evaluated", "[g0]") {
+  const CountingFrf frf;
+  const G0Result g = compute_g0(frf, 0.3, 0.7, G0Method::omitted);
+  CHECK(g.value == 0.0);
+  CHECK(g.method == G0Method::omitted);
+  CHECK(g.estimated_error == 0.0);
+  CHECK(frf.calls == 0);
+  // The bad-argument checks still apply.
+  CHECK_THROWS_AS(compute_g0(frf, 0.0, 0.7, G0Method::omitted), InvalidArgument);
+}
+
+TEST_CASE("g(0) quadrature below GSL's tolerance floor still reaches double precision", "[g0]") {
+  // GSL's QAGS refuses relative tolerances below 50 eps (~1.1e-14); compute_g0 clamps the
+  // request there instead of failing, so tol = 1e-15 must give the closed form (3.2) to ~1e-14
+  // with an honest (>= the actual error) estimate.
+  const InverseKFrf frf(1.0);
+  const double closed = frf.c0() * mean_inverse_wavenumber(0.8, 0.6);
+  const G0Result q = compute_g0(frf, 0.8, 0.6, G0Method::quadrature, 1e-15);
+  CHECK(q.value == Approx(closed).epsilon(1e-13));
+  CHECK(q.estimated_error >= std::abs(q.value - closed));
 }
 
 TEST_CASE("g(0) of the library FRFs (frf/) agrees with the polar-sector reference", "[g0]") {

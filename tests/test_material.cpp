@@ -17,7 +17,7 @@ TEST_CASE("Material derived moduli follow their definitions", "[material]") {
 
 TEST_CASE("Material refuses bad values naming them", "[material][bad_input]") {
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  CHECK_THROWS_WITH(Material(-1e9, 0.3), Catch::Contains("E = -1000000000"));
+  CHECK_THROWS_WITH(Material(-1e9, 0.3), Catch::Contains("E = -1e+09"));
   CHECK_THROWS_AS(Material(0.0, 0.3), InvalidArgument);
   CHECK_THROWS_AS(Material(nan, 0.3), InvalidArgument);
   CHECK_THROWS_WITH(Material(1e9, 0.5), Catch::Contains("nu = 0.5"));

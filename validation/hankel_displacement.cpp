@@ -9,10 +9,10 @@
 #include <complex>
 #include <functional>
 #include <memory>
-#include <mutex>
 #include <numbers>
 
 #include "core/error.hpp"
+#include "core/gsl_quadrature.hpp"
 #include "validation/hertz.hpp"
 
 namespace coatfft {
@@ -32,41 +32,6 @@ double load_shape(AxisymmetricLoad load, double s) {
   return gsl_sf_bessel_J1(s) / s;
 }
 
-// GSL's default handler aborts; turn it off while we integrate and report failures ourselves.
-// The handler is process-global: a reference count under a mutex lets concurrent calls overlap
-// (the first one in saves the caller's handler, the last one out restores it).
-class GslHandlerOff {
- public:
-  GslHandlerOff() {
-    const std::lock_guard<std::mutex> lock(mutex());
-    if (count()++ == 0) previous() = gsl_set_error_handler_off();
-  }
-  ~GslHandlerOff() {
-    const std::lock_guard<std::mutex> lock(mutex());
-    if (--count() == 0) gsl_set_error_handler(previous());
-  }
-  GslHandlerOff(const GslHandlerOff&) = delete;
-  GslHandlerOff& operator=(const GslHandlerOff&) = delete;
-
- private:
-  static std::mutex& mutex() {
-    static std::mutex m;
-    return m;
-  }
-  static int& count() {
-    static int n = 0;
-    return n;
-  }
-  static gsl_error_handler_t*& previous() {
-    static gsl_error_handler_t* handler = nullptr;
-    return handler;
-  }
-};
-
-struct WorkspaceDeleter {
-  void operator()(gsl_integration_workspace* w) const { gsl_integration_workspace_free(w); }
-};
-using Workspace = std::unique_ptr<gsl_integration_workspace, WorkspaceDeleter>;
 constexpr std::size_t kLimit = 1000;
 
 double call(double x, void* params) {
@@ -76,10 +41,9 @@ double call(double x, void* params) {
 // Adaptive Gauss-Kronrod (21 points) on [lo, hi]; the nodes are interior, so k = 0 is never hit.
 double integrate_panel(const std::function<double(double)>& f, double lo, double hi, double epsabs,
                        double epsrel, gsl_integration_workspace* ws) {
-  gsl_function gf{&call, const_cast<std::function<double(double)>*>(&f)};
-  double result = 0.0, abserr = 0.0;
-  const int status = gsl_integration_qag(&gf, lo, hi, epsabs, epsrel, kLimit, GSL_INTEG_GAUSS21, ws,
-                                         &result, &abserr);
+  const GslIntegral r = gsl_qag(f, lo, hi, epsabs, epsrel, GSL_INTEG_GAUSS21, ws);
+  const int status = r.status;
+  const double result = r.value, abserr = r.error;
   // GSL_EROUND means the requested tolerance is below the attainable rounding: keep the result if
   // its error estimate is still within a generous multiple of the request.
   if (status != GSL_SUCCESS &&
@@ -160,7 +124,7 @@ std::complex<double> j0_amplitude(double rho, double s) {
 // \int_S^inf Re[g(s) e^{i omega s}] ds for a smooth, algebraically decaying g.
 double oscillatory_tail(const std::function<std::complex<double>(double)>& g, double omega,
                         double S, double epsabs) {
-  Workspace ws(gsl_integration_workspace_alloc(kLimit));
+  const GslWorkspace ws = make_gsl_workspace(kLimit);
   double total = 0.0;
   if (omega == 0.0) {
     const std::function<double(double)> f = [&g](double s) { return g(s).real(); };
@@ -177,7 +141,7 @@ double oscillatory_tail(const std::function<std::complex<double>(double)>& g, do
   // Re[g e^{i w s}] = Re g cos(w s) - Im g sin(w s); for w < 0 use |w| and flip the sine.
   const double w = std::abs(omega);
   const double sine_sign = omega > 0 ? -1.0 : 1.0;
-  Workspace cycles(gsl_integration_workspace_alloc(kLimit));
+  const GslWorkspace cycles = make_gsl_workspace(kLimit);
   for (auto kind : {GSL_INTEG_COSINE, GSL_INTEG_SINE}) {
     const std::function<double(double)> f = [&g, kind, sine_sign](double s) {
       return kind == GSL_INTEG_COSINE ? g(s).real() : sine_sign * g(s).imag();
@@ -231,7 +195,7 @@ double hankel_displacement(const Frf& frf, AxisymmetricLoad load, double amplitu
   COATFFT_REQUIRE(rel_tol >= 1e-14 && rel_tol < 1e-2, "hankel_displacement: rel_tol = ", rel_tol,
                   ", but it must lie in [1e-14, 1e-2)");
   const GslHandlerOff handler_off;
-  Workspace ws(gsl_integration_workspace_alloc(kLimit));
+  const GslWorkspace ws = make_gsl_workspace(kLimit);
   const double c_inf = frf.c_inf();
   // u ~ amplitude a C: the dimensionless integrals below are O(max(C0, Cinf)/a) or O(1).
   const double scale = std::max(frf.c0(), c_inf) / a;

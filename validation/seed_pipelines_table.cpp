@@ -214,8 +214,9 @@ int main(int argc, char** argv) try {
        << fmt("%.16e", reg.value)
        << " m/Pa (closed form (3.2): " << fmt("%.16e", frf->c0() * mean_inverse_wavenumber(dk, dk))
        << "), computed in " << fmt("%.1f", reg.seconds * 1e6)
-       << " us. The quadrature (2-D globally adaptive 15 x 15 Gauss-Kronrod over a quadrant, "
-          "singular corner) at tolerance tol: its time, relative g(0) error, its own error "
+       << " us. The quadrature (GSL QAGS iterated over a quadrant, inner integrals to tol/10, the "
+          "1/k singularity at the corner) at tolerance tol: its time, relative g(0) error, its own "
+          "error "
           "estimate, the resulting max error of `spectral` vs the closed form, and the shift of "
           "the field relative to the regularized g(0), mean(u_quad - u_reg) / u(0), next to the "
           "exact prediction dg * sum(p) / (Mx My) / u(0) (the shift is uniform, seed Fig. "
