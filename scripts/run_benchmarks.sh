@@ -3,8 +3,10 @@
 # docs/benchmarks.md (docs/benchmarks.md, "Regenerate everything"):
 #   speed against error (issue 5): bench/results/sweep.csv, bench/results/pareto_<case>.png,
 #   bench/results/seed_figures/*.csv, bench/results/sweep_reference_check.csv,
-#   bench/results/coatfft_run_rss.txt, docs/figures/seed_fig{2,3}_*.png;
-#   with --full also bench/results/dcfft.csv, setup.csv, setup_2048.csv, frf_eval.csv, contact.csv.
+#   bench/results/coatfft_run_rss.txt, docs/figures/seed_fig{2,3}_*.png, and (not with --tiny,
+#   whose sweep has no coated case) docs/validation.md's block coated_convergence (issue 6);
+#   with --full also bench/results/dcfft.csv, setup.csv, setup_2048.csv, frf_eval.csv, contact.csv
+#   and their blocks in docs/benchmarks.md (dcfft_direct: direct summation against DC-FFT).
 #
 # Usage: scripts/run_benchmarks.sh [--full | --quick | --tiny]   (default --full, ~10 min on 2 cores;
 #        --quick and --tiny run the sweep only)
@@ -76,6 +78,11 @@ echo "== plots and tables"
   --markdown "$root/docs/benchmarks.md" \
   --reference-check "$results/sweep_reference_check.csv" --rss "$results/coatfft_run_rss.txt"
 "$python" "$root/scripts/plot_seed_figures.py" "$results/seed_figures" --outdir "$root/docs/figures"
+blocks="$root/scripts/markdown_blocks.py"
+if [ "$mode" != "--tiny" ]; then
+  "$python" "$blocks" "$root/docs/validation.md" coated_convergence "$results/sweep.csv" \
+    --view coated-convergence
+fi
 
 if [ "$mode" = "--full" ]; then
   echo "== DC-FFT against the bare padded FFTW pipeline"
@@ -87,9 +94,9 @@ if [ "$mode" = "--full" ]; then
   "$build/bench/bench_frf" "$results/frf_eval.csv"
   echo "== contact solver"
   "$build/bench/bench_contact" "$results/contact.csv"
-  blocks="$root/scripts/markdown_blocks.py"
   doc=$root/docs/benchmarks.md
   "$python" "$blocks" "$doc" dcfft "$results/dcfft.csv"
+  "$python" "$blocks" "$doc" dcfft_direct "$results/dcfft.csv" --view direct-speedup
   "$python" "$blocks" "$doc" setup "$results/setup.csv"
   "$python" "$blocks" "$doc" setup_2048 "$results/setup_2048.csv"
   "$python" "$blocks" "$doc" frf_eval "$results/frf_eval.csv"

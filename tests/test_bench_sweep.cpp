@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -30,6 +31,15 @@ fs::path scratch_dir(const std::string& name) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
+}
+
+// Runs scripts/SCRIPT_AND_ARGS with Debian's /usr/bin/python3 (numpy, matplotlib; installed by
+// scripts/setup.sh), appending its output to log; returns its exit status.
+int python(const std::string& script_and_args, const fs::path& log) {
+  const std::string command = "/usr/bin/python3 " + std::string(COATFFT_SOURCE_DIR) + "/scripts/" +
+                              script_and_args + " >>" + log.string() + " 2>&1";
+  const int raw = std::system(command.c_str());
+  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
 }
 
 std::string slurp(const fs::path& path) {
@@ -190,13 +200,7 @@ TEST_CASE("plot_pareto.py and markdown_blocks.py fill the docs' generated blocks
            "<!-- END GENERATED -->\nmiddle\n<!-- BEGIN GENERATED t -->\n<!-- END GENERATED t -->\n"
            "after\n";
   }
-  const std::string scripts = std::string(COATFFT_SOURCE_DIR) + "/scripts/";
-  const auto python = [&](const std::string& args) {
-    const std::string command =
-        "/usr/bin/python3 " + scripts + args + " >>" + (dir / "python.txt").string() + " 2>&1";
-    const int raw = std::system(command.c_str());
-    return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  };
+  const auto python = [&](const std::string& args) { return ::python(args, dir / "python.txt"); };
   REQUIRE(python("plot_pareto.py " + csv.string() + " --outdir " + dir.string() + " --markdown " +
                  doc.string()) == 0);
   CHECK(fs::file_size(dir / "pareto_hertz_homogeneous.png") > 1000);
@@ -220,4 +224,81 @@ TEST_CASE("plot_pareto.py and markdown_blocks.py fill the docs' generated blocks
   CHECK(slurp(bare) == "no markers\n");
   CHECK(python("markdown_blocks.py " + doc.string() + " t " + csv.string() + " --columns nope") !=
         0);
+}
+
+// The views of markdown_blocks.py that compute their tables (docs/validation.md's coated
+// convergence table, issue 6; docs/benchmarks.md's direct-vs-DC-FFT table): on a tiny sweep of two
+// coated cases and on a small bench_dcfft CSV they must write the tables with the measured
+// numbers, and refuse a CSV without the rows they need.
+TEST_CASE("markdown_blocks.py renders the coated convergence and direct speed-up tables",
+          "[bench_sweep]") {
+  const fs::path dir = scratch_dir("views");
+  const fs::path log = dir / "python.txt";
+  const fs::path csv = dir / "sweep.csv";
+  REQUIRE(run("--tiny --cases coated_soft_h1,coated_hard_h0.1 --output " + csv.string(),
+              dir / "log.txt") == 0);
+  const fs::path doc = dir / "doc.md";
+  std::ofstream(doc) << "before\n<!-- BEGIN GENERATED coated -->\nold\n<!-- END GENERATED coated "
+                        "-->\nmiddle\n<!-- BEGIN GENERATED direct -->\n<!-- END GENERATED direct "
+                        "-->\nafter\n";
+  REQUIRE(python("markdown_blocks.py " + doc.string() + " coated " + csv.string() +
+                     " --view coated-convergence",
+                 log) == 0);
+
+  // The sweep's own max_err of the coated_soft_h1 frf-split row at N = 32, as the table shows it.
+  std::ifstream in(csv);
+  std::string line;
+  std::string split_32;
+  while (std::getline(in, line))
+    if (line.rfind("coated_soft_h1,frf-split,32,", 0) == 0) {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%.2e", std::stod(split(line)[10]));
+      split_32 = buf;
+    }
+  REQUIRE_FALSE(split_32.empty());
+  std::string text = slurp(doc);
+  INFO(text);
+  CHECK(text.rfind("before\n<!-- BEGIN GENERATED coated -->\n", 0) == 0);
+  CHECK(text.find("\nold\n") == std::string::npos);
+  CHECK(text.find("| case | method | alpha | N = 32 | N = 64 | order (last two N) | alpha x error "
+                  "at largest N |") != std::string::npos);
+  CHECK(text.find("| coated_soft_h1 | frf-split |  | " + split_32 + " | ") != std::string::npos);
+  for (const std::string row :
+       {"| coated_soft_h1 | frf-spectral | 2 | ", "| coated_soft_h1 | frf-dcfft | 4 | ",
+        "| coated_hard_h0.1 | frf-split |  | ", "| coated_hard_h0.1 | frf-dcfft | 2 | "})
+    CHECK(text.find(row) != std::string::npos);
+  CHECK(text.find("- coated_hard_h0.1: bonded coating E_c/E_s = 10.0") != std::string::npos);
+  CHECK(text.find("g(0) by quadrature") != std::string::npos);
+
+  const fs::path dcfft = dir / "dcfft.csv";
+  std::ofstream(dcfft) << "# date = today\n# cpu = cpu\n# compiler = cc\n"
+                          "method,N,threads,plan_ms,apply_ms_min,apply_ms_median,ratio,rel_err_l2,"
+                          "rel_err_inf\n"
+                          "dcfft,256,1,5,1,1.2,0.6,1e-16,6e-16\n"
+                          "direct,32,1,0,0.9,1.0,80,0,0\n"
+                          "dcfft_small,32,1,1,0.012,0.0125,0,1e-15,3.4e-15\n";
+  REQUIRE(python("markdown_blocks.py " + doc.string() + " direct " + dcfft.string() +
+                     " --view direct-speedup",
+                 log) == 0);
+  text = slurp(doc);
+  CHECK(text.find("| 32^2 | 1 | 0.0125 | **80x** | 3.4e-15 |") != std::string::npos);
+  CHECK(text.find("| 256^2") == std::string::npos);
+  CHECK(text.substr(text.size() - 7) == "\nafter\n");
+
+  // Refused, doc untouched: a sweep without coated cases, a dcfft CSV without direct rows, and
+  // --columns with a computed view.
+  const std::string before = slurp(doc);
+  const fs::path homogeneous = dir / "homogeneous.csv";
+  std::ofstream(homogeneous) << "case,method,N,alpha,g0,max_err\nhertz_homogeneous,dcfft,32,0,none,"
+                                "0.0035\n";
+  CHECK(python("markdown_blocks.py " + doc.string() + " coated " + homogeneous.string() +
+                   " --view coated-convergence",
+               log) != 0);
+  CHECK(python("markdown_blocks.py " + doc.string() + " direct " + csv.string() +
+                   " --view direct-speedup",
+               log) != 0);
+  CHECK(python("markdown_blocks.py " + doc.string() + " coated " + csv.string() +
+                   " --view coated-convergence --columns case",
+               log) != 0);
+  CHECK(slurp(doc) == before);
 }
