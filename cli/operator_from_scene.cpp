@@ -17,11 +17,20 @@ namespace coatfft::cli {
 
 namespace {
 
+// An omitted g(0) is no value at all (the operator uses 0 in its place): reported as null.
 nlohmann::json g0_report(const G0Result& g0) {
-  return {{"g0", g0.value},
+  const bool omitted = g0.method == G0Method::omitted;
+  return {{"g0", omitted ? nlohmann::json() : nlohmann::json(g0.value)},
           {"g0_method", std::string(to_string(g0.method))},
           {"g0_seconds", g0.seconds},
-          {"g0_estimated_error", g0.estimated_error}};
+          {"g0_estimated_error", omitted ? nlohmann::json() : nlohmann::json(g0.estimated_error)}};
+}
+
+// g(0) only shifts every displacement by one constant, which a load-controlled contact absorbs
+// in its approach; when that approach is not reported, g(0) is not computed at all.
+G0Method g0_method_for(const Scene& scene) {
+  if (scene.contact && !scene.contact->report_approach) return G0Method::omitted;
+  return scene.method.g0 == "quadrature" ? G0Method::quadrature : G0Method::regularized;
 }
 
 }  // namespace
@@ -29,8 +38,7 @@ nlohmann::json g0_report(const G0Result& g0) {
 BuiltOperator operator_from_scene(const Scene& scene) {
   const MethodSpec& method = scene.method;
   const Planning planning = method.planning == "measure" ? Planning::measure : Planning::estimate;
-  const G0Method g0_method =
-      method.g0 == "quadrature" ? G0Method::quadrature : G0Method::regularized;
+  const G0Method g0_method = g0_method_for(scene);
   if (!method.wisdom.empty()) load_fftw_wisdom(method.wisdom.string());
 
   BuiltOperator built;

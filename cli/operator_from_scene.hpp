@@ -15,6 +15,8 @@ struct BuiltOperator {
 };
 
 /// Throws InvalidArgument when the method cannot handle the body (e.g. Love DC-FFT on a coating).
+/// The FRF pipelines that need g(0) (frf-spectral, frf-dcfft) compute it by [method] g0, except
+/// for a load-controlled contact with report_approach = false: then G0Method::omitted.
 BuiltOperator operator_from_scene(const Scene& scene);
 
 }  // namespace coatfft::cli

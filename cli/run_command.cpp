@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iomanip>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <vector>
 
 #include "cli/npy.hpp"
@@ -13,6 +14,7 @@
 #include "cli/scene.hpp"
 #include "cli/staged_output.hpp"
 #include "contact/contact_solver.hpp"
+#include "contact/indenter.hpp"
 #include "core/error.hpp"
 #include "loads/hertz_pressure.hpp"
 #include "loads/uniform_disk_pressure.hpp"
@@ -170,7 +172,8 @@ RunStatus run_contact(Scene scene, const RunOptions& options) {
   ContactOptions contact_options;
   contact_options.tolerance = spec.tolerance;
   contact_options.max_iterations = spec.max_iterations;
-  contact_options.compute_approach = true;  // summary.json reports the approach
+  // Under load control the approach is the only output that depends on g(0) (docs/contact.md).
+  contact_options.compute_approach = spec.report_approach;
   ContactSolver solver(*built.op, contact_options);
   const auto start = Clock::now();
   const ContactResult result = spec.load ? solver.solve_load(height_field, *spec.load)
@@ -188,10 +191,17 @@ RunStatus run_contact(Scene scene, const RunOptions& options) {
   summary["indenter"] = spec.indenter_name;
   summary["solve_seconds"] = solve_seconds;
   summary["load"] = result.load;
-  summary["approach"] = result.approach ? nlohmann::json(*result.approach) : nlohmann::json();
+  // Keys that do not apply stay in the summary with the value null.
+  const auto or_null = [](const std::optional<double>& value) {
+    return value ? nlohmann::json(*value) : nlohmann::json();
+  };
+  summary["approach"] = or_null(result.approach);
   summary["contact_area"] = result.contact_area;
+  // sqrt(A / pi) is a contact radius only for a round contact; for any other shape it is just
+  // the radius of the disk of equal area.
+  summary["equivalent_radius"] = or_null(result.contact_radius);
   summary["contact_radius"] =
-      result.contact_radius ? nlohmann::json(*result.contact_radius) : nlohmann::json();
+      is_axisymmetric(spec.indenter) ? or_null(result.contact_radius) : nlohmann::json();
   summary["max_pressure"] = result.max_pressure;
   summary["iterations"] = result.iterations;
   summary["residual"] = result.residual;

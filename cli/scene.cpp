@@ -41,6 +41,13 @@ class SectionReader {
     return has(key) ? integer(key) : fallback;
   }
 
+  bool boolean(std::string_view key, bool fallback) {
+    if (!has(key)) return fallback;
+    const toml::node& node = require(key);
+    COATFFT_REQUIRE(node.is_boolean(), where(key), " must be true or false, got ", describe(node));
+    return node.value<bool>().value();
+  }
+
   std::string string(std::string_view key) {
     const toml::node& node = require(key);
     COATFFT_REQUIRE(node.is_string(), where(key), " must be a string, got ", describe(node));
@@ -248,6 +255,10 @@ ContactSpec read_contact(const toml::table& table, const Grid& grid, const Layer
                   "[contact] give exactly one of load (N) and approach (m)");
   if (reader.has("load")) spec.load = positive(reader, "load");
   if (reader.has("approach")) spec.approach = positive(reader, "approach");
+  spec.report_approach = reader.boolean("report_approach", spec.report_approach);
+  COATFFT_REQUIRE(spec.report_approach || spec.load, reader.where("report_approach"),
+                  " = false: under approach control the approach is the input and is always "
+                  "reported; report_approach = false needs load control (load = ...)");
   spec.tolerance = reader.number("tolerance", spec.tolerance);
   COATFFT_REQUIRE(spec.tolerance > 0 && spec.tolerance < 1, reader.where("tolerance"), " = ",
                   spec.tolerance, " must be in (0, 1)");

@@ -40,6 +40,10 @@ struct ContactSpec {
   std::optional<double> approach;  ///< rigid-body approach [m] (approach control)
   double tolerance = 1e-10;
   int max_iterations = 1000;
+  /// Report the rigid-body approach (load control). false: the approach is not computed, and an
+  /// FRF operator is built without g(0) (G0Method::omitted), which load control does not need
+  /// (docs/contact.md). Must stay true under approach control.
+  bool report_approach = true;
   /// Elastic indenter (homogeneous bodies only): the body's modulus is replaced by the
   /// composite modulus 1/E* = 1/E*_body + 1/E*_indenter (Johnson section 4.2).
   std::optional<Material> indenter_material;

@@ -28,7 +28,7 @@ struct ContactOptions {
   bool compute_approach = false;
   /// Precondition the conjugate gradient with the inverse half-space symbol |k| (an FFT pair on
   /// the nx x ny grid per iteration; docs/contact.md). Keeps the iteration count nearly
-  /// independent of N (24-33 for Hertz from 64^2 to 1024^2, against 46-139 without). Off gives
+  /// independent of N (24-33 for Hertz from 64^2 to 1024^2, against 46-137 without). Off gives
   /// the classic Polonsky-Keer iteration.
   bool preconditioned = true;
 };

@@ -92,4 +92,11 @@ Field height(const Grid& grid, const Indenter& indenter) {
   return std::visit([&grid](const auto& shape) { return height(grid, shape); }, indenter);
 }
 
+bool is_axisymmetric(const Indenter& indenter) {
+  if (const auto* cylinder = std::get_if<Cylinder>(&indenter)) {
+    return cylinder->flat_length == 0 && cylinder->end_radius == cylinder->radius;
+  }
+  return !std::holds_alternative<HeightMap>(indenter);
+}
+
 }  // namespace coatfft

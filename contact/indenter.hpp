@@ -61,4 +61,11 @@ Field height(const Grid& grid, const FlatPunch& punch);
 Field height(const Grid& grid, const HeightMap& map);
 Field height(const Grid& grid, const Indenter& indenter);
 
+/// True when the shape is a body of revolution about the z axis, so that the contact it makes on
+/// a layered (laterally uniform) body is a disk and has a contact radius: Sphere, Paraboloid,
+/// FlatPunch, and a Cylinder with no straight part and equal radii (L = 0, Re = R: the
+/// paraboloid). False for any other Cylinder and for a HeightMap, whose contact has only the
+/// equivalent radius sqrt(A / pi).
+bool is_axisymmetric(const Indenter& indenter);
+
 }  // namespace coatfft

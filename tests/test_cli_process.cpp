@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli/npy.hpp"
@@ -19,6 +20,7 @@
 #include "materials/catalog.hpp"
 #include "validation/hankel_displacement.hpp"
 #include "validation/hertz.hpp"
+#include "validation/hertz_contact.hpp"
 
 namespace fs = std::filesystem;
 
@@ -261,6 +263,39 @@ fs::path contact_scene_with(const std::string& name, const std::string& from,
   return write_scene(kContactScene, name, from, to);
 }
 
+// Writes `base` with `from` replaced by `to` to NAME.toml and runs it into scratch NAME_out;
+// requires exit status 0 and returns that folder.
+fs::path run_scene(const std::string& base, const std::string& name, const std::string& from,
+                   const std::string& to) {
+  const fs::path out = scratch(name + "_out");
+  fs::remove_all(out);
+  const auto result =
+      run_coatfft("run " + write_scene(base, name, from, to).string() + " -o " + out.string());
+  INFO(result.stderr_text);
+  REQUIRE(result.status == 0);
+  return out;
+}
+
+nlohmann::json read_summary(const fs::path& out) {
+  nlohmann::json summary;
+  std::ifstream(out / "summary.json") >> summary;
+  return summary;
+}
+
+// kContactScene with `from` replaced by `to`: summary.json of a converged solve.
+nlohmann::json run_contact_scene(const std::string& name, const std::string& from,
+                                 const std::string& to) {
+  nlohmann::json summary = read_summary(run_scene(kContactScene, name, from, to));
+  REQUIRE(summary["converged"] == true);
+  return summary;
+}
+
+// The equivalent radius sqrt(A / pi), reported for every contact.
+void check_equivalent_radius(const nlohmann::json& s) {
+  CHECK(s["equivalent_radius"].get<double>() ==
+        Approx(std::sqrt(s["contact_area"].get<double>() / M_PI)).epsilon(1e-14));
+}
+
 }  // namespace
 
 TEST_CASE("coatfft run solves a sphere contact and reports it", "[cli][contact]") {
@@ -284,6 +319,86 @@ TEST_CASE("coatfft run solves a sphere contact and reports it", "[cli][contact]"
         Approx(s["hertz"]["max_pressure"].get<double>()).epsilon(0.05));
   CHECK(s["approach"].get<double>() == Approx(s["hertz"]["approach"].get<double>()).epsilon(0.01));
   for (const char* key : {"contact_area", "iterations", "residual"}) CHECK(s.contains(key));
+  // A sphere's contact is round: its contact radius is the equivalent radius.
+  check_equivalent_radius(s);
+  CHECK(s["contact_radius"] == s["equivalent_radius"]);
+}
+
+TEST_CASE("coatfft run reports no contact radius for a contact that is not round",
+          "[cli][contact]") {
+  // An elliptic paraboloid as a height map (radii 0.01 m along x, 0.02 m along y) and a roller.
+  coatfft::Field h(64, 64);
+  const double dx = 0.8e-3 / 64;
+  for (int j = 0; j < 64; ++j)
+    for (int i = 0; i < 64; ++i) {
+      const double x = -0.4e-3 + (i + 0.5) * dx, y = -0.4e-3 + (j + 0.5) * dx;
+      h(i, j) = x * x / (2 * 0.01) + y * y / (2 * 0.02);
+    }
+  coatfft::cli::write_npy(scratch("h_ellipse.npy"), h);
+  const std::string sphere = "indenter = \"sphere\"\nradius = 0.01";
+  for (const auto& [name, indenter] :
+       {std::pair{"contact_height_map", "indenter = \"height_map\"\npath = \"h_ellipse.npy\""},
+        std::pair{"contact_cylinder",
+                  "indenter = \"cylinder\"\nradius = 0.01\nlength = 2e-4\nend_radius = 0.01"}}) {
+    INFO(name);
+    const nlohmann::json s = run_contact_scene(name, sphere, indenter);
+    CHECK(s.contains("contact_radius"));  // the key is kept (a contract), with the value null
+    CHECK(s["contact_radius"].is_null());
+    check_equivalent_radius(s);
+  }
+}
+
+TEST_CASE("coatfft run solves an elastic sphere with the composite modulus", "[cli][contact]") {
+  // Tungsten carbide ball on steel, both homogeneous: Hertz with 1/E* = 1/E*_steel + 1/E*_WC
+  // (E* = 169 GPa, a = 164 um = 13 dx), 11 % wider a contact than the rigid ball's.
+  const nlohmann::json s = run_contact_scene(
+      "contact_elastic", "load = 100.0", "load = 100.0\nindenter_material = \"tungsten_carbide\"");
+  const double E_star = coatfft::composite_modulus(coatfft::material_by_name("steel"),
+                                                   coatfft::material_by_name("tungsten_carbide"));
+  const coatfft::HertzSphere hertz = coatfft::hertz_sphere_for_load(100.0, 0.01, E_star);
+  CHECK(s["hertz"]["contact_radius"].get<double>() == Approx(hertz.contact_radius).epsilon(1e-12));
+  const double dx = 0.8e-3 / 64;
+  const double a = hertz.contact_radius;
+  // The contact set is a union of cells: its equivalent radius is within half a cell of a
+  // (tests/test_contact.cpp measures 0.08-0.17 dx); the rigid ball's a is 11 % = 1.5 dx smaller.
+  CHECK(std::abs(s["contact_radius"].get<double>() - a) <= 0.5 * dx);
+  // Peak pressure and approach converge like (dx/a)^2 (measured <= 0.22 (dx/a)^2 on the rigid
+  // sphere): 0.5 (dx/a)^2 = 2.9e-3 here.
+  const double tol2 = 0.5 * (dx / a) * (dx / a);
+  CHECK(std::abs(s["max_pressure"].get<double>() / hertz.max_pressure - 1) <= tol2);
+  CHECK(std::abs(s["approach"].get<double>() / hertz.approach - 1) <= tol2);
+}
+
+TEST_CASE("coatfft run with report_approach = false computes no g(0) and the same contact",
+          "[cli][contact][g0]") {
+  // A TiN coating (E* ratio 1.85, h = 0.8 a) on the seed's FRF pipelines, which need g(0).
+  const std::string coated =
+      "[[coating]]\nmaterial = \"titanium_nitride\"\nthickness = 1e-4\n[contact]";
+  for (const std::string method : {"frf-spectral", "frf-dcfft"}) {
+    INFO(method);
+    std::string coated_scene = kContactScene;
+    coated_scene.replace(coated_scene.find("[contact]"), 9, coated);
+    coated_scene += "[method]\nname = \"" + method + "\"\n";
+    const fs::path out_with = run_scene(coated_scene, method + "_approach", "", "");
+    const fs::path out_without = run_scene(coated_scene, method + "_no_approach", "load = 100.0",
+                                           "load = 100.0\nreport_approach = false");
+    const nlohmann::json with = read_summary(out_with), without = read_summary(out_without);
+    const coatfft::Field p_with = coatfft::cli::read_npy(out_with / "pressure.npy");
+    const coatfft::Field p_without = coatfft::cli::read_npy(out_without / "pressure.npy");
+    CHECK(with["g0_method"] == "regularized");
+    CHECK(with["approach"].is_number());
+    CHECK(without["g0_method"] == "omitted");
+    CHECK(without["g0"].is_null());
+    CHECK(without.contains("approach"));
+    CHECK(without["approach"].is_null());
+    // g(0) shifts every displacement by one constant, removed in every iteration under load
+    // control: the iterates agree in exact arithmetic, and in floating point to rounding
+    // amplified by the CG recurrence (tests/test_contact.cpp "[g0]": 2.7e-14 at the default
+    // tolerance). 1e-9 is the solver-consistency tier, ten times the stopping tolerance.
+    CHECK((p_with - p_without).abs().maxCoeff() <= 1e-9 * p_with.maxCoeff());
+    CHECK(without["contact_area"] == with["contact_area"]);
+    CHECK(without["iterations"] == with["iterations"]);
+  }
 }
 
 TEST_CASE("coatfft run refuses bad contact scenes with exit 2 and no output",
@@ -312,6 +427,10 @@ TEST_CASE("coatfft run refuses bad contact scenes with exit 2 and no output",
       BadCase{"unknown_indenter", "\"sphere\"", "\"cone\"", "cone"},
       BadCase{"pressure_and_contact", "[contact]",
               "[pressure]\nkind = \"hertz\"\np0 = 1e9\na = 1e-4\n[contact]", "exactly one"},
+      BadCase{"no_report_under_approach", "load = 100.0",
+              "approach = 1e-6\nreport_approach = false", "report_approach"},
+      BadCase{"report_approach_not_bool", "load = 100.0", "load = 100.0\nreport_approach = 0",
+              "report_approach"},
   };
   for (const auto& c : cases) check_refused(kContactScene, c);
 }

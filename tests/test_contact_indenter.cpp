@@ -173,3 +173,15 @@ TEST_CASE("Composite modulus and flat punch closed forms", "[contact][hertz]") {
   CHECK_THROWS_AS(flat_punch_pressure(1e-3, 1e-3, 4.0), InvalidArgument);
   CHECK_THROWS_AS(flat_punch_load(1e-3, 0.0, 1e11), InvalidArgument);
 }
+
+TEST_CASE("Only bodies of revolution have a contact radius", "[contact][indenter]") {
+  CHECK(is_axisymmetric(Sphere{0.01}));
+  CHECK(is_axisymmetric(Paraboloid{0.01}));
+  CHECK(is_axisymmetric(FlatPunch{1e-3, 1e-5}));
+  // A cylinder with no straight part and equal radii is the paraboloid; any other is not round.
+  CHECK(is_axisymmetric(Cylinder{0.01, 0.0, 0.01}));
+  CHECK_FALSE(is_axisymmetric(Cylinder{0.01, 0.0, 0.02}));
+  CHECK_FALSE(is_axisymmetric(Cylinder{0.01, 1e-3, 0.01}));
+  // A height map is never assumed round, even a flat one.
+  CHECK_FALSE(is_axisymmetric(HeightMap{Field::Zero(4, 4)}));
+}
