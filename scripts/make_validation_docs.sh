@@ -6,6 +6,7 @@
 #   contact         docs/validation_contact.md          contact_table         (contact solver vs Hertz/punch, issue 4)
 #   seed_pipelines  docs/validation_seed_pipelines.md   seed_pipelines_table  (seed's FRF pipelines and g(0), issue 6)
 #   split_kernel    docs/validation_split_kernel.md     split_kernel_table    (frf-split vs Hankel reference, issue 6)
+#   hard_cases      docs/validation_hard_cases.md       hard_cases_table      (every FRF method on the hard bodies, issue 6)
 #   coated          docs/validation.md's generated block coated_convergence, from the existing
 #                   bench/results/sweep.csv (no program is run: scripts/run_benchmarks.sh runs the
 #                   sweep and regenerates this block too; issue 6)
@@ -15,13 +16,13 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build=${BUILD_DIR:-$root/build-release}
 python=/usr/bin/python3
 tables=("$@")
-[ ${#tables[@]} -eq 0 ] && tables=(hertz_dcfft contact seed_pipelines split_kernel coated)
+[ ${#tables[@]} -eq 0 ] && tables=(hertz_dcfft contact seed_pipelines split_kernel hard_cases coated)
 programs=()
 for t in "${tables[@]}"; do
   case "$t" in
-    hertz_dcfft | contact | seed_pipelines | split_kernel) programs+=("${t}_table") ;;
+    hertz_dcfft | contact | seed_pipelines | split_kernel | hard_cases) programs+=("${t}_table") ;;
     coated) ;;
-    *) echo "usage: $0 [hertz_dcfft|contact|seed_pipelines|split_kernel|coated ...]" >&2; exit 2 ;;
+    *) echo "usage: $0 [hertz_dcfft|contact|seed_pipelines|split_kernel|hard_cases|coated ...]" >&2; exit 2 ;;
   esac
 done
 if [ ${#programs[@]} -gt 0 ]; then

@@ -30,6 +30,7 @@
 #include "layers/layer_stack.hpp"
 #include "loads/hertz_pressure.hpp"
 #include "materials/material.hpp"
+#include "validation/format_number.hpp"
 #include "validation/hertz.hpp"
 
 namespace {
@@ -67,12 +68,6 @@ Problem make_problem(std::ptrdiff_t n, const Material& m) {
 
 double max_err(const Field& u, const Field& ref, double u0) {
   return (u - ref).abs().maxCoeff() / u0;
-}
-
-std::string fmt(const char* f, double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
 }
 
 }  // namespace
@@ -138,12 +133,13 @@ int main(int argc, char** argv) try {
   std::vector<std::string> skipped;
   for (const std::ptrdiff_t n : sizes) {
     const Problem pb = make_problem(n, steel);
-    md << "| " << n << " | " << fmt("%.3f", 100 * max_err(pb.love, pb.exact, pb.u0)) << " |";
+    md << "| " << n << " | " << format_number("%.3f", 100 * max_err(pb.love, pb.exact, pb.u0))
+       << " |";
     vs_love << "| " << n << " |";
     timing << "| " << n << " |";
     for (const double al : alphas) {
       if (static_cast<std::ptrdiff_t>(al * n) > max_extended) {
-        skipped.push_back("N = " + std::to_string(n) + ", alpha = " + fmt("%g", al));
+        skipped.push_back("N = " + std::to_string(n) + ", alpha = " + format_number("%g", al));
         md << " skipped |";
         vs_love << " skipped |";
         timing << " skipped |";
@@ -157,11 +153,12 @@ int main(int argc, char** argv) try {
       DcfftOperator converted(frf_influence_kernel(pb.grid, *frf, al, G0Method::regularized));
       const Field uc = converted.apply(pb.pressure);
       const double tc = seconds_since(t0);
-      md << " " << fmt("%.3f", 100 * max_err(us, pb.exact, pb.u0)) << " / "
-         << fmt("%.3f", 100 * max_err(uc, pb.exact, pb.u0)) << " |";
-      vs_love << " " << fmt("%.3f", 100 * max_err(us, pb.love, pb.u0)) << " / "
-              << fmt("%.3f", 100 * max_err(uc, pb.love, pb.u0)) << " |";
-      timing << " " << fmt("%.1f", 1e3 * ts) << " / " << fmt("%.1f", 1e3 * tc) << " |";
+      md << " " << format_number("%.3f", 100 * max_err(us, pb.exact, pb.u0)) << " / "
+         << format_number("%.3f", 100 * max_err(uc, pb.exact, pb.u0)) << " |";
+      vs_love << " " << format_number("%.3f", 100 * max_err(us, pb.love, pb.u0)) << " / "
+              << format_number("%.3f", 100 * max_err(uc, pb.love, pb.u0)) << " |";
+      timing << " " << format_number("%.1f", 1e3 * ts) << " / " << format_number("%.1f", 1e3 * tc)
+             << " |";
       std::cerr << "N = " << n << " alpha = " << al << " done (" << ts + tc << " s)\n";
     }
     md << "\n";
@@ -192,12 +189,12 @@ int main(int argc, char** argv) try {
         uc = conv.apply(pb.pressure);
       }
       auto cell = [&](std::ptrdiff_t i, std::ptrdiff_t j) {
-        std::string s = fmt("%+.2f", 100 * (us(i, j) / pb.exact(i, j) - 1));
-        if (has_c) s += " / " + fmt("%+.2f", 100 * (uc(i, j) / pb.exact(i, j) - 1));
+        std::string s = format_number("%+.2f", 100 * (us(i, j) / pb.exact(i, j) - 1));
+        if (has_c) s += " / " + format_number("%+.2f", 100 * (uc(i, j) / pb.exact(i, j) - 1));
         return s;
       };
       md << "| " << al << " | " << cell(c, c) << " | " << cell(0, c) << " | " << cell(0, 0) << " | "
-         << fmt("%.2f", 100 * al * max_err(us, pb.exact, pb.u0)) << " |\n";
+         << format_number("%.2f", 100 * al * max_err(us, pb.exact, pb.u0)) << " |\n";
     }
   }
 
@@ -211,9 +208,9 @@ int main(int argc, char** argv) try {
     const Field ub = base.apply(pb.pressure);
     md << "\n## 3. g(0) by plain adaptive quadrature vs tolerance (N = 64, alpha = 2)\n\n"
           "Regularized g(0) = "
-       << fmt("%.16e", reg.value)
-       << " m/Pa (closed form (3.2): " << fmt("%.16e", frf->c0() * mean_inverse_wavenumber(dk, dk))
-       << "), computed in " << fmt("%.1f", reg.seconds * 1e6)
+       << format_number("%.16e", reg.value) << " m/Pa (closed form (3.2): "
+       << format_number("%.16e", frf->c0() * mean_inverse_wavenumber(dk, dk)) << "), computed in "
+       << format_number("%.1f", reg.seconds * 1e6)
        << " us. The quadrature (GSL QAGS iterated over a quadrant, inner integrals to tol/10, the "
           "1/k singularity at the corner) at tolerance tol: its time, relative g(0) error, its own "
           "error "
@@ -236,11 +233,12 @@ int main(int argc, char** argv) try {
       const Field u = op.apply(pb.pressure);
       const double predicted = (q.value - reg.value) * pb.pressure.sum() /
                                (double(op.extended_nx()) * double(op.extended_ny())) / pb.u0;
-      md << "| " << fmt("%.0e", tol) << " | " << fmt("%.3f", 1e3 * times[2]) << " | "
-         << fmt("%+.2e", q.value / reg.value - 1) << " | "
-         << fmt("%.1e", q.estimated_error / reg.value) << " | "
-         << fmt("%.4f", 100 * max_err(u, pb.exact, pb.u0)) << " | "
-         << fmt("%+.3e", (u - ub).mean() / pb.u0) << " | " << fmt("%+.3e", predicted) << " |\n";
+      md << "| " << format_number("%.0e", tol) << " | " << format_number("%.3f", 1e3 * times[2])
+         << " | " << format_number("%+.2e", q.value / reg.value - 1) << " | "
+         << format_number("%.1e", q.estimated_error / reg.value) << " | "
+         << format_number("%.4f", 100 * max_err(u, pb.exact, pb.u0)) << " | "
+         << format_number("%+.3e", (u - ub).mean() / pb.u0) << " | "
+         << format_number("%+.3e", predicted) << " |\n";
     }
   }
 
@@ -277,10 +275,11 @@ int main(int argc, char** argv) try {
       }
       std::sort(times.begin(), times.end());
       const G0Result q = compute_g0(*f, dk, dk, G0Method::quadrature, 1e-10);
-      md << "| " << label << " | " << f->name() << " | " << fmt("%.15e", g.value) << " | "
-         << fmt("%.1e", g.estimated_error / g.value) << " | " << fmt("%.1f", 1e6 * times[10])
-         << " | " << fmt("%+.1e", q.value / g.value - 1) << ", " << fmt("%.2f", 1e3 * q.seconds)
-         << " |\n";
+      md << "| " << label << " | " << f->name() << " | " << format_number("%.15e", g.value) << " | "
+         << format_number("%.1e", g.estimated_error / g.value) << " | "
+         << format_number("%.1f", 1e6 * times[10]) << " | "
+         << format_number("%+.1e", q.value / g.value - 1) << ", "
+         << format_number("%.2f", 1e3 * q.seconds) << " |\n";
     }
   }
 

@@ -32,6 +32,7 @@
 #include "frf/multilayer_frf.hpp"
 #include "layers/layer_stack.hpp"
 #include "loads/hertz_pressure.hpp"
+#include "validation/format_number.hpp"
 #include "validation/hankel_displacement.hpp"
 
 namespace {
@@ -97,9 +98,7 @@ Result run(const Frf& frf, bool with_seed) {
 }
 
 std::string sci(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%+.1e", v);
-  return buf;
+  return format_number("%+.1e", v);
 }
 
 double worst_required(const std::vector<double>& e) {  // r = 0, 0.5a, 2a
