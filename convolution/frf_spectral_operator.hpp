@@ -76,7 +76,9 @@ class FrfSpectralOperator final : public SurfaceOperator {
   G0Result g0_;
   FftwRealBuffer real_;         // (my, mx) padded pressure, then displacement
   FftwComplexBuffer spectrum_;  // (my, hx) scratch spectrum (c2r destroys it)
-  FftwRealBuffer kernel_;       // (my, hx) H / (mx my), real: H is real and even
+  // H / (mx my) on the quarter 0 <= jx <= mx/2, 0 <= jy <= my/2 (hx x (my/2 + 1), x fastest):
+  // H is real and even in ky, so the rows -jy of the half spectrum read row jy.
+  Field kernel_quarter_;
   FftwPlan forward_;
   FftwPlan backward_;
   double setup_seconds_ = 0.0;
