@@ -129,8 +129,7 @@ InfluenceKernel frf_influence_kernel(const Grid& grid, const Frf& frf, double al
     });
     std::complex<double>* s = as_complex(spectrum.data());
     for (std::ptrdiff_t jy = 0; jy < my; ++jy) {
-      const std::ptrdiff_t sy = jy < (my + 1) / 2 ? jy : my - jy;
-      const double fy = scale * sinc_y(sy);
+      const double fy = scale * sinc_y(detail::folded_index(jy, my));
       for (std::ptrdiff_t jx = 0; jx < qx; ++jx)
         s[jy * qx + jx] = h(jx, jy) * sinc_x[static_cast<std::size_t>(jx)] * fy;
     }

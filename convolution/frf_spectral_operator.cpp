@@ -86,8 +86,7 @@ Field sample_frf_half_spectrum(const Frf& frf, std::ptrdiff_t mx, std::ptrdiff_t
   const Field q = detail::sample_frf_quarter(frf, hx, my / 2 + 1, dkx, dky, threads);
   Field h(hx, my);
   for (std::ptrdiff_t jy = 0; jy < my; ++jy) {
-    const std::ptrdiff_t sy = jy < (my + 1) / 2 ? jy : my - jy;
-    h.col(jy) = q.col(sy);
+    h.col(jy) = q.col(detail::folded_index(jy, my));
   }
   h(0, 0) = g0;
   return h;
@@ -168,8 +167,7 @@ void FrfSpectralOperator::apply(const Field& pressure, Field& displacement) {
   forward_.execute();
   std::complex<double>* s = as_complex(spectrum_.data());
   for (std::ptrdiff_t jy = 0; jy < my_; ++jy) {
-    // Wrap-around order along y: row jy holds ky = jy dky for jy < (my + 1)/2, else (jy - my) dky.
-    const double* k = &kernel_quarter_(0, jy < (my_ + 1) / 2 ? jy : my_ - jy);
+    const double* k = &kernel_quarter_(0, detail::folded_index(jy, my_));
     std::complex<double>* row = s + jy * hx_;
     for (std::ptrdiff_t jx = 0; jx < hx_; ++jx) row[jx] *= k[jx];
   }

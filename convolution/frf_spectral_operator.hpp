@@ -29,6 +29,12 @@ Field sample_frf_half_spectrum(const Frf& frf, std::ptrdiff_t mx, std::ptrdiff_t
                                double dy, double g0, int threads = 1);
 
 namespace detail {
+/// |j'| for the wrap-around index j of an m-point lattice (j' = j for j < ceil(m/2), else j - m):
+/// the row of a quarter that holds the samples of row j, for a spectrum even in that direction.
+inline std::ptrdiff_t folded_index(std::ptrdiff_t j, std::ptrdiff_t m) {
+  return j < (m + 1) / 2 ? j : m - j;
+}
+
 /// H(|k|) at kx = dkx jx, ky = dky jy for jx < qx, jy < qy [m/Pa], x fastest; the singular
 /// (0, 0) entry is 0 (the caller puts g(0) there);
 /// dkx, dky [rad/m]. On `threads` threads; H(jy, jx) is copied from H(jx, jy) when dkx == dky.

@@ -24,10 +24,6 @@ double call(double x, void* params) {
   return (*static_cast<const std::function<double(double)>*>(params))(x);
 }
 
-gsl_function as_gsl_function(const std::function<double(double)>& f) {
-  return gsl_function{&call, const_cast<std::function<double(double)>*>(&f)};
-}
-
 // The statuses after which GSL computed no result at all (bad arguments): a programming error of
 // the caller, not a quadrature that fell short of its tolerance.
 GslIntegral checked(GslIntegral r, const char* routine, double a, double b) {
@@ -37,6 +33,10 @@ GslIntegral checked(GslIntegral r, const char* routine, double a, double b) {
 }
 
 }  // namespace
+
+gsl_function as_gsl_function(const std::function<double(double)>& f) {
+  return gsl_function{&call, const_cast<std::function<double(double)>*>(&f)};
+}
 
 GslHandlerOff::GslHandlerOff() {
   const std::lock_guard<std::mutex> lock(handler_mutex());

@@ -30,6 +30,10 @@ struct GslWorkspaceDeleter {
 using GslWorkspace = std::unique_ptr<gsl_integration_workspace, GslWorkspaceDeleter>;
 GslWorkspace make_gsl_workspace(std::size_t intervals);
 
+/// A gsl_function that calls `f`, for GSL routines without a wrapper here (qagiu, qawf, ...);
+/// `f` must outlive its use.
+gsl_function as_gsl_function(const std::function<double(double)>& f);
+
 /// A GSL integral: value, QUADPACK's error estimate and GSL's status (GSL_SUCCESS, or e.g.
 /// GSL_EROUND when rounding stops the refinement, GSL_EMAXITER when the workspace is full).
 struct GslIntegral {

@@ -34,10 +34,6 @@ double load_shape(AxisymmetricLoad load, double s) {
 
 constexpr std::size_t kLimit = 1000;
 
-double call(double x, void* params) {
-  return (*static_cast<const std::function<double(double)>*>(params))(x);
-}
-
 // Adaptive Gauss-Kronrod (21 points) on [lo, hi]; the nodes are interior, so k = 0 is never hit.
 double integrate_panel(const std::function<double(double)>& f, double lo, double hi, double epsabs,
                        double epsrel, gsl_integration_workspace* ws) {
@@ -128,7 +124,7 @@ double oscillatory_tail(const std::function<std::complex<double>(double)>& g, do
   double total = 0.0;
   if (omega == 0.0) {
     const std::function<double(double)> f = [&g](double s) { return g(s).real(); };
-    gsl_function gf{&call, const_cast<std::function<double(double)>*>(&f)};
+    gsl_function gf = as_gsl_function(f);
     double result = 0.0, abserr = 0.0;
     const int status =
         gsl_integration_qagiu(&gf, S, epsabs, 0.0, kLimit, ws.get(), &result, &abserr);
@@ -146,7 +142,7 @@ double oscillatory_tail(const std::function<std::complex<double>(double)>& g, do
     const std::function<double(double)> f = [&g, kind, sine_sign](double s) {
       return kind == GSL_INTEG_COSINE ? g(s).real() : sine_sign * g(s).imag();
     };
-    gsl_function gf{&call, const_cast<std::function<double(double)>*>(&f)};
+    gsl_function gf = as_gsl_function(f);
     gsl_integration_qawo_table* table = gsl_integration_qawo_table_alloc(w, 1.0, kind, 50);
     double result = 0.0, abserr = 0.0;
     const int status = gsl_integration_qawf(&gf, S, epsabs, kLimit, ws.get(), cycles.get(), table,
