@@ -6,7 +6,9 @@
 // FFTW_ESTIMATE throughout. Prints "# key = value" headers and CSV rows and writes them to
 // bench/results/setup.csv (or the path given as first argument).
 //
-// Usage: bench_setup [output.csv] [sizes, e.g. 512,1024,2048] [threads, e.g. 1,2] [reps]
+// Usage: bench_setup [output.csv] [sizes, e.g. 512,1024,2048] [threads, e.g. 1,2] [reps] [alpha]
+// (alpha, default 2, is the extension ratio of frf-spectral and frf-dcfft; at alpha = 4
+// frf-dcfft's "kernel" is frf_influence_kernel: FRF sampling on the 4N lattice and its DCT-I.)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -61,11 +63,10 @@ struct Body {
   double e_star = 0.0;  // > 0 only for the homogeneous body (Love's kernel)
 };
 
-constexpr double alpha = 2.0;
 constexpr double length = 4e-3;  // domain side [m]
 
 Setup run_setup(const std::string& method, const Body& body, const coatfft::Grid& grid,
-                int threads) {
+                double alpha, int threads) {
   using namespace coatfft;
   Setup s;
   const double dkx = 2.0 * std::numbers::pi / (alpha * grid.lx());
@@ -91,7 +92,8 @@ Setup run_setup(const std::string& method, const Body& body, const coatfft::Grid
     s.g0_s = seconds_since(t);
     t = Clock::now();
     // At alpha = 2 the FRF samples are the kernel's spectrum (frf_dcfft_operator.hpp): "kernel"
-    // is the sampling, "transform" DcfftOperator's constructor (plans, spectrum layout).
+    // is the sampling, "transform" DcfftOperator's constructor (plans, spectrum layout). At
+    // other alpha "kernel" is frf_influence_kernel (sampling, inverse DCT, wrap-around copy).
     auto op = frf_dcfft_operator(grid, *body.frf, alpha, g0, Planning::estimate, threads);
     s.transform_s = op->setup_seconds();
     s.kernel_s = seconds_since(t) - s.transform_s;
@@ -119,6 +121,7 @@ int main(int argc, char** argv) {
     const std::vector<int> sizes = parse_int_list(argc > 2 ? argv[2] : "512,1024");
     const std::vector<int> thread_list = parse_int_list(argc > 3 ? argv[3] : "1,2");
     const int reps = argc > 4 ? std::max(1, std::atoi(argv[4])) : 5;
+    const double alpha = argc > 5 ? std::atof(argv[5]) : 2.0;
     constexpr int applies_per_rep = 3;
 
     const Material steel(210e9, 0.3);
@@ -156,7 +159,7 @@ int main(int argc, char** argv) {
             if (method == "dcfft" && body.e_star <= 0.0) continue;  // Love: homogeneous only
             std::vector<double> kernel_s, g0_s, transform_s, setup_s, apply_s;
             for (int r = 0; r < reps; ++r) {
-              Setup s = run_setup(method, body, grid, threads);
+              Setup s = run_setup(method, body, grid, alpha, threads);
               kernel_s.push_back(s.kernel_s);
               g0_s.push_back(s.g0_s);
               transform_s.push_back(s.transform_s);

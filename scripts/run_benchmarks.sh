@@ -5,7 +5,7 @@
 #   bench/results/seed_figures/*.csv, bench/results/sweep_reference_check.csv,
 #   bench/results/coatfft_run_rss.txt, docs/figures/seed_fig{2,3}_*.png, and (not with --tiny,
 #   whose sweep has no coated case) docs/validation.md's block coated_convergence (issue 6);
-#   with --full also bench/results/dcfft.csv, setup.csv, setup_2048.csv, frf_eval.csv, contact.csv
+#   with --full also bench/results/dcfft.csv, setup.csv, setup_2048.csv, setup_alpha4.csv, frf_eval.csv, contact.csv
 #   and their blocks in docs/benchmarks.md (dcfft_direct: direct summation against DC-FFT).
 #
 # Usage: scripts/run_benchmarks.sh [--full | --quick | --tiny]   (default --full, ~10 min on 2 cores;
@@ -90,6 +90,7 @@ if [ "$mode" = "--full" ]; then
   echo "== setup against application"
   "$build/bench/bench_setup" "$results/setup.csv" 512,1024 1,2 5
   "$build/bench/bench_setup" "$results/setup_2048.csv" 2048 1,2 3
+  "$build/bench/bench_setup" "$results/setup_alpha4.csv" 1024 1 5 4
   echo "== FRF evaluation"
   "$build/bench/bench_frf" "$results/frf_eval.csv"
   echo "== contact solver"

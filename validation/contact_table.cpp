@@ -50,7 +50,14 @@ struct HertzRow {
   double load_error;  // approach control at the Hertz approach: W / W_Hertz - 1
   int iterations_approach;
   bool converged_approach;
+  double min_gap;        // min over all cells of gap / delta, load control, default tolerance
+  double min_gap_tight;  // the same at tolerance 1e-12 (the gap on the contact ~ tolerance)
 };
+
+// min over all cells of gap / approach of a load-controlled solve.
+double min_relative_gap(const ContactResult& res) {
+  return res.gap.minCoeff() / res.approach.value_or(1.0);
+}
 
 HertzRow hertz_row(std::ptrdiff_t n) {
   const HertzSphere ref = hertz_sphere_for_load(kLoad, kRadius, kModulus);
@@ -63,6 +70,9 @@ HertzRow hertz_row(std::ptrdiff_t n) {
   ContactSolver solver(op, opts);
   const ContactResult res = solver.solve_load(h, kLoad);
   const ContactResult by_approach = solver.solve_approach(h, ref.approach);
+  ContactOptions tight = opts;
+  tight.tolerance = 1e-12;
+  const ContactResult res_tight = ContactSolver(op, tight).solve_load(h, kLoad);
   return {n,
           ref.contact_radius / grid.dx(),
           res.contact_radius.value_or(0.0) / ref.contact_radius - 1,
@@ -73,7 +83,9 @@ HertzRow hertz_row(std::ptrdiff_t n) {
           res.converged && !res.touches_boundary,
           by_approach.load / ref.load - 1,
           by_approach.iterations,
-          by_approach.converged && !by_approach.touches_boundary};
+          by_approach.converged && !by_approach.touches_boundary,
+          min_relative_gap(res),
+          min_relative_gap(res_tight)};
 }
 
 struct PunchRow {
@@ -272,17 +284,20 @@ int main(int argc, char** argv) {
        << "delta, is below 1e-5). Domain [-" << kHalfWidth << " a, " << kHalfWidth
        << " a]^2.\nLoad control for a (equivalent radius sqrt(A/pi) from the contact area),\n"
        << "p0 (largest cell pressure) and delta (mean of h + u over the contact); then approach\n"
-       << "control at the Hertz delta for the load W.\n\n"
+       << "control at the Hertz delta for the load W. min gap: the smallest gap / delta over all\n"
+       << "cells (the contact's gap is 0 up to the solver's tolerance), at the default tolerance\n"
+       << "1e-10 and at 1e-12.\n\n"
        << "| N | a/dx | a error | p0 error | delta error | iterations | residual | "
-          "W(delta) error | iterations (approach) |\n"
-       << "|---|---|---|---|---|---|---|---|---|\n";
+          "W(delta) error | iterations (approach) | min gap (1e-10) | min gap (1e-12) |\n"
+       << "|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const auto n : sizes) {
       const HertzRow r = hertz_row(n);
       md << "| " << n << " | " << std::lround(r.cells_per_radius) << " | " << pct(r.radius_error)
          << " | " << pct(r.pressure_error) << " | " << pct(r.approach_error) << " | "
          << r.iterations << (r.converged ? "" : " (NOT CONVERGED)") << " | " << sci(r.residual)
          << " | " << pct(r.load_error) << " | " << r.iterations_approach
-         << (r.converged_approach ? "" : " (NOT CONVERGED)") << " |\n";
+         << (r.converged_approach ? "" : " (NOT CONVERGED)") << " | " << sci(r.min_gap) << " | "
+         << sci(r.min_gap_tight) << " |\n";
       std::cerr << "hertz n = " << n << " done\n";
     }
     md << "\n## Rigid flat punch\n\n"
