@@ -15,6 +15,7 @@
 #include "cli/staged_output.hpp"
 #include "contact/contact_solver.hpp"
 #include "contact/indenter.hpp"
+#include "core/detail/timing.hpp"
 #include "core/error.hpp"
 #include "loads/hertz_pressure.hpp"
 #include "loads/uniform_disk_pressure.hpp"
@@ -26,9 +27,7 @@ namespace coatfft::cli {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
+using coatfft::detail::seconds_since;
 
 Field read_pressure_file(const std::filesystem::path& file, const Grid& grid) {
   const std::string ext = file.extension().string();
@@ -47,30 +46,22 @@ Field read_pressure_file(const std::filesystem::path& file, const Grid& grid) {
 
 Field pressure_from_scene(const Scene& scene) {
   const PressureSpec& spec = *scene.pressure;
-  if (spec.kind == "file") return read_pressure_file(spec.file, scene.grid);
-  const Sampling sampling =
-      spec.sampling == "cell_average" ? Sampling::cell_average : Sampling::centre;
-  if (spec.kind == "hertz")
-    return hertz_pressure(scene.grid, spec.amplitude, spec.radius, sampling);
-  return uniform_disk_pressure(scene.grid, spec.amplitude, spec.radius, sampling);
-}
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
-// Median wall time of `repeat` applications of `op` to `pressure`; leaves the result in `uz`.
-double time_applications(SurfaceOperator& op, const Field& pressure, Field& uz, int repeat) {
-  std::vector<double> seconds;
-  for (int r = 0; r < repeat; ++r) {
-    const auto start = Clock::now();
-    op.apply(pressure, uz);
-    seconds.push_back(seconds_since(start));
+  switch (spec.kind) {
+    case PressureKind::file: return read_pressure_file(spec.file, scene.grid);
+    case PressureKind::hertz:
+      return hertz_pressure(scene.grid, spec.amplitude, spec.radius, spec.sampling);
+    case PressureKind::uniform_disk:
+      return uniform_disk_pressure(scene.grid, spec.amplitude, spec.radius, spec.sampling);
   }
+  throw InvalidArgument("[pressure] kind: unknown");
+}
+
+// Median wall time of `repeat` applications of `op` to `pressure`; leaves the result in `uz`,
+// which must come out finite.
+double time_applications(SurfaceOperator& op, const Field& pressure, Field& uz, int repeat) {
+  const double seconds = coatfft::detail::time_applications(op, pressure, uz, repeat);
   COATFFT_REQUIRE(uz.allFinite(), "internal error: the displacement has non-finite values");
-  return median(seconds);
+  return seconds;
 }
 
 // Index of the cell centre nearest the origin; for an even count the two middle cells tie and
@@ -83,23 +74,22 @@ nlohmann::json common_summary(const Scene& scene, const BuiltOperator& built, do
                               int repeat, const Field& pressure, const Field& uz) {
   const Grid& grid = scene.grid;
   nlohmann::json summary;
-  // The scene's method name: frf-dcfft and frf-split run the DcfftOperator on their own kernels.
-  summary["method"] = scene.method.name;
+  summary["method"] = to_string(built.report.method);
   summary["nx"] = grid.nx();
   summary["ny"] = grid.ny();
   summary["lx"] = grid.lx();
   summary["ly"] = grid.ly();
-  summary["setup_seconds"] = built.setup_seconds;
+  summary["setup_seconds"] = built.report.setup_seconds;
   summary["apply_seconds"] = apply_seconds;
   summary["repeat"] = repeat;
   summary["total_load"] = pressure.sum() * grid.dx() * grid.dy();
   summary["uz_center"] = uz(centre_index(grid.nx()), centre_index(grid.ny()));
   summary["uz_max"] = uz.maxCoeff();
-  for (const auto& [key, value] : built.report.items()) summary[key] = value;
+  summary.update(operator_report_json(built.report));
   return summary;
 }
 
-// The seed's error measure (section 5): max |u_num - u_exact| / u_exact(0).
+// The error measure of Spinu (2021), section 5: max |u_num - u_exact| / u_exact(0).
 double max_error_vs_hertz(const Grid& grid, const Field& uz, double p0, double a, double E_star) {
   const double u0 = hertz_displacement(0.0, p0, a, E_star);
   double max_error = 0;
@@ -147,7 +137,7 @@ RunStatus run_pressure(const Scene& scene, const RunOptions& options) {
   nlohmann::json summary =
       common_summary(scene, built, apply_seconds, options.repeat, pressure, uz);
   const PressureSpec& load = *scene.pressure;
-  if (load.kind == "hertz" && scene.body.is_homogeneous()) {
+  if (load.kind == PressureKind::hertz && scene.body.is_homogeneous()) {
     summary["max_error_vs_hertz"] = max_error_vs_hertz(
         grid, uz, load.amplitude, load.radius, scene.body.substrate().plane_strain_modulus());
   }
@@ -206,6 +196,7 @@ RunStatus run_contact(Scene scene, const RunOptions& options) {
   summary["iterations"] = result.iterations;
   summary["residual"] = result.residual;
   summary["converged"] = result.converged;
+  summary["status"] = to_string(result.status);
   if (!result.warning.empty()) summary["warning"] = result.warning;
 
   const bool hertzian = std::holds_alternative<Paraboloid>(spec.indenter) ||

@@ -8,6 +8,7 @@
 
 #include "cli/npy.hpp"
 #include "core/error.hpp"
+#include "core/threads.hpp"
 #include "materials/catalog.hpp"
 
 namespace coatfft::cli {
@@ -55,6 +56,18 @@ class SectionReader {
   }
   std::string string(std::string_view key, std::string fallback) {
     return has(key) ? string(key) : fallback;
+  }
+  /// The enumerator named by the string at `key` (`fallback` when absent), by `parse` (which
+  /// throws InvalidArgument "\"x\" is not one of ..." for an unknown name).
+  template <typename Enum, typename Parse>
+  Enum named(std::string_view key, Enum fallback, Parse&& parse) {
+    if (!has(key)) return fallback;
+    const std::string value = string(key);
+    try {
+      return parse(value);
+    } catch (const InvalidArgument& e) {
+      throw InvalidArgument(detail::concat(where(key), " = ", e.what()));
+    }
   }
   std::string choice(std::string_view key, std::string fallback,
                      std::initializer_list<std::string_view> allowed) {
@@ -185,12 +198,15 @@ PressureSpec read_pressure(const toml::table& table, const Grid& grid,
                            const std::filesystem::path& scene_dir) {
   SectionReader reader(table, "pressure");
   PressureSpec spec;
-  spec.kind = reader.choice("kind", "", {"hertz", "uniform_disk", "file"});
-  if (spec.kind == "file") {
+  const std::string kind = reader.choice("kind", "", {"hertz", "uniform_disk", "file"});
+  spec.kind = kind == "hertz"          ? PressureKind::hertz
+              : kind == "uniform_disk" ? PressureKind::uniform_disk
+                                       : PressureKind::file;
+  if (spec.kind == PressureKind::file) {
     spec.file = reader.string("path");
     if (spec.file.is_relative()) spec.file = scene_dir / spec.file;
   } else {
-    const char* amplitude_key = spec.kind == "hertz" ? "p0" : "p";
+    const char* amplitude_key = spec.kind == PressureKind::hertz ? "p0" : "p";
     spec.amplitude = reader.number(amplitude_key);
     COATFFT_REQUIRE(spec.amplitude > 0, reader.where(amplitude_key), " = ", spec.amplitude,
                     " Pa must be > 0");
@@ -199,7 +215,9 @@ PressureSpec read_pressure(const toml::table& table, const Grid& grid,
     COATFFT_REQUIRE(spec.radius > 0 && spec.radius <= half_domain, reader.where("a"), " = ",
                     spec.radius, " m must be > 0 and at most half the domain (", half_domain,
                     " m)");
-    spec.sampling = reader.choice("sampling", "centre", {"centre", "cell_average"});
+    spec.sampling = reader.choice("sampling", "centre", {"centre", "cell_average"}) == "centre"
+                        ? Sampling::centre
+                        : Sampling::cell_average;
   }
   reader.finish();
   return spec;
@@ -285,19 +303,20 @@ ContactSpec read_contact(const toml::table& table, const Grid& grid, const Layer
 MethodSpec read_method(const toml::table& root, const std::filesystem::path& scene_dir) {
   SectionReader reader(section(root, "method", false), "method");
   MethodSpec spec;
-  spec.name = reader.choice("name", spec.name,
-                            {"dcfft", "direct", "frf-spectral", "frf-dcfft", "frf-split"});
-  spec.alpha = reader.number("alpha", spec.alpha);
-  COATFFT_REQUIRE(spec.alpha >= 1, reader.where("alpha"), " = ", spec.alpha, " must be >= 1");
-  spec.g0 = reader.choice("g0", spec.g0, {"regularized", "quadrature"});
-  spec.g0_tol = reader.number("g0_tol", spec.g0_tol);
-  COATFFT_REQUIRE(spec.g0_tol > 0 && spec.g0_tol < 1, reader.where("g0_tol"), " = ", spec.g0_tol,
-                  " must be in (0, 1)");
-  spec.planning = reader.choice("planning", spec.planning, {"estimate", "measure"});
-  const auto threads = reader.integer("threads", spec.threads);
-  COATFFT_REQUIRE(threads >= 1 && threads <= 256, reader.where("threads"), " = ", threads,
-                  " must be in 1..256");
-  spec.threads = static_cast<int>(threads);
+  OperatorOptions& o = spec.options;
+  o.method = reader.named("name", o.method, parse_method);
+  o.alpha = reader.number("alpha", o.alpha);
+  o.g0 = reader.named("g0", o.g0, [](std::string_view name) {
+    // omitted is not a user's choice: a load-controlled contact makes it (report_approach).
+    COATFFT_REQUIRE(name != "omitted", "\"omitted\" is not one of \"regularized\", \"quadrature\"");
+    return parse_g0_method(name);
+  });
+  o.g0_tolerance = reader.number("g0_tol", o.g0_tolerance);
+  o.planning = reader.named("planning", o.planning, parse_planning);
+  const auto threads = reader.integer("threads", o.threads);
+  COATFFT_REQUIRE(threads >= 1 && threads <= max_threads, reader.where("threads"), " = ", threads,
+                  " must be in 1..", max_threads);
+  o.threads = static_cast<int>(threads);
   if (reader.has("wisdom")) {
     spec.wisdom = reader.string("wisdom");
     if (spec.wisdom.is_relative()) spec.wisdom = scene_dir / spec.wisdom;
@@ -340,19 +359,7 @@ Scene read_scene(const std::filesystem::path& path) {
     const std::filesystem::path scene_dir = path.parent_path();
     Scene scene{read_grid(root), read_body(root), std::nullopt, read_method(root, scene_dir),
                 std::nullopt};
-    const MethodSpec& method = scene.method;
-    if (method.name == "frf-spectral" || method.name == "frf-dcfft") {
-      for (const double n :
-           {static_cast<double>(scene.grid.nx()), static_cast<double>(scene.grid.ny())}) {
-        const double m = method.alpha * n;
-        COATFFT_REQUIRE(std::abs(m - std::round(m)) < 1e-9 * m, "[method] alpha = ", method.alpha,
-                        ": alpha * nx and alpha * ny must be whole numbers of cells (alpha * ", n,
-                        " = ", m, ")");
-      }
-      // Offsets up to N - 1 must not wrap onto each other on the extended lattice.
-      COATFFT_REQUIRE(method.name != "frf-dcfft" || method.alpha >= 2,
-                      "[method] alpha = ", method.alpha, ": frf-dcfft needs alpha >= 2");
-    }
+    in_section("method", [&] { check_operator_options(scene.grid, scene.method.options); });
     COATFFT_REQUIRE(root.contains("pressure") != root.contains("contact"),
                     "a scene needs exactly one of [pressure] (known load) and [contact]");
     if (root.contains("pressure"))
@@ -361,6 +368,10 @@ Scene read_scene(const std::filesystem::path& path) {
       scene.contact = in_section("contact", [&] {
         return read_contact(section(root, "contact", true), scene.grid, scene.body, scene_dir);
       });
+    // g(0) only shifts every displacement by one constant, which a load-controlled contact
+    // absorbs in its approach; when that approach is not reported, g(0) is not computed at all.
+    if (scene.contact && !scene.contact->report_approach)
+      scene.method.options.g0 = G0Method::omitted;
     return scene;
   });
 }

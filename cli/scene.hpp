@@ -7,29 +7,31 @@
 #include <string>
 
 #include "contact/indenter.hpp"
+#include "convolution/make_operator.hpp"
 #include "core/grid.hpp"
 #include "layers/layer_stack.hpp"
+#include "loads/sampling.hpp"
 
 namespace coatfft::cli {
 
+/// [pressure] kind.
+enum class PressureKind { hertz, uniform_disk, file };
+
 /// [pressure]: a known surface pressure.
 struct PressureSpec {
-  std::string kind;                 ///< "hertz", "uniform_disk" or "file"
-  double amplitude = 0;             ///< p0 (hertz) or p (uniform_disk) [Pa]
-  double radius = 0;                ///< a [m]
-  std::string sampling = "centre";  ///< "centre" or "cell_average"
+  PressureKind kind = PressureKind::hertz;
+  double amplitude = 0;                 ///< p0 (hertz) or p (uniform_disk) [Pa]
+  double radius = 0;                    ///< a [m]
+  Sampling sampling = Sampling::centre;  ///< kind = "sampling": "centre" or "cell_average"
   std::filesystem::path file;       ///< .npy or .csv of shape (ny, nx) [Pa], for kind = "file"
 };
 
-/// [method]: how displacements are computed.
+/// [method]: how displacements are computed. The keys name, alpha, g0, g0_tol, planning and
+/// threads are read into the library's OperatorOptions (checked by check_operator_options). A
+/// load-controlled contact with report_approach = false sets options.g0 = G0Method::omitted.
 struct MethodSpec {
-  std::string name = "dcfft";      ///< "dcfft", "direct", "frf-spectral", "frf-dcfft", "frf-split"
-  double alpha = 2.0;              ///< extension ratio of the FRF pipelines
-  std::string g0 = "regularized";  ///< "regularized" or "quadrature"
-  double g0_tol = 1e-10;           ///< relative tolerance of the g(0) quadrature
-  std::string planning = "estimate";  ///< FFTW planning: "estimate" or "measure"
-  int threads = 1;                    ///< FFTW threads
-  std::filesystem::path wisdom;       ///< FFTW wisdom file to load and save (optional)
+  OperatorOptions options;
+  std::filesystem::path wisdom;  ///< FFTW wisdom file to load and save (optional)
 };
 
 /// [contact]: a frictionless normal contact with an indenter (contact/).

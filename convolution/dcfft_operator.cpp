@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <complex>
-#include <thread>
 
+#include "core/detail/parallel_for.hpp"
 #include "core/error.hpp"
 
 namespace coatfft {
@@ -15,32 +15,29 @@ namespace {
 // 32-256 KiB measured alike at 1024^2 and 2048^2; 128 KiB and more lost ~20% at 256^2.
 constexpr std::ptrdiff_t block_bytes = 64 * 1024;
 
-// True when K(di, dj) = K(-di, dj) = K(di, -dj) exactly; then the DFT of the wrapped array is
-// real and even, and equals a 2-D DCT-I of its (nx + 1) x (ny + 1) corner.
-bool is_even(const Field& w, std::ptrdiff_t nx, std::ptrdiff_t ny) {
-  const std::ptrdiff_t mx = 2 * nx;
-  const std::ptrdiff_t my = 2 * ny;
-  for (std::ptrdiff_t j = 0; j < my; ++j)
-    for (std::ptrdiff_t i = 1; i < nx; ++i)
-      if (w(i, j) != w(mx - i, j)) return false;
-  for (std::ptrdiff_t j = 1; j < ny; ++j)
-    for (std::ptrdiff_t i = 0; i < mx; ++i)
-      if (w(i, j) != w(i, my - j)) return false;
-  return true;
-}
-
 }  // namespace
 
-DcfftOperator::DcfftOperator(const Grid& grid, Planning planning, int threads)
-    : grid_(grid),
-      nx_(grid.nx()),
-      ny_(grid.ny()),
-      mx_(2 * grid.nx()),
-      my_(2 * grid.ny()),
-      hx_(grid.nx() + 1),
-      threads_(threads) {
+DcfftOperator::DcfftOperator(const InfluenceKernel& kernel, Planning planning, int threads)
+    : grid_(kernel.grid()),
+      nx_(grid_.nx()),
+      ny_(grid_.ny()),
+      mx_(2 * grid_.nx()),
+      my_(2 * grid_.ny()),
+      hx_(grid_.nx() + 1),
+      threads_(threads),
+      method_(kernel.method()) {
   const auto start = std::chrono::steady_clock::now();
   COATFFT_REQUIRE(threads >= 1, "DcfftOperator: threads = ", threads, ", but must be >= 1");
+  plan_transforms(planning);
+  if (kernel.form() == InfluenceKernel::Form::coefficients)
+    transform_coefficients(kernel.quarter());
+  else
+    store_spectrum(kernel.quarter());
+  setup_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void DcfftOperator::plan_transforms(Planning planning) {
+  const int threads = threads_;
   const unsigned flags = fftw_flags(planning);
 
   // x transforms of the ny data rows only (the padding rows ny..2ny-1 are zero on input and
@@ -75,73 +72,36 @@ DcfftOperator::DcfftOperator(const Grid& grid, Planning planning, int threads)
                                   nullptr, 1, 2 * ny, sign, flags);
       });
   }
-
-  setup_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-DcfftOperator::DcfftOperator(const InfluenceKernel& kernel, Planning planning, int threads)
-    : DcfftOperator(kernel.grid(), planning, threads) {
-  const auto start = std::chrono::steady_clock::now();
-  const Field& wrapped = kernel.wrapped();
-  even_ = is_even(wrapped, nx_, ny_);
-  if (even_) {
-    compute_even_spectrum(wrapped.data(), mx_);
-  } else {
-    compute_general_spectrum(wrapped);
-  }
-  setup_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-DcfftOperator::DcfftOperator(const EvenInfluenceKernel& kernel, Planning planning, int threads)
-    : DcfftOperator(kernel.grid, planning, threads) {
-  const auto start = std::chrono::steady_clock::now();
-  const Field& q = kernel.quarter;
-  COATFFT_REQUIRE(q.rows() == hx_ && q.cols() == ny_ + 1,
-                  "DcfftOperator: the kernel quarter has shape (", q.rows(), ", ", q.cols(),
-                  "), but the grid needs (", hx_, ", ", ny_ + 1, ")");
-  COATFFT_REQUIRE(q.allFinite(), "DcfftOperator: the kernel quarter is not finite");
-  even_ = true;
-  compute_even_spectrum(q.data(), hx_);
-  setup_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-DcfftOperator::DcfftOperator(const EvenKernelSpectrum& spectrum, Planning planning, int threads)
-    : DcfftOperator(spectrum.grid, planning, threads) {
-  const auto start = std::chrono::steady_clock::now();
-  const Field& s = spectrum.values;
-  COATFFT_REQUIRE(s.rows() == hx_ && s.cols() == ny_ + 1,
-                  "DcfftOperator: the kernel spectrum has shape (", s.rows(), ", ", s.cols(),
-                  "), but the grid needs (", hx_, ", ", ny_ + 1, ")");
-  COATFFT_REQUIRE(s.allFinite(), "DcfftOperator: the kernel spectrum is not finite");
-  even_ = true;
+void DcfftOperator::store_spectrum(const Field& s) {
   // Stored transposed ([kx][ky], the blocks' layout) with FFTW's 1/(mx my) folded in, as
-  // compute_even_spectrum leaves it.
+  // transform_coefficients leaves it.
   const std::ptrdiff_t len = ny_ + 1;
-  kernel_even_ = FftwRealBuffer(static_cast<std::size_t>(hx_ * len));
-  double* k = kernel_even_.data();
+  kernel_spectrum_ = FftwRealBuffer(static_cast<std::size_t>(hx_ * len));
+  double* k = kernel_spectrum_.data();
   const double scale = 1.0 / static_cast<double>(mx_ * my_);
   for (std::ptrdiff_t jy = 0; jy < len; ++jy)
     for (std::ptrdiff_t jx = 0; jx < hx_; ++jx) k[jx * len + jy] = scale * s(jx, jy);
-  setup_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-void DcfftOperator::compute_even_spectrum(const double* corner, std::ptrdiff_t column_stride) {
+void DcfftOperator::transform_coefficients(const Field& quarter) {
   // DFT of the 2n-periodic even sequence = DCT-I (FFTW REDFT00) of its first n + 1 entries; the
   // slots nx, ny hold the wrap-around layout's zeros (whatever they hold, those offsets never
   // reach the cropped output). Stored column-major, [kx][ky], like the blocks it multiplies. The
-  // transform reads the (nx + 1) x (ny + 1) corner (x fastest; of the wrapped array or of an
-  // EvenInfluenceKernel's quarter) in place through guru strides and writes the transposed layout
+  // transform reads the (nx + 1) x (ny + 1) quarter (x fastest) in place through guru strides
+  // and writes the transposed layout
   // directly, so FFTW's tiled copies do the transposition (a separate strided copy loop cost
   // about as much as the transform at 1024^2). FFTW_PRESERVE_INPUT (the default for out-of-place
   // r2r anyway, FFTW manual 4.3.2) keeps the input read-only. One-off: FFTW_ESTIMATE, which
   // plans without touching the arrays.
   const std::ptrdiff_t len = ny_ + 1;
-  kernel_even_ = FftwRealBuffer(static_cast<std::size_t>(hx_ * len));
-  double* k = kernel_even_.data();
+  kernel_spectrum_ = FftwRealBuffer(static_cast<std::size_t>(hx_ * len));
+  double* k = kernel_spectrum_.data();
   const fftw_iodim dims[2] = {{static_cast<int>(hx_), 1, static_cast<int>(len)},
-                              {static_cast<int>(len), static_cast<int>(column_stride), 1}};
+                              {static_cast<int>(len), static_cast<int>(hx_), 1}};
   const fftw_r2r_kind kinds[2] = {FFTW_REDFT00, FFTW_REDFT00};
-  double* in = const_cast<double*>(corner);
+  double* in = const_cast<double*>(quarter.data());
   const FftwPlan dct = FftwPlan::create(threads_, [&] {
     return fftw_plan_guru_r2r(2, dims, 0, nullptr, in, k, kinds,
                               FFTW_ESTIMATE | FFTW_PRESERVE_INPUT);
@@ -149,34 +109,6 @@ void DcfftOperator::compute_even_spectrum(const double* corner, std::ptrdiff_t c
   dct.execute();
   const double scale = 1.0 / static_cast<double>(mx_ * my_);
   std::for_each(k, k + hx_ * len, [scale](double& v) { v *= scale; });
-}
-
-void DcfftOperator::compute_general_spectrum(const Field& wrapped) {
-  // Column-major [kx][ky] half spectrum, built without a second full-size array: r2c of each of
-  // the 2ny rows through a one-row buffer, scattered into the columns, then the y transforms in
-  // place. One-off: FFTW_ESTIMATE.
-  kernel_general_ = FftwComplexBuffer(static_cast<std::size_t>(hx_ * my_));
-  std::complex<double>* k = as_complex(kernel_general_.data());
-  FftwRealBuffer row(static_cast<std::size_t>(mx_));
-  FftwComplexBuffer row_hat(static_cast<std::size_t>(hx_));
-  const FftwPlan r2c = FftwPlan::create(1, [&] {
-    return fftw_plan_dft_r2c_1d(static_cast<int>(mx_), row.data(), row_hat.data(), FFTW_ESTIMATE);
-  });
-  const int n_y[1] = {static_cast<int>(my_)};
-  const FftwPlan dft_y = FftwPlan::create(threads_, [&] {
-    return fftw_plan_many_dft(1, n_y, static_cast<int>(hx_), kernel_general_.data(), nullptr, 1,
-                              static_cast<int>(my_), kernel_general_.data(), nullptr, 1,
-                              static_cast<int>(my_), FFTW_FORWARD, FFTW_ESTIMATE);
-  });
-  const std::complex<double>* h = as_complex(row_hat.data());
-  for (std::ptrdiff_t j = 0; j < my_; ++j) {
-    std::copy_n(&wrapped(0, j), mx_, row.data());
-    r2c.execute();
-    for (std::ptrdiff_t kx = 0; kx < hx_; ++kx) k[kx * my_ + j] = h[kx];
-  }
-  dft_y.execute();
-  const double scale = 1.0 / static_cast<double>(mx_ * my_);
-  std::for_each(k, k + hx_ * my_, [scale](std::complex<double>& v) { v *= scale; });
 }
 
 void DcfftOperator::convolve_columns(Worker& worker, std::ptrdiff_t first_block,
@@ -203,15 +135,10 @@ void DcfftOperator::convolve_columns(Worker& worker, std::ptrdiff_t first_block,
     worker.forward_y.execute();
     for (std::ptrdiff_t c = 0; c < width; ++c) {
       std::complex<double>* col = t + c * my;
-      if (even_) {
-        // Real, even spectrum: rows ky > ny mirror 2ny - ky.
-        const double* k = kernel_even_.data() + (c0 + c) * (ny + 1);
-        for (std::ptrdiff_t ky = 0; ky <= ny; ++ky) col[ky] *= k[ky];
-        for (std::ptrdiff_t ky = ny + 1; ky < my; ++ky) col[ky] *= k[my - ky];
-      } else {
-        const std::complex<double>* k = as_complex(kernel_general_.data()) + (c0 + c) * my;
-        for (std::ptrdiff_t ky = 0; ky < my; ++ky) col[ky] *= k[ky];
-      }
+      // Real, even spectrum: rows ky > ny mirror 2ny - ky.
+      const double* k = kernel_spectrum_.data() + (c0 + c) * (ny + 1);
+      for (std::ptrdiff_t ky = 0; ky <= ny; ++ky) col[ky] *= k[ky];
+      for (std::ptrdiff_t ky = ny + 1; ky < my; ++ky) col[ky] *= k[my - ky];
     }
     worker.backward_y.execute();
     // Only the rows ky < ny of the inverse are inside the crop.
@@ -236,19 +163,11 @@ void DcfftOperator::apply(const Field& pressure, Field& displacement) {
     std::fill(row + nx_, row + stride, 0.0);
   }
   forward_x_.execute();
-  const auto nb_workers = static_cast<std::ptrdiff_t>(workers_.size());
-  if (nb_workers == 1) {
-    convolve_columns(workers_[0], 0, nb_blocks_);
-  } else {
-    std::vector<std::jthread> pool;
-    pool.reserve(static_cast<std::size_t>(nb_workers - 1));
-    for (std::ptrdiff_t w = 1; w < nb_workers; ++w)
-      pool.emplace_back([this, w, nb_workers] {
-        convolve_columns(workers_[static_cast<std::size_t>(w)], nb_blocks_ * w / nb_workers,
-                         nb_blocks_ * (w + 1) / nb_workers);
-      });
-    convolve_columns(workers_[0], 0, nb_blocks_ / nb_workers);
-  }
+  // One contiguous run of column blocks per worker, each with its own scratch.
+  detail::parallel_chunks(0, nb_blocks_, static_cast<int>(workers_.size()),
+                          [this](std::ptrdiff_t w, std::ptrdiff_t first, std::ptrdiff_t last) {
+                            convolve_columns(workers_[static_cast<std::size_t>(w)], first, last);
+                          });
   backward_x_.execute();
   displacement.resize(nx_, ny_);
   for (std::ptrdiff_t j = 0; j < ny_; ++j) std::copy_n(real + j * stride, nx_, &displacement(0, j));

@@ -4,7 +4,8 @@
 
 namespace coatfft {
 
-DirectOperator::DirectOperator(const InfluenceKernel& kernel) : kernel_(kernel) {}
+DirectOperator::DirectOperator(const InfluenceKernel& kernel)
+    : grid_(kernel.grid()), wrapped_(kernel.wrapped()) {}
 
 void DirectOperator::apply(const Field& pressure, Field& displacement) {
   const std::ptrdiff_t nx = grid().nx();
@@ -14,7 +15,7 @@ void DirectOperator::apply(const Field& pressure, Field& displacement) {
                   pressure.cols(), "), but the grid needs (", nx, ", ", ny, ")");
   COATFFT_REQUIRE(&pressure != &displacement,
                   "DirectOperator::apply: displacement must not alias pressure");
-  const Field& w = kernel_.wrapped();
+  const Field& w = wrapped_;
   displacement.resize(nx, ny);
   for (std::ptrdiff_t j = 0; j < ny; ++j) {
     for (std::ptrdiff_t i = 0; i < nx; ++i) {

@@ -11,17 +11,19 @@ namespace coatfft {
 /// u_ij = sum_kl K(i - k, j - l) p_kl by direct multi-summation over the kernel's grid.
 class DirectOperator final : public SurfaceOperator {
  public:
-  /// Keeps a copy of `kernel`.
+  /// Keeps the kernel's wrap-around array (coefficient form; throws InvalidArgument for the
+  /// spectrum form).
   explicit DirectOperator(const InfluenceKernel& kernel);
 
-  const Grid& grid() const override { return kernel_.grid(); }
+  const Grid& grid() const override { return grid_; }
   /// Throws InvalidArgument unless `pressure` has shape (nx, ny).
   void apply(const Field& pressure, Field& displacement) override;
-  std::string name() const override { return "direct"; }
+  Method method() const override { return Method::direct; }
   using SurfaceOperator::apply;
 
  private:
-  InfluenceKernel kernel_;
+  Grid grid_;
+  Field wrapped_;  // (2nx, 2ny) wrap-around coefficients
 };
 
 }  // namespace coatfft

@@ -3,13 +3,23 @@
 #include <sys/mman.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <new>
 #include <type_traits>
 
+#include "core/detail/parse_name.hpp"
 #include "core/error.hpp"
 
 namespace coatfft {
+
+std::string_view to_string(Planning planning) {
+  return planning == Planning::measure ? "measure" : "estimate";
+}
+
+Planning parse_planning(std::string_view name) {
+  return detail::parse_name(name, std::array{Planning::estimate, Planning::measure});
+}
 
 unsigned fftw_flags(Planning planning) {
   return planning == Planning::measure ? FFTW_MEASURE : FFTW_ESTIMATE;

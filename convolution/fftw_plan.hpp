@@ -12,24 +12,16 @@
 #include <string>
 #include <utility>
 
-namespace coatfft {
+#include "convolution/fftw_wisdom.hpp"
+#include "convolution/planning.hpp"
 
-/// FFTW planner effort: `estimate` plans in microseconds (tests, one-off transforms); `measure`
-/// times candidate algorithms (seconds for large sizes) and pays off for operators applied often.
-enum class Planning { estimate, measure };
+namespace coatfft {
 
 /// The FFTW planner flag for `planning` (FFTW_ESTIMATE or FFTW_MEASURE).
 unsigned fftw_flags(Planning planning);
 
 /// The mutex that serialises every FFTW planner call in the process.
 std::mutex& fftw_planner_mutex();
-
-/// Imports FFTW wisdom from the file at `path`; returns false when the file is missing or
-/// unreadable (wisdom is an optimisation, so its absence is not an error).
-bool load_fftw_wisdom(const std::string& path);
-
-/// Exports the accumulated FFTW wisdom to the file at `path`; throws Error if it cannot be written.
-void save_fftw_wisdom(const std::string& path);
 
 namespace detail {
 /// Calls fftw_init_threads once, then fftw_plan_with_nthreads(threads). The caller must hold

@@ -74,10 +74,10 @@ InfluenceKernel frf_influence_kernel(const Grid& grid, const Frf& frf, double al
   const double dky = 2.0 * pi / (static_cast<double>(my) * dy);
   const double scale = 1.0 / (static_cast<double>(mx) * static_cast<double>(my));
 
-  // theory.md (4.1): the coefficient of a uniformly loaded dx x dy cell is the Fourier series of
-  // the periodised G convolved with the cell's indicator, whose transform is
+  // docs/theory.md (4.1): the coefficient of a uniformly loaded dx x dy cell is the Fourier series
+  // of the periodised G convolved with the cell's indicator, whose transform is
   // dx dy sinc(kx dx/2) sinc(ky dy/2); the dx dy cancels the 1/(mx dx my dy) of the series, which
-  // leaves FFTW's 1/(mx my). The seed paper's step list does not mention the cell factor (it
+  // leaves FFTW's 1/(mx my). The step list of Spinu (2021) does not mention the cell factor (it
   // inverts the bare FRF samples, i.e. point-sampled coefficients); we implement (4.1), which is
   // the consistent cell average and differs from the bare samples mostly near the self term.
   //
@@ -95,14 +95,10 @@ InfluenceKernel frf_influence_kernel(const Grid& grid, const Frf& frf, double al
     return sinc(0.5 * dky * static_cast<double>(sy) * dy);
   };
 
-  Field wrapped(2 * nx, 2 * ny);
+  // The quarter of the coefficients: column dj holds K(di, dj) for di = 0..nx-1 (k_column).
+  Field quarter = Field::Zero(nx + 1, ny + 1);
   const auto fill_column = [&](std::ptrdiff_t dj, const double* k_column) {
-    // k_column holds K(di, dj) for di = 0..nx-1.
-    double* c = &wrapped(0, dj);
-    std::copy_n(k_column, nx, c);
-    c[nx] = 0.0;
-    for (std::ptrdiff_t di = 1; di < nx; ++di) c[2 * nx - di] = c[di];
-    if (dj > 0) std::copy_n(c, 2 * nx, &wrapped(0, 2 * ny - dj));
+    std::copy_n(k_column, nx, &quarter(0, dj));
   };
 
   if (mx % 2 == 0 && my % 2 == 0) {
@@ -135,11 +131,29 @@ InfluenceKernel frf_influence_kernel(const Grid& grid, const Frf& frf, double al
     }
     c2r.execute();
     // The inverse of a real even spectrum is even up to rounding: the offsets +d (slots d on the
-    // M lattice) are kept and mirrored, as on the DCT route.
+    // M lattice) are kept, as on the DCT route, and stand for -d too.
     for (std::ptrdiff_t dj = 0; dj < ny; ++dj) fill_column(dj, space.data() + dj * mx);
   }
-  wrapped.col(ny).setZero();
-  return InfluenceKernel(grid, std::move(wrapped));
+  return InfluenceKernel(grid, InfluenceKernel::Form::coefficients, std::move(quarter),
+                         Method::frf_dcfft);
+}
+
+InfluenceKernel frf_dcfft_kernel(const Grid& grid, const Frf& frf, double alpha,
+                                 const G0Result& g0, int threads) {
+  const std::ptrdiff_t mx = extended_size(grid.nx(), alpha, 2.0, who);
+  const std::ptrdiff_t my = extended_size(grid.ny(), alpha, 2.0, who);
+  if (mx != 2 * grid.nx() || my != 2 * grid.ny())
+    return frf_influence_kernel(grid, frf, alpha, g0, threads);
+  // At alpha = 2 the extended lattice is DC-FFT's own padded (2nx, 2ny) lattice, so the sampled
+  // spectrum H sinc sinc *is* the spectrum DC-FFT would get back from the coefficients: the
+  // inverse transform and the forward transform are skipped (the round trip only drops the
+  // offsets +-nx, +-ny, which never reach the cropped output).
+  COATFFT_REQUIRE(std::isfinite(g0.value), who, ": g(0) = ", g0.value,
+                  " m/Pa, but it must be finite");
+  COATFFT_REQUIRE(threads >= 1, who, ": threads = ", threads, ", but must be >= 1");
+  return InfluenceKernel(grid, InfluenceKernel::Form::spectrum,
+                         detail::frf_cell_spectrum_quarter(grid, frf, mx, my, g0, threads),
+                         Method::frf_dcfft);
 }
 
 }  // namespace coatfft

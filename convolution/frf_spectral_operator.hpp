@@ -1,10 +1,10 @@
 #pragma once
-// FRF-spectral displacement operator (seed paper, Spinu 2021, section 4, first algorithm;
-// theory.md 4.3): the pressure, zero-padded to an alpha-times larger periodic domain, is multiplied
-// in Fourier space by the FRF sampled on that domain's frequency lattice, with the singular
-// zero-frequency sample replaced by g(0) (convolution/g0.hpp). This is a convolution with the
-// (alpha L)-periodised Green's function, so it carries a periodicity error ~1/alpha that is
-// uniform in N (theory.md 4.3: -2.5% centre, -4.7% domain edge for Hertz at alpha = 2).
+// FRF-spectral displacement operator (Spinu 2021, section 4, first algorithm;
+// docs/theory.md 4.3): the pressure, zero-padded to an alpha-times larger periodic domain, is
+// multiplied in Fourier space by the FRF sampled on that domain's frequency lattice, with the
+// singular zero-frequency sample replaced by g(0) (convolution/g0.hpp). This is a convolution with
+// the (alpha L)-periodised Green's function, so it carries a periodicity error ~1/alpha that is
+// uniform in N (docs/theory.md 4.3: -2.5% centre, -4.7% domain edge for Hertz at alpha = 2).
 #include <cstddef>
 #include <string>
 
@@ -53,7 +53,7 @@ class FrfSpectralOperator final : public SurfaceOperator {
                       double g0_tolerance = default_g0_tolerance,
                       Planning planning = Planning::estimate, int threads = 1);
   /// As above with a given g(0) (e.g. a value from a scene file, or a deliberately perturbed one:
-  /// the seed's Figure 3(b)); `g0.value` must be finite.
+  /// Spinu (2021), Figure 3(b)); `g0.value` must be finite.
   FrfSpectralOperator(const Grid& grid, const Frf& frf, double alpha, const G0Result& g0,
                       Planning planning = Planning::estimate, int threads = 1);
 
@@ -61,7 +61,7 @@ class FrfSpectralOperator final : public SurfaceOperator {
   /// Throws InvalidArgument unless `pressure` has shape (nx, ny) and does not alias
   /// `displacement`.
   void apply(const Field& pressure, Field& displacement) override;
-  std::string name() const override { return "frf-spectral"; }
+  Method method() const override { return Method::frf_spectral; }
   using SurfaceOperator::apply;
 
   /// The g(0) used, with its method, cost and error estimate.

@@ -5,7 +5,7 @@
 //
 //   H(k) = Cinf/k + (C0 - Cinf) exp(-beta k)/k + R(k),
 //
-// (a) Cinf/k: Love's cell-averaged coefficients (theory.md 1.5), exact;
+// (a) Cinf/k: Love's cell-averaged coefficients (docs/theory.md (1.5)), exact;
 // (b) exp(-beta k)/k <-> 1/(2 pi sqrt(r^2 + beta^2)): its cell integral in closed form;
 // (c) R(k): bounded, O(k^0) at k = 0, decaying fast. R is split once more with the window
 //     w = exp(-s) (1 + s + s^2/2), s = (sigma k)^2 (an Ewald-type split): R w has a smooth,
@@ -46,7 +46,7 @@ struct SplitKernelOptions {
   /// cell need many (about 3 dx/h); beyond the cap the fold is truncated (see report).
   int max_alias_order = 48;
   /// Threads for the coefficient loops (Love, corner table, Hankel table, cell quadrature, alias
-  /// fold); the result does not depend on it. In [1, 1024].
+  /// fold); the result does not depend on it. In [1, max_threads] (core/threads.hpp).
   int threads = 1;
 };
 
@@ -68,21 +68,19 @@ struct SplitKernelReport {
   double seconds_short = 0.0;  ///< of which the alias fold and its DCT [s]
 };
 
-/// Influence coefficients K(di, dj) [m/Pa] of the FRF `frf` on `grid` by the split above, in the
-/// wrap-around layout of DcfftOperator. Exactly Love's coefficients for a homogeneous FRF
+/// Influence coefficients K(di, dj) [m/Pa] of the FRF `frf` on `grid` by the split above
+/// (coefficient form, Method::frf_split). Exactly Love's coefficients for a homogeneous FRF
 /// (C0 == Cinf and R == 0 to rounding). Throws InvalidArgument for bad options or an FRF whose c0,
 /// c_inf or values are not finite and positive. `report`, when given, receives the diagnostics.
 InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
                                  const SplitKernelOptions& options = {},
                                  SplitKernelReport* report = nullptr);
 
-/// The same coefficients as an EvenInfluenceKernel (the split kernel is even in x and y): what
-/// DcfftOperator needs, without the (2nx, 2ny) array (a quarter of the memory and page faults).
-EvenInfluenceKernel split_frf_kernel_quarter(const Grid& grid, const Frf& frf,
-                                             const SplitKernelOptions& options = {},
-                                             SplitKernelReport* report = nullptr);
-
 namespace detail {
+/// The coefficient quarter behind split_frf_kernel, shape (nx + 1, ny + 1).
+Field split_kernel_quarter_values(const Grid& grid, const Frf& frf,
+                                  const SplitKernelOptions& options, SplitKernelReport* report);
+
 /// \iint over the dx x dy rectangle centred at the origin of 1/sqrt((x - x')^2 + (y - y')^2 +
 /// beta^2) dx' dy' [m], beta > 0 [m]: the 4-corner sum of F(X, Y) = X asinh(Y/sqrt(X^2 + beta^2))
 /// + Y asinh(X/sqrt(Y^2 + beta^2)) - beta atan(X Y/(beta sqrt(X^2 + Y^2 + beta^2))), for which

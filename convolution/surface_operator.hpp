@@ -5,8 +5,9 @@
 // apply() only computes. Not safe to call apply() on one instance from two threads at once.
 #include <string>
 
-#include "core/grid.hpp"
-#include "core/types.hpp"
+#include "../core/grid.hpp"
+#include "../core/types.hpp"
+#include "method.hpp"
 
 namespace coatfft {
 
@@ -22,8 +23,10 @@ class SurfaceOperator {
   /// u = displacement [m, positive into the body] from p = pressure [Pa, positive compressive],
   /// both Fields of shape (nx, ny). `u` is resized if needed; it must not alias `p`.
   virtual void apply(const Field& pressure, Field& displacement) = 0;
-  /// Short method name as used in scene files and summary.json ("dcfft", "direct", ...).
-  virtual std::string name() const = 0;
+  /// The method this operator runs (DC-FFT on a split kernel reports frf-split, not dcfft).
+  virtual Method method() const = 0;
+  /// Its name as used in scene files and summary.json ("dcfft", "frf-split", ...).
+  std::string name() const { return std::string(to_string(method())); }
 
   /// Allocating convenience form.
   Field apply(const Field& pressure) {

@@ -48,7 +48,7 @@ class OffsetOperator final : public SurfaceOperator {
     inner_.apply(p, u);
     u += c_ * p.sum() * grid().dx() * grid().dy();
   }
-  std::string name() const override { return "offset"; }
+  coatfft::Method method() const override { return inner_.method(); }
   using SurfaceOperator::apply;
 
  private:
@@ -300,6 +300,7 @@ TEST_CASE("Non-convergence is reported, not thrown", "[contact]") {
   ContactResult res;
   REQUIRE_NOTHROW(res = ContactSolver(op, opts).solve_load(hp.h, kLoad));
   CHECK_FALSE(res.converged);
+  CHECK(res.status == ContactStatus::iteration_limit);
   CHECK(res.iterations == 2);
   CHECK(res.residual > opts.tolerance);
   CHECK(std::isfinite(res.residual));
@@ -316,8 +317,96 @@ TEST_CASE("Contact reaching the domain edge is flagged", "[contact][bad_input]")
   const ContactResult res = ContactSolver(op).solve_load(hp.h, 27 * kLoad);
   CHECK(res.touches_boundary);
   CHECK_THAT(res.warning, Catch::Contains("domain edge"));
+  // The edge is a property of the iterate, not how the iteration ended: this one converged.
+  CHECK(res.status == ContactStatus::converged);
+  CHECK(res.converged);
+  CHECK(res.warning ==
+        "contact reaches the domain edge (pressure > 0 on a border cell): the domain is too small "
+        "for this load");
   const ContactResult fine = ContactSolver(op).solve_load(hp.h, kLoad);
   CHECK_FALSE(fine.touches_boundary);
+  CHECK(fine.status == ContactStatus::converged);
+  CHECK(fine.warning.empty());
+}
+
+TEST_CASE("The iteration limit is a status with its message", "[contact]") {
+  const HertzProblem hp(16);
+  DcfftOperator op(love_kernel(hp.grid, kModulus));
+  ContactOptions opts;
+  opts.max_iterations = 1;
+  for (const ContactControl control : {ContactControl::load, ContactControl::approach}) {
+    const double value = control == ContactControl::load ? kLoad : hp.reference.approach;
+    const ContactResult res = ContactSolver(op, opts).solve(hp.h, control, value);
+    CHECK(res.status == ContactStatus::iteration_limit);
+    CHECK_FALSE(res.converged);
+    CHECK(res.iterations == 1);
+    CHECK_FALSE(res.touches_boundary);
+    CHECK(res.warning == detail::concat("not converged after 1 iterations (residual ", res.residual,
+                                        ", tolerance ", opts.tolerance, ")"));
+    CHECK(res.warning == describe(res, opts.tolerance));
+  }
+}
+
+namespace {
+
+// u = c p + b: a local compliance c [m/Pa] and a rigid shift b [m] that does not depend on p.
+// Not an elastic operator; it drives the solver into each of its breakdowns.
+class AffineOperator final : public SurfaceOperator {
+ public:
+  AffineOperator(const Grid& grid, double c, double b) : grid_(grid), c_(c), b_(b) {}
+  const Grid& grid() const override { return grid_; }
+  void apply(const Field& p, Field& u) override { u = c_ * p + b_; }
+  coatfft::Method method() const override { return coatfft::Method::direct; }  // none of its own
+  using SurfaceOperator::apply;
+
+ private:
+  Grid grid_;
+  double c_;
+  double b_;
+};
+
+}  // namespace
+
+TEST_CASE("Breakdowns are statuses with their messages", "[contact]") {
+  const Grid grid(8, 8, 1e-3, 1e-3);
+  const Field h = height(grid, Paraboloid{kRadius});
+  SECTION("a rigid body (K = 0) has no curvature along any direction") {
+    AffineOperator rigid(grid, 0.0, 0.0);
+    const ContactResult res = ContactSolver(rigid).solve_load(h, 1.0);
+    CHECK(res.status == ContactStatus::non_positive_curvature);
+    CHECK_FALSE(res.converged);
+    CHECK(res.iterations == 1);
+    // The start, the load spread over the whole domain, is returned: it covers the border, and
+    // the breakdown is reported before the edge.
+    CHECK(res.touches_boundary);
+    CHECK(res.warning ==
+          "non-positive curvature along the search direction (breakdown); contact reaches the "
+          "domain edge (pressure > 0 on a border cell): the domain is too small for this load");
+  }
+  SECTION("a shift far above the gap lifts the surface off the indenter") {
+    for (const bool preconditioned : {true, false}) {
+      ContactOptions opts;
+      opts.preconditioned = preconditioned;
+      AffineOperator lifted(grid, 1e-15, 1e-3);
+      const ContactResult res = ContactSolver(lifted, opts).solve_approach(h, 2e-6);
+      CHECK(res.status == ContactStatus::pressure_vanished);
+      CHECK_FALSE(res.converged);
+      CHECK(res.iterations == 1);
+      CHECK(res.load > 0);  // the last iterate that carried pressure
+      CHECK(res.warning == "all pressure vanished (breakdown)");
+      CHECK(res.warning == describe(res, opts.tolerance));
+    }
+  }
+}
+
+TEST_CASE("Contact statuses have stable names", "[contact]") {
+  CHECK(to_string(ContactStatus::converged) == "converged");
+  CHECK(to_string(ContactStatus::iteration_limit) == "iteration_limit");
+  CHECK(to_string(ContactStatus::pressure_vanished) == "pressure_vanished");
+  CHECK(to_string(ContactStatus::non_positive_curvature) == "non_positive_curvature");
+  const ContactResult unsolved;
+  CHECK(unsolved.status == ContactStatus::iteration_limit);
+  CHECK_FALSE(unsolved.converged);
 }
 
 TEST_CASE("Contact solver refuses bad input with InvalidArgument", "[contact][bad_input]") {

@@ -1,5 +1,6 @@
-// Love's influence coefficient (theory.md 1.3) against an independent quadrature of the Boussinesq
-// kernel 1/(pi R) over the rectangle, the closed-form self term and the far-field expansion.
+// Love's influence coefficient (docs/theory.md 1.3) against an independent quadrature of the
+// Boussinesq kernel 1/(pi R) over the rectangle, the closed-form self term and the far-field
+// expansion.
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
 
@@ -109,7 +110,7 @@ TEST_CASE("love_influence equals a polar quadrature of 1/(pi R) over the rectang
 
 TEST_CASE("love_influence self term of a square cell is 4 asinh(1) d / pi", "[convolution][love]") {
   for (double d : {1e-6, 1e-3, 1.0, 7.5}) {
-    // Closed form of theory.md 1.3; both sides are a few roundings apart.
+    // Closed form of docs/theory.md 1.3; both sides are a few roundings apart.
     CHECK(love_influence(0.0, 0.0, d, d) ==
           Approx(4.0 * std::asinh(1.0) * d / std::numbers::pi).epsilon(1e-15));
   }
@@ -166,7 +167,8 @@ TEST_CASE("love_kernel holds love_influence / E* at every offset, in wrap-around
   CHECK(kernel.wrapped().col(4).isZero(0.0));
   CHECK_THROWS_AS(kernel.at(5, 0), coatfft::InvalidArgument);
   CHECK_THROWS_AS(kernel.at(0, -4), coatfft::InvalidArgument);
-  CHECK_THROWS_AS(coatfft::InfluenceKernel(grid, coatfft::Field::Zero(10, 7)),
+  CHECK_THROWS_AS(coatfft::InfluenceKernel(grid, coatfft::InfluenceKernel::Form::coefficients,
+                                           coatfft::Field::Zero(10, 7)),
                   coatfft::InvalidArgument);
   CHECK_THROWS_AS(coatfft::love_kernel(grid, 0.0), coatfft::InvalidArgument);
 }
@@ -272,11 +274,25 @@ TEST_CASE("love_influence_row equals love_influence along a row through every ru
   CHECK_THROWS_AS(coatfft::love_kernel(grid, 2e11, 0), coatfft::InvalidArgument);
 }
 
-TEST_CASE("DcfftOperator from Love's quarter equals the wrap-around route and direct summation",
+// The kernel's spectrum on DC-FFT's padded lattice by the cosine sum of the definition in
+// convolution/influence_kernel.hpp, over every wrapped offset: O((nx ny)^2), independent of FFTW.
+coatfft::Field cosine_sum_spectrum(const coatfft::InfluenceKernel& k) {
+  const std::ptrdiff_t nx = k.grid().nx(), ny = k.grid().ny();
+  coatfft::Field s = coatfft::Field::Zero(nx + 1, ny + 1);
+  for (std::ptrdiff_t jy = 0; jy <= ny; ++jy)
+    for (std::ptrdiff_t jx = 0; jx <= nx; ++jx)
+      for (std::ptrdiff_t dj = 1 - ny; dj < ny; ++dj)
+        for (std::ptrdiff_t di = 1 - nx; di < nx; ++di)
+          s(jx, jy) += k.at(di, dj) * std::cos(M_PI * double(jx * di) / double(nx)) *
+                       std::cos(M_PI * double(jy * dj) / double(ny));
+  return s;
+}
+
+TEST_CASE("DcfftOperator from Love's coefficients and from their spectrum equals direct summation",
           "[convolution][love]") {
-  // love_kernel_quarter feeds DC-FFT without the (2nx, 2ny) array. References: the same
-  // coefficients through the wrap-around route (love_kernel), and the O(N^4) direct sum of
-  // them, on odd, even, non-square grids with dx != dy.
+  // DC-FFT transforms the coefficient quarter by a DCT-I; the spectrum form skips it. References:
+  // the same coefficients' spectrum by a plain cosine sum, and the O(N^4) direct sum of the
+  // coefficients, on odd, even, non-square grids with dx != dy.
   struct Shape {
     std::ptrdiff_t nx, ny;
     double lx, ly;
@@ -289,31 +305,29 @@ TEST_CASE("DcfftOperator from Love's quarter equals the wrap-around route and di
     for (std::ptrdiff_t j = 0; j < sh.ny; ++j)
       for (std::ptrdiff_t i = 0; i < sh.nx; ++i)
         p(i, j) = 1e6 * (1.0 + std::sin(3.0 * i + 7.0 * j));
-    const coatfft::EvenInfluenceKernel quarter = coatfft::love_kernel_quarter(g, 1.1e11, 2);
-    REQUIRE(quarter.quarter.rows() == sh.nx + 1);
-    REQUIRE(quarter.quarter.cols() == sh.ny + 1);
-    const coatfft::InfluenceKernel wrapped = coatfft::love_kernel(g, 1.1e11);
-    // The quarter is the wrapped array's corner, bit for bit (threads do not change it).
-    for (std::ptrdiff_t dj = 0; dj < sh.ny; ++dj)
-      for (std::ptrdiff_t di = 0; di < sh.nx; ++di)
-        REQUIRE(quarter.quarter(di, dj) == wrapped.at(di, dj));
-    coatfft::DcfftOperator from_quarter(quarter);
-    coatfft::DcfftOperator from_wrapped(wrapped);
-    coatfft::DirectOperator direct(coatfft::wrap_even_kernel(quarter));
-    CHECK(from_quarter.even_kernel());
+    const coatfft::InfluenceKernel kernel = coatfft::love_kernel(g, 1.1e11, 2);
+    REQUIRE(kernel.quarter().rows() == sh.nx + 1);
+    REQUIRE(kernel.quarter().cols() == sh.ny + 1);
+    const coatfft::InfluenceKernel spectrum(g, coatfft::InfluenceKernel::Form::spectrum,
+                                            cosine_sum_spectrum(kernel));
+    coatfft::DcfftOperator from_quarter(kernel);
+    coatfft::DcfftOperator from_spectrum(spectrum);
+    coatfft::DirectOperator direct(kernel);
     const coatfft::Field u = from_quarter.apply(p);
-    CHECK(coatfft::rel_linf(u, from_wrapped.apply(p)) < 1e-13);
+    CHECK(coatfft::rel_linf(u, from_spectrum.apply(p)) < 1e-13);
     CHECK(coatfft::rel_linf(u, direct.apply(p)) < 1e-12);
   }
   const coatfft::Grid g(10, 8, 1e-3, 1e-3);
-  CHECK_THROWS_WITH(
-      coatfft::DcfftOperator(coatfft::EvenInfluenceKernel{g, coatfft::Field::Ones(10, 8)}),
-      Catch::Contains("shape (10, 8)"));
+  using Form = coatfft::InfluenceKernel::Form;
+  CHECK_THROWS_WITH(coatfft::InfluenceKernel(g, Form::coefficients, coatfft::Field::Ones(10, 8)),
+                    Catch::Contains("shape (10, 8)"));
   coatfft::Field bad = coatfft::Field::Ones(11, 9);
   bad(2, 2) = NAN;
-  CHECK_THROWS_WITH(coatfft::DcfftOperator(coatfft::EvenInfluenceKernel{g, bad}),
+  CHECK_THROWS_WITH(coatfft::InfluenceKernel(g, Form::spectrum, bad),
                     Catch::Contains("not finite"));
-  CHECK_THROWS_WITH(
-      coatfft::wrap_even_kernel(coatfft::EvenInfluenceKernel{g, coatfft::Field::Ones(3, 3)}),
-      Catch::Contains("shape (3, 3)"));
+  CHECK_THROWS_WITH(coatfft::InfluenceKernel(g, Form::spectrum, coatfft::Field::Ones(3, 3)),
+                    Catch::Contains("shape (3, 3)"));
+  const coatfft::InfluenceKernel spectrum(g, Form::spectrum, coatfft::Field::Ones(11, 9));
+  CHECK_THROWS_WITH(spectrum.at(0, 0), Catch::Contains("spectrum"));
+  CHECK_THROWS_WITH(coatfft::DirectOperator(spectrum), Catch::Contains("spectrum"));
 }

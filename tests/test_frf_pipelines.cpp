@@ -4,10 +4,10 @@
 #include <numbers>
 
 #include "convolution/dcfft_operator.hpp"
-#include "convolution/frf_dcfft_operator.hpp"
 #include "convolution/frf_influence_kernel.hpp"
 #include "convolution/frf_spectral_operator.hpp"
 #include "convolution/influence_kernel.hpp"
+#include "convolution/make_operator.hpp"
 #include "core/error.hpp"
 #include "core/grid.hpp"
 #include "core/norms.hpp"
@@ -50,7 +50,7 @@ double signed_index(std::ptrdiff_t j, std::ptrdiff_t m) {
 
 // The periodised kernel G(di, dj) = (1/(mx my)) sum_k S(k) H(k) exp(+i k.d) by a direct double
 // sum over the whole lattice (no FFT, no half spectrum, no layout tricks); `cell` multiplies by
-// the cell transform sinc(kx dx/2) sinc(ky dy/2) of theory.md (4.1).
+// the cell transform sinc(kx dx/2) sinc(ky dy/2) of docs/theory.md (4.1).
 double direct_periodic_kernel(const Frf& frf, double g0, const Grid& g, std::ptrdiff_t mx,
                               std::ptrdiff_t my, std::ptrdiff_t di, std::ptrdiff_t dj, bool cell) {
   const double dkx = 2 * pi / (mx * g.dx()), dky = 2 * pi / (my * g.dy());
@@ -133,11 +133,11 @@ TEST_CASE("FRF influence coefficients equal the direct sum of theory.md (4.1)", 
 
 TEST_CASE("Hertz on a half-space: both FRF pipelines reproduce the seed-paper errors",
           "[frf_pipelines]") {
-  // theory.md 4.3 table (independent numpy implementation, N = 64, L = 3a, g0 = cell average):
+  // docs/theory.md 4.3 table (independent numpy implementation, N = 64, L = 3a, g0 = cell average):
   // local error u/u_exact - 1 at alpha = 2: centre -2.5%, domain edge -4.7%, corner -3.0%;
   // alpha = 4: -1.3%, -3.9%, -5.1%; alpha = 8: -0.66%, -2.1%, -3.0%. The table has 2 digits, so
   // we allow 0.1 percentage point. "Centre" is the cell at (+dx/2, +dy/2), "edge" the cell at
-  // (-L/2 + dx/2, +dy/2). FRF -> DC-FFT equals it "to within 0.1%" (theory.md 4.4).
+  // (-L/2 + dx/2, +dy/2). FRF -> DC-FFT equals it "to within 0.1%" (docs/theory.md 4.4).
   const HertzCase h = hertz_case(64);
   const InverseKFrf frf(steel.plane_strain_modulus());
   const std::ptrdiff_t c = 32;
@@ -171,7 +171,7 @@ TEST_CASE("Hertz on a half-space: both FRF pipelines reproduce the seed-paper er
   CHECK((ul - h.exact).abs().maxCoeff() / h.u0 < 1e-3);
   FrfSpectralOperator spectral2(h.grid, frf, 2.0, G0Method::regularized);
   const double e2 = (spectral2.apply(h.pressure) - ul).abs().maxCoeff() / h.u0;
-  CHECK(e2 == Approx(0.0247).margin(0.002));  // theory.md 4.3: 2.5% of u_max at alpha = 2
+  CHECK(e2 == Approx(0.0247).margin(0.002));  // docs/theory.md 4.3: 2.5% of u_max at alpha = 2
 }
 
 TEST_CASE("A g(0) perturbation shifts the whole field uniformly (seed Figure 3(b))",
@@ -269,7 +269,7 @@ TEST_CASE("FRF sampling and coefficients on square lattices and several threads"
     }
   }
   // frf_influence_kernel on a square lattice (DCT-I route with the swap symmetry) and with 2
-  // threads, against the independent double sum of theory.md (4.1): 1e-12 of K(0, 0) as above.
+  // threads, against the independent double sum of docs/theory.md (4.1): 1e-12 of K(0, 0) as above.
   const Grid g(4, 4, 1e-3, 1e-3);
   const G0Result g0 =
       compute_g0(frf, 2 * pi / (8 * g.dx()), 2 * pi / (8 * g.dy()), G0Method::regularized);
@@ -284,7 +284,7 @@ TEST_CASE("FRF sampling and coefficients on square lattices and several threads"
   CHECK_THROWS_AS(frf_influence_kernel(g, frf, 2.0, g0, 0), InvalidArgument);
 }
 
-TEST_CASE("frf_dcfft_operator at alpha = 2 (spectrum route) equals the coefficient route",
+TEST_CASE("frf-dcfft at alpha = 2 (spectrum form) equals the coefficient route",
           "[frf_pipelines]") {
   // The spectrum route skips the DCT round trip of the coefficients; the reference is the plain
   // route: coefficients by frf_influence_kernel, then DcfftOperator's own transform. Both compute
@@ -301,34 +301,44 @@ TEST_CASE("frf_dcfft_operator at alpha = 2 (spectrum route) equals the coefficie
     INFO(sh.nx << " x " << sh.ny);
     const Grid g(sh.nx, sh.ny, sh.lx, sh.ly);
     const Field p = random_pressure(sh.nx, sh.ny);
-    G0Result g0{};
-    const auto fast = frf_dcfft_operator(g, coated, 2.0, G0Method::regularized, 1e-13, &g0);
+    OperatorOptions options;
+    options.method = Method::frf_dcfft;
+    options.g0_tolerance = 1e-13;
+    const BuiltOperator fast = make_operator(g, coated, options);
+    REQUIRE(fast.report.g0);
+    const G0Result g0 = *fast.report.g0;
     DcfftOperator plain(frf_influence_kernel(g, coated, 2.0, g0));
-    CHECK(fast->even_kernel());
+    CHECK(frf_dcfft_kernel(g, coated, 2.0, g0).form() == InfluenceKernel::Form::spectrum);
+    CHECK(fast.op->method() == Method::frf_dcfft);
     CHECK(std::isfinite(g0.value));
-    CHECK(rel_linf(fast->apply(p), plain.apply(p)) < 1e-13);
+    CHECK(rel_linf(fast.op->apply(p), plain.apply(p)) < 1e-13);
     // Other ratios take the coefficient route itself: identical.
-    const auto at3 = frf_dcfft_operator(g, coated, 3.0, g0);
+    DcfftOperator at3(frf_dcfft_kernel(g, coated, 3.0, g0));
     DcfftOperator plain3(frf_influence_kernel(g, coated, 3.0, g0));
-    CHECK(rel_linf(at3->apply(p), plain3.apply(p)) == 0.0);
+    CHECK(rel_linf(at3.apply(p), plain3.apply(p)) == 0.0);
   }
 }
 
-TEST_CASE("frf_dcfft_operator and the spectrum constructor refuse bad input",
+TEST_CASE("frf-dcfft's kernel, its options and the spectrum form refuse bad input",
           "[frf_pipelines][bad_input]") {
   const Grid g(10, 8, 1e-3, 1e-3);
   const InverseKFrf frf(1e11);
-  CHECK_THROWS_WITH(frf_dcfft_operator(g, frf, 1.5, G0Method::regularized, 1e-13),
-                    Catch::Contains(">= 2"));
-  CHECK_THROWS_WITH(frf_dcfft_operator(g, frf, 2.05, G0Method::regularized, 1e-13),
-                    Catch::Contains("not an integer"));
+  const G0Result ok{1e-12, G0Method::regularized, 0, 0};
+  CHECK_THROWS_WITH(frf_dcfft_kernel(g, frf, 1.5, ok), Catch::Contains(">= 2"));
+  CHECK_THROWS_WITH(frf_dcfft_kernel(g, frf, 2.05, ok), Catch::Contains("not an integer"));
+  OperatorOptions options;
+  options.method = Method::frf_dcfft;
+  options.alpha = 1.5;
+  CHECK_THROWS_WITH(make_operator(g, frf, options), Catch::Contains(">= 2"));
+  options.alpha = 2.05;
+  CHECK_THROWS_WITH(make_operator(g, frf, options), Catch::Contains("whole numbers"));
   const G0Result bad{NAN, G0Method::regularized, 0, 0};
-  CHECK_THROWS_WITH(frf_dcfft_operator(g, frf, 2.0, bad), Catch::Contains("g(0) = nan"));
-  CHECK_THROWS_AS(frf_dcfft_operator(g, frf, 4.0, bad), InvalidArgument);
-  CHECK_THROWS_WITH(DcfftOperator(EvenKernelSpectrum{g, Field::Ones(10, 8)}),
+  CHECK_THROWS_WITH(frf_dcfft_kernel(g, frf, 2.0, bad), Catch::Contains("g(0) = nan"));
+  CHECK_THROWS_AS(frf_dcfft_kernel(g, frf, 4.0, bad), InvalidArgument);
+  CHECK_THROWS_WITH(InfluenceKernel(g, InfluenceKernel::Form::spectrum, Field::Ones(10, 8)),
                     Catch::Contains("shape (10, 8)"));
   Field nan_spectrum = Field::Ones(11, 9);
   nan_spectrum(3, 4) = NAN;
-  CHECK_THROWS_WITH(DcfftOperator(EvenKernelSpectrum{g, nan_spectrum}),
+  CHECK_THROWS_WITH(InfluenceKernel(g, InfluenceKernel::Form::spectrum, nan_spectrum),
                     Catch::Contains("not finite"));
 }

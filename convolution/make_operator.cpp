@@ -1,0 +1,135 @@
+#include "convolution/make_operator.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <numbers>
+#include <utility>
+
+#include "convolution/dcfft_operator.hpp"
+#include "convolution/direct_operator.hpp"
+#include "convolution/frf_influence_kernel.hpp"
+#include "convolution/frf_spectral_operator.hpp"
+#include "core/error.hpp"
+#include "core/threads.hpp"
+
+namespace coatfft {
+namespace {
+
+// g(0) on the alpha-extended lattice of the FRF pipelines (docs/theory.md section 3).
+G0Result lattice_g0(const Grid& grid, const Frf& frf, const OperatorOptions& o) {
+  using std::numbers::pi;
+  const double min_alpha = o.method == Method::frf_dcfft ? 2.0 : 1.0;
+  const auto mx = static_cast<double>(extended_size(grid.nx(), o.alpha, min_alpha, "make_operator"));
+  const auto my = static_cast<double>(extended_size(grid.ny(), o.alpha, min_alpha, "make_operator"));
+  const double period_x = mx * grid.dx();
+  const double period_y = my * grid.dy();
+  return compute_g0(frf, 2.0 * pi / period_x, 2.0 * pi / period_y, o.g0, o.g0_tolerance);
+}
+
+// The operator of an FRF method; `report` is filled with what was chosen.
+std::unique_ptr<SurfaceOperator> frf_operator(const Grid& grid, const Frf& frf,
+                                              const OperatorOptions& o, OperatorReport& report) {
+  report.frf = frf.name();
+  switch (o.method) {
+    case Method::frf_spectral: {
+      auto op = std::make_unique<FrfSpectralOperator>(grid, frf, o.alpha, lattice_g0(grid, frf, o),
+                                                      o.planning, o.threads);
+      report.alpha = o.alpha;
+      report.g0 = op->g0();
+      report.fft_nx = op->extended_nx();
+      report.fft_ny = op->extended_ny();
+      return op;
+    }
+    case Method::frf_dcfft: {
+      const G0Result g0 = lattice_g0(grid, frf, o);
+      report.alpha = o.alpha;
+      report.g0 = g0;
+      return std::make_unique<DcfftOperator>(frf_dcfft_kernel(grid, frf, o.alpha, g0, o.threads),
+                                             o.planning, o.threads);
+    }
+    case Method::frf_split: {
+      // The split kernel needs no g(0): the singular part of H is taken in closed form in space.
+      SplitKernelOptions split = o.split;
+      split.threads = o.threads;
+      SplitKernelReport split_report;
+      const InfluenceKernel kernel = split_frf_kernel(grid, frf, split, &split_report);
+      report.split = split_report;
+      return std::make_unique<DcfftOperator>(kernel, o.planning, o.threads);
+    }
+    case Method::direct:
+    case Method::dcfft: break;
+  }
+  throw InvalidArgument(detail::concat(
+      "make_operator: method \"", to_string(o.method),
+      "\" uses Love's coefficients of a homogeneous half-space, which an FRF alone does not give; "
+      "use \"frf-split\", \"frf-dcfft\" or \"frf-spectral\""));
+}
+
+std::unique_ptr<SurfaceOperator> kernel_operator(const InfluenceKernel& kernel,
+                                                 const OperatorOptions& o) {
+  if (o.method == Method::direct) return std::make_unique<DirectOperator>(kernel);
+  return std::make_unique<DcfftOperator>(kernel, o.planning, o.threads);
+}
+
+// Times `build` and completes the report's common fields.
+template <typename Build>
+BuiltOperator timed(const Grid& grid, const OperatorOptions& options, Build&& build) {
+  check_operator_options(grid, options);
+  const auto start = std::chrono::steady_clock::now();
+  BuiltOperator built;
+  built.report.fft_nx = 2 * grid.nx();  // DC-FFT's padded lattice unless the method says else
+  built.report.fft_ny = 2 * grid.ny();
+  built.op = build(built.report);
+  built.report.method = built.op->method();
+  if (built.report.method == Method::direct) built.report.fft_nx = built.report.fft_ny = 0;
+  built.report.setup_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return built;
+}
+
+}  // namespace
+
+void check_operator_options(const Grid& grid, const OperatorOptions& o) {
+  COATFFT_REQUIRE(o.threads >= 1 && o.threads <= max_threads, "threads = ", o.threads,
+                  " must be in 1..", max_threads);
+  COATFFT_REQUIRE(o.g0_tolerance > 0 && o.g0_tolerance < 1, "g(0) tolerance = ", o.g0_tolerance,
+                  " must be in (0, 1)");
+  COATFFT_REQUIRE(std::isfinite(o.alpha) && o.alpha >= 1, "alpha = ", o.alpha, " must be >= 1");
+  if (!samples_frf_lattice(o.method)) return;
+  for (const auto n : {grid.nx(), grid.ny()}) {
+    const double m = o.alpha * static_cast<double>(n);
+    COATFFT_REQUIRE(std::abs(m - std::round(m)) < 1e-9 * m, "alpha = ", o.alpha,
+                    ": alpha * nx and alpha * ny must be whole numbers of cells (alpha * ", n,
+                    " = ", m, ")");
+  }
+  // Offsets up to N - 1 must not wrap onto each other on the extended lattice.
+  COATFFT_REQUIRE(o.method != Method::frf_dcfft || o.alpha >= 2, "alpha = ", o.alpha,
+                  ": frf-dcfft needs alpha >= 2");
+}
+
+BuiltOperator make_operator(const Grid& grid, const LayerStack& body,
+                            const OperatorOptions& options) {
+  return timed(grid, options, [&](OperatorReport& report) -> std::unique_ptr<SurfaceOperator> {
+    if (!uses_love_coefficients(options.method))
+      return frf_operator(grid, *make_frf(body), options, report);
+    // Love's coefficients exist in closed form only for the homogeneous half-space.
+    COATFFT_REQUIRE(body.is_homogeneous(), "method \"", to_string(options.method),
+                    "\" uses Love's coefficients of a homogeneous half-space; for a coated body "
+                    "use \"frf-split\", \"frf-dcfft\" or \"frf-spectral\"");
+    const InfluenceKernel kernel =
+        love_kernel(grid, body.substrate().plane_strain_modulus(), options.threads);
+    return kernel_operator(kernel, options);
+  });
+}
+
+BuiltOperator make_operator(const Grid& grid, const Frf& frf, const OperatorOptions& options) {
+  return timed(grid, options,
+               [&](OperatorReport& report) { return frf_operator(grid, frf, options, report); });
+}
+
+BuiltOperator make_operator(const InfluenceKernel& kernel, const OperatorOptions& options) {
+  return timed(kernel.grid(), options,
+               [&](OperatorReport&) { return kernel_operator(kernel, options); });
+}
+
+}  // namespace coatfft

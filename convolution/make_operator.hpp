@@ -1,0 +1,79 @@
+#pragma once
+// The one operator factory: a grid, a body (a LayerStack, or any Frf) and OperatorOptions in; the
+// SurfaceOperator that computes the surface displacement and a report of what was built out.
+// The CLI, the benchmarks, the validation tables and the tests all build operators here; nothing
+// else maps a Method to a class.
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "../core/grid.hpp"
+#include "../layers/layer_stack.hpp"
+#include "../frf/frf.hpp"
+#include "g0.hpp"
+#include "influence_kernel.hpp"
+#include "method.hpp"
+#include "planning.hpp"
+#include "split_frf_kernel.hpp"
+#include "surface_operator.hpp"
+
+namespace coatfft {
+
+/// How to build an operator. The defaults are those of a scene file without [method] keys.
+struct OperatorOptions {
+  Method method = Method::dcfft;
+  /// Domain extension ratio of frf-spectral (>= 1) and frf-dcfft (>= 2); alpha nx and alpha ny
+  /// must be whole numbers. Ignored by the other methods.
+  double alpha = 2.0;
+  /// g(0) of frf-spectral and frf-dcfft (docs/theory.md section 3): how, and to which relative
+  /// tolerance in (0, 1). G0Method::omitted builds them without g(0) (displacements then carry an
+  /// unknown constant offset: enough for a load-controlled contact).
+  G0Method g0 = G0Method::regularized;
+  double g0_tolerance = 1e-10;
+  /// FFTW planner effort of the operator's transforms.
+  Planning planning = Planning::estimate;
+  /// Threads of the setup and of apply(), in 1..max_threads (core/threads.hpp); the results do
+  /// not depend on it.
+  int threads = 1;
+  /// Options of the frf-split kernel (its `threads` is replaced by `threads` above).
+  SplitKernelOptions split;
+};
+
+/// What make_operator built, for reports (summary.json, benchmarks).
+struct OperatorReport {
+  Method method = Method::dcfft;  ///< the method that runs
+  std::string frf;                ///< Frf::name() of the body's FRF; empty for Love's methods
+  double setup_seconds = 0.0;     ///< wall time of make_operator (kernel, g(0), plans) [s]
+  std::ptrdiff_t fft_nx = 0;      ///< transform lengths of apply() (padded or extended lattice)
+  std::ptrdiff_t fft_ny = 0;
+  std::optional<double> alpha;           ///< frf-spectral, frf-dcfft
+  std::optional<G0Result> g0;            ///< frf-spectral, frf-dcfft
+  std::optional<SplitKernelReport> split;  ///< frf-split
+};
+
+struct BuiltOperator {
+  std::unique_ptr<SurfaceOperator> op;
+  OperatorReport report;
+};
+
+/// Throws InvalidArgument, with a message naming the option ("alpha = 1.5: ..."), unless
+/// `options` can be used on `grid` (alpha, tolerances, threads). make_operator calls it first; a
+/// reader of user input calls it to refuse bad input before any work starts.
+void check_operator_options(const Grid& grid, const OperatorOptions& options);
+
+/// The operator of `options.method` for `body` on `grid`. Throws InvalidArgument for bad options
+/// and for a method that cannot handle the body (direct and dcfft need a homogeneous body).
+BuiltOperator make_operator(const Grid& grid, const LayerStack& body,
+                            const OperatorOptions& options = {});
+
+/// The same for a body given by its FRF alone (a user-supplied Frf): every FRF method applies;
+/// direct and dcfft are refused (Love's coefficients need the material, not an FRF).
+BuiltOperator make_operator(const Grid& grid, const Frf& frf, const OperatorOptions& options);
+
+/// DC-FFT (or, with Method::direct in `options.method`, direct summation) of any influence
+/// kernel: the operator for coefficients made outside the factory. Only `method`, `planning`
+/// and `threads` of `options` are used; the operator reports the kernel's method.
+BuiltOperator make_operator(const InfluenceKernel& kernel, const OperatorOptions& options = {});
+
+}  // namespace coatfft
