@@ -3,7 +3,7 @@
 # and which flags it was built with (benchmarks print them in their `# key = value` headers).
 function(coatfft_add_program name)
   add_executable(${name} ${ARGN})
-  target_link_libraries(${name} PRIVATE coatfft::coatfft)
+  target_link_libraries(${name} PRIVATE coatfft_internal)
   coatfft_target_warnings(${name})
   coatfft_target_sanitizers(${name})
   string(TOUPPER "${CMAKE_BUILD_TYPE}" build_type)

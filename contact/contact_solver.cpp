@@ -1,9 +1,12 @@
 #include "contact/contact_solver.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
+#include <string>
 
 #include "contact/fourier_preconditioner.hpp"
 #include "core/error.hpp"
@@ -12,9 +15,10 @@ namespace coatfft {
 
 namespace {
 
+using Mask = Eigen::Array<bool, Eigen::Dynamic, Eigen::Dynamic>;
+
 // Mean of f over the cells where mask is set (mask non-empty).
-double masked_mean(const Field& f, const Eigen::Array<bool, Eigen::Dynamic, Eigen::Dynamic>& mask,
-                   std::ptrdiff_t count) {
+double masked_mean(const Field& f, const Mask& mask, std::ptrdiff_t count) {
   return mask.select(f, 0.0).sum() / static_cast<double>(count);
 }
 
@@ -30,7 +34,301 @@ void append(std::string& text, const std::string& more) {
   text += more;
 }
 
+// The constrained conjugate gradient of Polonsky & Keer (2000) on one problem: the iterate, its
+// work fields, and one function per step of their iteration. The steps are fused loops over the
+// cells (no temporaries): at large N the element-wise work would otherwise rival the two FFT-based
+// operator applications per iteration.
+class PolonskyKeerIteration {
+ public:
+  PolonskyKeerIteration(SurfaceOperator& op, detail::FourierPreconditioner* preconditioner,
+                        const Field& h, ContactControl control, double value);
+
+  // One iteration; the status once the iteration has ended, nothing while it goes on.
+  std::optional<ContactStatus> iterate(double tolerance);
+
+  // The result for the current iterate (one more operator application, for its displacement).
+  ContactResult result(ContactStatus status, int iterations, bool compute_approach);
+
+ private:
+  struct Gap {
+    std::ptrdiff_t n_contact;  // cells of the contact set I_c = {p > 0}
+    double norm;               // sum of g^2 over I_c
+  };
+
+  void start();
+  Gap update_gap();
+  void update_direction(std::ptrdiff_t n_contact, double g_norm);
+  std::optional<double> step_length(std::ptrdiff_t n_contact);
+  double project(double tau);
+  double enforce_load(double p_sum);
+
+  SurfaceOperator& op_;
+  detail::FourierPreconditioner* preconditioner_;  // null: the classic, unpreconditioned iteration
+  const Field& h_;
+  ContactControl control_;
+  bool load_control_;
+  double value_;  // the prescribed load [N] or approach [m]
+  double delta_;  // approach control: the fixed approach; load control: 0 (g's mean is removed)
+  double cell_area_;
+  std::ptrdiff_t n_cells_;
+  Field p_, u_, g_, t_, r_, p_old_;
+  Field z_;  // preconditioned gap (g itself serves when not preconditioned)
+  double g_dot_z_old_ = 1.0;
+  // Polonsky & Keer's delta: keep the previous direction (the last step added no contact cells).
+  bool conjugate_ = false;
+  double residual_ = std::numeric_limits<double>::infinity();
+};
+
+PolonskyKeerIteration::PolonskyKeerIteration(SurfaceOperator& op,
+                                             detail::FourierPreconditioner* preconditioner,
+                                             const Field& h, ContactControl control, double value)
+    : op_(op),
+      preconditioner_(preconditioner),
+      h_(h),
+      control_(control),
+      load_control_(control == ContactControl::load),
+      value_(value),
+      delta_(load_control_ ? 0.0 : value),
+      cell_area_(op.grid().dx() * op.grid().dy()),
+      n_cells_(h.size()),
+      p_(h.rows(), h.cols()),
+      u_(h.rows(), h.cols()),
+      g_(h.rows(), h.cols()),
+      t_(Field::Zero(h.rows(), h.cols())),  // read (times beta = 0) by the first iteration
+      r_(h.rows(), h.cols()),
+      p_old_(h.rows(), h.cols()),
+      z_(h.rows(), h.cols()) {
+  start();
+}
+
+// The initial pressure.
+void PolonskyKeerIteration::start() {
+  if (load_control_) {
+    // Polonsky & Keer's start: the load spread uniformly over the whole domain.
+    p_.setConstant(value_ / (static_cast<double>(n_cells_) * cell_area_));
+    return;
+  }
+  // A uniform pressure on the geometric overlap {h < delta}, scaled so that the mean gap over
+  // it vanishes: one extra application, and a start of the right magnitude.
+  const Mask overlap = h_ < delta_;
+  const auto n_overlap = overlap.count();
+  p_ = overlap.cast<double>();
+  op_.apply(p_, u_);
+  const double scale =
+      masked_mean(delta_ - h_, overlap, n_overlap) / masked_mean(u_, overlap, n_overlap);
+  COATFFT_REQUIRE(std::isfinite(scale) && scale > 0, "ContactSolver: operator '", op_.name(),
+                  "' returned a non-positive mean displacement under a positive pressure");
+  p_ *= scale;
+}
+
+std::optional<ContactStatus> PolonskyKeerIteration::iterate(double tolerance) {
+  const Gap gap = update_gap();
+  if (gap.n_contact == 0) return ContactStatus::pressure_vanished;
+  if (gap.norm == 0.0) {  // exact solution on I_c already
+    residual_ = 0.0;
+    return ContactStatus::converged;
+  }
+  update_direction(gap.n_contact, gap.norm);
+  const std::optional<double> tau = step_length(gap.n_contact);
+  if (!tau) return ContactStatus::non_positive_curvature;
+  const double p_sum = project(*tau);
+  if (!(p_sum > 0) || !std::isfinite(p_sum)) {
+    p_ = p_old_;  // the last iterate that carried pressure
+    return ContactStatus::pressure_vanished;
+  }
+  residual_ = enforce_load(p_sum);
+  if (residual_ < tolerance) return ContactStatus::converged;
+  return std::nullopt;
+}
+
+// Step 1: gap of the current pressure; on the contact set I_c it should be constant (load
+// control: its mean is the unknown approach, and is removed) or zero (approach control).
+PolonskyKeerIteration::Gap PolonskyKeerIteration::update_gap() {
+  op_.apply(p_, u_);
+  const double* hd = h_.data();
+  const double* pd = p_.data();
+  const double* ud = u_.data();  // fetched after apply: an operator may reallocate its output
+  double* gd = g_.data();
+  std::ptrdiff_t n_contact = 0;
+  double g_sum = 0.0;
+  for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
+    gd[k] = hd[k] + ud[k] - delta_;
+    if (pd[k] > 0) {
+      ++n_contact;
+      g_sum += gd[k];
+    }
+  }
+  if (n_contact == 0) return {0, 0.0};
+  const double g_mean = load_control_ ? g_sum / static_cast<double>(n_contact) : 0.0;
+  double g_norm = 0.0;
+  for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
+    gd[k] -= g_mean;
+    if (pd[k] > 0) g_norm += gd[k] * gd[k];
+  }
+  return {n_contact, g_norm};
+}
+
+// Step 2: search direction t on I_c. Preconditioned: z = P M P g with M ~ K^-1 (the |k|
+// multiplier) and P the restriction to I_c (and, under load control, to zero mean on I_c, the
+// tangent space of the load constraint); P M P is symmetric positive definite there, so this is
+// preconditioned CG on the contact block, and a constant in g still cancels. Unpreconditioned:
+// z = g. Then t = z + beta t, Polonsky & Keer's conjugate direction, restarted (beta = 0) after
+// an iteration that added contact cells.
+void PolonskyKeerIteration::update_direction(std::ptrdiff_t n_contact, double g_norm) {
+  const double* pd = p_.data();
+  const double* gd = g_.data();
+  double* zd = z_.data();
+  double* td = t_.data();
+  double g_dot_z = g_norm;
+  const double* direction = gd;
+  if (preconditioner_) {
+    for (std::ptrdiff_t k = 0; k < n_cells_; ++k) zd[k] = pd[k] > 0 ? gd[k] : 0.0;
+    preconditioner_->apply(z_);
+    double z_mean = 0.0;
+    if (load_control_) {
+      for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
+        if (pd[k] > 0) z_mean += zd[k];
+      }
+      z_mean /= static_cast<double>(n_contact);
+    }
+    g_dot_z = 0.0;
+    for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
+      zd[k] = pd[k] > 0 ? zd[k] - z_mean : 0.0;
+      g_dot_z += gd[k] * zd[k];
+    }
+    direction = zd;
+  }
+  const double beta = conjugate_ ? g_dot_z / g_dot_z_old_ : 0.0;
+  for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
+    td[k] = pd[k] > 0 ? direction[k] + beta * td[k] : 0.0;
+  }
+  g_dot_z_old_ = g_dot_z;
+}
+
+// Step 3: step length tau along t, or nothing when the curvature r.t is not positive. Under load
+// control the mean of r = K t over I_c is removed: a constant displacement is absorbed by the
+// approach, so it must not steer the step. This is also what makes the iterates independent of
+// the operator's g(0).
+std::optional<double> PolonskyKeerIteration::step_length(std::ptrdiff_t n_contact) {
+  op_.apply(t_, r_);
+  const double* pd = p_.data();
+  const double* gd = g_.data();
+  const double* td = t_.data();
+  const double* rd = r_.data();
+  double r_mean = 0.0;
+  if (load_control_) {
+    for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
+      if (pd[k] > 0) r_mean += rd[k];
+    }
+    r_mean /= static_cast<double>(n_contact);
+  }
+  double numerator = 0.0;
+  double denominator = 0.0;
+  for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
+    if (pd[k] > 0) {
+      numerator += gd[k] * td[k];
+      denominator += (rd[k] - r_mean) * td[k];
+    }
+  }
+  if (!(denominator > 0) || !std::isfinite(numerator)) return std::nullopt;
+  return numerator / denominator;
+}
+
+// Step 4: p <- max(p - tau t, 0), keeping the previous iterate in p_old; cells that overlap
+// (p = 0, g < 0) get pressure -tau g and restart the conjugation. Returns sum p.
+double PolonskyKeerIteration::project(double tau) {
+  const double* gd = g_.data();
+  const double* td = t_.data();
+  double* pd = p_.data();
+  double* qd = p_old_.data();
+  conjugate_ = true;
+  double p_sum = 0.0;
+  for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
+    qd[k] = pd[k];
+    double pk = std::max(pd[k] - tau * td[k], 0.0);
+    if (pk == 0.0 && gd[k] < 0.0) {
+      pk = -tau * gd[k];
+      conjugate_ = false;
+    }
+    pd[k] = pk;
+    p_sum += pk;
+  }
+  return p_sum;
+}
+
+// Step 5: under load control scale p to the total load exactly; returns Polonsky & Keer's
+// convergence measure, the relative pressure change sum |p - p_old| / sum p.
+double PolonskyKeerIteration::enforce_load(double p_sum) {
+  const double scale = load_control_ ? value_ / (p_sum * cell_area_) : 1.0;
+  double* pd = p_.data();
+  const double* qd = p_old_.data();
+  double change = 0.0;
+  for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
+    pd[k] *= scale;
+    change += std::abs(pd[k] - qd[k]);
+  }
+  return change / (scale * p_sum);
+}
+
+ContactResult PolonskyKeerIteration::result(ContactStatus status, int iterations,
+                                            bool compute_approach) {
+  op_.apply(p_, u_);
+  const Mask contact = p_ > 0;
+  const auto n_contact = contact.count();
+  double approach = delta_;
+  if (load_control_) {
+    approach = n_contact > 0 ? masked_mean(h_ + u_, contact, n_contact) : h_.minCoeff();
+  }
+  ContactResult result;
+  result.control = control_;
+  result.gap = h_ + u_ - approach;
+  result.pressure = std::move(p_);
+  result.displacement = std::move(u_);
+  result.load = result.pressure.sum() * cell_area_;
+  if (!load_control_ || compute_approach) result.approach = approach;
+  result.contact_area = static_cast<double>(n_contact) * cell_area_;
+  if (n_contact > 0) result.contact_radius = std::sqrt(result.contact_area / std::numbers::pi);
+  result.max_pressure = result.pressure.maxCoeff();
+  result.iterations = iterations;
+  result.residual = residual_;
+  result.status = status;
+  result.converged = status == ContactStatus::converged;
+  result.touches_boundary = pressure_on_border(result.pressure);
+  return result;
+}
+
+// The sentence users see for a breakdown.
+std::string breakdown_message(ContactStatus status) {
+  return status == ContactStatus::pressure_vanished
+             ? "all pressure vanished (breakdown)"
+             : "non-positive curvature along the search direction (breakdown)";
+}
+
 }  // namespace
+
+std::string_view to_string(ContactStatus status) {
+  // In the order of the enumerators (tests/test_contact.cpp checks each name).
+  static constexpr std::array<std::string_view, 4> names = {
+      "converged", "iteration_limit", "pressure_vanished", "non_positive_curvature"};
+  return names.at(static_cast<std::size_t>(status));
+}
+
+std::string describe(const ContactResult& result, double tolerance) {
+  std::string text;
+  const bool breakdown = result.status == ContactStatus::pressure_vanished ||
+                         result.status == ContactStatus::non_positive_curvature;
+  if (breakdown) append(text, breakdown_message(result.status));
+  if (result.touches_boundary) {
+    append(text,
+           "contact reaches the domain edge (pressure > 0 on a border cell): the domain is too "
+           "small for this load");
+  }
+  if (result.status == ContactStatus::iteration_limit) {
+    append(text, detail::concat("not converged after ", result.iterations, " iterations (residual ",
+                                result.residual, ", tolerance ", tolerance, ")"));
+  }
+  return text;
+}
 
 ContactSolver::ContactSolver(SurfaceOperator& op, ContactOptions options)
     : op_(op), options_(options) {
@@ -65,205 +363,29 @@ ContactResult ContactSolver::solve(const Field& height, ContactControl control, 
 }
 
 ContactResult ContactSolver::run(const Field& h, ContactControl control, double value) {
-  using Mask = Eigen::Array<bool, Eigen::Dynamic, Eigen::Dynamic>;
   const Grid& grid = op_.grid();
-  const std::ptrdiff_t nx = grid.nx();
-  const std::ptrdiff_t ny = grid.ny();
-  COATFFT_REQUIRE(h.rows() == nx && h.cols() == ny, "ContactSolver: height field of shape (",
-                  h.rows(), ", ", h.cols(), "), but the operator's grid is (", nx, ", ", ny, ")");
+  COATFFT_REQUIRE(h.rows() == grid.nx() && h.cols() == grid.ny(),
+                  "ContactSolver: height field of shape (", h.rows(), ", ", h.cols(),
+                  "), but the operator's grid is (", grid.nx(), ", ", grid.ny(), ")");
   COATFFT_REQUIRE(h.allFinite(), "ContactSolver: the height field has a non-finite entry");
-  const bool load_control = control == ContactControl::load;
-  const double cell_area = grid.dx() * grid.dy();
-  const double h_min = h.minCoeff();
-  if (!load_control) {
+  if (control == ContactControl::approach) {
+    const double h_min = h.minCoeff();
     COATFFT_REQUIRE(value > h_min, "ContactSolver: approach = ", value,
                     " m, but it must exceed min(height) = ", h_min,
                     " m, or the indenter does not touch the surface");
   }
-  const double delta = load_control ? 0.0 : value;  // approach control: the fixed approach
-
-  ContactResult result;
-  result.control = control;
-  Field p(nx, ny);
-  Field u(nx, ny);
-  Field g(nx, ny);
-  Field t = Field::Zero(nx, ny);
-  Field r(nx, ny);
-  Field p_old(nx, ny);
-  Field z(nx, ny);  // preconditioned gap (aliases g's role when not preconditioned)
-
-  if (load_control) {
-    // Polonsky & Keer's start: the load spread uniformly over the whole domain.
-    p.setConstant(value / (static_cast<double>(nx * ny) * cell_area));
-  } else {
-    // A uniform pressure on the geometric overlap {h < delta}, scaled so that the mean gap over
-    // it vanishes: one extra application, and a start of the right magnitude.
-    const Mask overlap = h < delta;
-    const auto n_overlap = overlap.count();
-    p = overlap.cast<double>();
-    op_.apply(p, u);
-    const double scale =
-        masked_mean(delta - h, overlap, n_overlap) / masked_mean(u, overlap, n_overlap);
-    COATFFT_REQUIRE(std::isfinite(scale) && scale > 0, "ContactSolver: operator '", op_.name(),
-                    "' returned a non-positive mean displacement under a positive pressure");
-    p *= scale;
-  }
-
-  // The iteration below is written as a few fused loops over the cells (no temporaries): at large
-  // N the element-wise work would otherwise rival the two FFT-based applications per iteration.
-  const std::ptrdiff_t n_cells = nx * ny;
-  const double* hd = h.data();
-  double* pd = p.data();
-  double* gd = g.data();
-  double* td = t.data();
-  double* qd = p_old.data();
-  double* zd = z.data();
-  double g_dot_z_old = 1.0;
-  bool conjugate = false;  // Polonsky & Keer's delta: keep the previous direction (no new contacts)
-  double residual = std::numeric_limits<double>::infinity();
-  int iteration = 0;
-  while (iteration < options_.max_iterations) {
-    ++iteration;
-    // Step 1: gap of the current pressure; on the contact set I_c = {p > 0} it should be constant
-    // (load control: its mean is the unknown approach) or zero (approach control).
-    op_.apply(p, u);
-    const double* ud = u.data();  // fetched after apply: an operator may reallocate its output
-    std::ptrdiff_t n_contact = 0;
-    double g_sum = 0.0;
-    for (std::ptrdiff_t k = 0; k < n_cells; ++k) {
-      gd[k] = hd[k] + ud[k] - delta;
-      if (pd[k] > 0) {
-        ++n_contact;
-        g_sum += gd[k];
-      }
-    }
-    if (n_contact == 0) {
-      append(result.warning, "all pressure vanished (breakdown)");
-      break;
-    }
-    const double g_mean = load_control ? g_sum / static_cast<double>(n_contact) : 0.0;
-    double g_norm = 0.0;
-    for (std::ptrdiff_t k = 0; k < n_cells; ++k) {
-      gd[k] -= g_mean;
-      if (pd[k] > 0) g_norm += gd[k] * gd[k];
-    }
-    if (g_norm == 0.0) {  // exact solution on I_c already
-      residual = 0.0;
-      result.converged = true;
-      break;
-    }
-    // Step 2: search direction. Preconditioned: z = P M P g with M ~ K^-1 (the |k| multiplier) and
-    // P the restriction to I_c (and, under load control, to zero mean on I_c, the tangent space of
-    // the load constraint); P M P is symmetric positive definite there, so this is preconditioned
-    // CG on the contact block, and a constant in g still cancels. Unpreconditioned: z = g.
-    double g_dot_z = g_norm;
-    const double* direction = gd;
-    if (preconditioner_) {
-      for (std::ptrdiff_t k = 0; k < n_cells; ++k) zd[k] = pd[k] > 0 ? gd[k] : 0.0;
-      preconditioner_->apply(z);
-      double z_mean = 0.0;
-      if (load_control) {
-        for (std::ptrdiff_t k = 0; k < n_cells; ++k) {
-          if (pd[k] > 0) z_mean += zd[k];
-        }
-        z_mean /= static_cast<double>(n_contact);
-      }
-      g_dot_z = 0.0;
-      for (std::ptrdiff_t k = 0; k < n_cells; ++k) {
-        zd[k] = pd[k] > 0 ? zd[k] - z_mean : 0.0;
-        g_dot_z += gd[k] * zd[k];
-      }
-      direction = zd;
-    }
-    // Conjugate direction on I_c (PK eqs. for t); restart when the set grew.
-    const double beta = conjugate ? g_dot_z / g_dot_z_old : 0.0;
-    for (std::ptrdiff_t k = 0; k < n_cells; ++k) {
-      td[k] = pd[k] > 0 ? direction[k] + beta * td[k] : 0.0;
-    }
-    g_dot_z_old = g_dot_z;
-    // Step 3: step length along t. Under load control the mean of K t over I_c is removed: a
-    // constant displacement is absorbed by the approach, so it must not steer the step. This is
-    // also what makes the iterates independent of the operator's g(0).
-    op_.apply(t, r);
-    const double* rd = r.data();
-    double r_mean = 0.0;
-    if (load_control) {
-      for (std::ptrdiff_t k = 0; k < n_cells; ++k) {
-        if (pd[k] > 0) r_mean += rd[k];
-      }
-      r_mean /= static_cast<double>(n_contact);
-    }
-    double numerator = 0.0;
-    double denominator = 0.0;
-    for (std::ptrdiff_t k = 0; k < n_cells; ++k) {
-      if (pd[k] > 0) {
-        numerator += gd[k] * td[k];
-        denominator += (rd[k] - r_mean) * td[k];
-      }
-    }
-    if (!(denominator > 0) || !std::isfinite(numerator)) {
-      append(result.warning, "non-positive curvature along the search direction (breakdown)");
-      break;
-    }
-    const double tau = numerator / denominator;
-    // Step 4: update, project on p >= 0, and put pressure on cells that overlap (p = 0, g < 0).
-    conjugate = true;
-    double p_sum = 0.0;
-    for (std::ptrdiff_t k = 0; k < n_cells; ++k) {
-      qd[k] = pd[k];
-      double pk = std::max(pd[k] - tau * td[k], 0.0);
-      if (pk == 0.0 && gd[k] < 0.0) {
-        pk = -tau * gd[k];
-        conjugate = false;
-      }
-      pd[k] = pk;
-      p_sum += pk;
-    }
-    if (!(p_sum > 0) || !std::isfinite(p_sum)) {
-      append(result.warning, "all pressure vanished (breakdown)");
-      p = p_old;
-      break;
-    }
-    // Step 5 (load control): enforce the total load exactly; then the relative change.
-    const double scale = load_control ? value / (p_sum * cell_area) : 1.0;
-    double change = 0.0;
-    for (std::ptrdiff_t k = 0; k < n_cells; ++k) {
-      pd[k] *= scale;
-      change += std::abs(pd[k] - qd[k]);
-    }
-    residual = change / (scale * p_sum);
-    if (residual < options_.tolerance) {
-      result.converged = true;
+  PolonskyKeerIteration iteration(op_, preconditioner_.get(), h, control, value);
+  ContactStatus status = ContactStatus::iteration_limit;
+  int iterations = 0;
+  while (iterations < options_.max_iterations) {
+    ++iterations;
+    if (const std::optional<ContactStatus> end = iteration.iterate(options_.tolerance)) {
+      status = *end;
       break;
     }
   }
-
-  op_.apply(p, u);
-  const Mask contact = p > 0;
-  const auto n_contact = contact.count();
-  double approach = delta;
-  if (load_control) approach = n_contact > 0 ? masked_mean(h + u, contact, n_contact) : h_min;
-  result.gap = h + u - approach;
-  result.pressure = std::move(p);
-  result.displacement = std::move(u);
-  result.load = result.pressure.sum() * cell_area;
-  if (!load_control || options_.compute_approach) result.approach = approach;
-  result.contact_area = static_cast<double>(n_contact) * cell_area;
-  if (n_contact > 0) result.contact_radius = std::sqrt(result.contact_area / std::numbers::pi);
-  result.max_pressure = result.pressure.maxCoeff();
-  result.iterations = iteration;
-  result.residual = residual;
-  result.touches_boundary = pressure_on_border(result.pressure);
-  if (result.touches_boundary) {
-    append(result.warning,
-           "contact reaches the domain edge (pressure > 0 on a border cell): the domain is too "
-           "small for this load");
-  }
-  if (!result.converged && result.warning.find("breakdown") == std::string::npos) {
-    append(result.warning,
-           detail::concat("not converged after ", iteration, " iterations (residual ", residual,
-                          ", tolerance ", options_.tolerance, ")"));
-  }
+  ContactResult result = iteration.result(status, iterations, options_.compute_approach);
+  result.warning = describe(result, options_.tolerance);
   return result;
 }
 

@@ -9,9 +9,10 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 
-#include "convolution/surface_operator.hpp"
-#include "core/types.hpp"
+#include "../convolution/surface_operator.hpp"
+#include "../core/types.hpp"
 
 namespace coatfft {
 
@@ -36,6 +37,27 @@ struct ContactOptions {
 /// Which quantity the solve prescribes.
 enum class ContactControl { load, approach };
 
+/// How the iteration ended. Whether the contact reaches the domain edge is not a status but a
+/// property of the returned iterate (ContactResult::touches_boundary): a truncated contact can end
+/// in any of these.
+enum class ContactStatus {
+  /// The relative pressure change fell below the tolerance (or the gap was already exactly
+  /// uniform on the contact set).
+  converged,
+  /// max_iterations done without converging; the last iterate is returned.
+  iteration_limit,
+  /// Breakdown: the projection on p >= 0 removed all pressure (or none was left to start from);
+  /// the last iterate that carried pressure is returned.
+  pressure_vanished,
+  /// Breakdown: r.t <= 0 along the search direction, impossible for a positive-definite operator;
+  /// the iterate before the failed step is returned.
+  non_positive_curvature,
+};
+
+/// The status as an identifier: "converged", "iteration_limit", "pressure_vanished",
+/// "non_positive_curvature" (the value of summary.json's "status").
+std::string_view to_string(ContactStatus status);
+
 /// Output of one contact solve. Fields have the grid's shape (nx, ny).
 struct ContactResult {
   Field pressure;      ///< p [Pa], >= 0 everywhere
@@ -55,13 +77,21 @@ struct ContactResult {
   double max_pressure = 0;  ///< max p [Pa]
   int iterations = 0;       ///< conjugate-gradient iterations done
   double residual = 0;      ///< last relative pressure change (see ContactOptions::tolerance)
-  bool converged = false;
+  /// How the iteration ended; a result that no solve filled counts as not converged.
+  ContactStatus status = ContactStatus::iteration_limit;
+  bool converged = false;  ///< status == ContactStatus::converged
   /// True when a border cell carries pressure: the contact reaches the domain edge, so the
   /// domain is too small for the problem (the solution is that of a truncated body).
   bool touches_boundary = false;
-  /// Human-readable notes (boundary contact, non-convergence, breakdown); empty when all is well.
+  /// Human-readable notes, describe(*this, tolerance): empty when all is well. For display only;
+  /// programs read status and touches_boundary.
   std::string warning;
 };
+
+/// The notes on a result for users, derived from its status, touches_boundary, iterations and
+/// residual (tolerance: the one the solve ran with): a breakdown, then the domain edge, then the
+/// iteration limit, joined by "; ". Empty for a converged solve inside the domain.
+std::string describe(const ContactResult& result, double tolerance);
 
 /// Polonsky-Keer solver bound to one operator (the operator must outlive the solver). Each solve
 /// costs 2 operator applications per iteration (plus one periodic FFT pair of the grid's size when

@@ -31,7 +31,7 @@ FourierPreconditioner::FourierPreconditioner(const Grid& grid)
     for (std::ptrdiff_t i = 0; i < hx_; ++i)
       sigma_(i, j) = std::hypot(dkx * static_cast<double>(i), ky) * norm;
   }
-  // Mean of 1/|k| over the central cell [-dkx/2, dkx/2] x [-dky/2, dky/2] (theory.md 3.1).
+  // Mean of 1/|k| over the central cell [-dkx/2, dkx/2] x [-dky/2, dky/2] (docs/theory.md 3.1).
   sigma_(0, 0) = norm / mean_inverse_wavenumber(dkx, dky);
 }
 

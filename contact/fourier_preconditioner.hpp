@@ -17,9 +17,9 @@ class FourierPreconditioner {
 
   /// field <- F^-1 [sigma F[field]] in place; `field` has the grid's shape (nx, ny).
   /// sigma(k) = |k| [rad/m]; at k = 0, where |k| vanishes, sigma is the inverse of the mean of
-  /// 1/|k| over the central frequency cell (theory.md eq. 3.1), the same zero-frequency rule as
-  /// g(0) of the spectral operators. Only the approach-controlled iteration sees this value: under
-  /// load control the preconditioned field has zero mean.
+  /// 1/|k| over the central frequency cell (docs/theory.md eq. 3.1), the same zero-frequency rule
+  /// as g(0) of the spectral operators. Only the approach-controlled iteration sees this value:
+  /// under load control the preconditioned field has zero mean.
   void apply(Field& field);
 
  private:

@@ -7,8 +7,8 @@
 // hertz_contact.hpp) in the operator and the composite curvature in the shape.
 #include <variant>
 
-#include "core/grid.hpp"
-#include "core/types.hpp"
+#include "../core/grid.hpp"
+#include "../core/types.hpp"
 
 namespace coatfft {
 

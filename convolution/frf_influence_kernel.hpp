@@ -5,9 +5,9 @@
 // loaded cell, and brought back to space by an inverse FFT; the offsets |di| <= nx - 1,
 // |dj| <= ny - 1 then feed DC-FFT (DcfftOperator). Used where no space-domain coefficient is known
 // (coated and layered bodies); it inherits the periodicity error of the spectral pipeline.
-#include "convolution/g0.hpp"
-#include "convolution/influence_kernel.hpp"
-#include "frf/frf.hpp"
+#include "g0.hpp"
+#include "influence_kernel.hpp"
+#include "../frf/frf.hpp"
 
 namespace coatfft {
 

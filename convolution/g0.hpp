@@ -1,33 +1,36 @@
 #pragma once
 // The zero-frequency sample g(0) of a spectral kernel: every FRF is singular at k = 0
 // (H ~ C0 / k), so the sample at the origin of the frequency lattice is replaced by the mean of H
-// over the central lattice cell [-dkx/2, dkx/2] x [-dky/2, dky/2] (theory.md section 3; seed
-// paper section 4, step 3, where it is "computed by quadrature").
+// over the central lattice cell [-dkx/2, dkx/2] x [-dky/2, dky/2] (docs/theory.md section 3;
+// Spinu 2021, section 4, step 3, where it is "computed by quadrature").
 #include <string_view>
 
-#include "frf/frf.hpp"
+#include "../frf/frf.hpp"
 
 namespace coatfft {
 
 /// How g(0) is computed.
 enum class G0Method {
-  /// C0 * mean(1/|k|) in closed form (theory.md 3.1) plus the mean of the bounded remainder
-  /// H(k) - C0/k, integrated in polar form where it is smooth (theory.md 3.2-3.3). Fast and
+  /// C0 * mean(1/|k|) in closed form (docs/theory.md 3.1) plus the mean of the bounded remainder
+  /// H(k) - C0/k, integrated in polar form where it is smooth (docs/theory.md 3.2-3.3). Fast and
   /// accurate to ~1e-14 relative.
   regularized,
-  /// Plain adaptive quadrature of the singular H over the cell (the seed's quad2d approach), by
-  /// GSL: the 2-D integral over a quadrant, whose corner holds the 1/k singularity, iterated as
+  /// Plain adaptive quadrature of the singular H over the cell (the quad2d approach of Spinu 2021),
+  /// by GSL: the 2-D integral over a quadrant, whose corner holds the 1/k singularity, iterated as
   /// 1-D QAGS integrals (Matlab's integral2 'iterated' method; GSL has no 2-D adaptive rule).
-  /// Slower, accurate to about its tolerance; kept to reproduce the seed's Figure 3(b).
+  /// Slower, accurate to about its tolerance; kept to reproduce Spinu (2021), Figure 3(b).
   quadrature,
   /// Not computed: g(0) = 0. A g(0) error only shifts the displacement by a constant
-  /// (dg * load / period area; seed Figure 3(b)), so where only relative displacements matter —
-  /// a load-controlled contact, whose approach then goes unreported — g(0) is not needed at all.
+  /// (dg * load / period area; Spinu 2021, Figure 3(b)), so where only relative displacements
+  /// matter — a load-controlled contact, whose approach then goes unreported — g(0) is not needed
+  /// at all.
   omitted,
 };
 
 /// "regularized", "quadrature" or "omitted".
 std::string_view to_string(G0Method method);
+/// The G0Method named `name`; throws InvalidArgument naming the valid names otherwise.
+G0Method parse_g0_method(std::string_view name);
 
 /// g(0) and how it was obtained.
 struct G0Result {
@@ -40,7 +43,7 @@ struct G0Result {
 /// Default relative tolerance for compute_g0 (reached by `regularized` for every FRF of frf/).
 inline constexpr double default_g0_tolerance = 1e-13;
 
-/// Closed-form mean of 1/|k| over [-dkx/2, dkx/2] x [-dky/2, dky/2] [m/rad] (theory.md 3.1):
+/// Closed-form mean of 1/|k| over [-dkx/2, dkx/2] x [-dky/2, dky/2] [m/rad] (docs/theory.md 3.1):
 /// (2/dky) asinh(dky/dkx) + (2/dkx) asinh(dkx/dky). dkx, dky [rad/m] finite and > 0.
 double mean_inverse_wavenumber(double dkx, double dky);
 

@@ -1,6 +1,6 @@
 #pragma once
 // Error measures shared by tests, benchmarks and the CLI report.
-#include "core/types.hpp"
+#include "types.hpp"
 
 namespace coatfft {
 

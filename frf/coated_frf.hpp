@@ -1,12 +1,12 @@
 #pragma once
 // One coating (E1, nu1, thickness h) on a substrate (E2, nu2), bonded or frictionless interface:
-// closed forms (C1) and (C2) of theory.md §2.2-2.3 (Chen & Engel 1972; O'Sullivan & King 1988;
+// closed forms (C1) and (C2) of docs/theory.md §2.2-2.3 (Chen & Engel 1972; O'Sullivan & King 1988;
 // Perriot & Barthel 2004; Yu, Wang & Wang 2014), H(k) = 2 C(kh) / (E1* k).
 #include <string>
 
-#include "frf/frf.hpp"
-#include "layers/layer_stack.hpp"
-#include "materials/material.hpp"
+#include "frf.hpp"
+#include "../layers/layer_stack.hpp"
+#include "../materials/material.hpp"
 
 namespace coatfft {
 
@@ -37,7 +37,7 @@ class CoatedFrf final : public Frf {
   double coating_E_star_;
   double substrate_E_star_;
   double R_;  // E1* / E2*
-  // Bonded constants (theory.md §2.2): alpha, beta and, computed without cancellation,
+  // Bonded constants (docs/theory.md §2.2): alpha, beta and, computed without cancellation,
   // a = 1 - alpha, b = 1 - beta, 1 + alpha, 1 - alpha beta, a beta + b alpha (= alpha + beta - 2
   // alpha beta).
   double alpha_ = 0, beta_ = 0, a_ = 0, b_ = 0, one_plus_alpha_ = 0, one_minus_ab_ = 0,

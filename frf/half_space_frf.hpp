@@ -1,9 +1,9 @@
 #pragma once
-// Homogeneous elastic half-space: H(k) = 2 (1 - nu^2) / (E k) = 2 / (E* k)  (theory.md (1.2)).
+// Homogeneous elastic half-space: H(k) = 2 (1 - nu^2) / (E k) = 2 / (E* k)  (docs/theory.md (1.2)).
 #include <string>
 
-#include "frf/frf.hpp"
-#include "materials/material.hpp"
+#include "frf.hpp"
+#include "../materials/material.hpp"
 
 namespace coatfft {
 

@@ -1,7 +1,8 @@
 #pragma once
 // Cancellation-free hyperbolic combinations that vanish like x^3 at x = 0. The coated and layered
-// FRFs need them because their small-kh behaviour (thin layers, squeeze films, theory.md §2.6(c))
-// lives in exactly these differences; forming them by subtraction would lose ~2 log10(1/x) digits.
+// FRFs need them because their small-kh behaviour (thin layers, squeeze films,
+// docs/theory.md §2.6(c)) lives in exactly these differences; forming them by subtraction would
+// lose ~2 log10(1/x) digits.
 #include <cmath>
 
 namespace coatfft::detail {

@@ -1,16 +1,16 @@
 #pragma once
 // N coatings (any mix of bonded and frictionless interfaces) on a substrate, by a
-// surface-compliance recursion from the substrate up (theory.md §2.4, alternative 2). Each layer is
-// crossed either with its analytic propagator (k h_j <= 1, where it is exact and well conditioned)
-// or with the local decaying-exponential basis of theory.md §2.1 (k h_j > 1, where only exp(-k h_j)
-// appears), so no step overflows or loses digits for any k h_j. O(N) per wavenumber with 4x4
-// fixed-size algebra.
+// surface-compliance recursion from the substrate up (docs/theory.md §2.4, alternative 2). Each
+// layer is crossed either with its analytic propagator (k h_j <= 1, where it is exact and well
+// conditioned) or with the local decaying-exponential basis of docs/theory.md §2.1 (k h_j > 1,
+// where only exp(-k h_j) appears), so no step overflows or loses digits for any k h_j. O(N) per
+// wavenumber with 4x4 fixed-size algebra.
 #include <Eigen/Core>
 #include <string>
 #include <vector>
 
-#include "frf/frf.hpp"
-#include "layers/layer_stack.hpp"
+#include "frf.hpp"
+#include "../layers/layer_stack.hpp"
 
 namespace coatfft {
 
@@ -25,7 +25,7 @@ class MultilayerFrf final : public Frf {
   double c_inf() const override { return c_inf_; }  ///< 2 / E*_top coating [1/Pa]
   std::string name() const override { return "multilayer"; }
 
-  /// The real 2x2 surface compliance M(k) [m/Pa] of the P-SV part (theory.md §2.1):
+  /// The real 2x2 surface compliance M(k) [m/Pa] of the P-SV part (docs/theory.md §2.1):
   /// [-i u_L, u_z]^ = M [-i q_L, p]^, so u_L/q_L = M(0,0), u_z/p = M(1,1), H_ZL = M(1,0) = M(0,1).
   Eigen::Matrix2d surface_compliance(double k) const;
 

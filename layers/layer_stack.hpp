@@ -4,7 +4,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "materials/material.hpp"
+#include "../materials/material.hpp"
 
 namespace coatfft {
 

@@ -1,8 +1,8 @@
 #pragma once
 // Hertz (ellipsoidal) pressure of a circular contact centred on the grid origin.
-#include "core/grid.hpp"
-#include "core/types.hpp"
-#include "loads/sampling.hpp"
+#include "../core/grid.hpp"
+#include "../core/types.hpp"
+#include "sampling.hpp"
 
 namespace coatfft {
 

@@ -1,8 +1,8 @@
 #pragma once
 // Uniform pressure on a disk centred on the grid origin (flat-ended load, Johnson §3.4).
-#include "core/grid.hpp"
-#include "core/types.hpp"
-#include "loads/sampling.hpp"
+#include "../core/grid.hpp"
+#include "../core/types.hpp"
+#include "sampling.hpp"
 
 namespace coatfft {
 

@@ -5,7 +5,7 @@
 #include <string_view>
 #include <vector>
 
-#include "materials/material.hpp"
+#include "material.hpp"
 
 namespace coatfft {
 

@@ -1,9 +1,9 @@
 #pragma once
 // Continuous reference for any FRF under an axisymmetric surface pressure: the surface normal
-// displacement as a Hankel integral (theory.md §0, §1.4-1.5),
+// displacement as a Hankel integral (docs/theory.md §0, §1.4-1.5),
 //   u_z(r) = (1/2pi) \int_0^inf H(k) P^(k) J0(k r) k dk,   P^(k) = 2 pi \int_0^a p(s) J0(k s) s ds.
 // It checks FFT pipelines for coated and layered bodies, where no closed form exists.
-#include "frf/frf.hpp"
+#include "../frf/frf.hpp"
 
 namespace coatfft {
 
@@ -12,7 +12,7 @@ enum class AxisymmetricLoad { hertz, uniform_disk };
 
 /// How the Hankel integral is evaluated (both target the same rel_tol).
 enum class HankelRoute {
-  /// H = c_inf/k + (H - c_inf/k): the first part in closed form (theory.md (1.6)-(1.9) with
+  /// H = c_inf/k + (H - c_inf/k): the first part in closed form (docs/theory.md (1.6)-(1.9) with
   /// E* = 2/c_inf), the remainder, which decays like exp(-2 k h_top), by panel quadrature on a
   /// finite range. Fast and accurate; the default.
   split,

@@ -3,7 +3,7 @@
 // circular punch (Boussinesq 1885; Sneddon 1965), for a rigid indenter on an elastic half-space of
 // plane-strain modulus E* (or two elastic bodies with the composite modulus). Johnson, Contact
 // Mechanics (1985): section 3.4 (the punch pressure p0 (1 - r^2/a^2)^(-1/2)) and section 4.2.
-#include "materials/material.hpp"
+#include "../materials/material.hpp"
 
 namespace coatfft {
 
