@@ -1,10 +1,11 @@
 // Contact solver cost on the Hertz problem (DC-FFT operator): Polonsky-Keer iterations to a
 // relative pressure change of 1e-10 at N = 128 ... 1024, classic and preconditioned, under load and
 // approach control, and the wall time of a solve as a multiple of one operator application timed
-// in the same run. Prints `# key = value` headers and CSV rows,
-// and writes the same to bench/results/contact.csv (or the path given as first argument).
-// Usage: bench_contact [output.csv] [--measure]   (FFTW_ESTIMATE unless --measure)
+// in the same run. Prints `# key = value` headers and CSV rows, and writes the same to
+// bench/results/contact.csv (or OUTPUT).
+//   bench_contact [OUTPUT] [--planning estimate|measure]
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -17,8 +18,9 @@
 #include "bench/bench_report.hpp"
 #include "contact/contact_solver.hpp"
 #include "contact/indenter.hpp"
-#include "convolution/dcfft_operator.hpp"
 #include "convolution/influence_kernel.hpp"
+#include "convolution/make_operator.hpp"
+#include "core/detail/timing.hpp"
 #include "validation/hertz_contact.hpp"
 
 namespace {
@@ -32,7 +34,7 @@ constexpr double kLoad = 10.0;      // W [N]
 constexpr double kHalfWidth = 1.5;  // domain [-1.5 a, 1.5 a]^2, as in contact_table
 
 double ms_since(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  return 1e3 * detail::seconds_since(start);
 }
 
 // Counts and times the applications made inside a solve, so that the solve's cost can be expressed
@@ -47,7 +49,7 @@ class TimedOperator final : public SurfaceOperator {
     ms_ += ms_since(start);
     ++count_;
   }
-  std::string name() const override { return inner_.name(); }
+  Method method() const override { return inner_.method(); }
   using SurfaceOperator::apply;
   int count() const { return count_; }
   double ms() const { return ms_; }
@@ -80,9 +82,11 @@ Row run(std::ptrdiff_t n, ContactControl control, bool preconditioned, Planning 
   const HertzSphere ref = hertz_sphere_for_load(kLoad, kRadius, kModulus);
   const double width = 2 * kHalfWidth * ref.contact_radius;
   const Grid grid(n, n, width, width);
-  const auto plan_start = Clock::now();
-  DcfftOperator op(love_kernel(grid, kModulus), planning);
-  const double plan_ms = ms_since(plan_start);
+  OperatorOptions options;
+  options.planning = planning;
+  const BuiltOperator built = make_operator(love_kernel(grid, kModulus), options);
+  SurfaceOperator& op = *built.op;
+  const double plan_ms = 1e3 * built.report.setup_seconds;
   const Field h = height(grid, Sphere{kRadius});
   // One application, timed on a Hertz-like pressure (the cost does not depend on the values).
   Field p(n, n);
@@ -100,7 +104,6 @@ Row run(std::ptrdiff_t n, ContactControl control, bool preconditioned, Planning 
     op.apply(p, u);
     times.push_back(ms_since(start));
   }
-  std::sort(times.begin(), times.end());
   ContactOptions opts;
   opts.compute_approach = true;
   opts.preconditioned = preconditioned;
@@ -121,8 +124,8 @@ Row run(std::ptrdiff_t n, ContactControl control, bool preconditioned, Planning 
           res.residual,
           res.converged && !res.touches_boundary,
           plan_ms,
-          times.front(),
-          times[times.size() / 2],
+          *std::min_element(times.begin(), times.end()),
+          detail::median(times),
           solve_ms,
           timed.count(),
           timed.ms(),
@@ -134,17 +137,15 @@ Row run(std::ptrdiff_t n, ContactControl control, bool preconditioned, Planning 
 }  // namespace
 
 int main(int argc, char** argv) {
+  CLI::App app{"Contact solver cost on the Hertz problem (DC-FFT)"};
+  std::string path = "bench/results/contact.csv";
+  app.add_option("output", path, "CSV file")->capture_default_str();
+  std::string planning_name = "estimate";
+  app.add_option("--planning", planning_name, "FFTW planner effort: estimate or measure")
+      ->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
   try {
-    std::string path = "bench/results/contact.csv";
-    Planning planning = Planning::estimate;
-    for (int k = 1; k < argc; ++k) {
-      const std::string arg = argv[k];
-      if (arg == "--measure") {
-        planning = Planning::measure;
-      } else {
-        path = arg;
-      }
-    }
+    const Planning planning = parse_planning(planning_name);
     std::ostringstream out;
     out << "# benchmark = bench_contact (Polonsky-Keer on DC-FFT, Hertz sphere)\n";
     coatfft::bench::write_machine_header(out);

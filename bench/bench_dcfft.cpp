@@ -1,18 +1,15 @@
-// Speed of one DC-FFT application (DcfftOperator, pruned padded transforms) against the bare FFTW
-// pipeline it replaces: r2c of the full zero-padded (2N)^2 array, complex multiply, c2r, with the
-// same planner flags (FFTW_MEASURE). Also direct summation vs DC-FFT on small grids, 1 vs 2
-// threads, setup times and the peak RSS of a 2048^2 run. Prints "# key = value" headers and CSV
-// rows, and writes them to bench/results/dcfft.csv (or the path given as first argument).
-//
-// Usage: bench_dcfft [output.csv] [max_n]      (max_n default 2048)
-//        bench_dcfft --rss N                   (peak RSS of one N^2 DC-FFT run, nothing else)
+// Speed of one DC-FFT application (pruned padded transforms) against the bare FFTW pipeline it
+// replaces: r2c of the full zero-padded (2N)^2 array, complex multiply, c2r, with the same planner
+// flags (FFTW_MEASURE). Also direct summation vs DC-FFT on small grids, 1 vs 2 threads, setup
+// times and the peak RSS of a max_n^2 run (a child process doing only that). Prints
+// "# key = value" headers and CSV rows, and writes them to bench/results/dcfft.csv (or OUTPUT).
+//   bench_dcfft [OUTPUT] [--max-n N]
 #include <fftw3.h>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <complex>
-#include <cstdio>
-#include <cstdlib>
 #include <exception>
 #include <functional>
 #include <iostream>
@@ -24,16 +21,27 @@
 #include <vector>
 
 #include "bench/bench_report.hpp"
-#include "convolution/dcfft_operator.hpp"
-#include "convolution/direct_operator.hpp"
+#include "bench/child_process.hpp"
 #include "convolution/fftw_plan.hpp"
 #include "convolution/influence_kernel.hpp"
+#include "convolution/make_operator.hpp"
+#include "core/detail/timing.hpp"
 #include "core/norms.hpp"
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
 constexpr double e_star = 2.3e11;  // Pa (steel)
+
+// DC-FFT (or, with Method::direct, direct summation) on Love's kernel of E* = e_star.
+coatfft::BuiltOperator love_operator(const coatfft::InfluenceKernel& kernel, coatfft::Method method,
+                                     int threads = 1) {
+  coatfft::OperatorOptions o;
+  o.method = method;
+  o.planning = coatfft::Planning::measure;
+  o.threads = threads;
+  return coatfft::make_operator(kernel, o);
+}
 
 struct Timing {
   double min_ms;
@@ -47,17 +55,16 @@ Timing time_it(const std::function<void()>& f, double budget_s = 1.5) {
   f();
   const auto t0 = Clock::now();
   f();
-  const double once = std::chrono::duration<double>(Clock::now() - t0).count();
+  const double once = coatfft::detail::seconds_since(t0);
   const int reps = std::clamp(static_cast<int>(budget_s / std::max(once, 1e-9)), 5, 101);
   std::vector<double> ms;
   ms.reserve(static_cast<std::size_t>(reps));
   for (int r = 0; r < reps; ++r) {
     const auto s = Clock::now();
     f();
-    ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - s).count());
+    ms.push_back(1e3 * coatfft::detail::seconds_since(s));
   }
-  std::sort(ms.begin(), ms.end());
-  return {ms.front(), ms[ms.size() / 2], reps};
+  return {*std::min_element(ms.begin(), ms.end()), coatfft::detail::median(ms), reps};
 }
 
 coatfft::Field random_pressure(std::ptrdiff_t n, unsigned seed) {
@@ -88,7 +95,7 @@ class BarePadded {
     c2r_ = coatfft::FftwPlan::create(threads, [&] {
       return fftw_plan_dft_c2r_2d(m, m, spec_.data(), real_.data(), FFTW_MEASURE);
     });
-    plan_ms_ = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+    plan_ms_ = 1e3 * coatfft::detail::seconds_since(t0);
     std::copy_n(kernel.wrapped().data(), m_ * m_, real_.data());
     r2c_.execute();
     const double scale = 1.0 / static_cast<double>(m_ * m_);
@@ -155,20 +162,21 @@ std::pair<Timing, Timing> time_pair(const std::function<void()>& f, const std::f
   const auto t0 = Clock::now();
   f();
   g();
-  const double once = std::chrono::duration<double>(Clock::now() - t0).count();
+  const double once = coatfft::detail::seconds_since(t0);
   const int reps = std::clamp(static_cast<int>(budget_s / std::max(once, 1e-9)), 5, 101);
   std::vector<double> tf, tg;
   for (int r = 0; r < reps; ++r) {
     auto s = Clock::now();
     f();
-    tf.push_back(std::chrono::duration<double, std::milli>(Clock::now() - s).count());
+    tf.push_back(1e3 * coatfft::detail::seconds_since(s));
     s = Clock::now();
     g();
-    tg.push_back(std::chrono::duration<double, std::milli>(Clock::now() - s).count());
+    tg.push_back(1e3 * coatfft::detail::seconds_since(s));
   }
-  std::sort(tf.begin(), tf.end());
-  std::sort(tg.begin(), tg.end());
-  return {{tf.front(), tf[tf.size() / 2], reps}, {tg.front(), tg[tg.size() / 2], reps}};
+  const auto summary = [reps](const std::vector<double>& ms) {
+    return Timing{*std::min_element(ms.begin(), ms.end()), coatfft::detail::median(ms), reps};
+  };
+  return {summary(tf), summary(tg)};
 }
 
 void dcfft_vs_bare(std::ptrdiff_t n, int threads, std::vector<Row>& rows, std::ostream& log) {
@@ -177,13 +185,13 @@ void dcfft_vs_bare(std::ptrdiff_t n, int threads, std::vector<Row>& rows, std::o
   coatfft::Field u;
   Row dc{"dcfft", n, threads, 0, {}, 0, 0, 0};
   Row bare{"bare_fftw_padded", n, threads, 0, {}, 1.0, 0, 0};
-  coatfft::DcfftOperator op(coatfft::love_kernel(grid, e_star), coatfft::Planning::measure,
-                            threads);
-  dc.plan_ms = op.setup_seconds() * 1e3;
-  BarePadded b(coatfft::love_kernel(grid, e_star), threads);
+  const coatfft::InfluenceKernel kernel = coatfft::love_kernel(grid, e_star);
+  const coatfft::BuiltOperator op = love_operator(kernel, coatfft::Method::dcfft, threads);
+  dc.plan_ms = op.report.setup_seconds * 1e3;
+  BarePadded b(kernel, threads);
   b.load(p);
   bare.plan_ms = b.plan_ms();
-  std::tie(dc.t, bare.t) = time_pair([&] { op.apply(p, u); }, [&] { b.run(); });
+  std::tie(dc.t, bare.t) = time_pair([&] { op.op->apply(p, u); }, [&] { b.run(); });
   b.load(p);
   b.run();
   const coatfft::Field plain = b.crop();
@@ -195,33 +203,40 @@ void dcfft_vs_bare(std::ptrdiff_t n, int threads, std::vector<Row>& rows, std::o
   log << csv(dc) << '\n' << csv(bare) << std::endl;
 }
 
-// Peak RSS of a child process that builds and applies one N^2 DcfftOperator and nothing else.
-double child_peak_rss_mb(const char* self, std::ptrdiff_t n) {
-  const std::string cmd = std::string(self) + " --rss " + std::to_string(n);
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (pipe == nullptr) return -1.0;
-  char line[256];
-  double mb = -1.0;
-  while (std::fgets(line, sizeof line, pipe) != nullptr)
-    std::sscanf(line, "# peak_rss_MB = %lf", &mb);
-  pclose(pipe);
-  return mb;
+// Builds and applies one N^2 DC-FFT operator and nothing else: what the child of
+// child_peak_rss_mb runs (this program with --rss N).
+int rss_child(std::ptrdiff_t n) {
+  const coatfft::Grid grid(n, n, 2e-3, 2e-3);
+  const coatfft::Field p = random_pressure(n, 42u);
+  const coatfft::BuiltOperator op =
+      love_operator(coatfft::love_kernel(grid, e_star), coatfft::Method::dcfft);
+  const coatfft::Field u = op.op->apply(p);
+  std::cout << "# N = " << n << "\n# setup_s = " << op.report.setup_seconds << "\n";
+  return 0;
+}
+
+// Peak RSS [MiB] of a child process that builds and applies one N^2 DC-FFT operator and nothing
+// else (wait4's rusage); -1 if it failed.
+double child_peak_rss_mb(std::ptrdiff_t n) {
+  const coatfft::bench::ChildOutcome out =
+      coatfft::bench::run_child({coatfft::bench::self_executable(), "--rss", std::to_string(n)});
+  return out.exit_code == 0 ? out.peak_rss_mb : -1.0;
 }
 
 void direct_vs_dcfft(std::ptrdiff_t n, std::vector<Row>& rows, std::ostream& log) {
   const coatfft::Grid grid(n, n, 2e-3, 2e-3);
   const auto kernel = coatfft::love_kernel(grid, e_star);
   const coatfft::Field p = random_pressure(n, 7u);
-  coatfft::DirectOperator direct(kernel);
-  coatfft::DcfftOperator dcfft(kernel, coatfft::Planning::measure);
+  const coatfft::BuiltOperator direct = love_operator(kernel, coatfft::Method::direct);
+  const coatfft::BuiltOperator dcfft = love_operator(kernel, coatfft::Method::dcfft);
   coatfft::Field ud;
   coatfft::Field uf;
-  Row rd{"direct", n, 1, 0, time_it([&] { direct.apply(p, ud); }, 1.0), 0, 0, 0};
+  Row rd{"direct", n, 1, 0, time_it([&] { direct.op->apply(p, ud); }, 1.0), 0, 0, 0};
   Row rf{"dcfft_small",
          n,
          1,
-         dcfft.setup_seconds() * 1e3,
-         time_it([&] { dcfft.apply(p, uf); }),
+         dcfft.report.setup_seconds * 1e3,
+         time_it([&] { dcfft.op->apply(p, uf); }),
          0,
          coatfft::rel_l2(uf, ud),
          coatfft::rel_linf(uf, ud)};
@@ -234,22 +249,21 @@ void direct_vs_dcfft(std::ptrdiff_t n, std::vector<Row>& rows, std::ostream& log
 }  // namespace
 
 int main(int argc, char** argv) {
+  CLI::App app{"One DC-FFT application against the bare padded FFTW pipeline; direct summation"};
+  std::string out_path = std::string(COATFFT_SOURCE_DIR) + "/bench/results/dcfft.csv";
+  app.add_option("output", out_path, "CSV file")->capture_default_str();
+  std::ptrdiff_t max_n = 2048;
+  app.add_option("--max-n", max_n, "Largest grid (also the size of the peak-RSS run)")
+      ->capture_default_str()
+      ->check(CLI::Range(std::ptrdiff_t{2}, std::ptrdiff_t{1} << 16));
+  std::ptrdiff_t rss_n = 0;
+  app.add_option("--rss", rss_n,
+                 "Internal: only build and apply one N^2 operator (the child "
+                 "whose peak RSS is reported)")
+      ->group("");
+  CLI11_PARSE(app, argc, argv);
   try {
-    if (argc == 3 && std::string(argv[1]) == "--rss") {
-      const std::ptrdiff_t n = std::stol(argv[2]);
-      const coatfft::Grid grid(n, n, 2e-3, 2e-3);
-      const coatfft::Field p = random_pressure(n, 42u);
-      coatfft::DcfftOperator op(coatfft::love_kernel_quarter(grid, e_star),
-                                coatfft::Planning::measure);
-      coatfft::Field u = op.apply(p);
-      std::cout << "# N = " << n << "\n# peak_rss_MB = " << coatfft::bench::peak_rss_mb()
-                << "\n# setup_s = " << op.setup_seconds() << "\n";
-      return 0;
-    }
-    const std::string out_path =
-        argc > 1 ? argv[1] : std::string(COATFFT_SOURCE_DIR) + "/bench/results/dcfft.csv";
-    const std::ptrdiff_t max_n = argc > 2 ? std::stol(argv[2]) : 2048;
-
+    if (rss_n > 0) return rss_child(rss_n);
     std::ostringstream header;
     header << "# bench = bench_dcfft\n";
     coatfft::bench::write_machine_header(header);
@@ -264,17 +278,17 @@ int main(int argc, char** argv) {
         << "method,N,threads,plan_ms,apply_ms_min,apply_ms_median,ratio,rel_err_l2,rel_err_inf\n";
     std::cout << header.str() << std::flush;
     std::vector<Row> rows;
-    for (std::ptrdiff_t n : {256, 512, 1024, 2048})
+    for (const std::ptrdiff_t n : {256, 512, 1024, 2048})
       if (n <= max_n) dcfft_vs_bare(n, 1, rows, std::cout);
-    for (std::ptrdiff_t n : {1024, 2048})
+    for (const std::ptrdiff_t n : {1024, 2048})
       if (n <= max_n) dcfft_vs_bare(n, 2, rows, std::cout);
-    for (std::ptrdiff_t n : {32, 64}) direct_vs_dcfft(n, rows, std::cout);
+    for (const std::ptrdiff_t n : {32, 64}) direct_vs_dcfft(n, rows, std::cout);
 
     std::ostringstream body;
     for (const Row& r : rows) body << csv(r) << '\n';
     std::ostringstream footer;
-    footer << "# peak_rss_MB_dcfft_only_" << max_n << " = " << child_peak_rss_mb(argv[0], max_n)
-           << "   (child process: love_kernel_quarter + DcfftOperator + p + u, FFTW_MEASURE)\n";
+    footer << "# peak_rss_MB_dcfft_only_" << max_n << " = " << child_peak_rss_mb(max_n)
+           << "   (child process: Love's kernel + DC-FFT operator + p + u, FFTW_MEASURE)\n";
     footer << "# peak_rss_MB_this_run = " << coatfft::bench::peak_rss_mb()
            << "   (includes the bare pipeline)\n";
     std::cout << footer.str();

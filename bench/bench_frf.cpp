@@ -3,13 +3,12 @@
 // and a 5-layer stack. The wavenumbers sweep k h_top over 1e-4..1e4 log-uniformly, so both the
 // thin-layer (propagator) and thick-layer (decaying basis) branches are timed in proportion.
 // Prints "# key = value" headers and CSV rows, and writes them to bench/results/frf_eval.csv
-// (or the path given as first argument).
-//
-// Usage: bench_frf [output.csv]
+// (or OUTPUT).
+//   bench_frf [OUTPUT]
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -17,6 +16,7 @@
 #include <vector>
 
 #include "bench/bench_report.hpp"
+#include "core/detail/timing.hpp"
 #include "frf/coated_frf.hpp"
 #include "frf/half_space_frf.hpp"
 #include "frf/multilayer_frf.hpp"
@@ -49,20 +49,20 @@ Result time_case(const coatfft::Frf& frf, const std::vector<double>& ks) {
     double sum = 0.0;
     const auto t0 = Clock::now();
     for (double k : ks) sum += frf(k) * k;
-    const double s = std::chrono::duration<double>(Clock::now() - t0).count();
+    const double s = coatfft::detail::seconds_since(t0);
     ns.push_back(1e9 * s / static_cast<double>(ks.size()));
     checksum = sum;  // keeps the loop from being optimised away
   }
-  std::sort(ns.begin(), ns.end());
-  return {ns.front(), ns[ns.size() / 2], checksum};
+  return {*std::min_element(ns.begin(), ns.end()), coatfft::detail::median(ns), checksum};
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::filesystem::path out_path =
-      argc > 1 ? std::filesystem::path(argv[1])
-               : std::filesystem::path(COATFFT_SOURCE_DIR) / "bench" / "results" / "frf_eval.csv";
+  CLI::App app{"Nanoseconds per FRF evaluation H(k)"};
+  std::string out_path = std::string(COATFFT_SOURCE_DIR) + "/bench/results/frf_eval.csv";
+  app.add_option("output", out_path, "CSV file")->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
   const Material tin(4e11, 0.25), steel(2.1e11, 0.3), polymer(3e9, 0.4), dlc(2e11, 0.22);
   const double h = 1e-6;  // top coating thickness [m]
   std::vector<Case> cases;
@@ -103,6 +103,6 @@ int main(int argc, char** argv) {
        << "," << r.checksum << "\n";
   }
   std::cout << os.str();
-  coatfft::bench::write_text_file(out_path.string(), os.str());
+  coatfft::bench::write_text_file(out_path, os.str());
   return 0;
 }

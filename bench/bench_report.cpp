@@ -3,11 +3,9 @@
 #include <fftw3.h>
 #include <sys/resource.h>
 
-#include <algorithm>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <thread>
 
 #include "core/error.hpp"
@@ -61,32 +59,6 @@ double peak_rss_mb() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   return static_cast<double>(usage.ru_maxrss) / 1024.0;
-}
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  return *mid;
-}
-
-std::vector<int> parse_int_list(const std::string& text) {
-  std::vector<int> out;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    std::size_t used = 0;
-    int value = 0;
-    try {
-      value = std::stoi(item, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    COATFFT_REQUIRE(used == item.size() && !item.empty(), "'", item, "' in the list '", text,
-                    "' is not an integer");
-    out.push_back(value);
-  }
-  return out;
 }
 
 void write_text_file(const std::string& path, const std::string& text) {

@@ -1,16 +1,21 @@
 #pragma once
-// The test problems of bench_sweep (issue 5) and their reference displacements: a Hertz pressure
-// (p0 = 1 GPa, a = 1 mm) on [-1.5a, 1.5a]^2 over a homogeneous steel half-space (closed form,
-// theory.md 1.4) and over four bonded coatings on steel (continuous Hankel-transform reference).
+// The test problems of the speed-against-error sweep (bench_sweep, bench_sweep_row, bench_figures,
+// bench_reference_check) and their reference displacements: a Hertz pressure (p0 = 1 GPa,
+// a = 1 mm) on [-1.5a, 1.5a]^2 over a homogeneous steel half-space (closed form, docs/theory.md
+// 1.4) and over four bonded coatings on steel (continuous Hankel-transform reference).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <iomanip>
 #include <memory>
+#include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
 
+#include "core/detail/lagrange.hpp"
+#include "core/detail/parallel_for.hpp"
 #include "core/error.hpp"
 #include "core/grid.hpp"
 #include "core/types.hpp"
@@ -57,8 +62,8 @@ inline SweepCase coated_case(const std::string& name, double modulus_ratio, doub
 inline std::vector<SweepCase> all_cases() {
   std::vector<SweepCase> cases;
   cases.push_back({"hertz_homogeneous",
-                   "steel half-space (210 GPa, 0.3), pressure sampled at cell centres (as the "
-                   "seed)",
+                   "steel half-space (210 GPa, 0.3), pressure sampled at cell centres (as in "
+                   "Spinu 2021)",
                    "closed form hertz_displacement (theory.md 1.6-1.7)", LayerStack(steel()),
                    Sampling::centre});
   cases.push_back(coated_case("coated_soft_h0.1", 0.1, 0.1));
@@ -87,10 +92,17 @@ inline const char* to_string(Sampling s) {
   return s == Sampling::centre ? "centre" : "cell_average";
 }
 
+/// Numbers as the sweep's CSVs write them: 6 significant digits.
+inline std::string fmt(double v) {
+  std::ostringstream os;
+  os << std::setprecision(6) << v;
+  return os.str();
+}
+
 /// Relative tolerance of the Hankel reference of the coated cases.
 inline constexpr double reference_tolerance = 1e-10;
 
-/// u_ref at every cell centre [m] and at r = 0 [m] (the seed's normalisation).
+/// u_ref at every cell centre [m] and at r = 0 [m] (the normalisation of Spinu 2021).
 struct Reference {
   Field u;
   double u_centre = 0.0;
@@ -99,7 +111,7 @@ struct Reference {
 /// Evaluates the radial function `f(r)` at every cell centre of the square grid `grid`, once per
 /// distinct radius: with dx = dy the centres lie at (dx/2) (2i + 1 - n) along each axis, so
 /// r^2 = (dx/2)^2 s with the integer s = (2i + 1 - n)^2 + (2j + 1 - n)^2. The distinct radii
-/// (about n^2/8) are shared out among `threads` workers.
+/// (about n^2/8) are shared out among `threads` threads.
 inline Field radial_field(const Grid& grid, const std::function<double(double)>& f,
                           int threads = 2) {
   COATFFT_REQUIRE(grid.nx() == grid.ny() && grid.lx() == grid.ly(),
@@ -118,15 +130,10 @@ inline Field radial_field(const Grid& grid, const std::function<double(double)>&
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
   std::vector<double> values(keys.size());
   const double half = 0.5 * grid.dx();
-  auto work = [&](std::size_t first, std::size_t step) {
-    for (std::size_t q = first; q < keys.size(); q += step)
-      values[q] = f(half * std::sqrt(static_cast<double>(keys[q])));
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t)
-    pool.emplace_back(work, static_cast<std::size_t>(t), static_cast<std::size_t>(threads));
-  work(0, static_cast<std::size_t>(threads));
-  for (std::thread& t : pool) t.join();
+  detail::parallel_for(0, static_cast<std::ptrdiff_t>(keys.size()), threads, [&](std::ptrdiff_t q) {
+    const auto k = static_cast<std::size_t>(q);
+    values[k] = f(half * std::sqrt(static_cast<double>(keys[k])));
+  });
   Field u(n, n);
   for (std::ptrdiff_t j = 0; j < n; ++j)
     for (std::ptrdiff_t i = 0; i < n; ++i) {
@@ -138,8 +145,8 @@ inline Field radial_field(const Grid& grid, const std::function<double(double)>&
 
 /// u_ref(r) [m] of a case for 0 <= r <= r_max. Homogeneous: the closed form. Coated: the Hankel
 /// reference (relative tolerance `reference_tolerance`) is split as u = u_top + w, u_top the
-/// closed form for a half-space of the top layer's modulus (E* = 2 / c_inf, theory.md 1.4) and w
-/// the part of the remainder H - c_inf/k, which decays like exp(-2 k h) in k, so w is smooth in r
+/// closed form for a half-space of the top layer's modulus (E* = 2 / c_inf, docs/theory.md 1.4) and
+/// w the part of the remainder H - c_inf/k, which decays like exp(-2 k h) in k, so w is smooth in r
 /// on the scale h: w is tabulated once on nodes dr = min(h, a)/50 and interpolated with 6-point
 /// Lagrange (w is even in r: nodes mirror at 0); u_top, which carries the r = a kink, stays exact.
 /// About (r_max / dr) Hankel evaluations instead of one per distinct cell radius (n^2/8).
@@ -151,16 +158,11 @@ class RadialReference {
     if (c.stack.is_homogeneous()) return;
     const double h = c.stack.coatings().front().thickness;
     dr_ = std::min(h, c.a) / 50.0;
-    const auto nodes = static_cast<std::size_t>(std::ceil(r_max / dr_)) + 4;
-    w_.resize(nodes);
-    auto work = [&](std::size_t first, std::size_t step) {
-      for (std::size_t q = first; q < nodes; q += step) w_[q] = exact_remainder(dr_ * double(q));
-    };
-    std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t)
-      pool.emplace_back(work, static_cast<std::size_t>(t), static_cast<std::size_t>(threads));
-    work(0, static_cast<std::size_t>(threads));
-    for (std::thread& t : pool) t.join();
+    const auto nodes = static_cast<std::ptrdiff_t>(std::ceil(r_max / dr_)) + 4;
+    w_.resize(static_cast<std::size_t>(nodes));
+    detail::parallel_for(0, nodes, threads, [&](std::ptrdiff_t q) {
+      w_[static_cast<std::size_t>(q)] = exact_remainder(dr_ * static_cast<double>(q));
+    });
   }
 
   /// u_ref(r) [m] from the table (coated) or the closed form (homogeneous).
@@ -180,17 +182,14 @@ class RadialReference {
   double remainder(double r) const {
     if (w_.empty()) return 0.0;
     const double t = r / dr_;
-    const auto base = static_cast<std::ptrdiff_t>(std::floor(t)) - 2;  // nodes base..base+5
+    const double floor_t = std::floor(t);
+    const auto base = static_cast<std::ptrdiff_t>(floor_t) - 2;  // nodes base..base+5
     COATFFT_REQUIRE(base + 5 < static_cast<std::ptrdiff_t>(w_.size()), "RadialReference: r = ", r,
                     " beyond the table");
-    double sum = 0.0;
-    for (std::ptrdiff_t m = 0; m < 6; ++m) {
-      double weight = 1.0;
-      for (std::ptrdiff_t l = 0; l < 6; ++l)
-        if (l != m) weight *= (t - double(base + l)) / double(m - l);
-      sum += weight * w_[static_cast<std::size_t>(std::abs(base + m))];
-    }
-    return sum;
+    std::array<double, 6> f{};
+    for (std::ptrdiff_t m = 0; m < 6; ++m)
+      f[static_cast<std::size_t>(m)] = w_[static_cast<std::size_t>(std::abs(base + m))];
+    return detail::lagrange6(f.data(), t - floor_t);
   }
 
   double p0_;

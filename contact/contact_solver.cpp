@@ -34,7 +34,7 @@ void append(std::string& text, const std::string& more) {
   text += more;
 }
 
-// The constrained conjugate gradient of Polonsky & Keer (2000) on one problem: the iterate, its
+// The constrained conjugate gradient of Polonsky & Keer (1999) on one problem: the iterate, its
 // work fields, and one function per step of their iteration. The steps are fused loops over the
 // cells (no temporaries): at large N the element-wise work would otherwise rival the two FFT-based
 // operator applications per iteration.

@@ -1,6 +1,6 @@
 #pragma once
 // Frictionless normal contact of a rigid indenter on an elastic body, on any SurfaceOperator:
-// constrained conjugate gradient of Polonsky & Keer (2000), Wear 231, 206-219. See docs/contact.md.
+// constrained conjugate gradient of Polonsky & Keer (1999), Wear 231, 206-219. See docs/contact.md.
 //
 // With h the initial separation (contact/indenter.hpp), u = K p the surface displacement and delta
 // the rigid-body approach, the gap is g = h + u - delta and the solution satisfies

@@ -3,11 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <exception>
 #include <numbers>
-#include <thread>
-#include <vector>
 
+#include "core/detail/parallel_for.hpp"
+#include "core/detail/timing.hpp"
 #include "core/error.hpp"
 
 namespace coatfft {
@@ -44,27 +43,8 @@ Field sample_frf_quarter(const Frf& frf, std::ptrdiff_t qx, std::ptrdiff_t qy, d
     for (std::ptrdiff_t jx = first; jx < qx; ++jx)
       q(jx, jy) = frf(std::hypot(dkx * static_cast<double>(jx), ky));
   };
-  const auto workers = static_cast<std::ptrdiff_t>(std::min<std::ptrdiff_t>(threads, qy));
-  if (workers <= 1) {
-    for (std::ptrdiff_t jy = 0; jy < qy; ++jy) column(jy);
-  } else {
-    // An exception (an FRF refusing a wavenumber) must not escape a thread: the first one is
-    // kept and rethrown after the join.
-    std::vector<std::exception_ptr> errors(static_cast<std::size_t>(workers));
-    {
-      std::vector<std::jthread> pool;
-      for (std::ptrdiff_t w = 0; w < workers; ++w)
-        pool.emplace_back([&, w] {
-          try {
-            for (std::ptrdiff_t jy = w; jy < qy; jy += workers) column(jy);
-          } catch (...) {
-            errors[static_cast<std::size_t>(w)] = std::current_exception();
-          }
-        });
-    }
-    for (const std::exception_ptr& e : errors)
-      if (e) std::rethrow_exception(e);
-  }
+  // An FRF refusing a wavenumber throws in a worker: parallel_for rethrows it here.
+  detail::parallel_for(0, qy, threads, column);
   if (swap)
     for (std::ptrdiff_t jy = 1; jy < std::min(qy, qx); ++jy)
       for (std::ptrdiff_t jx = 0; jx < jy; ++jx) q(jx, jy) = q(jy, jx);
@@ -137,7 +117,7 @@ FrfSpectralOperator::FrfSpectralOperator(const Grid& grid, const Frf& frf, doubl
   // H is real and even, so the product with the half spectrum of p needs only real factors;
   // FFTW's unnormalised inverse is compensated here, once (docs/conventions.md). With the
   // numpy-style 1/(mx my) no further factor is needed because the period is exactly mx dx
-  // (theory.md 4.3).
+  // (docs/theory.md 4.3).
   // Only the quarter |jy| <= my/2 is sampled and kept (no (my, hx) array: at alpha = 4 and
   // 1024^2 that is 67 MB less to fill and fault in, and half the kernel memory).
   using std::numbers::pi;
@@ -146,7 +126,7 @@ FrfSpectralOperator::FrfSpectralOperator(const Grid& grid, const Frf& frf, doubl
       2.0 * pi / (static_cast<double>(my_) * grid.dy()), threads);
   kernel_quarter_(0, 0) = g0.value;
   kernel_quarter_ *= 1.0 / (static_cast<double>(mx_) * static_cast<double>(my_));
-  setup_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  setup_seconds_ = detail::seconds_since(start);
 }
 
 void FrfSpectralOperator::apply(const Field& pressure, Field& displacement) {
@@ -156,11 +136,12 @@ void FrfSpectralOperator::apply(const Field& pressure, Field& displacement) {
                   pressure.cols(), "), but the grid needs (", nx, ", ", ny, ")");
   COATFFT_REQUIRE(&pressure != &displacement,
                   "FrfSpectralOperator::apply: displacement must not alias pressure");
-  // Pressure in the block [0, nx) x [0, ny) of the extended lattice, zeros elsewhere (seed
-  // section 4, step 5). The product is a circular convolution u_i = sum_k G_{(i-k) mod M} p_k,
-  // so the displacement of target cell i lies in slot i: the block kept is [0, nx) x [0, ny),
-  // as in theory.md 4.3. The seed's "retain the middle N terms" (step 9) describes a layout with
-  // the pressure placed in the middle of the extended window; both give the same values.
+  // Pressure in the block [0, nx) x [0, ny) of the extended lattice, zeros elsewhere (Spinu
+  // 2021, section 4, step 5). The product is a circular convolution
+  // u_i = sum_k G_{(i-k) mod M} p_k, so the displacement of target cell i lies in slot i: the
+  // block kept is [0, nx) x [0, ny), as in docs/theory.md 4.3. Spinu's "retain the middle N
+  // terms" (step 9) describes a layout with the pressure placed in the middle of the extended
+  // window; both give the same values.
   double* r = real_.data();
   std::fill_n(r, mx_ * my_, 0.0);
   for (std::ptrdiff_t j = 0; j < ny; ++j) std::copy_n(&pressure(0, j), nx, r + j * mx_);

@@ -1,12 +1,15 @@
 #include "convolution/g0.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <functional>
 #include <limits>
 #include <numbers>
 
+#include "core/detail/parse_name.hpp"
+#include "core/detail/timing.hpp"
 #include "core/error.hpp"
 #include "core/gsl_quadrature.hpp"
 
@@ -32,9 +35,10 @@ Estimate to_estimate(const GslIntegral& r) {
 // \iint_rect f(|k|) dk = \int_0^D f(rho) rho w(rho) d rho, with w(rho) the angle of the circle of
 // radius rho inside the rectangle: 2 pi for rho <= m = min(X, Y), 2 pi - 4 acos(m/rho) up to
 // M = max(X, Y), then 2 pi - 4 acos(X/rho) - 4 acos(Y/rho) up to the corner D. Here
-// f rho = rho H - C0 =: s(rho), bounded and smooth (theory.md 3.2). The square-root kinks of w at
-// m and M are removed by rho = m / cos(phi) resp. M / cos(phi), for which acos(m/rho) = phi: this
-// is the polar-sector integral of theory.md 3.2 with the angular integration done exactly.
+// f rho = rho H - C0 =: s(rho), bounded and smooth (docs/theory.md 3.2). The square-root kinks of w
+// at m and M are removed by rho = m / cos(phi) resp. M / cos(phi), for which acos(m/rho) = phi:
+// this is the polar-sector integral of docs/theory.md 3.2 with the angular integration done
+// exactly.
 Estimate remainder_integral(const Frf& frf, double X, double Y, double abs_tol) {
   const double c0 = frf.c0();
   const double m = std::min(X, Y), M = std::max(X, Y), D = std::hypot(X, Y);
@@ -72,7 +76,7 @@ Estimate remainder_integral(const Frf& frf, double X, double Y, double abs_tol) 
 }
 
 // Plain adaptive quadrature of H over the quadrant [0, X] x [0, Y] (the cell is 4 such
-// quadrants), the seed's approach, as iterated 1-D integrals by GSL's QAGS:
+// quadrants), the approach of Spinu (2021), as iterated 1-D integrals by GSL's QAGS:
 // I = \int_0^Y F(ky) dky with F(ky) = \int_0^X H(hypot(kx, ky)) dkx. For ky > 0 the inner
 // integrand is bounded (by ~C0/ky) but peaked at kx = 0; F has a logarithmic singularity at ky = 0
 // (F ~ C0 asinh(X/ky)), which QAGS's extrapolation is made for. Neither rule evaluates an end
@@ -115,6 +119,11 @@ std::string_view to_string(G0Method method) {
   return "unknown";
 }
 
+G0Method parse_g0_method(std::string_view name) {
+  return detail::parse_name(
+      name, std::array{G0Method::regularized, G0Method::quadrature, G0Method::omitted});
+}
+
 double mean_inverse_wavenumber(double dkx, double dky) {
   COATFFT_REQUIRE(std::isfinite(dkx) && dkx > 0, "mean_inverse_wavenumber: dkx = ", dkx,
                   " rad/m, but it must be finite and > 0");
@@ -147,7 +156,7 @@ G0Result compute_g0(const Frf& frf, double dkx, double dky, G0Method method, dou
     result.value = 4.0 * q.value / area;
     result.estimated_error = 4.0 * q.error / area;
   }
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.seconds = detail::seconds_since(start);
   COATFFT_REQUIRE(std::isfinite(result.value), "compute_g0: g(0) = ", result.value, " for FRF '",
                   frf.name(), "' (method ", to_string(method),
                   "): the FRF is not finite on the "

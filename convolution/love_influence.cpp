@@ -6,12 +6,13 @@
 #include <limits>
 #include <numbers>
 
+#include "core/detail/gauss_legendre.hpp"
 #include "core/error.hpp"
 
 namespace coatfft {
 namespace {
 
-// F(X, Y) of theory.md (1.5); each term is defined as 0 where its prefactor is 0 (its limit).
+// F(X, Y) of docs/theory.md (1.5); each term is defined as 0 where its prefactor is 0 (its limit).
 double corner(double X, double Y) {
   double f = 0.0;
   if (X != 0.0) f += X * std::asinh(Y / std::abs(X));
@@ -40,46 +41,6 @@ double closed_form(double x, double y, double a, double b) {
 // ~64 eps max(dx, dy) / min(dx, dy).
 constexpr std::array<double, 5> switch_ratio = {8.0, 12.0, 32.0, 128.0, 4096.0};  // n = 6..2
 
-// Nodes (t >= 0 half) and weights of the n-point Gauss-Legendre rules on [-1, 1]
-// (Abramowitz & Stegun 25.4.30).
-template <int N>
-struct GaussLegendre;
-template <>
-struct GaussLegendre<2> {
-  static constexpr std::array<double, 2> t = {-0.577350269189625765, 0.577350269189625765};
-  static constexpr std::array<double, 2> w = {1.0, 1.0};
-};
-template <>
-struct GaussLegendre<3> {
-  static constexpr std::array<double, 3> t = {-0.774596669241483377, 0.0, 0.774596669241483377};
-  static constexpr std::array<double, 3> w = {0.555555555555555556, 0.888888888888888889,
-                                              0.555555555555555556};
-};
-template <>
-struct GaussLegendre<4> {
-  static constexpr std::array<double, 4> t = {-0.861136311594052575, -0.339981043584856265,
-                                              0.339981043584856265, 0.861136311594052575};
-  static constexpr std::array<double, 4> w = {0.347854845137453857, 0.652145154862546143,
-                                              0.652145154862546143, 0.347854845137453857};
-};
-template <>
-struct GaussLegendre<5> {
-  static constexpr std::array<double, 5> t = {-0.906179845938663993, -0.538469310105683091, 0.0,
-                                              0.538469310105683091, 0.906179845938663993};
-  static constexpr std::array<double, 5> w = {0.236926885056189088, 0.478628670499366468,
-                                              0.568888888888888889, 0.478628670499366468,
-                                              0.236926885056189088};
-};
-template <>
-struct GaussLegendre<6> {
-  static constexpr std::array<double, 6> t = {-0.932469514203152028, -0.661209386466264514,
-                                              -0.238619186083196909, 0.238619186083196909,
-                                              0.661209386466264514,  0.932469514203152028};
-  static constexpr std::array<double, 6> w = {0.171324492379170345, 0.360761573048138608,
-                                              0.467913934572691047, 0.467913934572691047,
-                                              0.360761573048138608, 0.171324492379170345};
-};
-
 // out[i] = N x N Gauss-Legendre value of love_influence(x0 + i step, y) for i in [first, end).
 // The node sums are unrolled inside the loop over i, which carries no dependence and vectorises
 // (with -fno-math-errno, set for this file); a single point (first = 0, end = 1, step = 0) goes
@@ -87,13 +48,16 @@ struct GaussLegendre<6> {
 template <int N>
 void gauss_legendre_run(double x0, double step, int first, int end, double y, double a, double b,
                         double* out) {
-  using G = GaussLegendre<N>;
+  // Local copies of the weights: stores through `out` cannot alias them, so they stay in
+  // registers across the loop.
+  const std::array<double, N> t = detail::gauss_legendre<N>().nodes;
+  const std::array<double, N> w = detail::gauss_legendre<N>().weights;
   std::array<double, N> ey2{};
   std::array<double, N> ax{};
   for (std::size_t q = 0; q < N; ++q) {
-    const double ey = y - b * G::t[q];
+    const double ey = y - b * t[q];
     ey2[q] = ey * ey;
-    ax[q] = a * G::t[q];
+    ax[q] = a * t[q];
   }
   const double scale = a * b / std::numbers::pi;
   // An int counter: SSE2 converts int32 to double in vectors, not int64.
@@ -104,8 +68,8 @@ void gauss_legendre_run(double x0, double step, int first, int end, double y, do
       const double ex = x - ax[p];
       const double ex2 = ex * ex;
       double row = 0.0;
-      for (std::size_t q = 0; q < N; ++q) row += G::w[q] / std::sqrt(ex2 + ey2[q]);
-      sum += G::w[p] * row;
+      for (std::size_t q = 0; q < N; ++q) row += w[q] / std::sqrt(ex2 + ey2[q]);
+      sum += w[p] * row;
     }
     out[i] = scale * sum;
   }

@@ -50,7 +50,7 @@ CoatedFrf::CoatedFrf(const Material& coating, double thickness, const Material& 
   const double nu1 = coating.poisson_ratio();
   alpha_ = (m * k2 - k1) / (m * k2 + 1.0);
   beta_ = (m - 1.0) / (m + k1);
-  // Hand algebra of theory.md §2.6(b); these differences vanish for a rigid or a compliant
+  // Hand algebra of docs/theory.md §2.6(b); these differences vanish for a rigid or a compliant
   // substrate and must not be formed by subtraction. 1 - 2 nu1 is exact in floating point for
   // nu1 in [1/4, 1/2), which keeps 1 + alpha accurate for nearly incompressible coatings.
   a_ = (1.0 + k1) / (m * k2 + 1.0);

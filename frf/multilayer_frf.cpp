@@ -16,13 +16,13 @@ using Matrix24 = Eigen::Matrix<double, 2, 4>;
 
 // State vector at a depth: s = (U, W, S, T) = (2 mu k (-i u_x), 2 mu k u_z, sigma_zz, -i sigma_xz)
 // for the Fourier mode exp(i k x), with mu the shear modulus of the layer being crossed; a body
-// loaded on its top face by (q~, p) has sigma_xz~ = -q~, sigma_zz = -p there (theory.md §2.1).
+// loaded on its top face by (q~, p) has sigma_xz~ = -q~, sigma_zz = -p there (docs/theory.md §2.1).
 // "kG" is k times a surface compliance: [U, W]/(2 mu) = kG [q~, p].
 
 // Above this kh_j the propagator is replaced by the decaying basis; both are accurate around 1.
 constexpr double kThinLayerKh = 1.0;
 // Frictionless interfaces make the tangential compliance grow like 1/(kh)^2 as kh -> 0 (the layer
-// slides rigidly, theory.md §2.3). Clamping kh_j at 1e-60 keeps it finite (< 1e125) in every
+// slides rigidly, docs/theory.md §2.3). Clamping kh_j at 1e-60 keeps it finite (< 1e125) in every
 // product below, while changing H_zz, which depends on kh_j through O(kh_j) terms, by ~1e-60.
 constexpr double kMinKh = 1e-60;
 // exp(-kh) underflows to zero beyond ~745; kh exp(-kh) is then set to zero explicitly.
@@ -82,7 +82,7 @@ MultilayerFrf::MultilayerFrf(const LayerStack& stack)
     layers_.push_back({coating.thickness, mat.poisson_ratio(), 2.0 * mat.shear_modulus(),
                        1.0 / (2.0 * (1.0 - mat.poisson_ratio())), coating.interface_below});
   }
-  // Homogeneous half-space (theory.md (1.3)): u_L/q_L = u_z/p = (1-nu)/(mu k), cross terms
+  // Homogeneous half-space (docs/theory.md (1.3)): u_L/q_L = u_z/p = (1-nu)/(mu k), cross terms
   // (1-2nu)/(2 mu k), written for the real variables (-i u_x, u_z) and (-i q_x, p).
   const double nu = stack.substrate().poisson_ratio();
   const double mu = stack.substrate().shear_modulus();
@@ -117,7 +117,7 @@ Eigen::Matrix2d MultilayerFrf::surface_compliance(double k) const {
       const Matrix42 Ytop = P * bottom_basis(kG, layer.interface_below, layer.two_mu);
       kG = compliance_from_top_states(Ytop, layer.two_mu);
     } else {
-      // Local decaying basis (theory.md §2.1): amplitudes (A, B) of the pair referenced to the
+      // Local decaying basis (docs/theory.md §2.1): amplitudes (A, B) of the pair referenced to the
       // top and (C, D) of the pair referenced to the bottom; columns = unit amplitudes.
       const double e = t < kExpUnderflowKh ? std::exp(-t) : 0.0;
       const double te = t < kExpUnderflowKh ? t * e : 0.0;

@@ -1,32 +1,34 @@
 #!/usr/bin/env bash
-# Builds coatfft (Release, with the validation programs) and regenerates the generated tables of
-# docs/validation.md, all of them or those named:
+# Builds coatfft (Release, with the validation table programs of tables/) and regenerates the
+# generated tables of docs/validation.md, all of them or those named:
 #   hertz_dcfft     docs/validation_hertz_dcfft.md and docs/validation.md's generated block
-#                   hertz_dcfft (hertz_dcfft_table: DC-FFT vs Hertz, issue 2)
-#   contact         docs/validation_contact.md          contact_table         (contact solver vs Hertz/punch, issue 4)
-#   seed_pipelines  docs/validation_seed_pipelines.md   seed_pipelines_table  (seed's FRF pipelines and g(0), issue 6)
-#   split_kernel    docs/validation_split_kernel.md     split_kernel_table    (frf-split vs Hankel reference, issue 6)
-#   hard_cases      docs/validation_hard_cases.md       hard_cases_table      (every FRF method on the hard bodies, issue 6)
+#                   hertz_dcfft (hertz_dcfft_table: DC-FFT vs Hertz)
+#   contact         docs/validation_contact.md          contact_table        (contact solver vs Hertz/punch)
+#   frf_pipelines   docs/validation_frf_pipelines.md    frf_pipelines_table  (Spinu 2021's FRF pipelines and g(0))
+#   split_kernel    docs/validation_split_kernel.md     split_kernel_table   (frf-split vs Hankel reference)
+#   hard_cases      docs/validation_hard_cases.md       hard_cases_table     (every FRF method on the hard bodies)
 #   coated          docs/validation.md's generated block coated_convergence, from the existing
 #                   bench/results/sweep.csv (no program is run: scripts/run_benchmarks.sh runs the
-#                   sweep and regenerates this block too; issue 6)
+#                   sweep and regenerates this block too)
+# Each program's --check (run by ctest as table_<name>_check) recomputes a subset of its table
+# and compares it with the reference; this script writes the full tables.
 # Usage: scripts/make_validation_docs.sh [TABLE...]   Environment: BUILD_DIR (default build-release)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${BUILD_DIR:-$root/build-release}
 python=/usr/bin/python3
 tables=("$@")
-[ ${#tables[@]} -eq 0 ] && tables=(hertz_dcfft contact seed_pipelines split_kernel hard_cases coated)
+[ ${#tables[@]} -eq 0 ] && tables=(hertz_dcfft contact frf_pipelines split_kernel hard_cases coated)
 programs=()
 for t in "${tables[@]}"; do
   case "$t" in
-    hertz_dcfft | contact | seed_pipelines | split_kernel | hard_cases) programs+=("${t}_table") ;;
+    hertz_dcfft | contact | frf_pipelines | split_kernel | hard_cases) programs+=("${t}_table") ;;
     coated) ;;
-    *) echo "usage: $0 [hertz_dcfft|contact|seed_pipelines|split_kernel|hard_cases|coated ...]" >&2; exit 2 ;;
+    *) echo "usage: $0 [hertz_dcfft|contact|frf_pipelines|split_kernel|hard_cases|coated ...]" >&2; exit 2 ;;
   esac
 done
 if [ ${#programs[@]} -gt 0 ]; then
-  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCOATFFT_BUILD_BENCH=ON >/dev/null
+  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCOATFFT_BUILD_TABLES=ON >/dev/null
   cmake --build "$build" -j "${JOBS:-2}" --target "${programs[@]}"
 fi
 cd "$root"
@@ -35,12 +37,12 @@ trap 'rm -rf "$tmp"' EXIT
 for t in "${tables[@]}"; do
   case "$t" in
     hertz_dcfft)
-      "$build/validation/hertz_dcfft_table" docs/validation_hertz_dcfft.md --csv "$tmp/hertz_dcfft.csv"
+      "$build/tables/hertz_dcfft_table" docs/validation_hertz_dcfft.md --csv "$tmp/hertz_dcfft.csv"
       "$python" scripts/markdown_blocks.py docs/validation.md hertz_dcfft "$tmp/hertz_dcfft.csv" ;;
     coated)
       "$python" scripts/markdown_blocks.py docs/validation.md coated_convergence \
         bench/results/sweep.csv --view coated-convergence ;;
-    *) "$build/validation/${t}_table" "docs/validation_$t.md" ;;
+    *) "$build/tables/${t}_table" "docs/validation_$t.md" ;;
   esac
 done
 echo "regenerated: ${tables[*]}"

@@ -98,9 +98,10 @@ def direct_speedup(path):
 
 
 def coated_convergence(path):
-    """Max error against the Hankel reference of frf-split and of the seed's two pipelines (g(0)
-    regularized, alpha 2, 4, 8) on every coated case of a bench_sweep CSV: rows (case, method,
-    alpha), columns N, then the order between the two largest N and alpha x the error there."""
+    """Max error against the Hankel reference of frf-split and of the two FRF pipelines of Spinu
+    (2021) (g(0) regularized, alpha 2, 4, 8) on every coated case of a bench_sweep CSV: rows (case,
+    method, alpha), columns N, then the order between the two largest N and alpha x the error
+    there."""
     keys, records = read_records(path, ["case", "method", "N", "alpha", "g0", "max_err"])
     coated = [r for r in records if r["case"].startswith("coated")]
     if not coated:

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Speed against error plots and tables from bench_sweep's CSV (issue 5).
+"""Speed against error plots and tables from bench_sweep's CSV.
 
     scripts/plot_pareto.py bench/results/sweep.csv [--outdir bench/results]
         [--markdown docs/benchmarks.md] [--reference-check FILE] [--rss FILE]
@@ -175,7 +175,7 @@ def markdown(headers, rows, images, reference_check, rss):
     out += ["", f"{len(rows)} rows. Plots:", ""]
     out += [f"![{os.path.basename(p)}]({p})" for p in images]
     out += ["", "#### Fastest method for a target max error", "",
-            "Among the rows whose max error (seed measure, fraction of u_ref(0)) is at most the "
+            "Among the rows whose max error (Spinu's measure, fraction of u_ref(0)) is at most the "
             "target: the smallest median application time, and the smallest setup + one "
             "application (a one-off displacement).", ""]
     out += fastest_table(cases, rows)

@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # Builds coatfft (Release) and regenerates the benchmark results and the generated blocks of
 # docs/benchmarks.md (docs/benchmarks.md, "Regenerate everything"):
-#   speed against error (issue 5): bench/results/sweep.csv, bench/results/pareto_<case>.png,
-#   bench/results/seed_figures/*.csv, bench/results/sweep_reference_check.csv,
-#   bench/results/coatfft_run_rss.txt, docs/figures/seed_fig{2,3}_*.png, and (not with --tiny,
-#   whose sweep has no coated case) docs/validation.md's block coated_convergence (issue 6);
+#   speed against error: bench/results/sweep.csv, bench/results/pareto_<case>.png,
+#   bench/results/spinu_figures/*.csv, bench/results/sweep_reference_check.csv,
+#   bench/results/coatfft_run_rss.txt, docs/figures/spinu_fig{2,3}_*.png, and (not with --tiny,
+#   whose sweep has no coated case) docs/validation.md's block coated_convergence;
 #   with --full also bench/results/dcfft.csv, setup.csv, setup_2048.csv, setup_alpha4.csv, frf_eval.csv, contact.csv
 #   and their blocks in docs/benchmarks.md (dcfft_direct: direct summation against DC-FFT).
 #
@@ -38,10 +38,10 @@ echo "== sweep ($mode)"
 echo "== reference check"
 "$sweep" --check-reference --output "$results/sweep_reference_check.csv"
 
-echo "== seed figure data"
+echo "== data of the figures of Spinu (2021)"
 figure_mode=""
 [ "$mode" = "--tiny" ] && figure_mode="--tiny"
-"$sweep" --figures "$results/seed_figures" $figure_mode
+"$sweep" --figures "$results/spinu_figures" $figure_mode
 
 echo "== peak RSS of a whole coatfft run (2048^2 DC-FFT Hertz scene)"
 tmp=$(mktemp -d)
@@ -77,7 +77,7 @@ echo "== plots and tables"
 "$python" "$root/scripts/plot_pareto.py" "$results/sweep.csv" --outdir "$results" \
   --markdown "$root/docs/benchmarks.md" \
   --reference-check "$results/sweep_reference_check.csv" --rss "$results/coatfft_run_rss.txt"
-"$python" "$root/scripts/plot_seed_figures.py" "$results/seed_figures" --outdir "$root/docs/figures"
+"$python" "$root/scripts/plot_spinu_figures.py" "$results/spinu_figures" --outdir "$root/docs/figures"
 blocks="$root/scripts/markdown_blocks.py"
 if [ "$mode" != "--tiny" ]; then
   "$python" "$blocks" "$root/docs/validation.md" coated_convergence "$results/sweep.csv" \

@@ -1,7 +1,7 @@
-// End-to-end test of the bench_sweep program (issue 5) on its --tiny sweep: it must run, write a
+// End-to-end test of the bench_sweep program on its --tiny sweep: it must run, write a
 // complete CSV with the machine headers, and its errors must agree with independent facts (direct
-// summation, the seed's 1.5% bound for DC-FFT at 32^2, convergence in N and in alpha). No timing
-// is asserted (house rule); only that the timing and memory columns are filled in.
+// summation, the 1.5% bound of Spinu (2021) for DC-FFT at 32^2, convergence in N and in alpha). No
+// timing is asserted (house rule); only that the timing and memory columns are filled in.
 #include <sys/wait.h>
 
 #include <catch2/catch.hpp>
@@ -129,12 +129,12 @@ TEST_CASE("bench_sweep --tiny writes a complete, consistent CSV", "[bench_sweep]
     CHECK(dcfft.max_err == Approx(direct.max_err).epsilon(1e-5));
     CHECK(dcfft.rms_err == Approx(direct.rms_err).epsilon(1e-5));
   }
-  // Seed paper section 5: "even with a coarse mesh of 32 x 32, the error is kept under 1.5%";
+  // Spinu (2021), section 5: "even with a coarse mesh of 32 x 32, the error is kept under 1.5%";
   // our centre-sampled Hertz load gives 3.5e-3 against the closed form (docs/
   // validation_hertz_dcfft.md), and the discretisation error must shrink from 32 to 64.
   CHECK(find("dcfft", 32, 0.0, "none").max_err < 1.5e-2);
   CHECK(find("dcfft", 64, 0.0, "none").max_err < 0.5 * find("dcfft", 32, 0.0, "none").max_err);
-  // FRF pipelines: periodicity error ~ 1/alpha (theory.md 4.3: 2.5% of u(0) at alpha = 2,
+  // FRF pipelines: periodicity error ~ 1/alpha (docs/theory.md 4.3: 2.5% of u(0) at alpha = 2,
   // 1.3% at alpha = 4 for L = 3a), nearly independent of N.
   for (const char* method : {"frf-spectral", "frf-dcfft"})
     for (long n : {32L, 64L}) {
@@ -150,7 +150,7 @@ TEST_CASE("bench_sweep --tiny writes a complete, consistent CSV", "[bench_sweep]
     }
 }
 
-TEST_CASE("bench_sweep --figures --tiny writes the seed figure data", "[bench_sweep]") {
+TEST_CASE("bench_sweep --figures --tiny writes the data of the figures of Spinu (2021)", "[bench_sweep]") {
   const fs::path dir = scratch_dir("figures");
   REQUIRE(run("--figures " + dir.string() + " --tiny", dir / "log.txt") == 0);
   for (const char* name : {"fig2a_dcfft_error_field.csv", "fig2b_dcfft_error_vs_n.csv",
@@ -227,7 +227,7 @@ TEST_CASE("plot_pareto.py and markdown_blocks.py fill the docs' generated blocks
 }
 
 // The views of markdown_blocks.py that compute their tables (docs/validation.md's coated
-// convergence table, issue 6; docs/benchmarks.md's direct-vs-DC-FFT table): on a tiny sweep of two
+// convergence table; docs/benchmarks.md's direct-vs-DC-FFT table): on a tiny sweep of two
 // coated cases and on a small bench_dcfft CSV they must write the tables with the measured
 // numbers, and refuse a CSV without the rows they need.
 TEST_CASE("markdown_blocks.py renders the coated convergence and direct speed-up tables",

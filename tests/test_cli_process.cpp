@@ -121,7 +121,7 @@ TEST_CASE("coatfft run on the bundled example matches Hertz", "[cli]") {
   CHECK(summary["ny"] == 65);
   CHECK(summary["setup_seconds"].get<double>() >= 0);
   CHECK(summary["apply_seconds"].get<double>() >= 0);
-  // 65 x 65 over 3a: dx = a/21.7. The seed reports < 1.5% at 32 x 32 (Figure 2); at this
+  // 65 x 65 over 3a: dx = a/21.7. Spinu (2021) reports < 1.5% at 32 x 32 (Figure 2); at this
   // resolution the DC-FFT error is well below 1% of u(0).
   CHECK(summary["max_error_vs_hertz"].get<double>() < 1e-2);
   const double E_star = 210e9 / (1 - 0.09);
@@ -371,7 +371,7 @@ TEST_CASE("coatfft run solves an elastic sphere with the composite modulus", "[c
 
 TEST_CASE("coatfft run with report_approach = false computes no g(0) and the same contact",
           "[cli][contact][g0]") {
-  // A TiN coating (E* ratio 1.85, h = 0.8 a) on the seed's FRF pipelines, which need g(0).
+  // A TiN coating (E* ratio 1.85, h = 0.8 a) on the FRF pipelines of Spinu (2021), which need g(0).
   const std::string coated =
       "[[coating]]\nmaterial = \"titanium_nitride\"\nthickness = 1e-4\n[contact]";
   for (const std::string method : {"frf-spectral", "frf-dcfft"}) {
@@ -473,7 +473,7 @@ TEST_CASE("coatfft run on the coated example matches the Hankel-transform refere
   CHECK(s["uz_center"].get<double>() == Approx(u0).epsilon(1e-3));
 }
 
-TEST_CASE("coatfft run with the seed's FRF pipelines reports g(0) and the periodicity error",
+TEST_CASE("coatfft run with the FRF pipelines of Spinu (2021) reports g(0) and the periodicity error",
           "[cli]") {
   for (const std::string method : {"frf-spectral", "frf-dcfft"}) {
     INFO(method);
@@ -490,12 +490,12 @@ TEST_CASE("coatfft run with the seed's FRF pipelines reports g(0) and the period
     CHECK(s["method"] == method);
     CHECK(s["g0_method"] == "regularized");
     // Homogeneous body: g(0) = (2/E*) mean(1/|k|) over the central cell, whose mean is
-    // 4 asinh(1)/dk for a square cell (theory.md 3.1-3.2); dk = 2 pi / (alpha L).
+    // 4 asinh(1)/dk for a square cell (docs/theory.md 3.1-3.2); dk = 2 pi / (alpha L).
     const double E_star = 210e9 / (1 - 0.09);
     const double dk = 2 * M_PI / (4 * 3e-3);
     CHECK(s["g0"].get<double>() == Approx(2 / E_star * 4 * std::asinh(1.0) / dk).epsilon(1e-12));
-    // Periodicity error of the seed's pipelines: ~2.5%/alpha of u(0) at the centre, up to ~5%
-    // locally at alpha = 2 (theory.md 4.3); at alpha = 4 the max error stays within 3%, and it
+    // Periodicity error of the FRF pipelines: ~2.5%/alpha of u(0) at the centre, up to ~5%
+    // locally at alpha = 2 (docs/theory.md 4.3); at alpha = 4 the max error stays within 3%, and it
     // is far above DC-FFT's 1e-3: the pipeline is not exact.
     CHECK(s["max_error_vs_hertz"].get<double>() < 0.03);
     CHECK(s["max_error_vs_hertz"].get<double>() > 2e-3);

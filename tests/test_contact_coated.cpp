@@ -1,4 +1,4 @@
-// Contact of a rigid paraboloid with coated bodies (issue 4): the solver runs unchanged on the
+// Contact of a rigid paraboloid with coated bodies: the solver runs unchanged on the
 // split-kernel DC-FFT operator of a coated FRF, and its results follow the physics of coatings.
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -36,7 +36,7 @@ TEST_CASE("Fourier preconditioner: zero mode and symmetry", "[contact][precondit
   Field c = Field::Constant(8, 8, 2.0);
   precond.apply(c);
   // sigma(0) = 1 / mean(1/|k|) over the central cell = dk / (4 asinh 1) = 2 pi / 3.525494348
-  // (theory.md 3.1, square cell).
+  // (docs/theory.md 3.1, square cell).
   CHECK(c(3, 5) == Approx(2.0 * 2 * std::numbers::pi / 3.525494348).epsilon(1e-9));
   CHECK((c - c(0, 0)).abs().maxCoeff() <= 1e-13);
   // Symmetric positive definite: <a, M b> = <M a, b>, <a, M a> > 0.

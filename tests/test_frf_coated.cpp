@@ -1,6 +1,6 @@
-// Closed-form coated FRFs (theory.md §2.2-2.3) against independent references: the homogeneous
+// Closed-form coated FRFs (docs/theory.md §2.2-2.3) against independent references: the homogeneous
 // half-space, the thick/thin limits, the symmetric/antisymmetric decomposition of the
-// frictionless layer, and the thin-layer asymptotes of theory.md §2.6(c).
+// frictionless layer, and the thin-layer asymptotes of docs/theory.md §2.6(c).
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -30,13 +30,13 @@ std::vector<double> log_space(double lo, double hi, int n) {
   return v;
 }
 
-// Frictionless layer by the symmetric/antisymmetric decomposition (theory.md §2.3 "Derivation of
-// (C2)"): C_f = (R (S + A) + 2 S A) / (2 R + S + A) with the shear-free layer flexibilities
+// Frictionless layer by the symmetric/antisymmetric decomposition (docs/theory.md §2.3 "Derivation
+// of (C2)"): C_f = (R (S + A) + 2 S A) / (2 R + S + A) with the shear-free layer flexibilities
 // S = (cosh t - 1)/(sinh t + t), A = (cosh t + 1)/(sinh t - t). (The formulas hold with t = kh,
-// checked against frf_values.csv to 1e-17 in 30-digit arithmetic; theory.md's "T = kh/2" refers to
-// the half-thickness of the derivation.) A different formula from (C2), evaluated here in long
-// double: for t >= 1e-2, sinh t - t loses <= 2 log10(1/t) = 4 of its 19 digits, so the reference is
-// good to ~1e-15.
+// checked against frf_values.csv to 1e-17 in 30-digit arithmetic; the derivation works with the
+// half-thickness, but S and A are functions of the full kh.) A different formula from (C2),
+// evaluated here in long double: for t >= 1e-2, sinh t - t loses <= 2 log10(1/t) = 4 of its 19
+// digits, so the reference is good to ~1e-15.
 double frictionless_by_decomposition(double R, double t) {
   const long double T = t;
   const long double S = (std::cosh(T) - 1.0L) / (std::sinh(T) + T);
@@ -134,7 +134,7 @@ TEST_CASE("Thick and thin coating limits, c0() and c_inf()", "[frf][coated]") {
   }
 }
 
-TEST_CASE("Thin layers on a rigid-ish substrate follow theory.md 2.6(c)", "[frf][coated]") {
+TEST_CASE("Thin layers on a rigid-ish substrate follow docs/theory.md 2.6(c)", "[frf][coated]") {
   // Substrate 1e21 times stiffer: its own compliance adds C(0) = R ~ 1e-21 to C ~ t/2, i.e.
   // < 1e-17 relative for t >= 1e-4, far below the truncation of the asymptotes checked here.
   const Material substrate(1e30, 0.3);
@@ -161,7 +161,7 @@ TEST_CASE("Thin layers on a rigid-ish substrate follow theory.md 2.6(c)", "[frf]
     CHECK((f4 < 0.2 * f3 || f4 < 1e-13));
   }
   // Nearly incompressible bonded layer: C = t (1 - 2nu)/(2 (1-nu)^2) + (2/3) t^3 + O(t^4) for
-  // nu -> 1/2; at nu = 0.4999 both terms matter around t = 0.02 (theory.md: crossover 0.024).
+  // nu -> 1/2; at nu = 0.4999 both terms matter around t = 0.02 (docs/theory.md: crossover 0.024).
   const Material rubber(1e6, 0.4999);
   const CoatedFrf squeeze(rubber, 1.0, substrate, Interface::bonded);
   for (double t : {3e-3, 1e-2, 3e-2}) {

@@ -111,7 +111,7 @@ TEST_CASE("FRF-spectral equals a direct periodic convolution on small odd grids"
   CHECK(rel_linf(u, ref) < 1e-12);
 }
 
-TEST_CASE("FRF influence coefficients equal the direct sum of theory.md (4.1)", "[frf_pipelines]") {
+TEST_CASE("FRF influence coefficients equal the direct sum of docs/theory.md (4.1)", "[frf_pipelines]") {
   // Same independent double sum, with the cell factor: checks the sinc, the half-spectrum c2r and
   // the copy of offsets |d| <= n - 1 into the (2nx, 2ny) wrap-around layout. Round-off: 1e-12
   // of K(0, 0).
@@ -131,7 +131,7 @@ TEST_CASE("FRF influence coefficients equal the direct sum of theory.md (4.1)", 
     }
 }
 
-TEST_CASE("Hertz on a half-space: both FRF pipelines reproduce the seed-paper errors",
+TEST_CASE("Hertz on a half-space: both FRF pipelines reproduce the errors of Spinu (2021)",
           "[frf_pipelines]") {
   // docs/theory.md 4.3 table (independent numpy implementation, N = 64, L = 3a, g0 = cell average):
   // local error u/u_exact - 1 at alpha = 2: centre -2.5%, domain edge -4.7%, corner -3.0%;
@@ -174,7 +174,7 @@ TEST_CASE("Hertz on a half-space: both FRF pipelines reproduce the seed-paper er
   CHECK(e2 == Approx(0.0247).margin(0.002));  // docs/theory.md 4.3: 2.5% of u_max at alpha = 2
 }
 
-TEST_CASE("A g(0) perturbation shifts the whole field uniformly (seed Figure 3(b))",
+TEST_CASE("A g(0) perturbation shifts the whole field uniformly (Spinu 2021, Figure 3(b))",
           "[frf_pipelines]") {
   // u = IFFT_M(H . FFT_M(p)): changing H(0) by dg adds dg * FFT_M(p)(0) / (mx my)
   // = dg * sum(p) / (mx my) to every slot, i.e. dg * P / (mx dx my dy), the load over the area

@@ -1,5 +1,5 @@
-// Coated FRFs against the 40-digit values of tests/data/frf_values.csv (a copy of the project's
-// shared/frf_values.csv, kept in the repository so that a clone runs its tests alone; one coating
+// Coated FRFs against the 40-digit values of tests/data/frf_values.csv (168 values from a 40-digit
+// solver, kept in the repository so that a clone runs its tests alone; one coating
 // of thickness h = 1 on a substrate, k = t; columns C = H_zz E1* k/2, LLn = H_LL mu1 k/(1 - nu1),
 // ZLn = 2 H_ZL mu1 k). The file is read at test time; the values were produced from the
 // double-rounded inputs (E, nu, t as doubles), which we confirmed with an independent 50-digit

@@ -21,8 +21,8 @@ using std::numbers::pi;
 
 namespace {
 
-// Independent reference for the cell mean of a coated H: theory.md 3.2 exactly as written there
-// (polar sectors, tensor Gauss-Legendre in (theta, rho)), on the remainder H - C0/k, with a
+// Independent reference for the cell mean of a coated H: docs/theory.md 3.2 exactly as written
+// there (polar sectors, tensor Gauss-Legendre in (theta, rho)), on the remainder H - C0/k, with a
 // composite rule of `panels` x 30 nodes per direction. It shares with compute_g0 only the
 // closed form (3.1), which is tested separately against the homogeneous result.
 double polar_sector_g0(const Frf& frf, double dkx, double dky, int panels) {
@@ -54,8 +54,9 @@ double polar_sector_g0(const Frf& frf, double dkx, double dky, int panels) {
 
 TEST_CASE("Test-local coated FRFs match the 40-digit values of frf_values.csv", "[g0]") {
   // Guards the test doubles used below: (C1)/(C2) in double precision agree with the 40-digit
-  // solver to ~1e-14 except where theory.md 2.2 documents cancellation (alpha beta -> 1, small t),
-  // which the stiffest sets reach; 1e-11 covers all rows (theory.md 2.6 (0): 1.9e-12 worst).
+  // solver to ~1e-14 except where docs/theory.md 2.2 documents cancellation (alpha beta -> 1, small
+  // t), which the stiffest sets reach; 1e-11 covers all rows (docs/theory.md 2.6 (0): 1.9e-12
+  // worst).
   std::ifstream in(std::string(COATFFT_SOURCE_DIR) + "/tests/data/frf_values.csv");
   REQUIRE(in.good());
   std::string line;
@@ -85,7 +86,7 @@ TEST_CASE("Homogeneous g(0) equals the closed form (3.2)", "[g0]") {
     CHECK(g.method == G0Method::regularized);
     CHECK(g.estimated_error <= 1e-13 * closed);
   }
-  // Square cell: mean(1/|k|) = 4 asinh(1) / dk (theory.md 3.1).
+  // Square cell: mean(1/|k|) = 4 asinh(1) / dk (docs/theory.md 3.1).
   CHECK(mean_inverse_wavenumber(2.0, 2.0) == Approx(2 * std::asinh(1.0)).epsilon(1e-15));
   // 1.4 x 0.4 cell against an independent 2-D Gauss-Legendre of 1/|k| on the quadrant in polar
   // form (smooth there): agreement to round-off.
@@ -99,9 +100,9 @@ TEST_CASE("Homogeneous g(0) equals the closed form (3.2)", "[g0]") {
 }
 
 TEST_CASE("Coated g(0): regularized agrees with an independent polar-sector evaluation", "[g0]") {
-  // theory.md 3.2 check case (E1 = 5, nu1 = .3, E2 = 1, nu2 = .45, h = 2, dk = 0.8) plus a stiff
-  // thin coating, a soft coating and a thick coating (h dk >> 1, where C(kh) changes inside the
-  // cell), both interfaces. Reference: composite (panels x 30)-point Gauss-Legendre per
+  // docs/theory.md 3.2 check case (E1 = 5, nu1 = .3, E2 = 1, nu2 = .45, h = 2, dk = 0.8) plus a
+  // stiff thin coating, a soft coating and a thick coating (h dk >> 1, where C(kh) changes inside
+  // the cell), both interfaces. Reference: composite (panels x 30)-point Gauss-Legendre per
   // direction, converged to round-off (checked against half the panels: the thick coating, whose
   // C(kh) has complex poles ~1/h from the real axis, needs ~16 panels). Target 1e-12 relative.
   struct Case {
@@ -125,7 +126,7 @@ TEST_CASE("Coated g(0): regularized agrees with an independent polar-sector eval
 }
 
 TEST_CASE("Plain quadrature of the singular cell converges to the regularized g(0)", "[g0]") {
-  // The seed's approach: as the tolerance shrinks it must approach the regularized value
+  // The approach of Spinu (2021): as the tolerance shrinks it must approach the regularized value
   // (checked above to 1e-12) with an actual error below the requested tolerance (measured:
   // ~tol/8, always an underestimate: the corner rectangle misses part of the singular mass) and
   // an error estimate that bounds the actual error.

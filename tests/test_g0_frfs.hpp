@@ -1,8 +1,8 @@
 #pragma once
 // Test-local FRFs for the g(0) and FRF-pipeline tests: the homogeneous half-space and one coating
-// on a substrate, bonded (theory.md C1) or frictionless (C2). They are written here from
-// theory.md, independently of frf/, so that these tests do not depend on another module's state;
-// test_g0.cpp checks them against the 40-digit values of frf_values.csv.
+// on a substrate, bonded (docs/theory.md C1) or frictionless (C2). They are written here from
+// docs/theory.md, independently of frf/, so that these tests do not depend on another module's
+// state; test_g0.cpp checks them against the 40-digit values of frf_values.csv.
 #include <cmath>
 #include <string>
 

@@ -1,4 +1,4 @@
-// The Hankel-integral displacement reference against the homogeneous closed forms (theory.md
+// The Hankel-integral displacement reference against the homogeneous closed forms (docs/theory.md
 // (1.6), (1.7), (1.9), via validation/hertz.hpp), against itself by two independent routes for
 // coated and layered bodies, and against the thin- and thick-coating limits.
 #include <algorithm>

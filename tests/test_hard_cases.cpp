@@ -1,6 +1,6 @@
-// Numerical stability on the hard bodies of issue 6 (validation/hard_cases.hpp: h/a = 1e-3 with
+// Numerical stability on the hard bodies (validation/hard_cases.hpp: h/a = 1e-3 with
 // E1/E2 = 100, h/a = 50 with E1/E2 = 0.01, nu = 0.4999 in the coating or the substrate): the
-// seed's two pipelines at alpha = 2 and 16 and frf-split, on the 64^2 grid of
+// two FRF pipelines of Spinu (2021) at alpha = 2 and 16 and frf-split, on the 64^2 grid of
 // docs/validation_hard_cases.md (L = 4a, dx = a/16, cell-averaged Hertz load).
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -18,9 +18,9 @@ TEST_CASE("hard bodies: every FRF method is finite and within its error at the c
   // * frf-spectral, frf-dcfft: the periodicity error, an underestimate (regularized g(0)) about
   //   proportional to 1/alpha: measured -1.2e-2..-2.1e-2 at alpha = 2 and -1.9e-3..-3.2e-3 at
   //   alpha = 16, alpha x |error| = 0.024..0.052 (0.049 for the half-space,
-  //   docs/validation_seed_pipelines.md). Required: -0.06/alpha <= error < 0.
+  //   docs/validation_frf_pipelines.md). Required: -0.06/alpha <= error < 0.
   // * frf-split: the load discretisation at a/16 (Love's DC-FFT on the half-space: -6.4e-4),
-  //   measured -5.3e-4..-6.5e-4. Required: |error| <= 1e-3 (issue 6's target).
+  //   measured -5.3e-4..-6.5e-4. Required: |error| <= 1e-3 (the target).
   const double a = 1.0;
   const Grid grid(64, 64, 4.0 * a, 4.0 * a);
   const Method methods[] = {{"frf-spectral", 2.0},

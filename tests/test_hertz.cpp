@@ -1,5 +1,5 @@
 // Closed-form Hertz and uniform-disk displacements (validation/hertz) against their known values,
-// and DC-FFT on the Hertz pressure against them (seed paper, Fig. 2).
+// and DC-FFT on the Hertz pressure against them (Spinu 2021, Fig. 2).
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
 
@@ -25,7 +25,7 @@ constexpr double pi = std::numbers::pi;
 }  // namespace
 
 TEST_CASE("hertz_displacement matches its known values", "[hertz]") {
-  // Centre and edge values of theory.md 1.4; both branches are a few roundings from them.
+  // Centre and edge values of docs/theory.md 1.4; both branches are a few roundings from them.
   CHECK(hertz_displacement(0.0, p0, a, e_star) ==
         Approx(pi * p0 * a / (2 * e_star)).epsilon(1e-15));
   CHECK(hertz_displacement(a, p0, a, e_star) == Approx(pi * p0 * a / (4 * e_star)).epsilon(1e-15));
@@ -82,7 +82,7 @@ TEST_CASE("uniform_disk_displacement matches its known values", "[hertz]") {
 }
 
 namespace {
-// Independent reference (theory.md 1.6 (B)): superpose rings. A unit line load on the ring of
+// Independent reference (docs/theory.md 1.6 (B)): superpose rings. A unit line load on the ring of
 // radius s displaces the surface at radius r by s * 2 pi / AGM(r + s, |r - s|) / (pi E*) (the ring
 // kernel 4 K(m) s / (r + s) in AGM form), so u(r) = (1/(pi E*)) int_0^a p(s) s 2 pi / AGM ds,
 // integrated by GSL QAGS with the logarithmic singularity at s = r as an interval end.
@@ -133,14 +133,14 @@ TEST_CASE("Hertz and uniform-disk closed forms equal a superposition of ring loa
   }
 }
 
-TEST_CASE("seed_error normalises by the centre displacement", "[hertz]") {
-  CHECK(coatfft::seed_error(1.1, 1.0, 2.0) == Approx(0.05));
-  CHECK_THROWS_AS(coatfft::seed_error(1.0, 1.0, 0.0), coatfft::InvalidArgument);
+TEST_CASE("centre_relative_error normalises by the centre displacement", "[hertz]") {
+  CHECK(coatfft::centre_relative_error(1.1, 1.0, 2.0) == Approx(0.05));
+  CHECK_THROWS_AS(coatfft::centre_relative_error(1.0, 1.0, 0.0), coatfft::InvalidArgument);
 }
 
 namespace {
-// Max |seed error| of DC-FFT on the Hertz pressure sampled at the centres of an n x n grid on
-// [-1.5a, 1.5a]^2 (the seed paper's Fig. 2 set-up).
+// Max |error| (Spinu's measure) of DC-FFT on the Hertz pressure sampled at the centres of an n x n
+// grid on [-1.5a, 1.5a]^2 (the set-up of Spinu 2021, Fig. 2).
 double hertz_dcfft_max_error(std::ptrdiff_t n) {
   const coatfft::Grid grid(n, n, 3 * a, 3 * a);
   coatfft::DcfftOperator op(coatfft::love_kernel(grid, e_star));
@@ -156,18 +156,18 @@ double hertz_dcfft_max_error(std::ptrdiff_t n) {
   for (std::ptrdiff_t j = 0; j < n; ++j)
     for (std::ptrdiff_t i = 0; i < n; ++i) {
       const double exact = hertz_displacement(std::hypot(grid.x(i), grid.y(j)), p0, a, e_star);
-      worst = std::max(worst, std::abs(coatfft::seed_error(u(i, j), exact, u0)));
+      worst = std::max(worst, std::abs(coatfft::centre_relative_error(u(i, j), exact, u0)));
     }
   return worst;
 }
 }  // namespace
 
-TEST_CASE("DC-FFT reproduces the Hertz displacement within the seed paper's 1.5%",
+TEST_CASE("DC-FFT reproduces the Hertz displacement within the 1.5% of Spinu (2021)",
           "[hertz][dcfft]") {
   const double e32 = hertz_dcfft_max_error(32);
   const double e64 = hertz_dcfft_max_error(64);
-  INFO("max |seed error|: 32^2 " << e32 << ", 64^2 " << e64);
-  // Seed paper Fig. 2: "even with a coarse mesh of 32 x 32 the error is kept under 1.5%", and it
+  INFO("max |error| / u(0): 32^2 " << e32 << ", 64^2 " << e64);
+  // Spinu (2021), Fig. 2: "even with a coarse mesh of 32 x 32 the error is kept under 1.5%", and it
   // decreases with the mesh density (a discretisation error of the piecewise-constant load).
   CHECK(e32 < 0.015);
   CHECK(e64 < e32);

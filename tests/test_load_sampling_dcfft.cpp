@@ -1,4 +1,4 @@
-// Issue 6, "loads as cell averages": a piecewise-constant pressure is only as good as its cell
+// Loads as cell averages: a piecewise-constant pressure is only as good as its cell
 // values. DC-FFT with Love's coefficients is exact for piecewise-constant pressure, so its error
 // against the continuous Hertz closed form is the error of the cell values alone.
 #include <catch2/catch.hpp>
@@ -39,7 +39,7 @@ SamplingErrors hertz_errors(Sampling sampling, int cells_per_radius) {
 }  // namespace
 
 TEST_CASE("Cell-averaged Hertz pressure removes the sampling error of DC-FFT", "[loads][dcfft]") {
-  const SamplingErrors centre = hertz_errors(Sampling::centre, 32);  // dx = a/32, as in the issue
+  const SamplingErrors centre = hertz_errors(Sampling::centre, 32);  // dx = a/32
   const SamplingErrors average = hertz_errors(Sampling::cell_average, 32);
   const SamplingErrors average_fine = hertz_errors(Sampling::cell_average, 64);
   INFO("a/32 centre: edge " << centre.at_edge << ", away " << centre.away_edge);
@@ -50,7 +50,7 @@ TEST_CASE("Cell-averaged Hertz pressure removes the sampling error of DC-FFT", "
   CHECK(centre.at_edge > 5e-4);
   CHECK(centre.at_edge < 2e-3);
   // Exact cell averages: measured 5.2e-4 near the edge and 1.6e-4 elsewhere at a/32 -- better
-  // than centre sampling everywhere, but above the 1e-4 the issue hoped for away from the edge:
+  // than centre sampling everywhere, but above the hoped-for 1e-4 away from the edge:
   // the Hertz pressure's curvature is not integrable at r = a, so the cut cells' smoothing error
   // reaches the whole domain. It falls with dx: 7.1e-5 at a/64, below the 1e-4 target.
   CHECK(average.at_edge < centre.at_edge);

@@ -22,7 +22,7 @@ namespace {
 using std::numbers::pi;
 
 // Dimensionless load shape Phi(s), s = k a, with P^(k) = 2 pi amplitude a^2 Phi(ka)
-// (theory.md §1.4: Phi_H = j1(s)/s; §1.5: Phi_U = J1(s)/s).
+// (docs/theory.md §1.4: Phi_H = j1(s)/s; §1.5: Phi_U = J1(s)/s).
 double load_shape(AxisymmetricLoad load, double s) {
   if (load == AxisymmetricLoad::hertz) {
     if (s < 1e-4) return 1.0 / 3.0 - s * s / 30.0;  // next term s^4/840 < 1e-19
@@ -52,7 +52,7 @@ double integrate_panel(const std::function<double(double)>& f, double lo, double
 
 // Smallest K (a power-of-two multiple of 1e-3/a) from which k H(k) = c_inf to `threshold`
 // relative over 8 consecutive doublings: beyond it, H - c_inf/k is negligible. Coated and layered
-// FRFs converge like (kh)^2 exp(-2 k h_top) (theory.md §2.2), so K ~ 20/h_top.
+// FRFs converge like (kh)^2 exp(-2 k h_top) (docs/theory.md §2.2), so K ~ 20/h_top.
 double converged_wavenumber(const Frf& frf, double a, double threshold) {
   const double c_inf = frf.c_inf();
   int run = 0;

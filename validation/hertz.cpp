@@ -68,9 +68,9 @@ double uniform_disk_displacement(double r, double p, double a, double plane_stra
   return 4.0 * p * r * k * k * (ellint_1(k) - ellint_d(k)) / (std::numbers::pi * e_star);
 }
 
-double seed_error(double u_num, double u_exact, double u_exact_centre) {
+double centre_relative_error(double u_num, double u_exact, double u_exact_centre) {
   COATFFT_REQUIRE(std::isfinite(u_exact_centre) && u_exact_centre != 0.0,
-                  "seed_error: u_exact(0) = ", u_exact_centre,
+                  "centre_relative_error: u_exact(0) = ", u_exact_centre,
                   " m, but it must be finite and != 0");
   return (u_num - u_exact) / u_exact_centre;
 }

@@ -17,6 +17,6 @@ double uniform_disk_displacement(double r, double p, double a, double plane_stra
 
 /// The error measure of Spinu (2021), Fig. 2: (u_num - u_exact) / u_exact(0), the
 /// pointwise error normalised by the exact rigid-body approach (centre displacement) [-].
-double seed_error(double u_num, double u_exact, double u_exact_centre);
+double centre_relative_error(double u_num, double u_exact, double u_exact_centre);
 
 }  // namespace coatfft

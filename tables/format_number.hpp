@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <string>
 
-namespace coatfft {
+namespace coatfft::tables {
 
 /// `value` printed with the printf conversion `format` ("%.3e", "%+.1e", ...; at most 63
 /// characters), for table cells where iostream manipulators would be verbose.
@@ -13,4 +13,4 @@ inline std::string format_number(const char* format, double value) {
   return buffer;
 }
 
-}  // namespace coatfft
+}  // namespace coatfft::tables

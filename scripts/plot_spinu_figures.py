@@ -1,12 +1,12 @@
 #!/usr/bin/python3
-"""The seed paper's Figures 2 and 3 (Spinu 2021) from `bench_sweep --figures DIR` data.
+"""Figures 2 and 3 of Spinu (2021) from `bench_sweep --figures DIR` data.
 
-    scripts/plot_seed_figures.py [DATA_DIR] [--outdir docs/figures]
+    scripts/plot_spinu_figures.py [DATA_DIR] [--outdir docs/figures]
 
-DATA_DIR (default bench/results/seed_figures) holds fig2a_dcfft_error_field.csv,
+DATA_DIR (default bench/results/spinu_figures) holds fig2a_dcfft_error_field.csv,
 fig2b_dcfft_error_vs_n.csv, fig3a_frf_alpha.csv and fig3b_frf_g0.csv. Writes
-seed_fig2_dcfft_hertz.png ((a) iso-contours of the DC-FFT error at 64^2, (b) max error against N)
-and seed_fig3_frf_hertz.png ((a) FRF pipelines' error along the x axis for alpha = 2, 4, 8, 12,
+spinu_fig2_dcfft_hertz.png ((a) iso-contours of the DC-FFT error at 64^2, (b) max error against N)
+and spinu_fig3_frf_hertz.png ((a) FRF pipelines' error along the x axis for alpha = 2, 4, 8, 12,
 (b) frf-spectral's error for different g(0) tolerances, (c) the same minus the regularized g(0)
 curve: a shift by a constant). Error = (u - u_exact) / u_exact(0), homogeneous Hertz.
 """
@@ -56,14 +56,14 @@ def figure2(data, outdir):
     b.loglog(ns, 100 * float(conv[0]["rms_err"]) * (ns[0] / ns) ** 2, "k-.", linewidth=0.8,
              label="slope -2")
     b.axhline(1.5, color="grey", linewidth=0.8)
-    b.text(ns[0], 1.6, "seed: < 1.5% at 32 x 32", fontsize=8, color="grey")
+    b.text(ns[0], 1.6, "Spinu (2021): < 1.5% at 32 x 32", fontsize=8, color="grey")
     b.set_xlabel("N (N x N cells on [-1.5a, 1.5a]^2)")
     b.set_ylabel("error / u_exact(0)  [%]")
     b.set_title("(b) influence of grid density")
     b.grid(True, which="both", alpha=0.3)
     b.legend(fontsize=8)
     fig.tight_layout()
-    path = os.path.join(outdir, "seed_fig2_dcfft_hertz.png")
+    path = os.path.join(outdir, "spinu_fig2_dcfft_hertz.png")
     fig.savefig(path, dpi=110)
     plt.close(fig)
     return path
@@ -105,7 +105,7 @@ def figure3(data, outdir):
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=7)
     fig.tight_layout()
-    path = os.path.join(outdir, "seed_fig3_frf_hertz.png")
+    path = os.path.join(outdir, "spinu_fig3_frf_hertz.png")
     fig.savefig(path, dpi=110)
     plt.close(fig)
     return path
@@ -113,7 +113,7 @@ def figure3(data, outdir):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("data", nargs="?", default="bench/results/seed_figures")
+    ap.add_argument("data", nargs="?", default="bench/results/spinu_figures")
     ap.add_argument("--outdir", default="docs/figures")
     args = ap.parse_args()
     os.makedirs(args.outdir, exist_ok=True)
