@@ -47,7 +47,8 @@ Field read_pressure_file(const std::filesystem::path& file, const Grid& grid) {
 Field pressure_from_scene(const Scene& scene) {
   const PressureSpec& spec = *scene.pressure;
   switch (spec.kind) {
-    case PressureKind::file: return read_pressure_file(spec.file, scene.grid);
+    case PressureKind::file:
+      return read_pressure_file(spec.file, scene.grid);
     case PressureKind::hertz:
       return hertz_pressure(scene.grid, spec.amplitude, spec.radius, spec.sampling);
     case PressureKind::uniform_disk:

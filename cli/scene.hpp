@@ -20,10 +20,10 @@ enum class PressureKind { hertz, uniform_disk, file };
 /// [pressure]: a known surface pressure.
 struct PressureSpec {
   PressureKind kind = PressureKind::hertz;
-  double amplitude = 0;                 ///< p0 (hertz) or p (uniform_disk) [Pa]
-  double radius = 0;                    ///< a [m]
+  double amplitude = 0;                  ///< p0 (hertz) or p (uniform_disk) [Pa]
+  double radius = 0;                     ///< a [m]
   Sampling sampling = Sampling::centre;  ///< kind = "sampling": "centre" or "cell_average"
-  std::filesystem::path file;       ///< .npy or .csv of shape (ny, nx) [Pa], for kind = "file"
+  std::filesystem::path file;            ///< .npy or .csv of shape (ny, nx) [Pa], for kind = "file"
 };
 
 /// [method]: how displacements are computed. The keys name, alpha, g0, g0_tol, planning and

@@ -25,12 +25,7 @@ double sinc(double x) {
 InfluenceKernel frf_influence_kernel(const Grid& grid, const Frf& frf, double alpha,
                                      G0Method g0_method, double g0_tolerance, G0Result* g0_used,
                                      int threads) {
-  using std::numbers::pi;
-  const std::ptrdiff_t mx = extended_size(grid.nx(), alpha, 2.0, who);
-  const std::ptrdiff_t my = extended_size(grid.ny(), alpha, 2.0, who);
-  const G0Result g0 =
-      compute_g0(frf, 2.0 * pi / (static_cast<double>(mx) * grid.dx()),
-                 2.0 * pi / (static_cast<double>(my) * grid.dy()), g0_method, g0_tolerance);
+  const G0Result g0 = lattice_g0(grid, frf, alpha, 2.0, g0_method, g0_tolerance, who);
   if (g0_used != nullptr) *g0_used = g0;
   return frf_influence_kernel(grid, frf, alpha, g0, threads);
 }
@@ -138,8 +133,8 @@ InfluenceKernel frf_influence_kernel(const Grid& grid, const Frf& frf, double al
                          Method::frf_dcfft);
 }
 
-InfluenceKernel frf_dcfft_kernel(const Grid& grid, const Frf& frf, double alpha,
-                                 const G0Result& g0, int threads) {
+InfluenceKernel frf_dcfft_kernel(const Grid& grid, const Frf& frf, double alpha, const G0Result& g0,
+                                 int threads) {
   const std::ptrdiff_t mx = extended_size(grid.nx(), alpha, 2.0, who);
   const std::ptrdiff_t my = extended_size(grid.ny(), alpha, 2.0, who);
   if (mx != 2 * grid.nx() || my != 2 * grid.ny())

@@ -5,9 +5,9 @@
 // loaded cell, and brought back to space by an inverse FFT; the offsets |di| <= nx - 1,
 // |dj| <= ny - 1 then feed DC-FFT (DcfftOperator). Used where no space-domain coefficient is known
 // (coated and layered bodies); it inherits the periodicity error of the spectral pipeline.
+#include "../frf/frf.hpp"
 #include "g0.hpp"
 #include "influence_kernel.hpp"
-#include "../frf/frf.hpp"
 
 namespace coatfft {
 
@@ -30,8 +30,8 @@ InfluenceKernel frf_influence_kernel(const Grid& grid, const Frf& frf, double al
 /// sampled spectrum H sinc sinc is returned directly in the spectrum form (no inverse and forward
 /// transforms: the same operator to rounding, about a third less setup at 1024^2). The same
 /// arguments and errors as frf_influence_kernel.
-InfluenceKernel frf_dcfft_kernel(const Grid& grid, const Frf& frf, double alpha,
-                                 const G0Result& g0, int threads = 1);
+InfluenceKernel frf_dcfft_kernel(const Grid& grid, const Frf& frf, double alpha, const G0Result& g0,
+                                 int threads = 1);
 
 namespace detail {
 /// H(k) sinc(kx dx/2) sinc(ky dy/2) on the quarter 0 <= jx <= mx/2, 0 <= jy <= my/2 of the

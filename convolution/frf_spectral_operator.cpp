@@ -23,6 +23,15 @@ std::ptrdiff_t extended_size(std::ptrdiff_t n, double alpha, double min_alpha, c
   return static_cast<std::ptrdiff_t>(rounded);
 }
 
+G0Result lattice_g0(const Grid& grid, const Frf& frf, double alpha, double min_alpha,
+                    G0Method method, double tolerance, const char* who) {
+  using std::numbers::pi;
+  const auto mx = static_cast<double>(extended_size(grid.nx(), alpha, min_alpha, who));
+  const auto my = static_cast<double>(extended_size(grid.ny(), alpha, min_alpha, who));
+  return compute_g0(frf, 2.0 * pi / (mx * grid.dx()), 2.0 * pi / (my * grid.dy()), method,
+                    tolerance);
+}
+
 namespace detail {
 
 Field sample_frf_quarter(const Frf& frf, std::ptrdiff_t qx, std::ptrdiff_t qy, double dkx,
@@ -75,18 +84,10 @@ Field sample_frf_half_spectrum(const Frf& frf, std::ptrdiff_t mx, std::ptrdiff_t
 FrfSpectralOperator::FrfSpectralOperator(const Grid& grid, const Frf& frf, double alpha,
                                          G0Method g0_method, double g0_tolerance, Planning planning,
                                          int threads)
-    : FrfSpectralOperator(grid, frf, alpha,
-                          compute_g0(frf,
-                                     2.0 * std::numbers::pi /
-                                         (static_cast<double>(extended_size(
-                                              grid.nx(), alpha, 1.0, "FrfSpectralOperator")) *
-                                          grid.dx()),
-                                     2.0 * std::numbers::pi /
-                                         (static_cast<double>(extended_size(
-                                              grid.ny(), alpha, 1.0, "FrfSpectralOperator")) *
-                                          grid.dy()),
-                                     g0_method, g0_tolerance),
-                          planning, threads) {
+    : FrfSpectralOperator(
+          grid, frf, alpha,
+          lattice_g0(grid, frf, alpha, 1.0, g0_method, g0_tolerance, "FrfSpectralOperator"),
+          planning, threads) {
   // The delegated constructor timed only itself; add the g(0) computation done before it.
   setup_seconds_ += g0_.seconds;
 }

@@ -19,6 +19,12 @@ namespace coatfft {
 /// finite, alpha >= `min_alpha` and alpha n is an integer (to 1e-9). `who` names the caller.
 std::ptrdiff_t extended_size(std::ptrdiff_t n, double alpha, double min_alpha, const char* who);
 
+/// g(0) by `method` to relative `tolerance` on the alpha-extended lattice of `grid` (spacings
+/// 2 pi / (M dx), 2 pi / (M dy), M = extended_size): the k = 0 sample of both FRF pipelines of
+/// Spinu (2021) (docs/theory.md section 3). `min_alpha` and `who` as for extended_size.
+G0Result lattice_g0(const Grid& grid, const Frf& frf, double alpha, double min_alpha,
+                    G0Method method, double tolerance, const char* who);
+
 /// H sampled on the r2c half spectrum of the (mx, my) lattice of a grid with cells dx x dy [m]:
 /// entry (jx, jy), jx = 0..mx/2, jy = 0..my-1, is H(|k|) at kx = 2 pi jx / (mx dx),
 /// ky = 2 pi jy' / (my dy) with jy' the wrap-around index (docs/conventions.md); the (0, 0) entry

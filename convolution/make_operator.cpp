@@ -2,7 +2,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <numbers>
 #include <utility>
 
 #include "convolution/dcfft_operator.hpp"
@@ -16,14 +15,9 @@ namespace coatfft {
 namespace {
 
 // g(0) on the alpha-extended lattice of the FRF pipelines (docs/theory.md section 3).
-G0Result lattice_g0(const Grid& grid, const Frf& frf, const OperatorOptions& o) {
-  using std::numbers::pi;
+G0Result pipeline_g0(const Grid& grid, const Frf& frf, const OperatorOptions& o) {
   const double min_alpha = o.method == Method::frf_dcfft ? 2.0 : 1.0;
-  const auto mx = static_cast<double>(extended_size(grid.nx(), o.alpha, min_alpha, "make_operator"));
-  const auto my = static_cast<double>(extended_size(grid.ny(), o.alpha, min_alpha, "make_operator"));
-  const double period_x = mx * grid.dx();
-  const double period_y = my * grid.dy();
-  return compute_g0(frf, 2.0 * pi / period_x, 2.0 * pi / period_y, o.g0, o.g0_tolerance);
+  return lattice_g0(grid, frf, o.alpha, min_alpha, o.g0, o.g0_tolerance, "make_operator");
 }
 
 // The operator of an FRF method; `report` is filled with what was chosen.
@@ -32,7 +26,7 @@ std::unique_ptr<SurfaceOperator> frf_operator(const Grid& grid, const Frf& frf,
   report.frf = frf.name();
   switch (o.method) {
     case Method::frf_spectral: {
-      auto op = std::make_unique<FrfSpectralOperator>(grid, frf, o.alpha, lattice_g0(grid, frf, o),
+      auto op = std::make_unique<FrfSpectralOperator>(grid, frf, o.alpha, pipeline_g0(grid, frf, o),
                                                       o.planning, o.threads);
       report.alpha = o.alpha;
       report.g0 = op->g0();
@@ -41,7 +35,7 @@ std::unique_ptr<SurfaceOperator> frf_operator(const Grid& grid, const Frf& frf,
       return op;
     }
     case Method::frf_dcfft: {
-      const G0Result g0 = lattice_g0(grid, frf, o);
+      const G0Result g0 = pipeline_g0(grid, frf, o);
       report.alpha = o.alpha;
       report.g0 = g0;
       return std::make_unique<DcfftOperator>(frf_dcfft_kernel(grid, frf, o.alpha, g0, o.threads),
@@ -57,7 +51,8 @@ std::unique_ptr<SurfaceOperator> frf_operator(const Grid& grid, const Frf& frf,
       return std::make_unique<DcfftOperator>(kernel, o.planning, o.threads);
     }
     case Method::direct:
-    case Method::dcfft: break;
+    case Method::dcfft:
+      break;
   }
   throw InvalidArgument(detail::concat(
       "make_operator: method \"", to_string(o.method),

@@ -9,8 +9,8 @@
 #include <string>
 
 #include "../core/grid.hpp"
-#include "../layers/layer_stack.hpp"
 #include "../frf/frf.hpp"
+#include "../layers/layer_stack.hpp"
 #include "g0.hpp"
 #include "influence_kernel.hpp"
 #include "method.hpp"
@@ -47,8 +47,8 @@ struct OperatorReport {
   double setup_seconds = 0.0;     ///< wall time of make_operator (kernel, g(0), plans) [s]
   std::ptrdiff_t fft_nx = 0;      ///< transform lengths of apply() (padded or extended lattice)
   std::ptrdiff_t fft_ny = 0;
-  std::optional<double> alpha;           ///< frf-spectral, frf-dcfft
-  std::optional<G0Result> g0;            ///< frf-spectral, frf-dcfft
+  std::optional<double> alpha;             ///< frf-spectral, frf-dcfft
+  std::optional<G0Result> g0;              ///< frf-spectral, frf-dcfft
   std::optional<SplitKernelReport> split;  ///< frf-split
 };
 

@@ -7,11 +7,16 @@ namespace coatfft {
 
 std::string_view to_string(Method method) {
   switch (method) {
-    case Method::direct: return "direct";
-    case Method::dcfft: return "dcfft";
-    case Method::frf_spectral: return "frf-spectral";
-    case Method::frf_dcfft: return "frf-dcfft";
-    case Method::frf_split: return "frf-split";
+    case Method::direct:
+      return "direct";
+    case Method::dcfft:
+      return "dcfft";
+    case Method::frf_spectral:
+      return "frf-spectral";
+    case Method::frf_dcfft:
+      return "frf-dcfft";
+    case Method::frf_split:
+      return "frf-split";
   }
   throw InvalidArgument("to_string: not a Method");
 }

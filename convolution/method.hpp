@@ -12,7 +12,7 @@ enum class Method {
   dcfft,         ///< DC-FFT of Love's coefficients (Liu, Wang & Liu 2000; homogeneous only)
   frf_spectral,  ///< FRF sampled on an alpha-extended periodic lattice (Spinu 2021, algorithm 1)
   frf_dcfft,     ///< coefficients from the sampled FRF, then DC-FFT (Spinu 2021, algorithm 2)
-  frf_split,     ///< coefficients of any FRF by the split kernel, then DC-FFT (docs/split_kernel.md)
+  frf_split,  ///< coefficients of any FRF by the split kernel, then DC-FFT (docs/split_kernel.md)
 };
 
 /// Every method, in the order above (what the benchmarks sweep over).

@@ -15,9 +15,9 @@
 //     k + 2 pi (p/dx, q/dy) folded in (no truncation at Nyquist).
 #include <cstddef>
 
-#include "influence_kernel.hpp"
 #include "../core/grid.hpp"
 #include "../frf/frf.hpp"
+#include "influence_kernel.hpp"
 
 namespace coatfft {
 

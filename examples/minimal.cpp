@@ -16,7 +16,8 @@ int main() {
   const BuiltOperator built = make_operator(grid, body, options);  // plan once ...
   const Field p = hertz_pressure(grid, 1e9, 1e-3, Sampling::cell_average);
   const Field u = built.op->apply(p);  // ... apply many times
-  const double u_ref = hankel_displacement(*make_frf(body), AxisymmetricLoad::hertz, 1e9, 1e-3, 0.0);
+  const double u_ref =
+      hankel_displacement(*make_frf(body), AxisymmetricLoad::hertz, 1e9, 1e-3, 0.0);
   std::printf("%s: u(0) = %.6e m (Hankel reference %.6e m, difference %.1e of u(0))\n",
               built.op->name().c_str(), u(48, 48), u_ref, (u(48, 48) - u_ref) / u_ref);
   return std::abs(u(48, 48) - u_ref) < 1e-3 * u_ref ? 0 : 1;

@@ -4,9 +4,9 @@
 // Perriot & Barthel 2004; Yu, Wang & Wang 2014), H(k) = 2 C(kh) / (E1* k).
 #include <string>
 
-#include "frf.hpp"
 #include "../layers/layer_stack.hpp"
 #include "../materials/material.hpp"
+#include "frf.hpp"
 
 namespace coatfft {
 

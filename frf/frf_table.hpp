@@ -2,8 +2,8 @@
 // A log-spaced table of an FRF against wavenumber, for the `coatfft frf` command and plots.
 #include <vector>
 
-#include "frf.hpp"
 #include "../layers/layer_stack.hpp"
+#include "frf.hpp"
 
 namespace coatfft {
 

@@ -2,8 +2,8 @@
 // Homogeneous elastic half-space: H(k) = 2 (1 - nu^2) / (E k) = 2 / (E* k)  (docs/theory.md (1.2)).
 #include <string>
 
-#include "frf.hpp"
 #include "../materials/material.hpp"
+#include "frf.hpp"
 
 namespace coatfft {
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "frf.hpp"
 #include "../layers/layer_stack.hpp"
+#include "frf.hpp"
 
 namespace coatfft {
 

@@ -310,6 +310,7 @@ TEST_CASE("coatfft run solves a sphere contact and reports it", "[cli][contact]"
   nlohmann::json s;
   std::ifstream(out / "summary.json") >> s;
   CHECK(s["converged"] == true);
+  CHECK(s["status"] == "converged");
   CHECK(s["load"].get<double>() == Approx(100.0).epsilon(1e-10));  // load balance is exact
   // 64 x 64 over 5.4 a: dx = a/12, so radius and peak carry a few percent of discretisation
   // error; the approach (an integral quantity) is within 1%.
@@ -448,6 +449,7 @@ TEST_CASE("coatfft run reports a contact solve that does not converge", "[cli][c
   nlohmann::json s;
   std::ifstream(out / "summary.json") >> s;
   CHECK(s["converged"] == false);
+  CHECK(s["status"] == "iteration_limit");
   CHECK(s["residual"].get<double>() > 1e-10);
 }
 
@@ -473,8 +475,9 @@ TEST_CASE("coatfft run on the coated example matches the Hankel-transform refere
   CHECK(s["uz_center"].get<double>() == Approx(u0).epsilon(1e-3));
 }
 
-TEST_CASE("coatfft run with the FRF pipelines of Spinu (2021) reports g(0) and the periodicity error",
-          "[cli]") {
+TEST_CASE(
+    "coatfft run with the FRF pipelines of Spinu (2021) reports g(0) and the periodicity error",
+    "[cli]") {
   for (const std::string method : {"frf-spectral", "frf-dcfft"}) {
     INFO(method);
     const fs::path out = scratch(method + "_out");
