@@ -67,8 +67,8 @@ Timing time_it(const std::function<void()>& f, double budget_s = 1.5) {
   return {*std::min_element(ms.begin(), ms.end()), coatfft::detail::median(ms), reps};
 }
 
-coatfft::Field random_pressure(std::ptrdiff_t n, unsigned seed) {
-  std::mt19937_64 rng(seed);
+coatfft::Field random_pressure(std::ptrdiff_t n, unsigned stream) {
+  std::mt19937_64 rng(stream);
   std::uniform_real_distribution<double> dist(0.0, 1e9);
   coatfft::Field p(n, n);
   for (std::ptrdiff_t j = 0; j < n; ++j)

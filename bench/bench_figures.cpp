@@ -37,16 +37,6 @@ Field displacement(const sweep::SweepCase& c, const Grid& grid, const OperatorOp
   return make_operator(grid, c.stack, options).op->apply(p);
 }
 
-OperatorOptions options_for(Method method, double alpha = 2.0, G0Method g0 = G0Method::regularized,
-                            double g0_tolerance = default_g0_tolerance) {
-  OperatorOptions o;
-  o.method = method;
-  o.alpha = alpha;
-  o.g0 = g0;
-  o.g0_tolerance = g0_tolerance;
-  return o;
-}
-
 // Writes the error (u - u_exact)/u_exact(0) along the row of cells through y = 0 (odd n) as
 // "<prefix>,x_over_a,err" lines.
 void error_along_x(std::ostream& f, const std::string& prefix, const Field& u, const Grid& grid,
@@ -59,14 +49,17 @@ void error_along_x(std::ostream& f, const std::string& prefix, const Field& u, c
 void write_figures(const std::string& dir, bool tiny) {
   std::filesystem::create_directories(dir);
   const sweep::SweepCase c = sweep::find_case("hertz_homogeneous");
-  const OperatorOptions dcfft = options_for(Method::dcfft);
+  // g(0) regularized to 1e-13 unless said otherwise; the method and alpha are set per figure.
+  OperatorOptions options;
+  options.g0_tolerance = default_g0_tolerance;
+  options.method = Method::dcfft;
 
   // Figure 2(a): DC-FFT error field at N = 64.
   {
     const std::ptrdiff_t n = 64;
     const Grid grid = sweep::case_grid(c, n);
     const sweep::Reference ref = sweep::reference(c, grid);
-    const Field u = displacement(c, grid, dcfft);
+    const Field u = displacement(c, grid, options);
     std::ofstream f(dir + "/fig2a_dcfft_error_field.csv");
     f << signature << "# N = " << n << "\nx_over_a,y_over_a,err\n" << std::setprecision(8);
     for (std::ptrdiff_t j = 0; j < n; ++j)
@@ -84,7 +77,7 @@ void write_figures(const std::string& dir, bool tiny) {
     for (const std::ptrdiff_t n : ns) {
       const Grid grid = sweep::case_grid(c, n);
       const sweep::Reference ref = sweep::reference(c, grid);
-      const Field d = (displacement(c, grid, dcfft) - ref.u) / ref.u_centre;
+      const Field d = (displacement(c, grid, options) - ref.u) / ref.u_centre;
       f << n << ',' << d.abs().maxCoeff() << ',' << std::sqrt(d.square().mean()) << '\n';
     }
   }
@@ -100,8 +93,9 @@ void write_figures(const std::string& dir, bool tiny) {
       for (const Method method : {Method::frf_spectral, Method::frf_dcfft}) {
         std::ostringstream prefix;
         prefix << to_string(method) << ',' << alpha << ',';
-        error_along_x(f, prefix.str(), displacement(c, grid, options_for(method, alpha)), grid, ref,
-                      c.a);
+        options.method = method;
+        options.alpha = alpha;
+        error_along_x(f, prefix.str(), displacement(c, grid, options), grid, ref, c.a);
       }
   }
   {
@@ -113,9 +107,12 @@ void write_figures(const std::string& dir, bool tiny) {
     for (const double tol : {1e-1, 1e-2, 1e-4, 1e-6, 1e-8})
       choices.emplace_back(G0Method::quadrature, tol);
     const Field p = hertz_pressure(grid, c.p0, c.a, Sampling::centre);
+    options.method = Method::frf_spectral;
+    options.alpha = 2.0;
     for (const auto& [g0, tol] : choices) {
-      const BuiltOperator built =
-          make_operator(grid, c.stack, options_for(Method::frf_spectral, 2.0, g0, tol));
+      options.g0 = g0;
+      options.g0_tolerance = tol;
+      const BuiltOperator built = make_operator(grid, c.stack, options);
       std::ostringstream prefix;
       prefix << std::setprecision(10) << to_string(g0) << ',' << tol << ','
              << built.report.g0->value << ',' << built.report.g0->seconds << ',';

@@ -186,7 +186,7 @@ def markdown(headers, rows, images, reference_check, rss):
             ""]
     out += setup_ratio_table(rows)
     if reference_check:
-        out += ["", "#### Convergence of the references (bench_sweep --check-reference)", ""]
+        out += ["", "#### Convergence of the references (bench_reference_check)", ""]
         out += csv_as_markdown(reference_check)
     if rss:
         out += ["", "#### Peak RSS of a whole `coatfft run`", "", "```"]

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Figures 2 and 3 of Spinu (2021) from `bench_sweep --figures DIR` data.
+"""Figures 2 and 3 of Spinu (2021) from `bench_figures DIR` data.
 
     scripts/plot_spinu_figures.py [DATA_DIR] [--outdir docs/figures]
 

@@ -5,8 +5,12 @@
 #   bench/results/spinu_figures/*.csv, bench/results/sweep_reference_check.csv,
 #   bench/results/coatfft_run_rss.txt, docs/figures/spinu_fig{2,3}_*.png, and (not with --tiny,
 #   whose sweep has no coated case) docs/validation.md's block coated_convergence;
-#   with --full also bench/results/dcfft.csv, setup.csv, setup_2048.csv, setup_alpha4.csv, frf_eval.csv, contact.csv
-#   and their blocks in docs/benchmarks.md (dcfft_direct: direct summation against DC-FFT).
+#   with --full also bench/results/dcfft.csv, setup.csv, setup_2048.csv, setup_alpha4.csv,
+#   frf_eval.csv, contact.csv and their blocks in docs/benchmarks.md (dcfft_direct: direct
+#   summation against DC-FFT).
+# Programs (bench/, one per file; each takes --help): bench_sweep (with its child bench_sweep_row),
+# bench_reference_check, bench_figures, bench_peak_rss, and with --full bench_dcfft, bench_setup,
+# bench_frf, bench_contact.
 #
 # Usage: scripts/run_benchmarks.sh [--full | --quick | --tiny]   (default --full, ~10 min on 2 cores;
 #        --quick and --tiny run the sweep only)
@@ -23,11 +27,12 @@ python=/usr/bin/python3
 
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCOATFFT_BUILD_BENCH=ON \
   -DCOATFFT_BUILD_CLI=ON >/dev/null
-targets="bench_sweep coatfft_exe"
+targets="bench_sweep bench_sweep_row bench_reference_check bench_figures bench_peak_rss coatfft_exe"
 [ "$mode" = "--full" ] && targets="$targets bench_dcfft bench_setup bench_frf bench_contact"
 # shellcheck disable=SC2086
 cmake --build "$build" -j "${JOBS:-2}" --target $targets
-sweep=$build/bench/bench_sweep
+bench=$build/bench
+sweep=$bench/bench_sweep
 mkdir -p "$results"
 
 echo "== sweep ($mode)"
@@ -36,12 +41,12 @@ echo "== sweep ($mode)"
 "$sweep" "$mode" --output "$results/sweep.csv" ${SWEEP_ARGS:-} || echo "warning: some rows failed" >&2
 
 echo "== reference check"
-"$sweep" --check-reference --output "$results/sweep_reference_check.csv"
+"$bench/bench_reference_check" --output "$results/sweep_reference_check.csv"
 
 echo "== data of the figures of Spinu (2021)"
 figure_mode=""
 [ "$mode" = "--tiny" ] && figure_mode="--tiny"
-"$sweep" --figures "$results/spinu_figures" $figure_mode
+"$bench/bench_figures" "$results/spinu_figures" $figure_mode
 
 echo "== peak RSS of a whole coatfft run (2048^2 DC-FFT Hertz scene)"
 tmp=$(mktemp -d)
@@ -64,8 +69,8 @@ EOF
 {
   echo "scene: Hertz p0 = 1 GPa, a = 1 mm, steel, 2048 x 2048 cells on [-1.5a, 1.5a]^2, dcfft"
   echo "command: coatfft run hertz_2048.toml -o out/   (writes pressure.npy, uz.npy, displacement.csv, summary.json)"
-  echo "bench_sweep --peak-rss (fork/exec + wait4 rusage):"
-  "$sweep" --peak-rss "$build/coatfft" run "$tmp/hertz_2048.toml" -o "$tmp/out1" | sed 's/^/  /'
+  echo "bench_peak_rss (fork/exec + wait4 rusage):"
+  "$bench/bench_peak_rss" "$build/coatfft" run "$tmp/hertz_2048.toml" -o "$tmp/out1" | sed 's/^/  /'
   if [ -x /usr/bin/time ]; then
     /usr/bin/time -v "$build/coatfft" run "$tmp/hertz_2048.toml" -o "$tmp/out2" 2>"$tmp/time.txt" >/dev/null
     echo "/usr/bin/time -v:"
@@ -86,15 +91,15 @@ fi
 
 if [ "$mode" = "--full" ]; then
   echo "== DC-FFT against the bare padded FFTW pipeline"
-  "$build/bench/bench_dcfft" "$results/dcfft.csv"
+  "$bench/bench_dcfft" "$results/dcfft.csv"
   echo "== setup against application"
-  "$build/bench/bench_setup" "$results/setup.csv" 512,1024 1,2 5
-  "$build/bench/bench_setup" "$results/setup_2048.csv" 2048 1,2 3
-  "$build/bench/bench_setup" "$results/setup_alpha4.csv" 1024 1 5 4
+  "$bench/bench_setup" "$results/setup.csv" --sizes 512,1024 --threads 1,2 --reps 5
+  "$bench/bench_setup" "$results/setup_2048.csv" --sizes 2048 --threads 1,2 --reps 3
+  "$bench/bench_setup" "$results/setup_alpha4.csv" --sizes 1024 --threads 1 --reps 5 --alpha 4
   echo "== FRF evaluation"
-  "$build/bench/bench_frf" "$results/frf_eval.csv"
+  "$bench/bench_frf" "$results/frf_eval.csv"
   echo "== contact solver"
-  "$build/bench/bench_contact" "$results/contact.csv"
+  "$bench/bench_contact" "$results/contact.csv"
   doc=$root/docs/benchmarks.md
   "$python" "$blocks" "$doc" dcfft "$results/dcfft.csv"
   "$python" "$blocks" "$doc" dcfft_direct "$results/dcfft.csv" --view direct-speedup

@@ -20,7 +20,6 @@
 #include <cmath>
 #include <cstddef>
 #include <exception>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -428,22 +427,15 @@ int write_table(const std::string& path) {
   }
   coated_section(md);
   std::cout << md.str();
-  std::ofstream out(path);
-  if (!out) {
-    std::cerr << "contact_table: cannot write " << path << "\n";
-    return 1;
-  }
-  out << md.str();
+  tables::write_text(path, md.str());
   return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Contact solver against Hertz and the flat punch; coated contact trends"};
-  tables::TableOptions options;
-  tables::add_table_options(app, options, "docs/validation_contact.md");
-  CLI11_PARSE(app, argc, argv);
-  return tables::run_table("contact_table",
-                           [&] { return options.check ? check() : write_table(options.output); });
+  return tables::table_main(
+      argc, argv,
+      {"contact_table", "Contact solver against Hertz and the flat punch; coated contact trends",
+       "docs/validation_contact.md", check, write_table});
 }

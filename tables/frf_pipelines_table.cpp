@@ -20,7 +20,6 @@
 #include <cmath>
 #include <cstddef>
 #include <exception>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <numbers>
@@ -381,9 +380,7 @@ int write_table(const std::string& path) {
   pipeline_sections(*frf, md);
   g0_tolerance_section(*frf, md);
   g0_cost_section(md);
-  std::ofstream out(path);
-  COATFFT_REQUIRE(out.good(), "cannot write ", path);
-  out << md.str();
+  tables::write_text(path, md.str());
   std::cout << md.str();
   return 0;
 }
@@ -391,10 +388,9 @@ int write_table(const std::string& path) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"frf-spectral and frf-dcfft (Spinu 2021) on Hertz over a half-space; g(0)"};
-  tables::TableOptions options;
-  tables::add_table_options(app, options, "docs/validation_frf_pipelines.md");
-  CLI11_PARSE(app, argc, argv);
-  return tables::run_table("frf_pipelines_table",
-                           [&] { return options.check ? check() : write_table(options.output); });
+  return tables::table_main(
+      argc, argv,
+      {"frf_pipelines_table",
+       "frf-spectral and frf-dcfft (Spinu 2021) on Hertz over a half-space; g(0)",
+       "docs/validation_frf_pipelines.md", check, write_table});
 }

@@ -11,7 +11,6 @@
 #include <cmath>
 #include <cstddef>
 #include <exception>
-#include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -138,14 +137,8 @@ int write_table(const std::string& path, const std::string& csv_path) {
       "built with COATFFT_BUILD_TABLES=ON; `hertz_dcfft_table --check` is the ctest\n"
       "`table_hertz_dcfft_check`).\n\n";
   std::cout << header << md;
-  std::ofstream out(path);
-  COATFFT_REQUIRE(out.good(), "hertz_dcfft_table: cannot write '", path, "'");
-  out << header << md;
-  if (!csv_path.empty()) {
-    std::ofstream csv_out(csv_path);
-    COATFFT_REQUIRE(csv_out.good(), "hertz_dcfft_table: cannot write '", csv_path, "'");
-    csv_out << csv;
-  }
+  tables::write_text(path, header + md);
+  if (!csv_path.empty()) tables::write_text(csv_path, csv);
   bool decreasing = true;
   for (std::size_t k = 1; k < rows.size(); ++k)
     decreasing = decreasing && rows[k].max_error < rows[k - 1].max_error;
@@ -156,13 +149,14 @@ int write_table(const std::string& path, const std::string& csv_path) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"DC-FFT on the Hertz pressure against the closed form, N = 32 ... 512"};
-  tables::TableOptions options;
-  tables::add_table_options(app, options, "docs/validation_hertz_dcfft.md");
   std::string csv_path;
-  app.add_option("--csv", csv_path, "Also write the errors as a CSV with # key = value headers");
-  CLI11_PARSE(app, argc, argv);
-  return tables::run_table("hertz_dcfft_table", [&] {
-    return options.check ? check() : write_table(options.output, csv_path);
-  });
+  return tables::table_main(
+      argc, argv,
+      {"hertz_dcfft_table", "DC-FFT on the Hertz pressure against the closed form, N = 32 ... 512",
+       "docs/validation_hertz_dcfft.md", check,
+       [&](const std::string& output) { return write_table(output, csv_path); },
+       [&](CLI::App& app) {
+         app.add_option("--csv", csv_path,
+                        "Also write the errors as a CSV (# key = value headers)");
+       }});
 }

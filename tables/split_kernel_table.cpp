@@ -23,7 +23,6 @@
 #include <cstddef>
 #include <cstdio>
 #include <exception>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -413,12 +412,7 @@ int write_table(const std::string& out_path, bool quick) {
      << " of u(0).\n";
   if (!quick) md << extra_sections();
   std::cout << nb_pass << " of " << nb_cases << " pass, worst " << worst << "\n";
-  std::ofstream out(out_path);
-  if (!out) {
-    std::cerr << "split_kernel_table: cannot write " << out_path << "\n";
-    return 1;
-  }
-  out << md.str();
+  tables::write_text(out_path, md.str());
   std::cout << "wrote " << out_path << "\n";
   return 0;
 }
@@ -426,13 +420,14 @@ int write_table(const std::string& out_path, bool quick) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"frf-split on coated Hertz cases against the continuous Hankel displacement"};
-  tables::TableOptions options;
-  tables::add_table_options(app, options, "docs/validation_split_kernel.md");
   bool quick = false;
-  app.add_flag("--quick", quick, "A reduced sweep and no further sections (a partial file)");
-  CLI11_PARSE(app, argc, argv);
-  return tables::run_table("split_kernel_table", [&] {
-    return options.check ? check() : write_table(options.output, quick);
-  });
+  return tables::table_main(
+      argc, argv,
+      {"split_kernel_table",
+       "frf-split on coated Hertz cases against the continuous Hankel displacement",
+       "docs/validation_split_kernel.md", check,
+       [&](const std::string& output) { return write_table(output, quick); },
+       [&](CLI::App& app) {
+         app.add_flag("--quick", quick, "A reduced sweep and no further sections (partial file)");
+       }});
 }

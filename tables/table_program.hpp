@@ -1,43 +1,59 @@
 #pragma once
 // What every validation table program shares: its command line (the Markdown file to write and
-// --check), the --check bookkeeping (one line per failed row, exit status 1 on any failure) and
-// the turning of exceptions into an exit status. A table's --check recomputes a fast subset of
-// its rows and compares them with the independent reference at the tolerances the table promises;
-// it is registered with ctest (tables/CMakeLists.txt), so a table and its test are one code path.
+// --check), the --check bookkeeping (one line per failed row, exit status 1 on any failure), the
+// writing of its files and the turning of exceptions into an exit status. A table's --check
+// recomputes a fast subset of its rows and compares them with the independent reference at the
+// tolerances the table promises; it is registered with ctest (tables/CMakeLists.txt), so a table
+// and its test are one code path.
 #include <CLI/CLI.hpp>
 #include <exception>
+#include <fstream>
+#include <functional>
 #include <iostream>
 #include <string>
 #include <utility>
 
+#include "core/error.hpp"
+
 namespace coatfft::tables {
 
-/// The options every table program takes.
-struct TableOptions {
-  std::string output;  ///< the Markdown file written (not with --check)
-  bool check = false;  ///< recompute a subset and compare; write nothing
+/// A table program: what main() hands to table_main.
+struct TableProgram {
+  const char* name;            ///< "hard_cases_table": the prefix of its messages
+  const char* description;     ///< one line for --help
+  const char* default_output;  ///< the Markdown file written, relative to the working directory
+  std::function<int()> check;  ///< --check: recompute a subset, compare; the exit status
+  std::function<int(const std::string& output)> write;  ///< write the table; the exit status
+  std::function<void(CLI::App&)> add_options = {};      ///< further options of the write mode
 };
 
-/// Adds the positional `output` (default `default_output`, relative to the working directory)
-/// and `--check` to `app`.
-inline void add_table_options(CLI::App& app, TableOptions& options, std::string default_output) {
-  options.output = std::move(default_output);
-  app.add_option("output", options.output, "Markdown file to write")->capture_default_str();
-  app.add_flag("--check", options.check,
+/// The main() of a table program: `program.name [OUTPUT] [--check] [further options]`. Parse
+/// errors exit as CLI11 says; an exception from check or write is printed as "name: message" and
+/// gives exit status 1.
+inline int table_main(int argc, char** argv, const TableProgram& program) {
+  CLI::App app{program.description};
+  std::string output = program.default_output;
+  bool check = false;
+  app.add_option("output", output, "Markdown file to write")->capture_default_str();
+  app.add_flag("--check", check,
                "Recompute a fast subset of the rows and compare them with the reference at the "
                "tests' tolerances (one line per failed row, exit status 1); writes nothing");
-}
-
-/// Runs `body` (which returns the exit status); an exception is printed as "program: message"
-/// and gives exit status 1.
-template <class Body>
-int run_table(const char* program, Body&& body) {
+  if (program.add_options) program.add_options(app);
+  CLI11_PARSE(app, argc, argv);
   try {
-    return body();
+    return check ? program.check() : program.write(output);
   } catch (const std::exception& e) {
-    std::cerr << program << ": " << e.what() << "\n";
+    std::cerr << program.name << ": " << e.what() << "\n";
     return 1;
   }
+}
+
+/// Writes `text` to `path`; throws coatfft::Error naming the path if it cannot.
+inline void write_text(const std::string& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+  out.close();
+  COATFFT_REQUIRE(out.good(), "cannot write '", path, "'");
 }
 
 /// The comparisons of a --check run.

@@ -1,6 +1,7 @@
 // The helpers every benchmark shares (bench/bench_report.hpp): the machine header's keys, which
-// bench/results/*.csv readers (scripts/plot_pareto.py) and people rely on, and the small
-// utilities' edge cases.
+// bench/results/*.csv readers (scripts/plot_pareto.py) and people rely on, and the result file's
+// writing. (Medians: core/detail/timing.hpp, tests/test_core_detail.cpp; lists of numbers on the
+// command line: CLI11, tests/test_bench_sweep.cpp.)
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
@@ -9,7 +10,6 @@
 #include <vector>
 
 #include "bench/bench_report.hpp"
-#include "core/error.hpp"
 
 namespace cb = coatfft::bench;
 
@@ -29,22 +29,6 @@ TEST_CASE("write_machine_header writes the documented keys, one '# key = value' 
   CHECK(keys ==
         std::vector<std::string>{"date", "cpu", "hardware_threads", "compiler", "flags", "fftw"});
   CHECK(os.str().find("fftw-3") != std::string::npos);  // FFTW's own version string
-}
-
-TEST_CASE("median is the middle value (upper middle for an even count), 0 for none") {
-  CHECK(cb::median({}) == 0.0);
-  CHECK(cb::median({3.0}) == 3.0);
-  CHECK(cb::median({5.0, 1.0, 9.0}) == 5.0);
-  CHECK(cb::median({4.0, 1.0, 3.0, 2.0}) == 3.0);
-  CHECK(cb::median({1.0, 1e9, 2.0, 3.0, 1e12}) == 3.0);  // outliers do not move it
-}
-
-TEST_CASE("parse_int_list reads comma-separated integers and names a bad item") {
-  CHECK(cb::parse_int_list("512,1024") == std::vector<int>{512, 1024});
-  CHECK(cb::parse_int_list("7") == std::vector<int>{7});
-  CHECK_THROWS_WITH(cb::parse_int_list("512,1k"), Catch::Contains("'1k'"));
-  CHECK_THROWS_WITH(cb::parse_int_list("512,,2"), Catch::Contains("''"));
-  CHECK_THROWS_AS(cb::parse_int_list("x"), coatfft::Error);
 }
 
 TEST_CASE("write_text_file creates the folder, writes the text, and names a path it cannot write") {

@@ -1,7 +1,8 @@
-// End-to-end test of the bench_sweep program on its --tiny sweep: it must run, write a
-// complete CSV with the machine headers, and its errors must agree with independent facts (direct
-// summation, the 1.5% bound of Spinu (2021) for DC-FFT at 32^2, convergence in N and in alpha). No
-// timing is asserted (house rule); only that the timing and memory columns are filled in.
+// End-to-end tests of the speed-against-error programs: bench_sweep on its --tiny sweep must run,
+// write a complete CSV with the machine headers, and its errors must agree with independent facts
+// (direct summation, the 1.5% bound of Spinu (2021) for DC-FFT at 32^2, convergence in N and in
+// alpha); bench_figures and bench_peak_rss must write what the scripts read. No timing is asserted
+// (house rule); only that the timing and memory columns are filled in.
 #include <sys/wait.h>
 
 #include <catch2/catch.hpp>
@@ -19,9 +20,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-int run(const std::string& args, const fs::path& log) {
-  const std::string command =
-      std::string(COATFFT_BENCH_SWEEP_EXE) + " " + args + " >" + log.string() + " 2>&1";
+// Runs `program` (one of the COATFFT_BENCH_*_EXE paths) with `args`, output to `log`.
+int run(const char* program, const std::string& args, const fs::path& log) {
+  const std::string command = std::string(program) + " " + args + " >" + log.string() + " 2>&1";
   const int raw = std::system(command.c_str());
   return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
 }
@@ -68,7 +69,7 @@ struct Row {
 TEST_CASE("bench_sweep --tiny writes a complete, consistent CSV", "[bench_sweep]") {
   const fs::path dir = scratch_dir("tiny");
   const fs::path csv = dir / "sweep.csv";
-  REQUIRE(run("--tiny --output " + csv.string(), dir / "log.txt") == 0);
+  REQUIRE(run(COATFFT_BENCH_SWEEP_EXE, "--tiny --output " + csv.string(), dir / "log.txt") == 0);
   REQUIRE(fs::exists(csv));
 
   std::ifstream in(csv);
@@ -150,9 +151,9 @@ TEST_CASE("bench_sweep --tiny writes a complete, consistent CSV", "[bench_sweep]
     }
 }
 
-TEST_CASE("bench_sweep --figures --tiny writes the data of the figures of Spinu (2021)", "[bench_sweep]") {
+TEST_CASE("bench_figures --tiny writes the data of the figures of Spinu (2021)", "[bench_sweep]") {
   const fs::path dir = scratch_dir("figures");
-  REQUIRE(run("--figures " + dir.string() + " --tiny", dir / "log.txt") == 0);
+  REQUIRE(run(COATFFT_BENCH_FIGURES_EXE, dir.string() + " --tiny", dir / "log.txt") == 0);
   for (const char* name : {"fig2a_dcfft_error_field.csv", "fig2b_dcfft_error_vs_n.csv",
                            "fig3a_frf_alpha.csv", "fig3b_frf_g0.csv"}) {
     INFO(name);
@@ -174,14 +175,22 @@ TEST_CASE("bench_sweep --figures --tiny writes the data of the figures of Spinu 
   CHECK(max_abs > 1e-4);
 }
 
-TEST_CASE("bench_sweep --peak-rss reports a child's exit code and memory", "[bench_sweep]") {
+TEST_CASE(
+    "bench_peak_rss reports a child's exit code and memory, and bench_sweep refuses bad input",
+    "[bench_sweep]") {
   const fs::path dir = scratch_dir("rss");
-  CHECK(run("--peak-rss /bin/sh -c 'exit 3'", dir / "log1.txt") == 3);
-  REQUIRE(run("--peak-rss /bin/true", dir / "log2.txt") == 0);
+  CHECK(run(COATFFT_BENCH_PEAK_RSS_EXE, "/bin/sh -c 'exit 3'", dir / "log1.txt") == 3);
+  REQUIRE(run(COATFFT_BENCH_PEAK_RSS_EXE, "/bin/true", dir / "log2.txt") == 0);
   const std::string text = slurp(dir / "log2.txt");
   CHECK(text.find("peak_rss_mb = ") != std::string::npos);
-  CHECK(run("--no-such-option", dir / "log3.txt") == 1);
-  CHECK(slurp(dir / "log3.txt").find("unknown argument") != std::string::npos);
+  // An unknown option, a list item that is not a number and an unknown method are refused before
+  // any work, with a message naming them.
+  CHECK(run(COATFFT_BENCH_SWEEP_EXE, "--no-such-option", dir / "log3.txt") != 0);
+  CHECK(slurp(dir / "log3.txt").find("--no-such-option") != std::string::npos);
+  CHECK(run(COATFFT_BENCH_SWEEP_EXE, "--tiny --grids 32,1k", dir / "log4.txt") != 0);
+  CHECK(slurp(dir / "log4.txt").find("1k") != std::string::npos);
+  CHECK(run(COATFFT_BENCH_SWEEP_EXE, "--tiny --methods frf-splitt", dir / "log5.txt") != 0);
+  CHECK(slurp(dir / "log5.txt").find("\"frf-splitt\" is not one of") != std::string::npos);
 }
 
 // scripts/plot_pareto.py and scripts/markdown_blocks.py (Debian's /usr/bin/python3 with
@@ -192,7 +201,7 @@ TEST_CASE("plot_pareto.py and markdown_blocks.py fill the docs' generated blocks
           "[bench_sweep]") {
   const fs::path dir = scratch_dir("scripts");
   const fs::path csv = dir / "sweep.csv";
-  REQUIRE(run("--tiny --output " + csv.string(), dir / "log.txt") == 0);
+  REQUIRE(run(COATFFT_BENCH_SWEEP_EXE, "--tiny --output " + csv.string(), dir / "log.txt") == 0);
   const fs::path doc = dir / "doc.md";
   {
     std::ofstream out(doc);
@@ -235,7 +244,8 @@ TEST_CASE("markdown_blocks.py renders the coated convergence and direct speed-up
   const fs::path dir = scratch_dir("views");
   const fs::path log = dir / "python.txt";
   const fs::path csv = dir / "sweep.csv";
-  REQUIRE(run("--tiny --cases coated_soft_h1,coated_hard_h0.1 --output " + csv.string(),
+  REQUIRE(run(COATFFT_BENCH_SWEEP_EXE,
+              "--tiny --cases coated_soft_h1,coated_hard_h0.1 --output " + csv.string(),
               dir / "log.txt") == 0);
   const fs::path doc = dir / "doc.md";
   std::ofstream(doc) << "before\n<!-- BEGIN GENERATED coated -->\nold\n<!-- END GENERATED coated "
