@@ -64,10 +64,7 @@ struct Problem {
 Problem make_problem(std::ptrdiff_t n) {
   const Grid g(n, n, 3 * a, 3 * a);
   const double E = steel.plane_strain_modulus();
-  Field exact(n, n);
-  for (std::ptrdiff_t j = 0; j < n; ++j)
-    for (std::ptrdiff_t i = 0; i < n; ++i)
-      exact(i, j) = hertz_displacement(std::hypot(g.x(i), g.y(j)), p0, a, E);
+  const Field exact = hertz_displacement_field(g, p0, a, E);
   Field p = hertz_pressure(g, p0, a, Sampling::centre);
   OperatorOptions love;
   love.method = Method::dcfft;

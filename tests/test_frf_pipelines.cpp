@@ -36,11 +36,8 @@ struct HertzCase {
 HertzCase hertz_case(std::ptrdiff_t n) {
   const Grid g(n, n, 3 * a, 3 * a);
   const double E = steel.plane_strain_modulus();
-  Field exact(n, n);
-  for (std::ptrdiff_t j = 0; j < n; ++j)
-    for (std::ptrdiff_t i = 0; i < n; ++i)
-      exact(i, j) = hertz_displacement(std::hypot(g.x(i), g.y(j)), p0, a, E);
-  return {g, hertz_pressure(g, p0, a, Sampling::centre), exact, hertz_displacement(0, p0, a, E)};
+  return {g, hertz_pressure(g, p0, a, Sampling::centre), hertz_displacement_field(g, p0, a, E),
+          hertz_displacement(0, p0, a, E)};
 }
 
 // Wrap-around signed index of slot j on an m-point lattice.

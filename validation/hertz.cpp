@@ -54,6 +54,15 @@ double hertz_displacement(double r, double p0, double a, double plane_strain_mod
   return p0 / (2.0 * a * e_star) * ((2.0 * a * a - r * r) * std::atan2(a, s) + a * s);
 }
 
+Field hertz_displacement_field(const Grid& grid, double p0, double a,
+                               double plane_strain_modulus) {
+  Field u(grid.nx(), grid.ny());
+  for (std::ptrdiff_t j = 0; j < grid.ny(); ++j)
+    for (std::ptrdiff_t i = 0; i < grid.nx(); ++i)
+      u(i, j) = hertz_displacement(std::hypot(grid.x(i), grid.y(j)), p0, a, plane_strain_modulus);
+  return u;
+}
+
 double uniform_disk_displacement(double r, double p, double a, double plane_strain_modulus) {
   check_arguments("uniform_disk_displacement", r, p, a, plane_strain_modulus);
   const double e_star = plane_strain_modulus;

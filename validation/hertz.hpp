@@ -1,6 +1,8 @@
 #pragma once
 // Closed-form surface displacements of a homogeneous half-space under axisymmetric pressures: the
 // analytic references of the DC-FFT and spectral validations (docs/theory.md sections 1.4-1.5).
+#include "../core/grid.hpp"
+#include "../core/types.hpp"
 
 namespace coatfft {
 
@@ -9,6 +11,10 @@ namespace coatfft {
 /// Inside: docs/theory.md (1.6) (Johnson eq. 3.41a); outside: (1.7), replaced by its convergent
 /// series in a/r for r > 2a, where (1.7) cancels. Throws InvalidArgument on bad arguments.
 double hertz_displacement(double r, double p0, double a, double plane_strain_modulus);
+
+/// hertz_displacement at every cell centre of `grid` (the load centred on the origin), shape
+/// (nx, ny) [m]: the reference field of a Hertz pressure.
+Field hertz_displacement_field(const Grid& grid, double p0, double a, double plane_strain_modulus);
 
 /// Surface normal displacement u_z(r) [m] under a uniform pressure p [Pa] on the disk r < a, at
 /// radius r >= 0 [m]; docs/theory.md (1.9) with complete elliptic integrals of modulus r/a or a/r.
