@@ -934,13 +934,11 @@ void report_plan(const SplitPlan& p, SplitKernelReport& rep) {
 
 }  // namespace
 
-namespace detail {
-
 // The method of split_frf_kernel.hpp, part by part. The kernel is even in x and y: only its
 // quarter di, dj >= 0 is computed (DcfftOperator transforms it directly, and the (2nx, 2ny)
 // wrap-around array, 32 MiB at 1024^2, is never formed).
-Field split_kernel_quarter_values(const Grid& grid, const Frf& frf,
-                                  const SplitKernelOptions& options, SplitKernelReport* report) {
+InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
+                                 const SplitKernelOptions& options, SplitKernelReport* report) {
   const auto start = std::chrono::steady_clock::now();
   const SplitPlan plan = make_split_plan(grid, frf, options);
   SplitKernelReport rep;
@@ -953,17 +951,9 @@ Field split_kernel_quarter_values(const Grid& grid, const Frf& frf,
   // The offsets nx and ny are never used by the convolution: 0 by convention.
   quarter.row(plan.nx).setZero();
   quarter.col(plan.ny).setZero();
-  rep.seconds = seconds_since(start);
+  rep.seconds = detail::seconds_since(start);
   if (report != nullptr) *report = rep;
-  return quarter;
-}
-
-}  // namespace detail
-
-InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
-                                 const SplitKernelOptions& options, SplitKernelReport* report) {
-  return InfluenceKernel(grid, InfluenceKernel::Form::coefficients,
-                         detail::split_kernel_quarter_values(grid, frf, options, report),
+  return InfluenceKernel(grid, InfluenceKernel::Form::coefficients, std::move(quarter),
                          Method::frf_split);
 }
 

@@ -77,10 +77,6 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
                                  SplitKernelReport* report = nullptr);
 
 namespace detail {
-/// The coefficient quarter behind split_frf_kernel, shape (nx + 1, ny + 1).
-Field split_kernel_quarter_values(const Grid& grid, const Frf& frf,
-                                  const SplitKernelOptions& options, SplitKernelReport* report);
-
 /// \iint over the dx x dy rectangle centred at the origin of 1/sqrt((x - x')^2 + (y - y')^2 +
 /// beta^2) dx' dy' [m], beta > 0 [m]: the 4-corner sum of F(X, Y) = X asinh(Y/sqrt(X^2 + beta^2))
 /// + Y asinh(X/sqrt(Y^2 + beta^2)) - beta atan(X Y/(beta sqrt(X^2 + Y^2 + beta^2))), for which
