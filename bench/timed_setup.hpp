@@ -1,9 +1,7 @@
 #pragma once
 // An operator built for a benchmark, with its setup split into the parts the benchmarks report:
 // influence coefficients (or kernel samples), g(0), and the operator's own construction (FFTW
-// plans and the kernel transform). make_operator builds every operator; where its report does not
-// split the setup (Love's and frf-dcfft's coefficients), the kernel is made first and handed to
-// make_operator.
+// plans and the kernel transform), all read off make_operator's report.
 #include "convolution/make_operator.hpp"
 #include "core/grid.hpp"
 #include "layers/layer_stack.hpp"
@@ -21,8 +19,8 @@ struct TimedSetup {
   double setup_s = 0.0;      ///< wall time of the whole build [s]
 };
 
-/// The operator of `options.method` for `body` on `grid`, timed by parts. Throws InvalidArgument
-/// as make_operator does (direct and dcfft need a homogeneous body).
+/// make_operator(grid, body, options), its setup split by parts. Throws InvalidArgument as
+/// make_operator does (direct and dcfft need a homogeneous body).
 TimedSetup timed_setup(const Grid& grid, const LayerStack& body, const OperatorOptions& options);
 
 }  // namespace coatfft::bench

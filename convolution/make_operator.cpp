@@ -8,11 +8,21 @@
 #include "convolution/direct_operator.hpp"
 #include "convolution/frf_influence_kernel.hpp"
 #include "convolution/frf_spectral_operator.hpp"
+#include "core/detail/timing.hpp"
 #include "core/error.hpp"
 #include "core/threads.hpp"
 
 namespace coatfft {
 namespace {
+
+// `make()` (an influence kernel), its wall time added to the report's kernel_seconds.
+template <typename Make>
+InfluenceKernel timed_kernel(OperatorReport& report, Make&& make) {
+  const auto start = std::chrono::steady_clock::now();
+  InfluenceKernel kernel = make();
+  report.kernel_seconds += detail::seconds_since(start);
+  return kernel;
+}
 
 // g(0) on the alpha-extended lattice of the FRF pipelines (docs/theory.md section 3).
 G0Result pipeline_g0(const Grid& grid, const Frf& frf, const OperatorOptions& o) {
@@ -38,15 +48,17 @@ std::unique_ptr<SurfaceOperator> frf_operator(const Grid& grid, const Frf& frf,
       const G0Result g0 = pipeline_g0(grid, frf, o);
       report.alpha = o.alpha;
       report.g0 = g0;
-      return std::make_unique<DcfftOperator>(frf_dcfft_kernel(grid, frf, o.alpha, g0, o.threads),
-                                             o.planning, o.threads);
+      const InfluenceKernel kernel =
+          timed_kernel(report, [&] { return frf_dcfft_kernel(grid, frf, o.alpha, g0, o.threads); });
+      return std::make_unique<DcfftOperator>(kernel, o.planning, o.threads);
     }
     case Method::frf_split: {
       // The split kernel needs no g(0): the singular part of H is taken in closed form in space.
       SplitKernelOptions split = o.split;
       split.threads = o.threads;
       SplitKernelReport split_report;
-      const InfluenceKernel kernel = split_frf_kernel(grid, frf, split, &split_report);
+      const InfluenceKernel kernel =
+          timed_kernel(report, [&] { return split_frf_kernel(grid, frf, split, &split_report); });
       report.split = split_report;
       return std::make_unique<DcfftOperator>(kernel, o.planning, o.threads);
     }
@@ -111,8 +123,9 @@ BuiltOperator make_operator(const Grid& grid, const LayerStack& body,
     COATFFT_REQUIRE(body.is_homogeneous(), "method \"", to_string(options.method),
                     "\" uses Love's coefficients of a homogeneous half-space; for a coated body "
                     "use \"frf-split\", \"frf-dcfft\" or \"frf-spectral\"");
-    const InfluenceKernel kernel =
-        love_kernel(grid, body.substrate().plane_strain_modulus(), options.threads);
+    const InfluenceKernel kernel = timed_kernel(report, [&] {
+      return love_kernel(grid, body.substrate().plane_strain_modulus(), options.threads);
+    });
     return kernel_operator(kernel, options);
   });
 }

@@ -45,7 +45,10 @@ struct OperatorReport {
   Method method = Method::dcfft;  ///< the method that runs
   std::string frf;                ///< Frf::name() of the body's FRF; empty for Love's methods
   double setup_seconds = 0.0;     ///< wall time of make_operator (kernel, g(0), plans) [s]
-  std::ptrdiff_t fft_nx = 0;      ///< transform lengths of apply() (padded or extended lattice)
+  /// Of which the influence kernel (Love's, the split kernel, frf-dcfft's coefficients or sampled
+  /// spectrum) [s]; 0 for frf-spectral, whose FRF sampling is part of the operator's setup.
+  double kernel_seconds = 0.0;
+  std::ptrdiff_t fft_nx = 0;  ///< transform lengths of apply() (padded or extended lattice)
   std::ptrdiff_t fft_ny = 0;
   std::optional<double> alpha;             ///< frf-spectral, frf-dcfft
   std::optional<G0Result> g0;              ///< frf-spectral, frf-dcfft

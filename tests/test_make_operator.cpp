@@ -40,6 +40,9 @@ TEST_CASE("make_operator builds every method and reports it", "[make_operator]")
     CHECK(built.op->name() == to_string(method));
     CHECK(built.report.method == method);
     CHECK(built.report.setup_seconds >= 0.0);
+    // The kernel's time is part of the setup; frf-spectral has no kernel of its own.
+    CHECK((built.report.kernel_seconds > 0.0) == (method != Method::frf_spectral));
+    CHECK(built.report.kernel_seconds <= built.report.setup_seconds);
     CHECK(built.report.frf.empty() == uses_love_coefficients(method));
     CHECK(built.report.alpha.has_value() == samples_frf_lattice(method));
     CHECK(built.report.g0.has_value() == samples_frf_lattice(method));
