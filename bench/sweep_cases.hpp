@@ -64,7 +64,7 @@ inline std::vector<SweepCase> all_cases() {
   cases.push_back({"hertz_homogeneous",
                    "steel half-space (210 GPa, 0.3), pressure sampled at cell centres (as in "
                    "Spinu 2021)",
-                   "closed form hertz_displacement (theory.md 1.6-1.7)", LayerStack(steel()),
+                   "closed form hertz_displacement (docs/theory.md 1.6-1.7)", LayerStack(steel()),
                    Sampling::centre});
   cases.push_back(coated_case("coated_soft_h0.1", 0.1, 0.1));
   cases.push_back(coated_case("coated_soft_h1", 0.1, 1.0));

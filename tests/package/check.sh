@@ -26,11 +26,11 @@ case "${1:-}" in
       echo "FAIL: an installed header includes a private dependency" >&2; exit 1
     fi
     # Only public headers are installed: each resolves with only the install's include root.
-    for header in $(cd "$prefix/include" && find coatfft -name '*.hpp'); do
-      echo "#include <$header>" >"$work/one.cpp"
-      g++ -std=c++20 -fsyntax-only -I"$prefix/include" -I/usr/include/eigen3 "$work/one.cpp" ||
-        { echo "FAIL: $header does not compile on its own" >&2; exit 1; }
-    done
+    (cd "$prefix/include" && find coatfft -name '*.hpp') |
+      xargs -P "$(nproc)" -I{} sh -c 'echo "#include <{}>" |
+        g++ -std=c++20 -fsyntax-only -I"$1/include" -I/usr/include/eigen3 -x c++ - ||
+        { echo "FAIL: {} does not compile on its own" >&2; exit 1; }' sh "$prefix" ||
+      { echo "FAIL: an installed header does not compile on its own" >&2; exit 1; }
     if grep -rlF -e "$root" -e "$build" "$prefix"; then
       echo "FAIL: the install names the build machine's paths (not relocatable)" >&2; exit 1
     fi
