@@ -2,11 +2,13 @@
 
 #include <toml++/toml.h>
 
+#include <array>
 #include <cmath>
 #include <set>
 #include <vector>
 
 #include "cli/npy.hpp"
+#include "core/detail/parse_name.hpp"
 #include "core/error.hpp"
 #include "core/threads.hpp"
 #include "materials/catalog.hpp"
@@ -306,10 +308,9 @@ MethodSpec read_method(const toml::table& root, const std::filesystem::path& sce
   OperatorOptions& o = spec.options;
   o.method = reader.named("name", o.method, parse_method);
   o.alpha = reader.number("alpha", o.alpha);
+  // omitted is not a user's choice: a load-controlled contact makes it (report_approach).
   o.g0 = reader.named("g0", o.g0, [](std::string_view name) {
-    // omitted is not a user's choice: a load-controlled contact makes it (report_approach).
-    COATFFT_REQUIRE(name != "omitted", "\"omitted\" is not one of \"regularized\", \"quadrature\"");
-    return parse_g0_method(name);
+    return detail::parse_name(name, std::array{G0Method::regularized, G0Method::quadrature});
   });
   o.g0_tolerance = reader.number("g0_tol", o.g0_tolerance);
   o.planning = reader.named("planning", o.planning, parse_planning);

@@ -5,6 +5,7 @@
 #include <complex>
 
 #include "core/detail/parallel_for.hpp"
+#include "core/detail/timing.hpp"
 #include "core/error.hpp"
 
 namespace coatfft {
@@ -33,7 +34,7 @@ DcfftOperator::DcfftOperator(const InfluenceKernel& kernel, Planning planning, i
     transform_coefficients(kernel.quarter());
   else
     store_spectrum(kernel.quarter());
-  setup_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  setup_seconds_ = detail::seconds_since(start);
 }
 
 void DcfftOperator::plan_transforms(Planning planning) {

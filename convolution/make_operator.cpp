@@ -89,8 +89,7 @@ BuiltOperator timed(const Grid& grid, const OperatorOptions& options, Build&& bu
   built.op = build(built.report);
   built.report.method = built.op->method();
   if (built.report.method == Method::direct) built.report.fft_nx = built.report.fft_ny = 0;
-  built.report.setup_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  built.report.setup_seconds = detail::seconds_since(start);
   return built;
 }
 
