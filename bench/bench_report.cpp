@@ -4,7 +4,6 @@
 #include <sys/resource.h>
 
 #include <ctime>
-#include <filesystem>
 #include <fstream>
 #include <thread>
 
@@ -59,16 +58,6 @@ double peak_rss_mb() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   return static_cast<double>(usage.ru_maxrss) / 1024.0;
-}
-
-void write_text_file(const std::string& path, const std::string& text) {
-  const std::filesystem::path p(path);
-  std::error_code ec;  // reported below as "cannot write PATH", not as a filesystem_error
-  if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path(), ec);
-  std::ofstream out(p);
-  out << text;
-  out.close();
-  COATFFT_REQUIRE(out.good(), "cannot write '", path, "'");
 }
 
 }  // namespace coatfft::bench

@@ -7,6 +7,8 @@
 #include <ostream>
 #include <string>
 
+#include "core/detail/write_text_file.hpp"
+
 namespace coatfft::bench {
 
 /// `# cpu`, `# hardware_threads`, `# compiler`, `# flags`, `# fftw` and `# date` lines.
@@ -16,6 +18,6 @@ void write_machine_header(std::ostream& os);
 double peak_rss_mb();
 
 /// Writes text to path (creating its folder), or throws coatfft::Error naming the path.
-void write_text_file(const std::string& path, const std::string& text);
+using detail::write_text_file;
 
 }  // namespace coatfft::bench

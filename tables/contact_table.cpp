@@ -427,7 +427,7 @@ int write_table(const std::string& path) {
   }
   coated_section(md);
   std::cout << md.str();
-  tables::write_text(path, md.str());
+  tables::write_text_file(path, md.str());
   return 0;
 }
 

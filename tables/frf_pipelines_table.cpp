@@ -377,7 +377,7 @@ int write_table(const std::string& path) {
   pipeline_sections(*frf, md);
   g0_tolerance_section(*frf, md);
   g0_cost_section(md);
-  tables::write_text(path, md.str());
+  tables::write_text_file(path, md.str());
   std::cout << md.str();
   return 0;
 }

@@ -285,7 +285,7 @@ int write_table(const std::string& out_path) {
      << format_number("%.1f", total) << " s.\n"
      << sections.str();
 
-  tables::write_text(out_path, md.str());
+  tables::write_text_file(out_path, md.str());
   std::cout << "wrote " << out_path << " in " << total
             << " s; all finite: " << (all_finite ? "yes" : "no") << "\n";
   return all_finite ? 0 : 1;

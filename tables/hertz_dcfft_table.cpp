@@ -137,8 +137,8 @@ int write_table(const std::string& path, const std::string& csv_path) {
       "built with COATFFT_BUILD_TABLES=ON; `hertz_dcfft_table --check` is the ctest\n"
       "`table_hertz_dcfft_check`).\n\n";
   std::cout << header << md;
-  tables::write_text(path, header + md);
-  if (!csv_path.empty()) tables::write_text(csv_path, csv);
+  tables::write_text_file(path, header + md);
+  if (!csv_path.empty()) tables::write_text_file(csv_path, csv);
   bool decreasing = true;
   for (std::size_t k = 1; k < rows.size(); ++k)
     decreasing = decreasing && rows[k].max_error < rows[k - 1].max_error;

@@ -412,7 +412,7 @@ int write_table(const std::string& out_path, bool quick) {
      << " of u(0).\n";
   if (!quick) md << extra_sections();
   std::cout << nb_pass << " of " << nb_cases << " pass, worst " << worst << "\n";
-  tables::write_text(out_path, md.str());
+  tables::write_text_file(out_path, md.str());
   std::cout << "wrote " << out_path << "\n";
   return 0;
 }

@@ -7,12 +7,12 @@
 // and its test are one code path.
 #include <CLI/CLI.hpp>
 #include <exception>
-#include <fstream>
 #include <functional>
 #include <iostream>
 #include <string>
 #include <utility>
 
+#include "core/detail/write_text_file.hpp"
 #include "core/error.hpp"
 
 namespace coatfft::tables {
@@ -48,13 +48,8 @@ inline int table_main(int argc, char** argv, const TableProgram& program) {
   }
 }
 
-/// Writes `text` to `path`; throws coatfft::Error naming the path if it cannot.
-inline void write_text(const std::string& path, const std::string& text) {
-  std::ofstream out(path);
-  out << text;
-  out.close();
-  COATFFT_REQUIRE(out.good(), "cannot write '", path, "'");
-}
+/// Writes `text` to `path` (creating its folder); throws coatfft::Error naming the path.
+using detail::write_text_file;
 
 /// The comparisons of a --check run.
 class Checks {
