@@ -4,9 +4,13 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
+#include <vector>
 
+#include "cli/resources.hpp"
 #include "cli/scene.hpp"
+#include "cli/staged_output.hpp"
 #include "core/error.hpp"
 #include "frf/frf.hpp"
 #include "frf/frf_table.hpp"
@@ -22,28 +26,31 @@ void frf_command(const FrfOptions& options) {
   COATFFT_REQUIRE(std::isfinite(k_min) && k_min > 0, "--k-min = ", k_min, " must be > 0");
   COATFFT_REQUIRE(std::isfinite(k_max) && k_max > k_min, "--k-max = ", k_max,
                   " must be finite and > --k-min = ", k_min);
-  COATFFT_REQUIRE(options.points >= 2, "--points = ", options.points, " must be >= 2");
+  COATFFT_REQUIRE(options.points >= 2 && options.points <= max_frf_points, "--points = ",
+                  options.points, " must be in 2..", max_frf_points);
+  // The output is checked before any work: a table that cannot be written is refused at once.
+  std::optional<StagedFile> file;
+  if (!options.output.empty()) file.emplace(options.output, "output file", std::vector{options.scene});
 
   const auto frf = make_frf(body);
   std::ostringstream table;
   table << "k,kh_total,frf,frf_over_substrate\n" << std::setprecision(17);
-  for (const auto& row : frf_table(body, *frf, k_min, k_max, options.points))
+  for (const auto& row : frf_table(body, *frf, k_min, k_max, static_cast<int>(options.points)))
     table << row.k << ',' << row.kh_total << ',' << row.frf << ',' << row.ratio_to_substrate
           << '\n';
 
-  if (options.output.empty()) {
+  if (!file) {
     std::cout << table.str();
     return;
   }
   // Whole-file write through a temporary name: no partial table on failure.
-  const std::filesystem::path partial = options.output.string() + ".partial";
   {
-    std::ofstream out(partial);
-    COATFFT_REQUIRE(out.good(), "cannot open ", partial.string(), " for writing");
+    std::ofstream out(file->path());
+    COATFFT_REQUIRE(out.good(), "cannot write ", file->path().string());
     out << table.str();
-    COATFFT_REQUIRE(out.good(), "failed writing ", partial.string());
+    COATFFT_REQUIRE(out.good(), "failed writing ", file->path().string());
   }
-  std::filesystem::rename(partial, options.output);
+  file->commit();
 }
 
 }  // namespace coatfft::cli

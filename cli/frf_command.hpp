@@ -11,7 +11,7 @@ struct FrfOptions {
   std::filesystem::path output;  ///< CSV file; empty: standard output
   std::optional<double> k_min;   ///< [rad/m]; default 1e-3 / h_total, or 1e2 for a half-space
   std::optional<double> k_max;   ///< [rad/m]; default 1e3 / h_total, or 1e8 for a half-space
-  int points = 61;               ///< log-spaced wavenumbers
+  long points = 61;              ///< log-spaced wavenumbers
 };
 
 /// Writes the CSV `k,kh_total,frf,frf_over_substrate` (rad/m, -, m/Pa, -).

@@ -3,21 +3,42 @@
 // converge (outputs are written, summary.json says converged = false), 1 for anything else.
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <string_view>
 
 #include "cli/frf_command.hpp"
+#include "cli/resources.hpp"
 #include "cli/run_command.hpp"
+#include "core/detail/shorten.hpp"
 #include "core/error.hpp"
+
+namespace {
+
+// CLI11 reads a lone unknown word as an extra argument and then asks for a subcommand; name it.
+bool refuse_unknown_command(int argc, char** argv) {
+  if (argc < 2 || argv[1][0] == '-') return false;
+  const std::string_view word = argv[1];
+  if (word == "run" || word == "frf") return false;
+  std::cerr << "coatfft: error: unknown command \"" << coatfft::detail::shorten(word)
+            << "\" (commands: run, frf; see coatfft --help)\n";
+  return true;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"coatfft: surface displacements and contact of coated elastic half-spaces"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("coatfft ") + COATFFT_VERSION);
 
   coatfft::cli::RunOptions run;
+  std::string max_memory;
   CLI::App* run_cmd = app.add_subcommand("run", "Compute the surface displacement of a scene");
   run_cmd->add_option("scene", run.scene, "Scene file (TOML)")->required();
   run_cmd->add_option("-o,--output", run.outdir, "Output folder")->required();
   run_cmd->add_option("--repeat", run.repeat, "Applications to time (median reported)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(1, coatfft::cli::max_repeat));
+  run_cmd->add_option("--max-memory", max_memory,
+                      "Memory the run may use, e.g. 4G (default: what the machine has available)");
 
   coatfft::cli::FrfOptions frf;
   CLI::App* frf_cmd = app.add_subcommand("frf", "Print the FRF of a scene's body as a CSV table");
@@ -28,8 +49,10 @@ int main(int argc, char** argv) {
   frf_cmd->add_option("-o,--output", frf.output, "CSV file (default: standard output)");
   frf_cmd->add_option("--k-min", frf.k_min, "Smallest wavenumber [rad/m]");
   frf_cmd->add_option("--k-max", frf.k_max, "Largest wavenumber [rad/m]");
-  frf_cmd->add_option("--points", frf.points, "Number of log-spaced wavenumbers");
+  frf_cmd->add_option("--points", frf.points, "Number of log-spaced wavenumbers")
+      ->check(CLI::Range(2L, coatfft::cli::max_frf_points));
 
+  if (refuse_unknown_command(argc, argv)) return 2;
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -38,6 +61,8 @@ int main(int argc, char** argv) {
   }
 
   try {
+    if (!max_memory.empty())
+      run.max_memory = coatfft::cli::parse_memory_size(max_memory, "--max-memory");
     if (*run_cmd && coatfft::cli::run_command(run) == coatfft::cli::RunStatus::not_converged) {
       std::cerr << "coatfft: warning: the contact solver did not converge (see summary.json)\n";
       return 3;
@@ -45,6 +70,10 @@ int main(int argc, char** argv) {
     if (*frf_cmd) coatfft::cli::frf_command(frf);
   } catch (const coatfft::InvalidArgument& e) {
     std::cerr << "coatfft: error: " << e.what() << '\n';
+    return 2;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "coatfft: error: out of memory (the estimate of docs/scene_format.md, \"Limits\", "
+                 "was too low for this machine): use fewer cells or --max-memory\n";
     return 2;
   } catch (const std::exception& e) {
     std::cerr << "coatfft: internal error: " << e.what() << '\n';

@@ -1,16 +1,58 @@
 #include "cli/operator_from_scene.hpp"
 
+#include <iostream>
 #include <string>
 
+#include "cli/input_file.hpp"
 #include "convolution/fftw_wisdom.hpp"
+#include "core/detail/shorten.hpp"
+#include "core/error.hpp"
 
 namespace coatfft::cli {
 
+namespace fs = std::filesystem;
+
+namespace {
+
+// Wisdom of a few hundred plans is tens of kilobytes.
+constexpr std::uintmax_t max_wisdom_bytes = 64 << 20;
+
+bool same_file(const fs::path& a, const fs::path& b) {
+  std::error_code ec;
+  if (fs::equivalent(a, b, ec)) return true;
+  return fs::weakly_canonical(fs::absolute(a), ec) == fs::weakly_canonical(fs::absolute(b), ec);
+}
+
+}  // namespace
+
+void load_wisdom(const Scene& scene, const StagedOutput& out) {
+  const fs::path& wisdom = scene.method.wisdom;
+  if (wisdom.empty()) return;
+  const std::string where = "[method] wisdom = \"" + detail::shorten(wisdom.string()) + "\"";
+  for (const fs::path& input : scene.input_files)
+    COATFFT_REQUIRE(!same_file(wisdom, input), where, " is an input of this run (",
+                    detail::shorten(input.string()), "): name a file of its own");
+  for (const fs::path& target : out.targets())
+    COATFFT_REQUIRE(!same_file(wisdom, target), where,
+                    " is an output of this run: name a file outside the output folder's outputs");
+  std::error_code ec;
+  if (!fs::exists(fs::symlink_status(wisdom, ec))) return;  // written after planning
+  check_output_target(wisdom, "[method] wisdom", scene.input_files);
+  const std::string text = read_input_file(wisdom, "an FFTW wisdom file", max_wisdom_bytes);
+  COATFFT_REQUIRE(text.rfind("(fftw-3", 0) == 0, where,
+                  " exists and does not hold FFTW wisdom (it does not start with \"(fftw-3\"): "
+                  "coatfft will not overwrite it");
+  if (!import_fftw_wisdom(text))
+    std::cerr << "coatfft: warning: " << where
+              << " could not be imported (another FFTW version?); it will be replaced\n";
+}
+
 BuiltOperator operator_from_scene(const Scene& scene) {
   const MethodSpec& method = scene.method;
-  if (!method.wisdom.empty()) load_fftw_wisdom(method.wisdom.string());
   BuiltOperator built = make_operator(scene.grid, scene.body, method.options);
-  if (!method.wisdom.empty()) save_fftw_wisdom(method.wisdom.string());
+  if (!method.wisdom.empty())
+    write_file_atomically(method.wisdom, "[method] wisdom", export_fftw_wisdom(),
+                          scene.input_files);
   return built;
 }
 

@@ -5,11 +5,21 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/scene.hpp"
+#include "cli/staged_output.hpp"
 #include "convolution/make_operator.hpp"
 
 namespace coatfft::cli {
 
-/// Throws InvalidArgument when the method cannot handle the body (e.g. Love DC-FFT on a coating).
+/// Checks and imports the scene's FFTW wisdom file, if it names one. The wisdom file is neither
+/// an input nor an output of the run (refused when it is the scene, a file the scene reads, or
+/// one of `out`'s files), and an existing file must be a regular file holding FFTW wisdom: a
+/// file of any other kind is never overwritten. Wisdom that FFTW cannot import (another FFTW
+/// version) is reported on stderr and replaced after planning.
+void load_wisdom(const Scene& scene, const StagedOutput& out);
+
+/// Builds the operator and saves the accumulated wisdom (atomically) when the scene names a
+/// wisdom file. Throws InvalidArgument when the method cannot handle the body (e.g. Love DC-FFT
+/// on a coating).
 BuiltOperator operator_from_scene(const Scene& scene);
 
 /// The method-specific keys of summary.json: frf, alpha, g0, g0_method, g0_seconds,

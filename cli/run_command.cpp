@@ -11,6 +11,7 @@
 
 #include "cli/npy.hpp"
 #include "cli/operator_from_scene.hpp"
+#include "cli/resources.hpp"
 #include "cli/scene.hpp"
 #include "cli/staged_output.hpp"
 #include "contact/contact_solver.hpp"
@@ -59,10 +60,31 @@ Field pressure_from_scene(const Scene& scene) {
 
 // Median wall time of `repeat` applications of `op` to `pressure`; leaves the result in `uz`,
 // which must come out finite.
-double time_applications(SurfaceOperator& op, const Field& pressure, Field& uz, int repeat) {
+double time_applications(const Scene& scene, SurfaceOperator& op, const Field& pressure,
+                         Field& uz, int repeat) {
   const double seconds = coatfft::detail::time_applications(op, pressure, uz, repeat);
-  COATFFT_REQUIRE(uz.allFinite(), "internal error: the displacement has non-finite values");
+  // Finite inputs can still overflow: |u| ~ p L / E* and the transforms sum p over the grid.
+  COATFFT_REQUIRE(uz.allFinite(), "the displacement overflows double precision: max pressure ",
+                  pressure.abs().maxCoeff(), " Pa, [substrate] E* = ",
+                  scene.body.substrate().plane_strain_modulus(), " Pa, [grid] lx = ",
+                  scene.grid.lx(), " m, ly = ", scene.grid.ly(),
+                  " m; rescale the units of the load and the moduli");
   return seconds;
+}
+
+// A load that falls between the cell centres (a Hertz radius below the cell size, sampled at the
+// centres) would give u = 0 and a plausible-looking output.
+void require_load(const Scene& scene, const Field& pressure) {
+  const Grid& grid = scene.grid;
+  const PressureSpec& load = *scene.pressure;
+  if (load.kind == PressureKind::file) {
+    COATFFT_REQUIRE((pressure != 0.0).any(), load.file.string(),
+                    ": the pressure is zero everywhere: nothing to compute");
+    return;
+  }
+  COATFFT_REQUIRE((pressure != 0.0).any(), "[pressure] a = ", load.radius,
+                  " m: the load misses every cell centre (cells are ", grid.dx(), " x ", grid.dy(),
+                  " m); refine the grid or use sampling = \"cell_average\"");
 }
 
 // Index of the cell centre nearest the origin; for an even count the two middle cells tie and
@@ -107,9 +129,8 @@ void write_displacement_csv(const std::filesystem::path& path, const Grid& grid,
   COATFFT_REQUIRE(out.good(), "failed writing ", path.string());
 }
 
-void write_outputs(const std::filesystem::path& outdir, const Grid& grid, const Field& pressure,
-                   const Field& uz, const Field* gap, const nlohmann::json& summary) {
-  StagedOutput out(outdir);
+void write_outputs(StagedOutput& out, const Grid& grid, const Field& pressure, const Field& uz,
+                   const Field* gap, const nlohmann::json& summary) {
   write_npy(out.path("uz.npy"), uz);
   write_npy(out.path("pressure.npy"), pressure);
   if (gap) write_npy(out.path("gap.npy"), *gap);
@@ -122,12 +143,13 @@ void write_outputs(const std::filesystem::path& outdir, const Grid& grid, const 
   out.commit();
 }
 
-RunStatus run_pressure(const Scene& scene, const RunOptions& options) {
+RunStatus run_pressure(const Scene& scene, const RunOptions& options, StagedOutput& out) {
   const Grid& grid = scene.grid;
   const Field pressure = pressure_from_scene(scene);
+  require_load(scene, pressure);
   BuiltOperator built = operator_from_scene(scene);
   Field uz;
-  const double apply_seconds = time_applications(*built.op, pressure, uz, options.repeat);
+  const double apply_seconds = time_applications(scene, *built.op, pressure, uz, options.repeat);
 
   nlohmann::json summary =
       common_summary(scene, built, apply_seconds, options.repeat, pressure, uz);
@@ -136,11 +158,11 @@ RunStatus run_pressure(const Scene& scene, const RunOptions& options) {
     summary["max_error_vs_hertz"] = max_error_vs_hertz(
         grid, uz, load.amplitude, load.radius, scene.body.substrate().plane_strain_modulus());
   }
-  write_outputs(options.outdir, grid, pressure, uz, nullptr, summary);
+  write_outputs(out, grid, pressure, uz, nullptr, summary);
   return RunStatus::ok;
 }
 
-RunStatus run_contact(Scene scene, const RunOptions& options) {
+RunStatus run_contact(Scene scene, const RunOptions& options, StagedOutput& out) {
   const ContactSpec& spec = *scene.contact;
   const Grid& grid = scene.grid;
   if (spec.indenter_material) {
@@ -165,12 +187,13 @@ RunStatus run_contact(Scene scene, const RunOptions& options) {
                                          : solver.solve_approach(height_field, *spec.approach);
   const double solve_seconds = seconds_since(start);
   COATFFT_REQUIRE(!result.touches_boundary,
-                  "[contact] the contact reaches the domain edge: the domain is too small for this "
-                  "load (enlarge lx, ly) ",
-                  result.warning);
+                  "[contact] the contact reaches the domain edge (pressure > 0 on a border cell): "
+                  "the domain is too small for this contact; enlarge [grid] lx and ly (and nx, ny "
+                  "to keep the cell size) or lower the load");
 
   Field uz;
-  const double apply_seconds = time_applications(*built.op, result.pressure, uz, options.repeat);
+  const double apply_seconds =
+      time_applications(scene, *built.op, result.pressure, uz, options.repeat);
   nlohmann::json summary = common_summary(scene, built, apply_seconds, options.repeat,
                                           result.pressure, result.displacement);
   summary["indenter"] = spec.indenter_name;
@@ -208,17 +231,25 @@ RunStatus run_contact(Scene scene, const RunOptions& options) {
                         {"max_pressure", hertz.max_pressure},
                         {"approach", hertz.approach}};
   }
-  write_outputs(options.outdir, grid, result.pressure, result.displacement, &result.gap, summary);
+  write_outputs(out, grid, result.pressure, result.displacement, &result.gap, summary);
   return result.converged ? RunStatus::ok : RunStatus::not_converged;
 }
 
 }  // namespace
 
 RunStatus run_command(const RunOptions& options) {
-  COATFFT_REQUIRE(options.repeat >= 1, "--repeat = ", options.repeat, " must be >= 1");
+  COATFFT_REQUIRE(options.repeat >= 1 && options.repeat <= max_repeat, "--repeat = ",
+                  options.repeat, " must be in 1..", max_repeat);
   Scene scene = read_scene(options.scene);
-  if (scene.contact) return run_contact(std::move(scene), options);
-  return run_pressure(scene, options);
+  check_memory(scene, options.max_memory);
+  // Every output target is checked now, before any work: a run that cannot write is refused at
+  // once, not after minutes of computing.
+  std::vector<std::string> names{"uz.npy", "pressure.npy", "displacement.csv", "summary.json"};
+  if (scene.contact) names.push_back("gap.npy");
+  StagedOutput out(options.outdir, names, scene.input_files);
+  load_wisdom(scene, out);
+  if (scene.contact) return run_contact(std::move(scene), options, out);
+  return run_pressure(scene, options, out);
 }
 
 }  // namespace coatfft::cli

@@ -2,6 +2,7 @@
 // `coatfft run SCENE.toml -o OUTDIR`: one displacement computation (known [pressure]) or one
 // contact solve ([contact]) from a scene file.
 #include <filesystem>
+#include <optional>
 
 namespace coatfft::cli {
 
@@ -9,13 +10,16 @@ struct RunOptions {
   std::filesystem::path scene;
   std::filesystem::path outdir;
   int repeat = 1;  ///< operator applications timed; apply_seconds is their median
+  /// Memory the run may use [bytes] (--max-memory); by default what the machine has available.
+  std::optional<double> max_memory;
 };
 
 /// What the run reports to the shell besides exceptions.
 enum class RunStatus { ok, not_converged };
 
 /// Runs the scene and writes OUTDIR/{uz.npy, pressure.npy, displacement.csv, summary.json}
-/// (+ gap.npy for a contact). Throws InvalidArgument on bad input before anything is written.
+/// (+ gap.npy for a contact) all at once (cli/staged_output.hpp). Throws InvalidArgument on bad
+/// input, and leaves OUTDIR as it was on any failure.
 RunStatus run_command(const RunOptions& options);
 
 }  // namespace coatfft::cli

@@ -8,7 +8,9 @@
 #include <vector>
 
 #include "cli/npy.hpp"
+#include "cli/input_file.hpp"
 #include "core/detail/parse_name.hpp"
+#include "core/detail/shorten.hpp"
 #include "core/error.hpp"
 #include "core/threads.hpp"
 #include "materials/catalog.hpp"
@@ -29,7 +31,9 @@ class SectionReader {
   double number(std::string_view key) {
     const toml::node& node = require(key);
     COATFFT_REQUIRE(node.is_number(), where(key), " must be a number, got ", describe(node));
-    const double value = node.value<double>().value();
+    // An integer too large for an exact double (9007199254740993) is still a number: rounded.
+    const double value = node.is_integer() ? static_cast<double>(node.as_integer()->get())
+                                           : node.as_floating_point()->get();
     COATFFT_REQUIRE(std::isfinite(value), where(key), " = ", value, " must be finite");
     return value;
   }
@@ -79,14 +83,15 @@ class SectionReader {
       if (a == value) return value;
       list += (list.empty() ? "\"" : ", \"") + std::string(a) + "\"";
     }
-    throw InvalidArgument(detail::concat(where(key), " = \"", value, "\" is not one of ", list));
+    throw InvalidArgument(
+        detail::concat(where(key), " = \"", detail::shorten(value), "\" is not one of ", list));
   }
 
   /// Refuses every key that was not read.
   void finish() const {
     for (auto&& [key, node] : table_) {
       COATFFT_REQUIRE(used_.count(std::string(key.str())), "[", name_, "] unknown key \"",
-                      key.str(), "\"", line_of(node));
+                      detail::shorten(key.str()), "\"", line_of(node));
     }
   }
 
@@ -264,6 +269,7 @@ ContactSpec read_contact(const toml::table& table, const Grid& grid, const Layer
   } else {
     std::filesystem::path file = reader.string("path");
     if (file.is_relative()) file = scene_dir / file;
+    spec.height_file = file;
     spec.indenter = HeightMap{read_height_map(file)};
     const Field& h = std::get<HeightMap>(spec.indenter).heights;
     COATFFT_REQUIRE(h.rows() == grid.nx() && h.cols() == grid.ny(), file.string(), ": shape (",
@@ -302,11 +308,25 @@ ContactSpec read_contact(const toml::table& table, const Grid& grid, const Layer
   return spec;
 }
 
+// Keys that would be ignored by the chosen method are refused: a user who sets alpha for dcfft
+// believes it does something.
+void refuse_keys_not_applying(const SectionReader& reader, Method method) {
+  const bool pipeline = method == Method::frf_spectral || method == Method::frf_dcfft;
+  for (const char* key : {"alpha", "g0", "g0_tol"})
+    COATFFT_REQUIRE(pipeline || !reader.has(key), reader.where(key), ": applies only to the FRF "
+                    "pipelines \"frf-spectral\" and \"frf-dcfft\", not to name = \"",
+                    to_string(method), "\"");
+  for (const char* key : {"planning", "wisdom"})
+    COATFFT_REQUIRE(method != Method::direct || !reader.has(key), reader.where(key),
+                    ": FFTW settings do not apply to name = \"direct\", which uses no FFT");
+}
+
 MethodSpec read_method(const toml::table& root, const std::filesystem::path& scene_dir) {
   SectionReader reader(section(root, "method", false), "method");
   MethodSpec spec;
   OperatorOptions& o = spec.options;
   o.method = reader.named("name", o.method, parse_method);
+  refuse_keys_not_applying(reader, o.method);
   o.alpha = reader.number("alpha", o.alpha);
   // omitted is not a user's choice: a load-controlled contact makes it (report_approach).
   o.g0 = reader.named("g0", o.g0, [](std::string_view name) {
@@ -326,19 +346,24 @@ MethodSpec read_method(const toml::table& root, const std::filesystem::path& sce
   return spec;
 }
 
-toml::table parse_scene_file(const std::filesystem::path& path) {
+constexpr std::ptrdiff_t max_direct_cells = 1 << 16;
+
+// A scene is a few hundred bytes; a megabyte is far beyond any real one.
+constexpr std::uintmax_t max_scene_bytes = 1 << 20;
+
+toml::table parse_scene_text(const std::string& text, const std::filesystem::path& path) {
   try {
-    toml::table root = toml::parse_file(path.string());
+    toml::table root = toml::parse(text, path.string());
     const std::set<std::string> known{"grid",     "substrate", "coating",
                                       "pressure", "contact",   "method"};
     for (auto&& [key, node] : root) {
-      COATFFT_REQUIRE(known.count(std::string(key.str())), "unknown section or key \"", key.str(),
-                      "\"");
+      COATFFT_REQUIRE(known.count(std::string(key.str())), "unknown section or key \"",
+                      detail::shorten(key.str()), "\"");
     }
     return root;
   } catch (const toml::parse_error& e) {
-    throw InvalidArgument(
-        detail::concat("line ", e.source().begin.line, ": TOML syntax error: ", e.description()));
+    throw InvalidArgument(detail::concat("line ", e.source().begin.line,
+                                         ": TOML syntax error: ", detail::shorten(e.description())));
   }
 }
 
@@ -355,12 +380,21 @@ auto with_file_name(const std::filesystem::path& path, Parse&& parse) {
 }  // namespace
 
 Scene read_scene(const std::filesystem::path& path) {
+  // read_input_file's messages start with the path already.
+  const std::string text = read_input_file(path, "a scene file", max_scene_bytes);
   return with_file_name(path, [&] {
-    const toml::table root = parse_scene_file(path);
+    const toml::table root = parse_scene_text(text, path);
     const std::filesystem::path scene_dir = path.parent_path();
     Scene scene{read_grid(root), read_body(root), std::nullopt, read_method(root, scene_dir),
-                std::nullopt};
+                std::nullopt, {}};
     in_section("method", [&] { check_operator_options(scene.grid, scene.method.options); });
+    // Direct summation costs (nx ny)^2 operations per application: hours beyond this size.
+    COATFFT_REQUIRE(scene.method.options.method != Method::direct ||
+                        scene.grid.nb_cells() <= max_direct_cells,
+                    "[method] name = \"direct\" on ", scene.grid.nx(), " x ", scene.grid.ny(),
+                    " cells: direct summation is limited to ", max_direct_cells,
+                    " cells (its cost grows as (nx ny)^2); use \"dcfft\", which gives the same "
+                    "result");
     COATFFT_REQUIRE(root.contains("pressure") != root.contains("contact"),
                     "a scene needs exactly one of [pressure] (known load) and [contact]");
     if (root.contains("pressure"))
@@ -373,12 +407,18 @@ Scene read_scene(const std::filesystem::path& path) {
     // absorbs in its approach; when that approach is not reported, g(0) is not computed at all.
     if (scene.contact && !scene.contact->report_approach)
       scene.method.options.g0 = G0Method::omitted;
+    scene.input_files.push_back(path);
+    if (scene.pressure && scene.pressure->kind == PressureKind::file)
+      scene.input_files.push_back(scene.pressure->file);
+    if (scene.contact && !scene.contact->height_file.empty())
+      scene.input_files.push_back(scene.contact->height_file);
     return scene;
   });
 }
 
 LayerStack read_scene_body(const std::filesystem::path& path) {
-  return with_file_name(path, [&] { return read_body(parse_scene_file(path)); });
+  const std::string text = read_input_file(path, "a scene file", max_scene_bytes);
+  return with_file_name(path, [&] { return read_body(parse_scene_text(text, path)); });
 }
 
 }  // namespace coatfft::cli

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "contact/indenter.hpp"
 #include "convolution/make_operator.hpp"
@@ -38,6 +39,7 @@ struct MethodSpec {
 struct ContactSpec {
   std::string indenter_name;  ///< "sphere", "paraboloid", "cylinder", "flat_punch", "height_map"
   Indenter indenter;
+  std::filesystem::path height_file;  ///< the file of a height_map indenter
   std::optional<double> load;      ///< total normal load [N] (load control), or
   std::optional<double> approach;  ///< rigid-body approach [m] (approach control)
   double tolerance = 1e-10;
@@ -58,6 +60,9 @@ struct Scene {
   std::optional<PressureSpec> pressure;
   MethodSpec method;
   std::optional<ContactSpec> contact;
+  /// The scene file and the files it names (pressure, height map): the run's inputs, which no
+  /// output may replace. The wisdom file is method.wisdom.
+  std::vector<std::filesystem::path> input_files;
 };
 
 /// Parses and validates a scene file. Throws InvalidArgument with a one-line message

@@ -2,43 +2,234 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <fstream>
+
+#include "core/detail/shorten.hpp"
 #include "core/error.hpp"
 
 namespace coatfft::cli {
 
 namespace fs = std::filesystem;
 
-StagedOutput::StagedOutput(fs::path outdir) : outdir_(std::move(outdir)) {
-  COATFFT_REQUIRE(!outdir_.empty(), "output folder: empty path");
-  COATFFT_REQUIRE(!fs::exists(outdir_) || fs::is_directory(outdir_), "output folder ",
-                  outdir_.string(), " exists and is not a folder");
-  // Staging beside OUTDIR keeps the final renames on one file system.
-  const fs::path parent = fs::absolute(outdir_).parent_path();
-  staging_ = parent / detail::concat(".", fs::absolute(outdir_).filename().string(), ".partial-",
-                                     ::getpid());
+namespace {
+
+std::string quoted(const fs::path& path) {
+  return detail::concat('"', detail::shorten(path.string()), '"');
+}
+
+std::string kind_of(fs::file_type type) {
+  switch (type) {
+    case fs::file_type::directory:
+      return "a folder";
+    case fs::file_type::symlink:
+      return "a symbolic link";
+    case fs::file_type::block:
+    case fs::file_type::character:
+      return "a device";
+    case fs::file_type::fifo:
+      return "a FIFO";
+    case fs::file_type::socket:
+      return "a socket";
+    default:
+      return "not a regular file";
+  }
+}
+
+// A hidden name beside `path`, unique to this process: ".NAME.partial-PID".
+fs::path hidden_beside(const fs::path& path) {
+  return path.parent_path() / detail::concat(".", path.filename().string(), ".partial-", ::getpid());
+}
+
+// `path` made absolute with "." and ".." resolved and no trailing separator, so that its parent
+// and file name are the folder it lives in and its own name.
+fs::path normalised(const fs::path& path) {
+  fs::path p = fs::absolute(path).lexically_normal();
+  if (p.has_parent_path() && p.filename().empty()) p = p.parent_path();
+  return p;
+}
+
+void rename_or_throw(const fs::path& from, const fs::path& to, std::string_view what) {
   std::error_code ec;
-  fs::create_directories(staging_, ec);
-  COATFFT_REQUIRE(!ec, "cannot create ", staging_.string(), ": ", ec.message());
+  fs::rename(from, to, ec);
+  COATFFT_REQUIRE(!ec, "cannot move ", what, " to ", quoted(to), ": ", ec.message());
+}
+
+// Where an existing output waits in the staging folder until the new set is in place.
+std::string backup_name(const std::string& name) {
+  std::string backup = ".old.";  // appended, not operator+: GCC 12 warns falsely on the latter
+  backup += name;
+  return backup;
+}
+
+std::vector<std::string> read_manifest(const fs::path& file) {
+  std::vector<std::string> names;
+  std::error_code ec;
+  if (!fs::is_regular_file(fs::symlink_status(file, ec))) return names;
+  std::ifstream in(file);
+  for (std::string line; std::getline(in, line) && names.size() < 64;) {
+    // Only plain names of this folder: a list edited by hand cannot point elsewhere.
+    if (!line.empty() && line.find('/') == std::string::npos && line[0] != '.')
+      names.push_back(line);
+  }
+  return names;
+}
+
+}  // namespace
+
+void check_output_target(const fs::path& target, std::string_view what,
+                         const std::vector<fs::path>& inputs) {
+  std::error_code ec;
+  const fs::file_status status = fs::symlink_status(target, ec);
+  if (!fs::exists(status)) return;
+  COATFFT_REQUIRE(fs::is_regular_file(status), what, " ", quoted(target), " exists and is ",
+                  kind_of(status.type()), ": coatfft replaces only regular files");
+  for (const fs::path& input : inputs) {
+    COATFFT_REQUIRE(!fs::equivalent(target, input, ec), what, " ", quoted(target),
+                    " is an input of this run (", quoted(input), "): choose another output");
+  }
+}
+
+StagedOutput::StagedOutput(fs::path outdir, std::vector<std::string> names,
+                           std::vector<fs::path> inputs)
+    : names_(std::move(names)), inputs_(std::move(inputs)) {
+  COATFFT_REQUIRE(!outdir.empty(), "output folder: empty path");
+  outdir_ = normalised(outdir);
+  names_.push_back(manifest_name);
+  std::error_code ec;
+  const fs::file_status status = fs::status(outdir_, ec);
+  if (!fs::exists(status)) return;
+  COATFFT_REQUIRE(fs::is_directory(status), "output folder ", quoted(outdir), " exists and is ",
+                  kind_of(status.type()));
+  for (const std::string& name : names_) check_output_target(outdir_ / name, "output", inputs_);
 }
 
 StagedOutput::~StagedOutput() {
+  if (staging_.empty()) return;
   std::error_code ec;
-  fs::remove_all(staging_, ec);
+  if (!committed_) fs::remove_all(staging_, ec);
+  on_signal_.reset();
+  if (committed_) return;
+  for (const fs::path& parent : created_parents_) fs::remove(parent, ec);  // only if empty
+}
+
+void StagedOutput::stage() {
+  // Missing parents of OUTDIR are created now (and removed again if the run fails), so that the
+  // staging folder sits beside OUTDIR, on its file system: every final move is a rename.
+  for (fs::path p = outdir_.parent_path(); !fs::exists(p) && p.has_relative_path();
+       p = p.parent_path())
+    created_parents_.push_back(p);
+  staging_ = hidden_beside(outdir_);
+  std::vector<fs::path> files;
+  for (const std::string& name : names_) {
+    files.push_back(staging_ / name);
+    files.push_back(staging_ / backup_name(name));
+  }
+  std::vector<fs::path> folders{staging_};
+  folders.insert(folders.end(), created_parents_.begin(), created_parents_.end());
+  on_signal_ = std::make_unique<RemoveOnSignal>(files, folders);
+  std::error_code ec;
+  fs::create_directories(staging_, ec);
+  COATFFT_REQUIRE(!ec, "cannot create ", quoted(staging_), ": ", ec.message());
+}
+
+std::vector<fs::path> StagedOutput::targets() const {
+  std::vector<fs::path> paths{outdir_};
+  for (const std::string& name : names_) paths.push_back(outdir_ / name);
+  return paths;
 }
 
 fs::path StagedOutput::path(const std::string& name) {
-  names_.push_back(name);
+  COATFFT_REQUIRE(std::find(names_.begin(), names_.end(), name) != names_.end(),
+                  "StagedOutput: ", name, " is not one of the announced outputs");
+  if (staging_.empty()) stage();
   return staging_ / name;
 }
 
 void StagedOutput::commit() {
-  std::error_code ec;
-  fs::create_directories(outdir_, ec);
-  COATFFT_REQUIRE(!ec, "cannot create output folder ", outdir_.string(), ": ", ec.message());
-  for (const auto& name : names_) {
-    fs::rename(staging_ / name, outdir_ / name, ec);
-    COATFFT_REQUIRE(!ec, "cannot move ", name, " into ", outdir_.string(), ": ", ec.message());
+  HoldSignals hold;  // a signal now would stop between two renames
+  {
+    std::ofstream manifest(path(manifest_name));
+    for (const std::string& name : names_)
+      if (name != manifest_name && fs::exists(staging_ / name)) manifest << name << '\n';
+    COATFFT_REQUIRE(manifest.good(), "cannot write ", quoted(staging_ / manifest_name));
   }
+  std::error_code ec;
+  if (!fs::exists(fs::status(outdir_, ec))) {
+    rename_or_throw(staging_, outdir_, "the outputs");
+  } else {
+    commit_into_existing();
+    fs::remove_all(staging_, ec);
+  }
+  committed_ = true;
+}
+
+void StagedOutput::commit_into_existing() {
+  for (const std::string& name : names_) check_output_target(outdir_ / name, "output", inputs_);
+  const std::vector<std::string> previous = read_manifest(outdir_ / manifest_name);
+  std::vector<std::pair<std::string, bool>> done;  // name, whether an old file was set aside
+  try {
+    for (const std::string& name : names_) {
+      if (!fs::exists(staging_ / name)) continue;
+      const bool had_old = fs::exists(fs::symlink_status(outdir_ / name));
+      if (had_old) rename_or_throw(outdir_ / name, staging_ / backup_name(name), name);
+      done.emplace_back(name, had_old);
+      rename_or_throw(staging_ / name, outdir_ / name, name);
+    }
+  } catch (const Error&) {
+    // Undo in reverse order: the new file back to staging, the old one back in place.
+    std::error_code ec;
+    for (auto it = done.rbegin(); it != done.rend(); ++it) {
+      if (!fs::exists(staging_ / it->first)) fs::rename(outdir_ / it->first, staging_ / it->first, ec);
+      if (it->second) fs::rename(staging_ / backup_name(it->first), outdir_ / it->first, ec);
+    }
+    throw;
+  }
+  std::vector<std::string> produced;
+  for (const auto& entry : done) produced.push_back(entry.first);
+  remove_stale(previous, produced);
+}
+
+void StagedOutput::remove_stale(const std::vector<std::string>& previous,
+                                const std::vector<std::string>& produced) {
+  for (const std::string& name : previous) {
+    if (std::find(produced.begin(), produced.end(), name) != produced.end()) continue;
+    std::error_code ec;
+    if (fs::is_regular_file(fs::symlink_status(outdir_ / name, ec))) fs::remove(outdir_ / name, ec);
+  }
+}
+
+StagedFile::StagedFile(fs::path target, std::string_view what, std::vector<fs::path> inputs)
+    : target_(normalised(target)),
+      what_(what),
+      inputs_(std::move(inputs)),
+      temporary_(hidden_beside(target_)),
+      on_signal_({temporary_}, {}) {
+  check_output_target(target_, what_, inputs_);
+}
+
+StagedFile::~StagedFile() {
+  std::error_code ec;
+  if (!committed_) fs::remove(temporary_, ec);
+}
+
+void StagedFile::commit() {
+  HoldSignals hold;
+  check_output_target(target_, what_, inputs_);
+  rename_or_throw(temporary_, target_, what_);
+  committed_ = true;
+}
+
+void write_file_atomically(const fs::path& target, std::string_view what, const std::string& text,
+                           const std::vector<fs::path>& inputs) {
+  StagedFile file(target, what, inputs);
+  {
+    std::ofstream out(file.path(), std::ios::binary);
+    COATFFT_REQUIRE(out.good(), "cannot write ", what, " ", quoted(file.path()));
+    out << text;
+    COATFFT_REQUIRE(out.good(), "failed writing ", what, " ", quoted(file.path()));
+  }
+  file.commit();
 }
 
 }  // namespace coatfft::cli

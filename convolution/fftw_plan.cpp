@@ -1,11 +1,15 @@
 #include "convolution/fftw_plan.hpp"
 
 #include <sys/mman.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <filesystem>
+#include <fstream>
 #include <new>
+#include <sstream>
 #include <type_traits>
 
 #include "core/detail/parse_name.hpp"
@@ -30,15 +34,48 @@ std::mutex& fftw_planner_mutex() {
   return mutex;
 }
 
-bool load_fftw_wisdom(const std::string& path) {
+bool import_fftw_wisdom(const std::string& text) {
   std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-  return fftw_import_wisdom_from_filename(path.c_str()) != 0;
+  // Wisdom of threaded plans names the threads planner, which exists only after
+  // fftw_init_threads: without it FFTW refuses the whole file.
+  detail::set_planner_threads_locked(1);
+  return fftw_import_wisdom_from_string(text.c_str()) != 0;
+}
+
+std::string export_fftw_wisdom() {
+  std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+  char* text = fftw_export_wisdom_to_string();
+  if (text == nullptr) throw Error("FFTW: fftw_export_wisdom_to_string failed");
+  std::string result(text);
+  fftw_free(text);
+  return result;
+}
+
+bool load_fftw_wisdom(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return false;
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return in.good() && import_fftw_wisdom(text.str());
 }
 
 void save_fftw_wisdom(const std::string& path) {
-  std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-  COATFFT_REQUIRE(fftw_export_wisdom_to_filename(path.c_str()) != 0,
-                  "save_fftw_wisdom: cannot write the wisdom file '", path, "'");
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status status = fs::symlink_status(path, ec);
+  COATFFT_REQUIRE(!fs::exists(status) || fs::is_regular_file(status), "save_fftw_wisdom: '", path,
+                  "' exists and is not a regular file");
+  const std::string temporary = detail::concat(path, ".partial-", ::getpid());
+  {
+    std::ofstream out(temporary, std::ios::binary);
+    out << export_fftw_wisdom();
+    COATFFT_REQUIRE(out.good(), "save_fftw_wisdom: cannot write '", temporary, "'");
+  }
+  fs::rename(temporary, path, ec);
+  if (ec) fs::remove(temporary);
+  COATFFT_REQUIRE(!ec, "save_fftw_wisdom: cannot write the wisdom file '", path, "': ",
+                  ec.message());
 }
 
 namespace detail {

@@ -4,11 +4,20 @@
 
 namespace coatfft {
 
-/// Imports FFTW wisdom from the file at `path`; returns false when the file is missing or
-/// unreadable (wisdom is an optimisation, so its absence is not an error).
+/// Imports FFTW wisdom from the file at `path`; returns false when the file is missing, is not a
+/// regular file (a FIFO or a device is never opened) or does not hold wisdom (wisdom is an
+/// optimisation, so its absence is not an error).
 bool load_fftw_wisdom(const std::string& path);
 
-/// Exports the accumulated FFTW wisdom to the file at `path`; throws Error if it cannot be written.
+/// Exports the accumulated FFTW wisdom to the file at `path`, atomically (a temporary file beside
+/// it, then a rename); throws Error if it cannot be written, and refuses to replace anything but
+/// a regular file.
 void save_fftw_wisdom(const std::string& path);
+
+/// Imports FFTW wisdom from its text; returns false when the text is not FFTW wisdom.
+bool import_fftw_wisdom(const std::string& text);
+
+/// The accumulated FFTW wisdom as text.
+std::string export_fftw_wisdom();
 
 }  // namespace coatfft

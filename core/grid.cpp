@@ -14,6 +14,11 @@ Grid::Grid(std::ptrdiff_t nx, std::ptrdiff_t ny, double lx, double ly)
                   " m, but lx must be finite and > 0");
   COATFFT_REQUIRE(std::isfinite(ly) && ly > 0, "Grid: ly = ", ly,
                   " m, but ly must be finite and > 0");
+  // The kernels form products and squares of lengths (r^2 = x^2 + y^2, cell areas dx dy): within
+  // these bounds every such product of a domain and a cell length stays inside double precision.
+  COATFFT_REQUIRE(lx >= min_length && lx <= max_length && ly >= min_length && ly <= max_length,
+                  "Grid: lx = ", lx, " m, ly = ", ly, " m, but the domain lengths must lie in [",
+                  min_length, ", ", max_length, "] m (rescale the units)");
 }
 
 }  // namespace coatfft

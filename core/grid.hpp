@@ -6,8 +6,14 @@ namespace coatfft {
 
 class Grid {
  public:
-  /// Validates on construction: nx, ny >= 1 and lx, ly finite and > 0 (throws InvalidArgument).
+  /// Validates on construction: nx, ny >= 1 and lx, ly in [min_length, max_length] (throws
+  /// InvalidArgument).
   Grid(std::ptrdiff_t nx, std::ptrdiff_t ny, double lx, double ly);
+
+  /// Bounds of lx and ly [m]: any unit system from femtometres to light years fits, and the
+  /// kernels' products of lengths cannot overflow or underflow double precision.
+  static constexpr double min_length = 1e-100;
+  static constexpr double max_length = 1e100;
 
   std::ptrdiff_t nx() const { return nx_; }
   std::ptrdiff_t ny() const { return ny_; }

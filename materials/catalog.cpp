@@ -2,6 +2,7 @@
 
 #include <array>
 
+#include "core/detail/shorten.hpp"
 #include "core/error.hpp"
 
 namespace coatfft {
@@ -46,7 +47,8 @@ Material material_by_name(std::string_view name) {
   }
   std::string known;
   for (const auto& entry : kCatalog) known += (known.empty() ? "" : ", ") + std::string(entry.name);
-  throw InvalidArgument(detail::concat("unknown material \"", name, "\" (known: ", known, ")"));
+  throw InvalidArgument(
+      detail::concat("unknown material \"", detail::shorten(name), "\" (known: ", known, ")"));
 }
 
 std::vector<std::string> material_names() {

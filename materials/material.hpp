@@ -5,10 +5,14 @@ namespace coatfft {
 
 class Material {
  public:
-  /// E: Young's modulus [Pa], finite and > 0. nu: Poisson's ratio, finite, -1 < nu < 0.5.
+  /// E: Young's modulus [Pa], finite and > 0. nu: Poisson's ratio, finite,
+  /// -1 < nu <= max_poisson_ratio.
   /// nu = 0.5 (incompressible) is refused: the coated FRFs divide by (1 - 2 nu) terms through the
   /// Kolosov constant and the project documents nu <= 0.4999 as the supported range.
   Material(double E, double nu);
+
+  /// The largest Poisson's ratio accepted.
+  static constexpr double max_poisson_ratio = 0.4999;
 
   double youngs_modulus() const { return E_; }  ///< E [Pa]
   double poisson_ratio() const { return nu_; }  ///< nu [-]

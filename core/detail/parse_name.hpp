@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 
+#include "core/detail/shorten.hpp"
 #include "core/error.hpp"
 
 namespace coatfft::detail {
@@ -19,7 +20,7 @@ Enum parse_name(std::string_view name, const std::array<Enum, N>& values) {
     if (to_string(value) == name) return value;
     valid += (valid.empty() ? "\"" : ", \"") + std::string(to_string(value)) + "\"";
   }
-  throw InvalidArgument(concat("\"", name, "\" is not one of ", valid));
+  throw InvalidArgument(concat("\"", shorten(name), "\" is not one of ", valid));
 }
 
 }  // namespace coatfft::detail

@@ -1,0 +1,103 @@
+#include "cli/resources.hpp"
+
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <string>
+
+#include "core/detail/shorten.hpp"
+#include "core/error.hpp"
+
+namespace coatfft::cli {
+
+namespace {
+
+std::string gigabytes(double bytes) { return detail::concat(std::round(bytes / 1e7) / 100, " GB"); }
+
+// The transform lattice of the method: its size in cells and a description naming its keys.
+std::pair<double, std::string> transform_lattice(const Scene& scene) {
+  const Grid& grid = scene.grid;
+  const OperatorOptions& o = scene.method.options;
+  const double nx = static_cast<double>(grid.nx());
+  const double ny = static_cast<double>(grid.ny());
+  const std::string sizes = detail::concat("[grid] nx = ", grid.nx(), ", ny = ", grid.ny());
+  switch (o.method) {
+    case Method::direct:
+      return {0.0, sizes};
+    case Method::frf_spectral:
+      return {o.alpha * o.alpha * nx * ny,
+              detail::concat(sizes, ", [method] alpha = ", o.alpha, " (extended ", o.alpha * nx,
+                             " x ", o.alpha * ny, " lattice)")};
+    default:
+      return {4.0 * nx * ny, detail::concat(sizes, " (padded ", 2 * grid.nx(), " x ",
+                                            2 * grid.ny(), " transform)")};
+  }
+}
+
+}  // namespace
+
+MemoryEstimate estimate_memory(const Scene& scene) {
+  const double cells = static_cast<double>(scene.grid.nx()) * static_cast<double>(scene.grid.ny());
+  const double fields = scene.contact ? 12.0 : 4.0;
+  auto [lattice, drivers] = transform_lattice(scene);
+  // A real input array, its complex half spectrum and the kernel's half spectrum: 2.5 doubles per
+  // lattice cell; the kernel construction of frf-split and frf-dcfft holds one more lattice.
+  double per_lattice_cell = 2.5 * 8.0;
+  const Method method = scene.method.options.method;
+  if (method == Method::frf_split || method == Method::frf_dcfft) per_lattice_cell += 8.0;
+  double bytes = 8.0 * fields * cells + per_lattice_cell * lattice;
+  if (method == Method::frf_dcfft) {
+    const double alpha = scene.method.options.alpha;
+    bytes += 16.0 * alpha * alpha * cells;  // the FRF sampled on the alpha-extended lattice
+    drivers += detail::concat(", [method] alpha = ", alpha);
+  }
+  return {bytes, drivers};
+}
+
+std::optional<double> available_memory() {
+  std::optional<double> bytes;
+  std::ifstream meminfo("/proc/meminfo");
+  for (std::string key; meminfo >> key;) {
+    double kib = 0;
+    std::string unit;
+    meminfo >> kib >> unit;
+    if (key == "MemAvailable:") bytes = kib * 1024.0;
+  }
+  std::ifstream cgroup("/sys/fs/cgroup/memory.max");
+  double limit = 0;
+  if (cgroup >> limit && (!bytes || limit < *bytes)) bytes = limit;  // "max" fails to parse
+  return bytes;
+}
+
+double parse_memory_size(std::string_view text, std::string_view option) {
+  double value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  std::string unit(end, text.data() + text.size());
+  for (char& c : unit) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  double scale = 0;
+  const std::string_view units[] = {"", "K", "M", "G", "T"};
+  for (int n = 0; n < 5; ++n) {
+    const std::string u(units[n]);
+    if (unit == u || (!u.empty() && (unit == u + "B" || unit == u + "IB")))
+      scale = std::pow(1024.0, n);
+  }
+  COATFFT_REQUIRE(ec == std::errc() && scale > 0 && std::isfinite(value) && value > 0, option,
+                  " = \"", detail::shorten(text), "\": expected a size such as 512M, 4G or "
+                  "1000000 (bytes)");
+  return value * scale;
+}
+
+void check_memory(const Scene& scene, std::optional<double> limit) {
+  const MemoryEstimate need = estimate_memory(scene);
+  const std::optional<double> have = limit ? limit : available_memory();
+  if (!have) return;
+  COATFFT_REQUIRE(need.bytes <= *have, "the scene needs about ", gigabytes(need.bytes),
+                  " of memory, driven by ", need.drivers, ", but ", gigabytes(*have), " ",
+                  limit ? "is the limit (--max-memory)" : "is available (--max-memory to change)",
+                  ": use fewer cells", scene.method.options.method == Method::frf_spectral
+                                            ? " or a smaller alpha"
+                                            : "");
+}
+
+}  // namespace coatfft::cli

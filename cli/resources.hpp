@@ -1,0 +1,41 @@
+#pragma once
+// Resources bounded before they are spent (docs/scene_format.md, "Limits"): the memory a scene
+// needs is estimated from its sizes and refused, naming the keys that drive it, when it exceeds
+// what the machine has (or --max-memory); counts given on the command line have caps.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "cli/scene.hpp"
+
+namespace coatfft::cli {
+
+/// Caps of the command-line counts.
+inline constexpr int max_repeat = 100000;          ///< coatfft run --repeat
+inline constexpr long max_frf_points = 10000000;  ///< coatfft frf --points
+
+/// The memory a scene's run needs, by its largest parts.
+struct MemoryEstimate {
+  double bytes = 0.0;
+  std::string drivers;  ///< "nx = 65536, ny = 65536 (padded 131072 x 131072 transform)"
+};
+
+/// An upper estimate of the peak memory of `coatfft run` on `scene`: the grid's fields (4 for a
+/// known pressure, 12 for a contact: iterates, directions, gap), the transform buffers and the
+/// kernel spectrum of the method (docs/scene_format.md gives the formula).
+MemoryEstimate estimate_memory(const Scene& scene);
+
+/// The memory this process may use [bytes]: MemAvailable of /proc/meminfo, or the cgroup's
+/// memory.max when smaller; nullopt when neither can be read.
+std::optional<double> available_memory();
+
+/// Parses a size such as "512M", "4G", "1.5GiB" or "1000000" (bytes; K, M, G, T are powers of
+/// 1024). Throws InvalidArgument naming `option`.
+double parse_memory_size(std::string_view text, std::string_view option);
+
+/// Refuses the scene (InvalidArgument naming the keys and both amounts) when its estimate
+/// exceeds `limit`, or the available memory when `limit` is not given.
+void check_memory(const Scene& scene, std::optional<double> limit);
+
+}  // namespace coatfft::cli
