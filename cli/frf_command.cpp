@@ -26,11 +26,12 @@ void frf_command(const FrfOptions& options) {
   COATFFT_REQUIRE(std::isfinite(k_min) && k_min > 0, "--k-min = ", k_min, " must be > 0");
   COATFFT_REQUIRE(std::isfinite(k_max) && k_max > k_min, "--k-max = ", k_max,
                   " must be finite and > --k-min = ", k_min);
-  COATFFT_REQUIRE(options.points >= 2 && options.points <= max_frf_points, "--points = ",
-                  options.points, " must be in 2..", max_frf_points);
+  COATFFT_REQUIRE(options.points >= 2 && options.points <= max_frf_points,
+                  "--points = ", options.points, " must be in 2..", max_frf_points);
   // The output is checked before any work: a table that cannot be written is refused at once.
   std::optional<StagedFile> file;
-  if (!options.output.empty()) file.emplace(options.output, "output file", std::vector{options.scene});
+  if (!options.output.empty())
+    file.emplace(options.output, "output file", std::vector{options.scene});
 
   const auto frf = make_frf(body);
   std::ostringstream table;

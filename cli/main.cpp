@@ -56,8 +56,11 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    // One line, like every other refusal.
+    std::cerr << "coatfft: error: " << coatfft::detail::shorten(e.what(), 200)
+              << " (see coatfft --help)\n";
+    return 2;
   }
 
   try {

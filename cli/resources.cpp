@@ -13,7 +13,9 @@ namespace coatfft::cli {
 
 namespace {
 
-std::string gigabytes(double bytes) { return detail::concat(std::round(bytes / 1e7) / 100, " GB"); }
+std::string gigabytes(double bytes) {
+  return detail::concat(std::round(bytes / 1e7) / 100, " GB");
+}
 
 // The transform lattice of the method: its size in cells and a description naming its keys.
 std::pair<double, std::string> transform_lattice(const Scene& scene) {
@@ -30,8 +32,8 @@ std::pair<double, std::string> transform_lattice(const Scene& scene) {
               detail::concat(sizes, ", [method] alpha = ", o.alpha, " (extended ", o.alpha * nx,
                              " x ", o.alpha * ny, " lattice)")};
     default:
-      return {4.0 * nx * ny, detail::concat(sizes, " (padded ", 2 * grid.nx(), " x ",
-                                            2 * grid.ny(), " transform)")};
+      return {4.0 * nx * ny, detail::concat(sizes, " (padded ", 2 * grid.nx(), " x ", 2 * grid.ny(),
+                                            " transform)")};
   }
 }
 
@@ -83,7 +85,8 @@ double parse_memory_size(std::string_view text, std::string_view option) {
       scale = std::pow(1024.0, n);
   }
   COATFFT_REQUIRE(ec == std::errc() && scale > 0 && std::isfinite(value) && value > 0, option,
-                  " = \"", detail::shorten(text), "\": expected a size such as 512M, 4G or "
+                  " = \"", detail::shorten(text),
+                  "\": expected a size such as 512M, 4G or "
                   "1000000 (bytes)");
   return value * scale;
 }
@@ -95,9 +98,8 @@ void check_memory(const Scene& scene, std::optional<double> limit) {
   COATFFT_REQUIRE(need.bytes <= *have, "the scene needs about ", gigabytes(need.bytes),
                   " of memory, driven by ", need.drivers, ", but ", gigabytes(*have), " ",
                   limit ? "is the limit (--max-memory)" : "is available (--max-memory to change)",
-                  ": use fewer cells", scene.method.options.method == Method::frf_spectral
-                                            ? " or a smaller alpha"
-                                            : "");
+                  ": use fewer cells",
+                  scene.method.options.method == Method::frf_spectral ? " or a smaller alpha" : "");
 }
 
 }  // namespace coatfft::cli

@@ -12,7 +12,7 @@
 namespace coatfft::cli {
 
 /// Caps of the command-line counts.
-inline constexpr int max_repeat = 100000;          ///< coatfft run --repeat
+inline constexpr int max_repeat = 100000;         ///< coatfft run --repeat
 inline constexpr long max_frf_points = 10000000;  ///< coatfft frf --points
 
 /// The memory a scene's run needs, by its largest parts.

@@ -60,31 +60,33 @@ Field pressure_from_scene(const Scene& scene) {
 
 // Median wall time of `repeat` applications of `op` to `pressure`; leaves the result in `uz`,
 // which must come out finite.
-double time_applications(const Scene& scene, SurfaceOperator& op, const Field& pressure,
-                         Field& uz, int repeat) {
+double time_applications(const Scene& scene, SurfaceOperator& op, const Field& pressure, Field& uz,
+                         int repeat) {
   const double seconds = coatfft::detail::time_applications(op, pressure, uz, repeat);
   // Finite inputs can still overflow: |u| ~ p L / E* and the transforms sum p over the grid.
   COATFFT_REQUIRE(uz.allFinite(), "the displacement overflows double precision: max pressure ",
-                  pressure.abs().maxCoeff(), " Pa, [substrate] E* = ",
-                  scene.body.substrate().plane_strain_modulus(), " Pa, [grid] lx = ",
-                  scene.grid.lx(), " m, ly = ", scene.grid.ly(),
+                  pressure.abs().maxCoeff(),
+                  " Pa, [substrate] E* = ", scene.body.substrate().plane_strain_modulus(),
+                  " Pa, [grid] lx = ", scene.grid.lx(), " m, ly = ", scene.grid.ly(),
                   " m; rescale the units of the load and the moduli");
   return seconds;
 }
 
-// A load that falls between the cell centres (a Hertz radius below the cell size, sampled at the
-// centres) would give u = 0 and a plausible-looking output.
+// A load narrower than a cell is not represented by cell-wise constant pressures: sampled at the
+// centres it either misses every cell (u = 0) or fills a whole cell (a load far above the
+// intended one), and either way the output looks plausible.
 void require_load(const Scene& scene, const Field& pressure) {
   const Grid& grid = scene.grid;
   const PressureSpec& load = *scene.pressure;
-  if (load.kind == PressureKind::file) {
-    COATFFT_REQUIRE((pressure != 0.0).any(), load.file.string(),
-                    ": the pressure is zero everywhere: nothing to compute");
-    return;
+  if (load.kind != PressureKind::file) {
+    COATFFT_REQUIRE(2.0 * load.radius >= std::max(grid.dx(), grid.dy()),
+                    "[pressure] a = ", load.radius,
+                    " m: the load is narrower than a cell (dx = ", grid.dx(),
+                    " m, dy = ", grid.dy(), " m from [grid] lx, ly, nx, ny); refine the grid");
   }
-  COATFFT_REQUIRE((pressure != 0.0).any(), "[pressure] a = ", load.radius,
-                  " m: the load misses every cell centre (cells are ", grid.dx(), " x ", grid.dy(),
-                  " m); refine the grid or use sampling = \"cell_average\"");
+  COATFFT_REQUIRE((pressure != 0.0).any(),
+                  load.kind == PressureKind::file ? load.file.string() : std::string("[pressure]"),
+                  ": the pressure is zero on every cell: nothing to compute");
 }
 
 // Index of the cell centre nearest the origin; for an even count the two middle cells tie and
@@ -238,8 +240,8 @@ RunStatus run_contact(Scene scene, const RunOptions& options, StagedOutput& out)
 }  // namespace
 
 RunStatus run_command(const RunOptions& options) {
-  COATFFT_REQUIRE(options.repeat >= 1 && options.repeat <= max_repeat, "--repeat = ",
-                  options.repeat, " must be in 1..", max_repeat);
+  COATFFT_REQUIRE(options.repeat >= 1 && options.repeat <= max_repeat,
+                  "--repeat = ", options.repeat, " must be in 1..", max_repeat);
   Scene scene = read_scene(options.scene);
   check_memory(scene, options.max_memory);
   // Every output target is checked now, before any work: a run that cannot write is refused at

@@ -7,8 +7,8 @@
 #include <set>
 #include <vector>
 
-#include "cli/npy.hpp"
 #include "cli/input_file.hpp"
+#include "cli/npy.hpp"
 #include "core/detail/parse_name.hpp"
 #include "core/detail/shorten.hpp"
 #include "core/error.hpp"
@@ -299,7 +299,14 @@ ContactSpec read_contact(const toml::table& table, const Grid& grid, const Layer
     if (reader.has("indenter_material")) {
       spec.indenter_material = material_by_name(reader.string("indenter_material"));
     } else {
-      spec.indenter_material = Material(reader.number("indenter_E"), reader.number("indenter_nu"));
+      const double E = reader.number("indenter_E");
+      const double nu = reader.number("indenter_nu");
+      try {
+        spec.indenter_material = Material(E, nu);
+      } catch (const InvalidArgument& e) {
+        throw InvalidArgument(
+            detail::concat(reader.where("indenter_E"), ", indenter_nu: ", e.what()));
+      }
     }
   }
   // Catch geometry errors (a sphere smaller than the domain) before any work is done.
@@ -313,7 +320,8 @@ ContactSpec read_contact(const toml::table& table, const Grid& grid, const Layer
 void refuse_keys_not_applying(const SectionReader& reader, Method method) {
   const bool pipeline = method == Method::frf_spectral || method == Method::frf_dcfft;
   for (const char* key : {"alpha", "g0", "g0_tol"})
-    COATFFT_REQUIRE(pipeline || !reader.has(key), reader.where(key), ": applies only to the FRF "
+    COATFFT_REQUIRE(pipeline || !reader.has(key), reader.where(key),
+                    ": applies only to the FRF "
                     "pipelines \"frf-spectral\" and \"frf-dcfft\", not to name = \"",
                     to_string(method), "\"");
   for (const char* key : {"planning", "wisdom"})
@@ -362,8 +370,8 @@ toml::table parse_scene_text(const std::string& text, const std::filesystem::pat
     }
     return root;
   } catch (const toml::parse_error& e) {
-    throw InvalidArgument(detail::concat("line ", e.source().begin.line,
-                                         ": TOML syntax error: ", detail::shorten(e.description())));
+    throw InvalidArgument(detail::concat(
+        "line ", e.source().begin.line, ": TOML syntax error: ", detail::shorten(e.description())));
   }
 }
 
@@ -385,16 +393,17 @@ Scene read_scene(const std::filesystem::path& path) {
   return with_file_name(path, [&] {
     const toml::table root = parse_scene_text(text, path);
     const std::filesystem::path scene_dir = path.parent_path();
-    Scene scene{read_grid(root), read_body(root), std::nullopt, read_method(root, scene_dir),
-                std::nullopt, {}};
+    Scene scene{read_grid(root), read_body(root),
+                std::nullopt,    read_method(root, scene_dir),
+                std::nullopt,    {}};
     in_section("method", [&] { check_operator_options(scene.grid, scene.method.options); });
     // Direct summation costs (nx ny)^2 operations per application: hours beyond this size.
-    COATFFT_REQUIRE(scene.method.options.method != Method::direct ||
-                        scene.grid.nb_cells() <= max_direct_cells,
-                    "[method] name = \"direct\" on ", scene.grid.nx(), " x ", scene.grid.ny(),
-                    " cells: direct summation is limited to ", max_direct_cells,
-                    " cells (its cost grows as (nx ny)^2); use \"dcfft\", which gives the same "
-                    "result");
+    COATFFT_REQUIRE(
+        scene.method.options.method != Method::direct || scene.grid.nb_cells() <= max_direct_cells,
+        "[method] name = \"direct\" on ", scene.grid.nx(), " x ", scene.grid.ny(),
+        " cells: direct summation is limited to ", max_direct_cells,
+        " cells (its cost grows as (nx ny)^2); use \"dcfft\", which gives the same "
+        "result");
     COATFFT_REQUIRE(root.contains("pressure") != root.contains("contact"),
                     "a scene needs exactly one of [pressure] (known load) and [contact]");
     if (root.contains("pressure"))

@@ -67,8 +67,7 @@ RemoveOnSignal::RemoveOnSignal(const std::vector<std::filesystem::path>& files,
                                const std::vector<std::filesystem::path>& folders)
     : slot_(-1) {
   install_handler_once();
-  COATFFT_REQUIRE(files.size() + folders.size() <= kPathsPerSlot,
-                  "RemoveOnSignal: too many paths");
+  COATFFT_REQUIRE(files.size() + folders.size() <= kPathsPerSlot, "RemoveOnSignal: too many paths");
   for (int s = 0; s < kSlots && slot_ < 0; ++s)
     if (!slots[s].in_use.load()) slot_ = s;
   if (slot_ < 0) throw Error("RemoveOnSignal: no free slot");
@@ -86,13 +85,17 @@ RemoveOnSignal::RemoveOnSignal(const std::vector<std::filesystem::path>& files,
   slot.in_use.store(true);
 }
 
-RemoveOnSignal::~RemoveOnSignal() { slots[slot_].in_use.store(false); }
+RemoveOnSignal::~RemoveOnSignal() {
+  slots[slot_].in_use.store(false);
+}
 
 HoldSignals::HoldSignals() {
   const sigset_t set = held_signals();
   sigprocmask(SIG_BLOCK, &set, &saved_);
 }
 
-HoldSignals::~HoldSignals() { sigprocmask(SIG_SETMASK, &saved_, nullptr); }
+HoldSignals::~HoldSignals() {
+  sigprocmask(SIG_SETMASK, &saved_, nullptr);
+}
 
 }  // namespace coatfft::cli

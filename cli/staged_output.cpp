@@ -38,7 +38,8 @@ std::string kind_of(fs::file_type type) {
 
 // A hidden name beside `path`, unique to this process: ".NAME.partial-PID".
 fs::path hidden_beside(const fs::path& path) {
-  return path.parent_path() / detail::concat(".", path.filename().string(), ".partial-", ::getpid());
+  return path.parent_path() /
+         detail::concat(".", path.filename().string(), ".partial-", ::getpid());
 }
 
 // `path` made absolute with "." and ".." resolved and no trailing separator, so that its parent
@@ -180,7 +181,8 @@ void StagedOutput::commit_into_existing() {
     // Undo in reverse order: the new file back to staging, the old one back in place.
     std::error_code ec;
     for (auto it = done.rbegin(); it != done.rend(); ++it) {
-      if (!fs::exists(staging_ / it->first)) fs::rename(outdir_ / it->first, staging_ / it->first, ec);
+      if (!fs::exists(staging_ / it->first))
+        fs::rename(outdir_ / it->first, staging_ / it->first, ec);
       if (it->second) fs::rename(staging_ / backup_name(it->first), outdir_ / it->first, ec);
     }
     throw;

@@ -18,92 +18,14 @@
 #include "frf/frf.hpp"
 #include "layers/layer_stack.hpp"
 #include "materials/catalog.hpp"
+#include "tests/cli_process.hpp"
 #include "validation/hankel_displacement.hpp"
 #include "validation/hertz.hpp"
 #include "validation/hertz_contact.hpp"
 
 namespace fs = std::filesystem;
 
-namespace {
-
-struct ProcessResult {
-  int status;
-  std::string stderr_text;
-};
-
-ProcessResult run_coatfft(const std::string& args) {
-  // ctest runs test cases in parallel: one stderr file per command line.
-  const fs::path err = fs::temp_directory_path() /
-                       ("coatfft_test_stderr_" + std::to_string(std::hash<std::string>{}(args)));
-  const std::string command =
-      std::string(COATFFT_EXE) + " " + args + " 2>" + err.string() + " >/dev/null";
-  const int raw = std::system(command.c_str());
-  std::ifstream in(err);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, text};
-}
-
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "coatfft_cli_tests";
-  fs::create_directories(dir);
-  return dir / name;
-}
-
-const char* kGoodScene = R"([grid]
-nx = 33
-ny = 33
-lx = 3.0e-3
-ly = 3.0e-3
-[substrate]
-material = "steel"
-[pressure]
-kind = "hertz"
-p0 = 1.0e9
-a = 1.0e-3
-[method]
-name = "dcfft"
-)";
-
-// Writes `base` with `from` replaced by `to` (the one change under test) to NAME.toml.
-fs::path write_scene(const std::string& base, const std::string& name, const std::string& from,
-                     const std::string& to) {
-  std::string text = base;
-  if (!from.empty()) {
-    const auto pos = text.find(from);
-    REQUIRE(pos != std::string::npos);
-    text.replace(pos, from.size(), to);
-  }
-  const fs::path path = scratch(name + ".toml");
-  std::ofstream(path) << text;
-  return path;
-}
-
-fs::path scene_with(const std::string& name, const std::string& from, const std::string& to) {
-  return write_scene(kGoodScene, name, from, to);
-}
-
-// A scene edit that must be refused: exit 2, one line on stderr mentioning `must_mention`, and
-// no output folder.
-struct BadCase {
-  const char* name;
-  std::string from, to;
-  const char* must_mention;
-};
-
-void check_refused(const std::string& base, const BadCase& c) {
-  INFO(c.name);
-  const fs::path scene = write_scene(base, c.name, c.from, c.to);
-  const fs::path out = scratch(std::string(c.name) + "_out");
-  fs::remove_all(out);
-  const auto result = run_coatfft("run " + scene.string() + " -o " + out.string());
-  INFO(result.stderr_text);
-  CHECK(result.status == 2);
-  CHECK(std::count(result.stderr_text.begin(), result.stderr_text.end(), '\n') == 1);
-  CHECK(result.stderr_text.find(c.must_mention) != std::string::npos);
-  CHECK_FALSE(fs::exists(out));
-}
-
-}  // namespace
+using namespace coatfft_test;
 
 TEST_CASE("coatfft run on the bundled example matches Hertz", "[cli]") {
   const fs::path out = scratch("example_out");

@@ -1,0 +1,136 @@
+#pragma once
+// Running the `coatfft` program from the CLI tests: its exit status and stderr, scratch files,
+// scenes made from one edit of a good scene, and the check of a refusal (exit 2, one line, no
+// output).
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iterator>
+#include <map>
+#include <string>
+
+namespace coatfft_test {
+
+namespace fs = std::filesystem;
+
+struct ProcessResult {
+  int status;
+  std::string stderr_text;
+};
+
+inline ProcessResult run_coatfft(const std::string& args) {
+  // ctest runs test cases in parallel: one stderr file per command line.
+  const fs::path err = fs::temp_directory_path() /
+                       ("coatfft_test_stderr_" + std::to_string(std::hash<std::string>{}(args)));
+  const std::string command =
+      std::string(COATFFT_EXE) + " " + args + " 2>" + err.string() + " >/dev/null";
+  const int raw = std::system(command.c_str());
+  std::ifstream in(err);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, text};
+}
+
+inline fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / "coatfft_cli_tests";
+  fs::create_directories(dir);
+  return dir / name;
+}
+
+inline const char* kGoodScene = R"([grid]
+nx = 33
+ny = 33
+lx = 3.0e-3
+ly = 3.0e-3
+[substrate]
+material = "steel"
+[pressure]
+kind = "hertz"
+p0 = 1.0e9
+a = 1.0e-3
+[method]
+name = "dcfft"
+)";
+
+// Writes `base` with `from` replaced by `to` (the one change under test) to NAME.toml.
+inline fs::path write_scene(const std::string& base, const std::string& name,
+                            const std::string& from, const std::string& to) {
+  std::string text = base;
+  if (!from.empty()) {
+    const auto pos = text.find(from);
+    REQUIRE(pos != std::string::npos);
+    text.replace(pos, from.size(), to);
+  }
+  const fs::path path = scratch(name + ".toml");
+  std::ofstream(path) << text;
+  return path;
+}
+
+inline fs::path scene_with(const std::string& name, const std::string& from,
+                           const std::string& to) {
+  return write_scene(kGoodScene, name, from, to);
+}
+
+// A scene edit that must be refused: exit 2, one line on stderr mentioning `must_mention`, and
+// no output folder.
+struct BadCase {
+  const char* name;
+  std::string from, to;
+  const char* must_mention;
+};
+
+inline void check_refused(const std::string& base, const BadCase& c) {
+  INFO(c.name);
+  const fs::path scene = write_scene(base, c.name, c.from, c.to);
+  const fs::path out = scratch(std::string(c.name) + "_out");
+  fs::remove_all(out);
+  const auto result = run_coatfft("run " + scene.string() + " -o " + out.string());
+  INFO(result.stderr_text);
+  CHECK(result.status == 2);
+  CHECK(std::count(result.stderr_text.begin(), result.stderr_text.end(), '\n') == 1);
+  CHECK(result.stderr_text.find(c.must_mention) != std::string::npos);
+  CHECK_FALSE(fs::exists(out));
+}
+
+// The peak resident set of one `coatfft ARGS` run [MiB], from wait4 on the process itself (the
+// shell execs it, so the child is coatfft), and its exit status.
+struct MeasuredRun {
+  int status = -1;
+  double peak_rss_mib = 0.0;
+};
+
+inline MeasuredRun run_coatfft_measured(const std::string& args) {
+  const std::string command =
+      "exec " + std::string(COATFFT_EXE) + " " + args + " 2>/dev/null >/dev/null";
+  const pid_t pid = fork();
+  if (pid == 0) {
+    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  int raw = 0;
+  struct rusage usage {};
+  wait4(pid, &raw, 0, &usage);
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, static_cast<double>(usage.ru_maxrss) / 1024.0};
+}
+
+// Every file under `dir` (names and contents, hidden ones included), for "byte-identical" checks.
+inline std::map<std::string, std::string> snapshot(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& entry : fs::recursive_directory_iterator(dir)) {
+    std::string content = entry.is_directory() ? "<folder>" : "";
+    if (entry.is_regular_file()) {
+      std::ifstream in(entry.path(), std::ios::binary);
+      content.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    files[fs::relative(entry.path(), dir).string()] = content;
+  }
+  return files;
+}
+
+}  // namespace coatfft_test

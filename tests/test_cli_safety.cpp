@@ -1,0 +1,253 @@
+// Nothing lost, nothing hung: the `coatfft` program never destroys a file that is not its own
+// output, leaves OUTDIR byte-identical when it fails or is interrupted, refuses inputs that are
+// not regular files and scenes that would exhaust memory, and names the key of every refusal.
+// Each case reproduces a way the program once lost data, hung or said too little.
+#include <sys/stat.h>
+
+#include <catch2/catch.hpp>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "tests/cli_process.hpp"
+
+using namespace coatfft_test;
+
+namespace {
+
+const char* kContactScene = R"([grid]
+nx = 32
+ny = 32
+lx = 3.0e-3
+ly = 3.0e-3
+[substrate]
+material = "steel"
+[contact]
+indenter = "sphere"
+radius = 0.01
+load = 10.0
+)";
+
+// A fresh, empty scratch folder.
+fs::path fresh(const std::string& name) {
+  const fs::path dir = scratch(name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string text_of(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+bool has_partial(const fs::path& dir) {
+  for (const auto& entry : fs::directory_iterator(dir))
+    if (entry.path().filename().string().find(".partial") != std::string::npos) return true;
+  return false;
+}
+
+// A refused command: exit 2, one line on stderr naming `must_mention`.
+void check_refusal(const ProcessResult& result, const std::string& must_mention) {
+  INFO(result.stderr_text);
+  CHECK(result.status == 2);
+  CHECK(std::count(result.stderr_text.begin(), result.stderr_text.end(), '\n') == 1);
+  CHECK(result.stderr_text.find(must_mention) != std::string::npos);
+  CHECK(result.stderr_text.find("internal error") == std::string::npos);
+}
+
+}  // namespace
+
+TEST_CASE("frf -o refuses folders, FIFOs, links and the scene, and leaves nothing beside them",
+          "[cli][safety]") {
+  const fs::path dir = fresh("safety_frf");
+  const fs::path scene = write_scene(kGoodScene, "safety_frf/scene", "", "");
+  fs::create_directory(dir / "folder");
+  REQUIRE(mkfifo((dir / "fifo").c_str(), 0600) == 0);
+  fs::create_symlink("/dev/null", dir / "link");
+  const auto before = snapshot(dir);
+  for (const char* target : {"folder", "fifo", "link", "scene.toml"}) {
+    INFO(target);
+    check_refusal(run_coatfft("frf " + scene.string() + " -o " + (dir / target).string()), target);
+  }
+  CHECK(snapshot(dir) == before);
+  CHECK(fs::is_fifo(dir / "fifo"));
+  CHECK(fs::is_symlink(dir / "link"));
+  // A new name or a regular file is written.
+  CHECK(run_coatfft("frf " + scene.string() + " -o " + (dir / "table.csv").string()).status == 0);
+  CHECK(text_of(dir / "table.csv").rfind("k,kh_total,frf,frf_over_substrate\n", 0) == 0);
+  CHECK_FALSE(has_partial(dir));
+}
+
+TEST_CASE("the wisdom file is never the scene, an output or a file of another kind",
+          "[cli][safety]") {
+  const fs::path dir = fresh("safety_wisdom");
+  std::ofstream(dir / "notes.txt") << "my notes\n";
+  const std::string method = "[method]\nname = \"dcfft\"\nplanning = \"measure\"\nwisdom = ";
+  const struct {
+    const char* name;
+    std::string wisdom;
+    const char* must_mention;
+  } cases[] = {{"self", "\"self.toml\"", "is an input"},
+               {"notes", "\"notes.txt\"", "does not hold FFTW wisdom"},
+               {"zero", "\"/dev/zero\"", "device"},
+               {"output", "\"out/uz.npy\"", "is an output"}};
+  for (const auto& c : cases) {
+    INFO(c.name);
+    const fs::path scene = write_scene(kGoodScene, std::string("safety_wisdom/") + c.name,
+                                       "[method]\nname = \"dcfft\"", method + c.wisdom);
+    const auto before = snapshot(dir);
+    check_refusal(run_coatfft("run " + scene.string() + " -o " + (dir / "out").string()), "wisdom");
+    CHECK(snapshot(dir) == before);
+  }
+}
+
+TEST_CASE("a failed run leaves OUTDIR byte-identical", "[cli][safety]") {
+  const fs::path dir = fresh("safety_half");
+  const fs::path scene = write_scene(kGoodScene, "safety_half/scene", "", "");
+  const fs::path out = dir / "out";
+  REQUIRE(run_coatfft("run " + scene.string() + " -o " + out.string()).status == 0);
+  // summary.json is now a folder: the run must stop before replacing uz.npy and the others.
+  fs::remove(out / "summary.json");
+  fs::create_directory(out / "summary.json");
+  const auto before = snapshot(dir);
+  check_refusal(run_coatfft("run " + scene.string() + " -o " + out.string()), "summary.json");
+  CHECK(snapshot(dir) == before);
+  // OUTDIR itself a regular file, or a device: refused, untouched.
+  std::ofstream(dir / "file") << "x";
+  check_refusal(run_coatfft("run " + scene.string() + " -o " + (dir / "file").string()), "file");
+  check_refusal(run_coatfft("run " + scene.string() + " -o /dev/null"), "/dev/null");
+  CHECK(text_of(dir / "file") == "x");
+  CHECK_FALSE(has_partial(dir));
+}
+
+TEST_CASE("outputs of an earlier run that the new run does not produce are removed, others kept",
+          "[cli][safety]") {
+  const fs::path dir = fresh("safety_stale");
+  const fs::path contact = write_scene(kContactScene, "safety_stale/contact", "", "");
+  const fs::path pressure = write_scene(kGoodScene, "safety_stale/pressure", "", "");
+  const fs::path out = dir / "out";
+  REQUIRE(run_coatfft("run " + contact.string() + " -o " + out.string()).status == 0);
+  REQUIRE(fs::exists(out / "gap.npy"));
+  std::ofstream(out / "mine.txt") << "user data";
+  REQUIRE(run_coatfft("run " + pressure.string() + " -o " + out.string()).status == 0);
+  CHECK_FALSE(fs::exists(out / "gap.npy"));  // written by coatfft, not produced now
+  CHECK(text_of(out / "mine.txt") == "user data");
+  CHECK(text_of(out / ".coatfft-outputs") ==
+        "uz.npy\npressure.npy\ndisplacement.csv\nsummary.json\n");
+  // A gap.npy that no coatfft run wrote is the user's: kept.
+  std::ofstream(out / "gap.npy") << "user's own";
+  REQUIRE(run_coatfft("run " + pressure.string() + " -o " + out.string()).status == 0);
+  CHECK(text_of(out / "gap.npy") == "user's own");
+}
+
+TEST_CASE("an interrupted run leaves no temporary files and no OUTDIR", "[cli][safety]") {
+  const fs::path dir = fresh("safety_signal");
+  const fs::path scene =
+      write_scene(kGoodScene, "safety_signal/scene", "nx = 33\nny = 33", "nx = 1024\nny = 1024");
+  const fs::path out = dir / "out";
+  // SIGTERM as soon as the staging folder appears (the outputs are being written), then SIGINT
+  // in the middle of the computation (before anything is written).
+  const std::string run =
+      std::string(COATFFT_EXE) + " run " + scene.string() + " -o " + out.string() + " 2>/dev/null";
+  const std::string script =
+      "cd " + dir.string() + " && { " + run + " & pid=$!; n=0; " +
+      "while [ -z \"$(ls -A | grep partial)\" ] && [ $n -lt 6000 ]; do sleep 0.01; n=$((n+1)); "
+      "done; kill -TERM $pid; wait $pid; echo $? > status; }";
+  REQUIRE(std::system(("sh -c '" + script + "'").c_str()) == 0);
+  CHECK(text_of(dir / "status") == "143\n");  // 128 + SIGTERM: the handler re-raised it
+  CHECK_FALSE(has_partial(dir));
+  CHECK_FALSE(fs::exists(out));
+}
+
+TEST_CASE("inputs that are not regular files are refused at once", "[cli][safety]") {
+  const fs::path dir = fresh("safety_inputs");
+  REQUIRE(mkfifo((dir / "fifo.csv").c_str(), 0600) == 0);
+  fs::create_symlink("/dev/zero", dir / "zero.csv");
+  for (const char* name : {"fifo.csv", "zero.csv"}) {
+    INFO(name);
+    const fs::path scene = write_scene(kGoodScene, std::string("safety_inputs/") + name,
+                                       "kind = \"hertz\"\np0 = 1.0e9\na = 1.0e-3",
+                                       std::string("kind = \"file\"\npath = \"") + name + "\"");
+    check_refusal(run_coatfft("run " + scene.string() + " -o " + (dir / "out").string()),
+                  "not a regular file");
+  }
+  check_refusal(run_coatfft("run " + dir.string() + " -o " + (dir / "out").string()),
+                "not a regular file");
+  check_refusal(
+      run_coatfft("run " + (dir / "missing.toml").string() + " -o " + (dir / "out").string()),
+      "cannot open");
+  CHECK_FALSE(fs::exists(dir / "out"));
+}
+
+TEST_CASE("counts and sizes have caps, refused before memory is spent", "[cli][safety]") {
+  const fs::path out = scratch("safety_caps_out");
+  fs::remove_all(out);
+  const fs::path good = write_scene(kGoodScene, "safety_caps", "", "");
+  check_refusal(
+      run_coatfft("run " + good.string() + " -o " + out.string() + " --repeat 2147483647"),
+      "--repeat");
+  check_refusal(run_coatfft("run " + good.string() + " -o " + out.string() + " --repeat abc"),
+                "--repeat");
+  check_refusal(run_coatfft("frf " + good.string() + " --points 2000000000"), "--points");
+  // 65536^2 cells: about 480 GB; refused with the keys, and the refusal itself stays small.
+  const fs::path huge =
+      write_scene(kGoodScene, "safety_caps_huge", "nx = 33\nny = 33", "nx = 65536\nny = 65536");
+  check_refusal(run_coatfft("run " + huge.string() + " -o " + out.string()), "nx = 65536");
+  const MeasuredRun measured = run_coatfft_measured("run " + huge.string() + " -o " + out.string());
+  CHECK(measured.status == 2);
+  CHECK(measured.peak_rss_mib < 100.0);
+  const fs::path alpha = write_scene(kGoodScene, "safety_caps_alpha", "name = \"dcfft\"",
+                                     "name = \"frf-spectral\"\nalpha = 1e6");
+  check_refusal(run_coatfft("run " + alpha.string() + " -o " + out.string()), "alpha");
+  check_refusal(run_coatfft("run " + good.string() + " -o " + out.string() + " --max-memory 10K"),
+                "--max-memory");
+  check_refusal(run_coatfft("run " + good.string() + " -o " + out.string() + " --max-memory 4Q"),
+                "--max-memory");
+  CHECK_FALSE(fs::exists(out));
+}
+
+TEST_CASE("extreme numbers are refused with the key, never as an internal error", "[cli][safety]") {
+  const std::array cases{
+      BadCase{"lx_2p53", "lx = 3.0e-3", "lx = 9007199254740993", "[pressure] a"},
+      BadCase{"ly_int64", "ly = 3.0e-3", "ly = 9223372036854775807", "ly"},
+      BadCase{"lx_tiny", "lx = 3.0e-3\nly = 3.0e-3", "lx = 1e-300\nly = 1e-300", "lx"},
+      BadCase{"lx_huge", "lx = 3.0e-3", "lx = 1e308", "lx"},
+      BadCase{"thickness_int64", "[pressure]",
+              "[[coating]]\nmaterial = \"titanium_nitride\"\nthickness = 9223372036854775807\n"
+              "[pressure]",
+              "dcfft"},
+      BadCase{"E_tiny", "material = \"steel\"", "E = 1e-308\nnu = 0.3", "E*"},
+      BadCase{"p0_huge", "p0 = 1.0e9", "p0 = 1e308", "pressure"},
+      BadCase{"a_below_cell", "a = 1.0e-3", "a = 1e-9", "[pressure] a"},
+      BadCase{"alpha_dcfft", "name = \"dcfft\"", "name = \"dcfft\"\nalpha = 4.0", "alpha"},
+      BadCase{"g0_direct", "name = \"dcfft\"", "name = \"direct\"\ng0 = \"quadrature\"", "g0"},
+      BadCase{"nu_limit", "material = \"steel\"", "E = 2e11\nnu = 0.49999999", "0.4999"},
+      BadCase{"long_name", "material = \"steel\"",
+              "material = \"" + std::string(100000, 'x') + "\"", "unknown material"},
+  };
+  for (const auto& c : cases) check_refused(kGoodScene, c);
+  // The long name is shortened in the message.
+  const fs::path scene = write_scene(kGoodScene, "long_name", "material = \"steel\"",
+                                     "material = \"" + std::string(100000, 'x') + "\"");
+  CHECK(run_coatfft("run " + scene.string() + " -o " + scratch("long_out").string())
+            .stderr_text.size() < 400);
+  const fs::path indenter = write_scene(kContactScene, "indenter_int64", "load = 10.0",
+                                        "load = 10.0\nindenter_E = -9223372036854775808\n"
+                                        "indenter_nu = 0.3");
+  check_refusal(run_coatfft("run " + indenter.string() + " -o " + scratch("ind_out").string()),
+                "indenter_E");
+}
+
+TEST_CASE("messages: version, unknown command, one contact-edge line", "[cli][safety]") {
+  const ProcessResult version = run_coatfft("--version");
+  CHECK(version.status == 0);
+  check_refusal(run_coatfft("frobnicate"), "unknown command \"frobnicate\"");
+  const fs::path edge = write_scene(kContactScene, "edge", "load = 10.0", "load = 1e6");
+  const ProcessResult result =
+      run_coatfft("run " + edge.string() + " -o " + scratch("edge_out").string());
+  check_refusal(result, "enlarge [grid] lx and ly");
+  // Said once.
+  CHECK(result.stderr_text.find("domain edge") == result.stderr_text.rfind("domain edge"));
+}
