@@ -110,6 +110,7 @@ nlohmann::json common_summary(const Scene& scene, const BuiltOperator& built, do
   summary["total_load"] = pressure.sum() * grid.dx() * grid.dy();
   summary["uz_center"] = uz(centre_index(grid.nx()), centre_index(grid.ny()));
   summary["uz_max"] = uz.maxCoeff();
+  summary["estimated_memory_bytes"] = estimate_memory(scene).bytes;
   summary.update(operator_report_json(built.report));
   return summary;
 }
