@@ -120,7 +120,13 @@ void StagedOutput::stage() {
   for (fs::path p = outdir_.parent_path(); !fs::exists(p) && p.has_relative_path();
        p = p.parent_path())
     created_parents_.push_back(p);
-  staging_ = hidden_beside(outdir_);
+  // In an existing OUTDIR the staging folder goes inside it, on its file system even when OUTDIR
+  // is a mount point, and needing no write access to its parent; otherwise it sits beside it and
+  // becomes OUTDIR by one rename.
+  std::error_code ec;
+  staging_ = fs::is_directory(outdir_, ec)
+                 ? outdir_ / detail::concat(".coatfft.partial-", ::getpid())
+                 : hidden_beside(outdir_);
   std::vector<fs::path> files;
   for (const std::string& name : names_) {
     files.push_back(staging_ / name);
@@ -129,7 +135,6 @@ void StagedOutput::stage() {
   std::vector<fs::path> folders{staging_};
   folders.insert(folders.end(), created_parents_.begin(), created_parents_.end());
   on_signal_ = std::make_unique<RemoveOnSignal>(files, folders);
-  std::error_code ec;
   fs::create_directories(staging_, ec);
   COATFFT_REQUIRE(!ec, "cannot create ", quoted(staging_), ": ", ec.message());
 }

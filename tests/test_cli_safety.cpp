@@ -142,23 +142,37 @@ TEST_CASE("outputs of an earlier run that the new run does not produce are remov
   CHECK(text_of(out / "gap.npy") == "user's own");
 }
 
-TEST_CASE("an interrupted run leaves no temporary files and no OUTDIR", "[cli][safety]") {
+// Runs `coatfft run SCENE -o OUT` in the background, sends SIGTERM as soon as a staging folder
+// (a name with ".partial") appears in `watch` (the outputs are being written), and returns the
+// program's exit status as the shell saw it.
+int terminate_while_writing(const fs::path& scene, const fs::path& out, const fs::path& watch) {
+  const fs::path status = scratch("safety_signal_status");
+  const std::string run =
+      std::string(COATFFT_EXE) + " run " + scene.string() + " -o " + out.string() + " 2>/dev/null";
+  const std::string script =
+      "cd " + watch.string() + " && { " + run + " & pid=$!; n=0; " +
+      "while [ -z \"$(ls -A | grep partial)\" ] && [ $n -lt 6000 ]; do sleep 0.01; n=$((n+1)); "
+      "done; kill -TERM $pid; wait $pid; echo $? > " +
+      status.string() + "; }";
+  REQUIRE(std::system(("sh -c '" + script + "'").c_str()) == 0);
+  return std::stoi(text_of(status));
+}
+
+TEST_CASE("an interrupted run leaves no temporary files, and OUTDIR as it was", "[cli][safety]") {
   const fs::path dir = fresh("safety_signal");
   const fs::path scene =
       write_scene(kGoodScene, "safety_signal/scene", "nx = 33\nny = 33", "nx = 1024\nny = 1024");
   const fs::path out = dir / "out";
-  // SIGTERM as soon as the staging folder appears (the outputs are being written), then SIGINT
-  // in the middle of the computation (before anything is written).
-  const std::string run =
-      std::string(COATFFT_EXE) + " run " + scene.string() + " -o " + out.string() + " 2>/dev/null";
-  const std::string script =
-      "cd " + dir.string() + " && { " + run + " & pid=$!; n=0; " +
-      "while [ -z \"$(ls -A | grep partial)\" ] && [ $n -lt 6000 ]; do sleep 0.01; n=$((n+1)); "
-      "done; kill -TERM $pid; wait $pid; echo $? > status; }";
-  REQUIRE(std::system(("sh -c '" + script + "'").c_str()) == 0);
-  CHECK(text_of(dir / "status") == "143\n");  // 128 + SIGTERM: the handler re-raised it
+  // A new OUTDIR: staged beside it, nothing left.
+  CHECK(terminate_while_writing(scene, out, dir) == 143);  // 128 + SIGTERM, re-raised
   CHECK_FALSE(has_partial(dir));
   CHECK_FALSE(fs::exists(out));
+  // An existing OUTDIR with an earlier run's outputs: staged inside it, then byte-identical.
+  const fs::path small = write_scene(kGoodScene, "safety_signal/small", "", "");
+  REQUIRE(run_coatfft("run " + small.string() + " -o " + out.string()).status == 0);
+  const auto before = snapshot(dir);
+  CHECK(terminate_while_writing(scene, out, out) == 143);
+  CHECK(snapshot(dir) == before);
 }
 
 TEST_CASE("inputs that are not regular files are refused at once", "[cli][safety]") {
