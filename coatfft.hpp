@@ -8,6 +8,7 @@
 #include "convolution/influence_kernel.hpp"
 #include "convolution/love_influence.hpp"
 #include "convolution/make_operator.hpp"
+#include "convolution/pipeline_error.hpp"
 #include "convolution/method.hpp"
 #include "convolution/planning.hpp"
 #include "convolution/split_frf_kernel.hpp"

@@ -53,6 +53,11 @@ struct OperatorReport {
   std::optional<double> alpha;             ///< frf-spectral, frf-dcfft
   std::optional<G0Result> g0;              ///< frf-spectral, frf-dcfft
   std::optional<SplitKernelReport> split;  ///< frf-split
+  /// frf-spectral, frf-dcfft: their predicted error max |u - u_exact| / max |u_exact| under a
+  /// reference Hertz load, from predicted_pipeline_error with the body's FRF (docs/theory.md 4.6;
+  /// convolution/pipeline_error.hpp): a periodisation error that falls with alpha, not with N.
+  /// Its computation is part of setup_seconds.
+  std::optional<double> predicted_error;
 };
 
 struct BuiltOperator {
