@@ -50,10 +50,26 @@ void load_wisdom(const Scene& scene, const StagedOutput& out) {
 BuiltOperator operator_from_scene(const Scene& scene) {
   const MethodSpec& method = scene.method;
   BuiltOperator built = make_operator(scene.grid, scene.body, method.options);
+  const std::optional<double> error = built.report.predicted_error;
+  COATFFT_REQUIRE(!error || *error <= pipeline_refusal_error, "[method] name = \"",
+                  to_string(built.report.method), "\": predicted error ", *error,
+                  " of max |u| on these cells with alpha = ", built.report.alpha.value_or(0),
+                  " (docs/theory.md 4.6): the result would be meaningless; use \"frf-split\" "
+                  "(exact on any cells) or square cells and a larger alpha");
   if (!method.wisdom.empty())
     write_file_atomically(method.wisdom, "[method] wisdom", export_fftw_wisdom(),
                           scene.input_files);
   return built;
+}
+
+std::vector<std::string> operator_warnings(const OperatorReport& report) {
+  std::vector<std::string> warnings;
+  if (report.predicted_error && *report.predicted_error > pipeline_warning_error)
+    warnings.push_back(detail::concat(
+        "method ", to_string(report.method), ": predicted error ", *report.predicted_error,
+        " of max |u| (periodisation of the FRF pipelines at alpha = ", report.alpha.value_or(0),
+        ", docs/theory.md 4.6); \"frf-split\" is exact, or raise alpha"));
+  return warnings;
 }
 
 nlohmann::json operator_report_json(const OperatorReport& report) {
@@ -69,6 +85,7 @@ nlohmann::json operator_report_json(const OperatorReport& report) {
     json["g0_estimated_error"] = omitted ? nlohmann::json() : nlohmann::json(g0.estimated_error);
   }
   if (report.alpha) json["alpha"] = *report.alpha;
+  if (report.predicted_error) json["predicted_error"] = *report.predicted_error;
   if (report.split) {
     json["split_beta"] = report.split->beta;
     json["split_seconds"] = report.split->seconds;

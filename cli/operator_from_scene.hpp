@@ -3,6 +3,8 @@
 // FFTW wisdom file of [method] loaded before and saved after; and the operator's report as the
 // keys of summary.json.
 #include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
 #include "cli/scene.hpp"
 #include "cli/staged_output.hpp"
@@ -17,10 +19,20 @@ namespace coatfft::cli {
 /// version) is reported on stderr and replaced after planning.
 void load_wisdom(const Scene& scene, const StagedOutput& out);
 
+/// Thresholds on the predicted error of the FRF pipelines frf-spectral and frf-dcfft
+/// (OperatorReport::predicted_error, docs/theory.md 4.6), relative to max |u|: above the first a
+/// run warns, above the second its result cannot be trusted at all and it is refused.
+inline constexpr double pipeline_warning_error = 1e-2;
+inline constexpr double pipeline_refusal_error = 1.0;
+
 /// Builds the operator and saves the accumulated wisdom (atomically) when the scene names a
 /// wisdom file. Throws InvalidArgument when the method cannot handle the body (e.g. Love DC-FFT
-/// on a coating).
+/// on a coating), and when an FRF pipeline's predicted error exceeds pipeline_refusal_error.
 BuiltOperator operator_from_scene(const Scene& scene);
+
+/// Warnings about what was built, for stderr and summary.json's "warnings": an FRF pipeline whose
+/// predicted error exceeds pipeline_warning_error.
+std::vector<std::string> operator_warnings(const OperatorReport& report);
 
 /// The method-specific keys of summary.json: frf, alpha, g0, g0_method, g0_seconds,
 /// g0_estimated_error (an omitted g(0) is reported as null), split_beta, split_seconds.

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "tests/cli_process.hpp"
@@ -264,4 +265,63 @@ TEST_CASE("messages: version, unknown command, one contact-edge line", "[cli][sa
   check_refusal(result, "enlarge [grid] lx and ly");
   // Said once.
   CHECK(result.stderr_text.find("domain edge") == result.stderr_text.rfind("domain edge"));
+}
+
+TEST_CASE("the FRF pipelines warn above 1e-2 predicted error and refuse above 1", "[cli][safety]") {
+  // TiN 2 um on steel, 64 x 64 cells. Square cells: Spinu's (2021) pipelines at alpha = 2 are
+  // about 2.5 % off (docs/validation_frf_pipelines.md), so a warning with the prediction. Cells
+  // with dx/dy = 100: the pipelines' result is off by more than max |u| itself; refused, with
+  // the exact method named.
+  const std::string base = R"([grid]
+nx = 64
+ny = 64
+lx = 4e-3
+ly = 4e-3
+[substrate]
+material = "steel"
+[[coating]]
+material = "titanium_nitride"
+thickness = 2e-6
+[pressure]
+kind = "hertz"
+p0 = 1e9
+a = 1e-3
+[method]
+name = "frf-spectral"
+)";
+  const fs::path out = scratch("pipeline_warning_out");
+  fs::remove_all(out);
+  const fs::path square = write_scene(base, "pipeline_square", "", "");
+  const ProcessResult warned = run_coatfft("run " + square.string() + " -o " + out.string());
+  INFO(warned.stderr_text);
+  CHECK(warned.status == 0);
+  CHECK(warned.stderr_text.find("coatfft: warning: method frf-spectral: predicted error") == 0);
+  nlohmann::json summary;
+  std::ifstream(out / "summary.json") >> summary;
+  CHECK(summary["predicted_error"].get<double>() > 1e-2);
+  CHECK(summary["predicted_error"].get<double>() < 4e-2);
+  REQUIRE(summary["warnings"].size() == 1);
+  CHECK(summary["warnings"][0].get<std::string>().find("frf-split") != std::string::npos);
+  // frf-split is exact: no warning, an empty list.
+  const fs::path split = write_scene(base, "pipeline_split", "frf-spectral", "frf-split");
+  const fs::path split_out = scratch("pipeline_split_out");
+  fs::remove_all(split_out);
+  REQUIRE(run_coatfft("run " + split.string() + " -o " + split_out.string()).status == 0);
+  std::ifstream(split_out / "summary.json") >> summary;
+  CHECK(summary["warnings"].empty());
+  CHECK_FALSE(summary.contains("predicted_error"));
+
+  const fs::path anisotropic = write_scene(base, "pipeline_anisotropic", "ly = 4e-3\n[substrate]",
+                                           "ly = 40e-6\n[substrate]");
+  const std::string thin_load = "a = 13e-6\nsampling = \"cell_average\"";
+  const fs::path refused =
+      write_scene(text_of(anisotropic), "pipeline_anisotropic", "a = 1e-3", thin_load);
+  for (const char* method : {"frf-spectral", "frf-dcfft"}) {
+    INFO(method);
+    const fs::path scene =
+        write_scene(text_of(refused), std::string("pipeline_") + method, "frf-spectral", method);
+    fs::remove_all(out);
+    check_refusal(run_coatfft("run " + scene.string() + " -o " + out.string()), "frf-split");
+    CHECK_FALSE(fs::exists(out));
+  }
 }
