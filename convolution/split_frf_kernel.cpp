@@ -372,6 +372,23 @@ double* scratch(std::vector<double>& spare, std::ptrdiff_t n) {
 
 // ---- The plan: every parameter of the construction, chosen from the FRF and the options ------
 
+// The long part's rule along one axis of the cells: `sub` panels of `nodes` Gauss-Legendre points
+// per cell, or panels graded away from the origin (graded_rule) where more than
+// max_uniform_panels would be needed.
+struct AxisQuadrature {
+  int sub = 1;
+  int nodes = 2;
+  bool graded = false;
+};
+
+// One axis of the short-range lattice: half period h cells (0: a wide axis, add_short_range) and
+// the alias order folded.
+struct LatticeAxis {
+  std::ptrdiff_t h = 0;
+  int p_max = 0;
+  bool capped = false;  // the fold needed more than max_alias_order
+};
+
 struct SplitPlan {
   // The grid and the options.
   std::ptrdiff_t nx = 0;
@@ -380,6 +397,7 @@ struct SplitPlan {
   double dy = 0.0;
   double lx = 0.0;
   double ly = 0.0;
+  double d_min = 0.0;   // min(dx, dy)
   double d_max = 0.0;   // max(dx, dy)
   double near_r = 0.0;  // 32 d_max: closed forms inside, smooth over a cell outside
   double tolerance = 0.0;
@@ -398,16 +416,25 @@ struct SplitPlan {
   double k_r = 0.0;     // beyond: |R| k <= tolerance c_max
   // The window split R = R w + R (1 - w).
   double sigma = 0.0;  // 0: periodic route, inf: Hankel route
+  double s_c = 0.0;    // (sigma k)^2 beyond which w < tolerance
   double k_c = 0.0;    // beyond: R w negligible
   bool long_range = false;
   bool short_range = false;
-  // The long-range part: Hankel panels in k, radial step, and the rule over each cell.
-  std::vector<double> panel_edges;
-  double r_max = 0.0;  // the domain's diagonal
+  // Axes along which a cell is >= 128 sigma long (wide_cells): the short-range kernel lies
+  // within the cell's own row, so the lattice along that axis collapses to its k = 0 term
+  // (add_short_range).
+  bool wide_x = false;
+  bool wide_y = false;
+  LatticeAxis lattice_x;
+  LatticeAxis lattice_y;
+  // The long-range part: Hankel panels in k, radial steps, and the rule over each cell.
+  std::vector<double> panel_edges;  // of the uniform table
+  double r_max = 0.0;               // the domain's diagonal plus the stencil's reach
+  double r_uniform = 0.0;           // the uniform table's end; beyond, the logarithmic tail
   double dr = 0.0;
-  double ell = 0.0;      // the long-range kernel is smooth on this length
-  int cell_nodes = 0;    // Gauss-Legendre nodes per subcell side
-  int subcells = 1;      // subdivisions of a cell side
+  double ell = 0.0;  // the long-range kernel is smooth on this length
+  AxisQuadrature quad_x;
+  AxisQuadrature quad_y;
   bool stencil = false;  // far cells by point values and the cell-average stencil
 };
 
@@ -431,19 +458,94 @@ void check_options(const SplitKernelOptions& options) {
                   ", but it must be in [0, 4096]");
 }
 
+// The alias order |p| that folds every |k| < k_r along a cell side d.
+double alias_need(const SplitPlan& p, double d) {
+  return std::ceil(p.k_r * d / (2.0 * pi) + 0.5);
+}
+
+// A cell side >= wide_cells sigma is a wide axis (add_short_range): the short-range kernel is
+// left out beyond half of it, 64 sigma. It decays like r^-9 in R's far field, but where R has a
+// length scale b above sigma it is (sigma^6/6) (-lap)^3 of R's kernel and reaches a few b, and a
+// wide cell collects it over its whole length: cut at 32 sigma (cells of 0.5 um x 2 mm,
+// b = 6 sigma) it cost 7e-10 of K(0, 0), at 64 sigma 1e-11.
+constexpr double wide_cells = 128.0;
+
+// The default window length: min(lx, ly)/32, so that the Hankel table costs the same for every
+// N, but at least 1.5 times the shorter cell side, so that the long part needs no subdivision of
+// the cells across. Not the longer side: the lattice half-size 32 sigma/d along the short side
+// would grow with the cell aspect ratio (48 dy/dx with 1.5 max(dx, dy)); the long side is
+// subdivided instead (axis_quadrature, graded_rule). A side >= 8 times the other that needs more
+// than 4 aliases (a layer thinner than ~1/4 of that side) gets sigma = side/128, which makes the
+// axis wide: it then needs no alias at all, where the fold would cost (2P + 1) terms per lattice
+// entry or be truncated at max_alias_order (1 x 4096 cells of 2 mm x 0.5 um, TiN 20 um:
+// P = 469), and the long part's rules, graded in r, cost a few points per far cell. The short
+// side stays within 16 sigma.
+double automatic_sigma(const SplitPlan& p) {
+  double sigma = std::max(std::min(p.lx, p.ly) / 32.0, 1.5 * p.d_min);
+  const double many_aliases = std::min(4, p.max_alias_order);
+  for (const double d : {p.dx, p.dy})
+    if (alias_need(p, d) > many_aliases && d / wide_cells >= p.d_min / 16.0)
+      sigma = std::min(sigma, d / wide_cells);
+  return sigma;
+}
+
 // The window length sigma and the cut-offs of the two parts of R.
 void choose_window(SplitPlan& p, const SplitKernelOptions& options) {
-  p.sigma =
-      options.sigma > 0 ? options.sigma : std::max(std::min(p.lx, p.ly) / 32.0, 1.5 * p.d_max);
+  p.sigma = options.sigma > 0 ? options.sigma : automatic_sigma(p);
   if (options.route == SplitRoute::periodic) p.sigma = 0.0;
   if (options.route == SplitRoute::hankel) p.sigma = std::numeric_limits<double>::infinity();
   // w < tol beyond k_c: exp(-s) s^2/2 < tol at s = log_tol + 2 log(log_tol) (two Newton-free
   // fixed-point steps suffice for the tolerances allowed).
-  double s_c = p.log_tol;
-  for (int it = 0; it < 4; ++it) s_c = p.log_tol + 2.0 * std::log(s_c) - std::log(2.0);
-  p.k_c = std::isinf(p.sigma) ? p.k_r : std::min(p.k_r, std::sqrt(s_c) / p.sigma);
+  p.s_c = p.log_tol;
+  for (int it = 0; it < 4; ++it) p.s_c = p.log_tol + 2.0 * std::log(p.s_c) - std::log(2.0);
+  p.k_c = std::isinf(p.sigma) ? p.k_r : std::min(p.k_r, std::sqrt(p.s_c) / p.sigma);
   p.long_range = p.sigma > 0.0 && p.k_c > 0.0;
   p.short_range = !std::isinf(p.sigma) && p.k_r > 0.0;
+  p.wide_x = p.short_range && p.sigma > 0.0 && p.dx >= wide_cells * p.sigma;
+  p.wide_y = p.short_range && p.sigma > 0.0 && p.dy >= wide_cells * p.sigma;
+}
+
+// Largest number of lattice entries (doubles) of the short-range fold: 2^27, 1 GiB.
+constexpr double max_lattice_entries = 134217728.0;
+
+// The reach of the short-range kernel that the lattice keeps free of images along one axis:
+// 32 sigma, or 64 sigma when the other axis is wide, for the reasons of wide_cells (a wide cell
+// weighs the images by its length; cells of 83 um x 8.3 mm, b = 8 sigma: 1.3e-9 of K(0, 0) at
+// 32 sigma, 1e-11 at 64 sigma; the 1-D lattice of a wide cell costs little either way).
+double lattice_reach(const SplitPlan& p, bool other_wide) {
+  return (other_wide ? 64.0 : 32.0) * p.sigma;
+}
+
+// One axis of the lattice: the half period keeps the images of the short-range kernel beyond
+// lattice_reach (and >= the domain, so that every offset is an entry); the alias order folds
+// every |k| < k_r, capped at max_alias_order.
+LatticeAxis lattice_axis(const SplitPlan& p, std::ptrdiff_t n, double d, bool wide,
+                         bool other_wide) {
+  if (wide) return {};
+  LatticeAxis a;
+  a.h = static_cast<std::ptrdiff_t>(
+      std::max(static_cast<double>(n), std::ceil(lattice_reach(p, other_wide) / d)));
+  const double need = alias_need(p, d);
+  a.capped = need > p.max_alias_order;
+  a.p_max = static_cast<int>(std::min<double>(need, p.max_alias_order));
+  return a;
+}
+
+// The lattice of the short-range part, refused before any allocation when it would not fit
+// (a sigma given by the caller that is huge against a cell; the automatic sigma keeps the half
+// sizes <= max(2n, 96)).
+void choose_lattice(SplitPlan& p) {
+  const double hx =
+      std::max(static_cast<double>(p.nx), std::ceil(lattice_reach(p, p.wide_y) / p.dx));
+  const double hy =
+      std::max(static_cast<double>(p.ny), std::ceil(lattice_reach(p, p.wide_x) / p.dy));
+  const double entries = (p.wide_x ? 1.0 : hx + 1.0) * (p.wide_y ? 1.0 : hy + 1.0);
+  COATFFT_REQUIRE(entries <= max_lattice_entries, "split_frf_kernel: sigma = ", p.sigma,
+                  " m against cells of ", p.dx, " x ", p.dy, " m needs a short-range lattice of ",
+                  entries, " entries (more than ", max_lattice_entries,
+                  "); leave sigma automatic (0) or use frf-spectral");
+  p.lattice_x = lattice_axis(p, p.nx, p.dx, p.wide_x, p.wide_y);
+  p.lattice_y = lattice_axis(p, p.ny, p.dy, p.wide_y, p.wide_x);
 }
 
 // Panels of the Hankel transform: geometric (halving) from the first uniform panel down to R's
@@ -461,27 +563,50 @@ std::vector<double> hankel_panel_edges(double k_c, double r_max, double k_lo) {
   return edges;
 }
 
+// Gauss-Legendre points per panel for a panel `ratio` times shorter than the length on which the
+// kernel is smooth. The n-point error on a panel of width w is about c_n (w/(sqrt(2) ell))^(2n)
+// with c_2 = 2e-4, c_3 = 7e-7, c_4 = 7e-9, c_5 = 3e-11, c_6 = 2e-12: ~1e-13 relative.
+int nodes_for_ratio(double ratio) {
+  return ratio >= 24.0 ? 2 : ratio >= 12.0 ? 3 : ratio >= 4.0 ? 4 : ratio >= 2.5 ? 5 : 6;
+}
+
+// Beyond this many uniform panels per cell side the panels are graded (graded_rule).
+constexpr double max_uniform_panels = 8.0;
+
+// Panels of <= ell/1.5 per cell side d.
+AxisQuadrature axis_quadrature(double ell, double d) {
+  AxisQuadrature q;
+  const double sub = std::ceil(d / (ell / 1.5));
+  q.graded = sub > max_uniform_panels;
+  q.sub = static_cast<int>(std::clamp(sub, 1.0, max_uniform_panels));
+  q.nodes = nodes_for_ratio(ell * q.sub / d);
+  return q;
+}
+
 // The Hankel table and the rule over each cell of the long-range part.
 void choose_long_range_rules(SplitPlan& p) {
-  p.r_max = std::hypot(p.lx, p.ly);
-  p.panel_edges = hankel_panel_edges(p.k_c, p.r_max, p.k_lo);
+  p.r_max = std::hypot(p.lx, p.ly) + 4.0 * p.d_max;  // the stencil reads 4 cells beyond
+  // The uniform table (step 0.5/k_c) stops at 128 sigma_e, sigma_e = sqrt(s_c)/k_c the window
+  // length of the band limit; the tail beyond is tabulated in log r (tail_table). Domains up
+  // to an aspect ratio of ~4 (r_max ~ 45 sigma when square) never reach it.
+  const double sigma_e = std::sqrt(p.s_c) / p.k_c;
+  p.r_uniform =
+      p.r_max <= 128.0 * sigma_e ? std::numeric_limits<double>::infinity() : 128.0 * sigma_e;
+  const double r_table = std::min(p.r_max, p.r_uniform);
+  p.panel_edges = hankel_panel_edges(p.k_c, std::min(std::hypot(p.lx, p.ly), r_table), p.k_lo);
   // g is band-limited to k_c: 6-point interpolation with k_c dr = 0.3 is accurate to ~1e-9 of
   // g's scale (checked against a table with half the step in the tests).
   p.dr = 0.5 / p.k_c;
   const double nodes = static_cast<double>(hankel_panel_nodes * (p.panel_edges.size() - 1));
-  const double cost = nodes * (p.r_max / p.dr);
+  const double cost = nodes * (r_table / p.dr);
+  // Bounded through r_uniform (a few million at most); kept as a guard before the allocation.
   COATFFT_REQUIRE(cost < 4e9, "split_frf_kernel: the Hankel table would need ", cost,
-                  " Bessel evaluations (a layer much thinner than the domain with the hankel "
-                  "route); use SplitRoute::automatic");
-  // Gauss rule per cell: the kernel is smooth on the scale ell = sqrt(log_tol)/k_c (about sigma;
-  // its spectrum is cut like a Gaussian of width sqrt(2) sigma). The n-point Gauss-Legendre
-  // error on a cell of side d is about c_n (d/(sqrt(2) ell))^(2n) with c_2 = 2e-4, c_3 = 7e-7,
-  // c_4 = 7e-9, c_5 = 3e-11, c_6 = 2e-12: n is picked for ~1e-13 relative, and cells larger than
-  // 1.5 ell are subdivided.
+                  " Bessel evaluations; use SplitRoute::automatic");
+  // Rule per cell and axis: the kernel is smooth on the scale ell = sqrt(log_tol)/k_c (about
+  // sigma; its spectrum is cut like a Gaussian of width sqrt(2) sigma); panels <= ell/1.5.
   p.ell = std::sqrt(p.log_tol) / p.k_c;
-  p.subcells = static_cast<int>(std::clamp(std::ceil(p.d_max / (p.ell / 1.5)), 1.0, 64.0));
-  const double ratio = p.ell * p.subcells / p.d_max;
-  p.cell_nodes = ratio >= 24.0 ? 2 : ratio >= 12.0 ? 3 : ratio >= 4.0 ? 4 : ratio >= 2.5 ? 5 : 6;
+  p.quad_x = axis_quadrature(p.ell, p.dx);
+  p.quad_y = axis_quadrature(p.ell, p.dy);
   // Where the long kernel is smooth on >= 8 cells, one point value per cell and the 9-point
   // cell-average stencil replace the rule (add_long_range_by_stencil).
   p.stencil = p.ell >= 8.0 * p.d_max;
@@ -496,6 +621,7 @@ SplitPlan make_split_plan(const Grid& grid, const Frf& frf, const SplitKernelOpt
   p.dy = grid.dy();
   p.lx = grid.lx();
   p.ly = grid.ly();
+  p.d_min = std::min(p.dx, p.dy);
   p.d_max = std::max(p.dx, p.dy);
   p.near_r = 32.0 * p.d_max;
   p.tolerance = options.tolerance;
@@ -520,6 +646,7 @@ SplitPlan make_split_plan(const Grid& grid, const Frf& frf, const SplitKernelOpt
   p.remainder.tabulate(scan.k_lo, std::max(scan.k_hi, p.A != 0.0 ? 50.0 / p.beta : 0.0), 400);
   p.k_r = remainder_cutoff(p.remainder, p.A, p.beta, p.tolerance * p.c_max);
   choose_window(p, options);
+  if (p.short_range) choose_lattice(p);
   if (p.long_range) choose_long_range_rules(p);
   return p;
 }
@@ -589,61 +716,217 @@ void assign_singular_terms(const SplitPlan& p, Field& quarter) {
 
 // ---- (c) long range, R w: Hankel table in r, quadrature over each cell ------------------------
 
-// g(r) = (1/2 pi) int_0^kc R w J0(k r) k dk by 16-point Gauss-Legendre on each panel, tabulated
-// in r up to the domain's diagonal (plus the stencil's reach).
-EvenTable long_range_kernel(const SplitPlan& p) {
+// Gauss-Legendre nodes and weights (times the integrand's factors `f`) on the panels `edges`.
+template <typename F>
+void panel_rule(const std::vector<double>& edges, const F& f, std::vector<double>& kn,
+                std::vector<double>& kw) {
   const detail::GaussLegendreView g16 = detail::gauss_legendre(hankel_panel_nodes);
-  std::vector<double> kn;
-  std::vector<double> kw;
-  for (std::size_t e = 0; e + 1 < p.panel_edges.size(); ++e) {
-    const double mid = 0.5 * (p.panel_edges[e] + p.panel_edges[e + 1]);
-    const double half = 0.5 * (p.panel_edges[e + 1] - p.panel_edges[e]);
+  for (std::size_t e = 0; e + 1 < edges.size(); ++e) {
+    const double mid = 0.5 * (edges[e] + edges[e + 1]);
+    const double half = 0.5 * (edges[e + 1] - edges[e]);
     for (std::size_t q = 0; q < g16.nodes.size(); ++q) {
       const double k = mid + half * g16.nodes[q];
       kn.push_back(k);
-      kw.push_back(half * g16.weights[q] * p.remainder.exact(k) * window(p.sigma, k) * k /
-                   (2.0 * pi));
+      kw.push_back(half * g16.weights[q] * f(k));
     }
   }
-  return hankel_table(kw, kn, p.dr, p.r_max + 4.0 * p.d_max, p.threads);
 }
 
-// The product rule over a cell: offsets from the cell centre and weights (times the cell side),
-// cell_nodes Gauss-Legendre nodes on each of `subcells` subintervals per side.
-struct CellRule {
-  std::vector<double> ox;
-  std::vector<double> wx;
-  std::vector<double> oy;
-  std::vector<double> wy;
+// g(r) = (1/2 pi) int_0^kc R w J0(k r) k dk by 16-point Gauss-Legendre on each panel, tabulated
+// in r up to the domain's diagonal (plus the stencil's reach) or up to r_uniform.
+EvenTable long_range_kernel(const SplitPlan& p) {
+  std::vector<double> kn;
+  std::vector<double> kw;
+  panel_rule(
+      p.panel_edges,
+      [&](double k) { return p.remainder.exact(k) * window(p.sigma, k) * k / (2.0 * pi); }, kn, kw);
+  return hankel_table(kw, kn, p.dr, std::min(p.r_max, p.r_uniform), p.threads);
+}
+
+// The long-range kernel g(r): the uniform table below r_uniform, r^3 g(r) on a logarithmic table
+// beyond (tail_table), and 0 past the tail's end.
+class RadialTable {
+ public:
+  RadialTable(EvenTable uniform, double r_uniform, std::vector<double> tail, double u0, double du)
+      : uniform_(std::move(uniform)),
+        r_uniform_(r_uniform),
+        tail_(std::move(tail)),
+        u0_(u0),
+        inv_du_(1.0 / du) {}
+  std::ptrdiff_t size() const {
+    return uniform_.size() + static_cast<std::ptrdiff_t>(tail_.size());
+  }
+  double operator()(double r) const {
+    if (r < r_uniform_) return uniform_(r);
+    const double s = (std::log(r) - u0_) * inv_du_;  // >= 3 for r >= r_uniform
+    const auto i0 = static_cast<std::ptrdiff_t>(s);
+    if (i0 + 3 >= static_cast<std::ptrdiff_t>(tail_.size())) return 0.0;
+    return detail::lagrange6(tail_.data() + i0 - 2, s - static_cast<double>(i0)) / (r * r * r);
+  }
+
+ private:
+  EvenTable uniform_;
+  double r_uniform_;
+  std::vector<double> tail_;
+  double u0_;
+  double inv_du_;
 };
 
-CellRule long_range_cell_rule(const SplitPlan& p) {
-  const detail::GaussLegendreView g = detail::gauss_legendre(p.cell_nodes);
-  const int sub = p.subcells;
-  CellRule rule;
-  for (int s = 0; s < sub; ++s)
-    for (std::size_t q = 0; q < g.nodes.size(); ++q) {
-      const double c = -0.5 + (s + 0.5) / sub;
-      rule.ox.push_back((c + 0.5 * g.nodes[q] / sub) * p.dx);
-      rule.wx.push_back(0.5 * g.weights[q] / sub * p.dx);
-      rule.oy.push_back((c + 0.5 * g.nodes[q] / sub) * p.dy);
-      rule.wy.push_back(0.5 * g.weights[q] / sub * p.dy);
+// Steps of the tail table per decade of r.
+constexpr int tail_per_decade = 200;
+
+// The tail r >= r_uniform of the long-range kernel. On the uniform step the table would need
+// (k_c r_max)^2 Bessel terms, the square of the domain's aspect ratio (2e8 for 24 x 24 cells on
+// 2 mm x 200 mm). Beyond 32 sigma the long kernel is R's own kernel up to the short part's far
+// field, 1837 (sigma/r)^6 of R's r^-3 tail (the window's section of split_frf_kernel.hpp), and so
+// is the kernel of R w(sigma_r) for sigma_r = r/32: at radius r the window may be widened to r/32,
+// g(r) = (1/2 pi) int R(k) w(k r/32) J0(k r) k dk = (1/(2 pi r^2)) int R(t/r) w(t/32) J0(t) t dt,
+// whose nodes t_j and weights (all but R) are the same for every r: ~600 table lookups of R per
+// radius. Tabulated as r^3 g (constant for an r^-3 tail), 200 per decade, up to r_max or to the
+// first decade over which |g| stays below 1e-2 tolerance of the (a) kernel c_inf/(2 pi r).
+std::vector<double> tail_table(const SplitPlan& p, double u0, double du) {
+  std::vector<double> tn;
+  std::vector<double> tw;
+  const double t_c = 32.0 * std::sqrt(p.s_c);
+  panel_rule(
+      hankel_panel_edges(t_c, 1.0, std::exp(u0) * p.k_lo),
+      [&](double t) { return window(1.0 / 32.0, t) * gsl_sf_bessel_J0(t) * t / (2.0 * pi); }, tn,
+      tw);
+  const auto n_end = static_cast<std::ptrdiff_t>(std::ceil((std::log(p.r_max) - u0) / du)) + 4;
+  const double negligible = 1e-2 * p.tolerance * p.c_inf / (2.0 * pi);
+  std::vector<double> tail;
+  for (std::ptrdiff_t i0 = 0; i0 < n_end; i0 += tail_per_decade) {
+    const std::ptrdiff_t i1 = std::min(n_end, i0 + tail_per_decade);
+    tail.resize(static_cast<std::size_t>(i1));
+    detail::parallel_for(i0, i1, p.threads, [&](std::ptrdiff_t i) {
+      const double r = std::exp(u0 + du * static_cast<double>(i));
+      double sum = 0.0;
+      for (std::size_t j = 0; j < tn.size(); ++j) sum += tw[j] * p.remainder(tn[j] / r);
+      tail[static_cast<std::size_t>(i)] = r * sum;  // r^3 g(r)
+    });
+    bool small = i1 - i0 == tail_per_decade && i0 > 0;
+    for (std::ptrdiff_t i = i0; i < i1 && small; ++i) {
+      const double r = std::exp(u0 + du * static_cast<double>(i));
+      small = std::abs(tail[static_cast<std::size_t>(i)]) <= negligible * r * r;
     }
-  return rule;
+    if (small) break;  // the lookups beyond return 0
+  }
+  return tail;
 }
 
-// The integral of g over cell (i, j).
-double cell_integral(const SplitPlan& p, const EvenTable& g, const CellRule& rule, std::ptrdiff_t i,
-                     std::ptrdiff_t j) {
-  double sum = 0.0;
-  for (std::size_t a = 0; a < rule.ox.size(); ++a) {
-    const double x = static_cast<double>(i) * p.dx + rule.ox[a];
-    double row = 0.0;
-    for (std::size_t b = 0; b < rule.oy.size(); ++b) {
-      const double y = static_cast<double>(j) * p.dy + rule.oy[b];
-      row += rule.wy[b] * g(std::sqrt(x * x + y * y));
+// The whole long-range kernel: the uniform table and, where the domain reaches past r_uniform,
+// the tail.
+RadialTable long_range_table(const SplitPlan& p) {
+  EvenTable uniform = long_range_kernel(p);
+  if (std::isinf(p.r_uniform)) return RadialTable(std::move(uniform), p.r_uniform, {}, 0.0, 1.0);
+  const double du = std::log(10.0) / tail_per_decade;
+  const double u0 = std::log(p.r_uniform) - 3.0 * du;
+  return RadialTable(std::move(uniform), p.r_uniform, tail_table(p, u0, du), u0, du);
+}
+
+// A rule along one axis: positions (relative to a shift) and weights.
+struct AxisRule {
+  std::vector<double> t;
+  std::vector<double> w;
+};
+
+void append_panel(double a, double b, int n, AxisRule& rule) {
+  const detail::GaussLegendreView g = detail::gauss_legendre(n);
+  const double mid = 0.5 * (a + b);
+  const double half = 0.5 * (b - a);
+  for (std::size_t q = 0; q < g.nodes.size(); ++q) {
+    rule.t.push_back(mid + half * g.nodes[q]);
+    rule.w.push_back(half * g.weights[q]);
+  }
+}
+
+// Panels of [a, b], 0 <= a < b (mirrored to [-b, -a] when sign < 0), graded away from the origin
+// (r >= hypot(t, rho), rho the distance of the cell across). Near the origin the long kernel is
+// smooth on ell: panels of lambda/1.5, lambda = max(ell, r/8), nodes_for_ratio. From r = 16 ell
+// on it is R's kernel up to the short part's far field (tail_table), analytic off r = 0 (its
+// complex singularities, such as r = +-i beta of the (b) kernel, are no nearer): a panel of width
+// r/4 centred >= r from the nearest singularity has a Bernstein ellipse of parameter >= 16, and
+// 5 points converge like 16^-10 = 1e-12 (4 panels and 20 points per factor e in r).
+void graded_rule(double a, double b, double rho, double ell, double sign, AxisRule& rule) {
+  for (double u = a; u < b;) {
+    const double r = std::hypot(u, rho);
+    const bool far = r >= 16.0 * ell;
+    const double lambda = std::max(ell, r / 8.0);
+    const double v = std::min(b, u + (far ? r / 4.0 : lambda / 1.5));
+    const int n = far ? 5 : nodes_for_ratio(lambda / (v - u));
+    if (sign > 0)
+      append_panel(u, v, n, rule);
+    else
+      append_panel(-v, -u, n, rule);
+    u = v;
+  }
+}
+
+// The long part's rule along one axis of the cells: uniform offsets from the cell centre, shared
+// by every cell (as x = i dx + offset), or graded positions built per cell.
+class AxisCells {
+ public:
+  AxisCells(const AxisQuadrature& q, double ell, double d) : q_(q), ell_(ell), d_(d) {
+    if (q.graded) return;
+    const detail::GaussLegendreView g = detail::gauss_legendre(q.nodes);
+    for (int s = 0; s < q.sub; ++s)
+      for (std::size_t k = 0; k < g.nodes.size(); ++k) {
+        const double c = -0.5 + (s + 0.5) / q.sub;
+        uniform_.t.push_back((c + 0.5 * g.nodes[k] / q.sub) * d);
+        uniform_.w.push_back(0.5 * g.weights[k] / q.sub * d);
+      }
+  }
+  // The rule of the cell at offset i >= 0, rho its distance across: positions shift + t.
+  const AxisRule& rule(std::ptrdiff_t i, double rho, AxisRule& scratch, double& shift) const {
+    const double c = static_cast<double>(i) * d_;
+    if (!q_.graded) {
+      shift = c;
+      return uniform_;
     }
-    sum += rule.wx[a] * row;
+    shift = 0.0;
+    scratch.t.clear();
+    scratch.w.clear();
+    const double a = c - 0.5 * d_;
+    if (a < 0.0) graded_rule(0.0, -a, rho, ell_, -1.0, scratch);
+    graded_rule(std::max(a, 0.0), c + 0.5 * d_, rho, ell_, 1.0, scratch);
+    return scratch;
+  }
+  // The distance from the origin to the cell at offset i >= 0 along this axis.
+  double distance(std::ptrdiff_t i) const {
+    return i == 0 ? 0.0 : (static_cast<double>(i) - 0.5) * d_;
+  }
+
+ private:
+  AxisQuadrature q_;
+  double ell_;
+  double d_;
+  AxisRule uniform_;
+};
+
+// The long part's cell quadrature: the rules of both axes and scratch for graded ones (one per
+// thread).
+struct CellQuadrature {
+  const AxisCells& x;
+  const AxisCells& y;
+  AxisRule scratch_x;
+  AxisRule scratch_y;
+};
+
+// The integral of g over cell (i, j).
+double cell_integral(const RadialTable& g, CellQuadrature& q, std::ptrdiff_t i, std::ptrdiff_t j) {
+  double sx = 0.0;
+  double sy = 0.0;
+  const AxisRule& rx = q.x.rule(i, q.y.distance(j), q.scratch_x, sx);
+  const AxisRule& ry = q.y.rule(j, q.x.distance(i), q.scratch_y, sy);
+  double sum = 0.0;
+  for (std::size_t a = 0; a < rx.t.size(); ++a) {
+    const double x = sx + rx.t[a];
+    double row = 0.0;
+    for (std::size_t b = 0; b < ry.t.size(); ++b) {
+      const double y = sy + ry.t[b];
+      row += ry.w[b] * g(std::sqrt(x * x + y * y));
+    }
+    sum += rx.w[a] * row;
   }
   return sum;
 }
@@ -652,7 +935,7 @@ double cell_integral(const SplitPlan& p, const EvenTable& g, const CellRule& rul
 // i in [0, ex), j in [0, ey), into point[j * ex + i]; the kernel is even, so negative offsets
 // read |i|, |j|. The origin's singular terms are left out: only near cells reach it. Square
 // cells on a square grid: point(i, j) = point(j, i), only i >= j is evaluated.
-void far_point_values(const SplitPlan& p, const EvenTable& g, double* point, std::ptrdiff_t ex,
+void far_point_values(const SplitPlan& p, const RadialTable& g, double* point, std::ptrdiff_t ex,
                       std::ptrdiff_t ey) {
   const double fa = p.c_inf / (2.0 * pi) * p.dx * p.dy;
   const double fb = p.A / (2.0 * pi) * p.dx * p.dy;
@@ -683,8 +966,8 @@ void far_point_values(const SplitPlan& p, const EvenTable& g, double* point, std
 // (docs/split_kernel.md, section 5). The far cells' (a) + (b) are smooth over a cell beyond 32 d
 // and go through the same stencil (error ~E 10! (d/r)^10 of the coefficient there): one pass,
 // one table lookup and one or two square roots per cell.
-void add_long_range_by_stencil(const SplitPlan& p, const EvenTable& g, const CellRule& rule,
-                               Field& quarter, std::vector<double>& spare) {
+void add_long_range_by_stencil(const SplitPlan& p, const RadialTable& g, const AxisCells& cx,
+                               const AxisCells& cy, Field& quarter, std::vector<double>& spare) {
   constexpr std::ptrdiff_t m = detail::cell_average_half_width;
   const auto& c = detail::cell_average_weights;
   const std::ptrdiff_t ex = p.nx + m;
@@ -712,10 +995,11 @@ void add_long_range_by_stencil(const SplitPlan& p, const EvenTable& g, const Cel
     double* out = &quarter(0, j);
     const double y = static_cast<double>(j) * p.dy;
     std::ptrdiff_t i = 0;
+    CellQuadrature q{cx, cy, {}, {}};
     for (; i < p.nx; ++i) {
       const double x = static_cast<double>(i) * p.dx;
       if (x * x + y * y >= near2) break;
-      out[i] += cell_integral(p, g, rule, i, j);
+      out[i] += cell_integral(g, q, i, j);
     }
     for (; i < p.nx; ++i) {
       double v = c[0] * rows[m][i];
@@ -730,15 +1014,17 @@ void add_long_range_by_stencil(const SplitPlan& p, const EvenTable& g, const Cel
 void add_long_range(const SplitPlan& p, Field& quarter, std::vector<double>& spare,
                     SplitKernelReport& rep) {
   const auto start = std::chrono::steady_clock::now();
-  const EvenTable g = long_range_kernel(p);
+  const RadialTable g = long_range_table(p);
   rep.hankel_r_points = g.size();
   rep.hankel_k_nodes = static_cast<std::ptrdiff_t>(hankel_panel_nodes * (p.panel_edges.size() - 1));
-  const CellRule rule = long_range_cell_rule(p);
+  const AxisCells cx(p.quad_x, p.ell, p.dx);
+  const AxisCells cy(p.quad_y, p.ell, p.dy);
   if (p.stencil) {
-    add_long_range_by_stencil(p, g, rule, quarter, spare);
+    add_long_range_by_stencil(p, g, cx, cy, quarter, spare);
   } else {
     detail::parallel_for(0, p.ny, p.threads, [&](std::ptrdiff_t j) {
-      for (std::ptrdiff_t i = 0; i < p.nx; ++i) quarter(i, j) += cell_integral(p, g, rule, i, j);
+      CellQuadrature q{cx, cy, {}, {}};
+      for (std::ptrdiff_t i = 0; i < p.nx; ++i) quarter(i, j) += cell_integral(g, q, i, j);
     });
   }
   rep.seconds_long = detail::seconds_since(start);
@@ -794,7 +1080,10 @@ class ShortRangeSpectrum {
 };
 
 // One axis of the lattice: the alias wavenumbers k = 2 pi (xi + p)/d, xi = m/(2h) in [0, 1/2],
-// and their sincs, at [m * count + (p + p_max)] for m in [0, h], |p| <= p_max.
+// and their sincs, at [m * count + (p + p_max)] for m in [0, h], |p| <= p_max. A wide axis
+// (h = 0) has the single term k = 0 of weight 1: its sum over k of d sinc(k d/2) S(k) e^(i k y)
+// / (period), a box average, becomes (1/2 pi) int d sinc(k d/2) S(k) dk -> S(0) at y = 0 when
+// the kernel of S is much shorter than the cell d (and 0 at the other cells).
 struct AliasAxis {
   std::size_t count = 0;  // 2 p_max + 1
   std::vector<double> k;
@@ -803,6 +1092,12 @@ struct AliasAxis {
 
 AliasAxis alias_axis(std::ptrdiff_t h, int p_max, double d) {
   AliasAxis axis;
+  if (h == 0) {
+    axis.count = 1;
+    axis.k = {0.0};
+    axis.sinc = {1.0};
+    return axis;
+  }
   axis.count = static_cast<std::size_t>(2 * p_max + 1);
   axis.k.assign(static_cast<std::size_t>(h + 1) * axis.count, 0.0);
   axis.sinc.assign(axis.k.size(), 0.0);
@@ -817,11 +1112,43 @@ AliasAxis alias_axis(std::ptrdiff_t h, int p_max, double d) {
   return axis;
 }
 
-// The alias order |p| needed along a side d to fold every |k| < k_r, capped at max_alias_order.
-int alias_order(const SplitPlan& p, double d, SplitKernelReport& rep) {
-  const double need = std::ceil(p.k_r * d / (2.0 * pi) + 0.5);
-  if (need > p.max_alias_order) rep.alias_capped = true;
-  return static_cast<int>(std::min<double>(need, p.max_alias_order));
+// sum_p sinc_p S(sqrt(k_p^2 + ky2)) over the aliases of lattice index m (entries ix0 + i of
+// `ax`) with k_p^2 + ky2 <= k_s2. Along p, |k_p| grows on either side of p = 0 (xi in [0, 1/2]),
+// so these terms are one run around p = 0 and both loops stop at its ends: the cost is the
+// number of terms kept, not (2 p_max + 1).
+double alias_row(const AliasAxis& ax, std::size_t ix0, double ky2, double k_s2,
+                 const ShortRangeSpectrum& spectrum) {
+  const std::size_t c = ax.count / 2;
+  double row = 0.0;
+  for (std::size_t i = c; i < ax.count; ++i) {
+    const double k2 = ax.k[ix0 + i] * ax.k[ix0 + i] + ky2;
+    if (k2 > k_s2) break;
+    row += ax.sinc[ix0 + i] * spectrum(std::sqrt(k2));
+  }
+  for (std::size_t i = c; i-- > 0;) {
+    const double k2 = ax.k[ix0 + i] * ax.k[ix0 + i] + ky2;
+    if (k2 > k_s2) break;
+    row += ax.sinc[ix0 + i] * spectrum(std::sqrt(k2));
+  }
+  return row;
+}
+
+// The alias sum of lattice entry (m, n): the same run structure along q.
+double alias_sum(const AliasAxis& ax, const AliasAxis& ay, std::size_t ix0, std::size_t iy0,
+                 double k_s2, const ShortRangeSpectrum& spectrum) {
+  const std::size_t c = ay.count / 2;
+  double sum = 0.0;
+  for (std::size_t q = c; q < ay.count; ++q) {
+    const double ky2 = ay.k[iy0 + q] * ay.k[iy0 + q];
+    if (ky2 > k_s2) break;
+    sum += ay.sinc[iy0 + q] * alias_row(ax, ix0, ky2, k_s2, spectrum);
+  }
+  for (std::size_t q = c; q-- > 0;) {
+    const double ky2 = ay.k[iy0 + q] * ay.k[iy0 + q];
+    if (ky2 > k_s2) break;
+    sum += ay.sinc[iy0 + q] * alias_row(ax, ix0, ky2, k_s2, spectrum);
+  }
+  return sum;
 }
 
 // fold[n * sx + m] = sum over the aliases (p, q) of sinc sinc S(|k|), m in [0, sx), n in [0, sy),
@@ -845,19 +1172,7 @@ std::ptrdiff_t fold_aliases(const SplitPlan& p, const ShortRangeSpectrum& spectr
       const double kx0 = ax.k[ix0 + npx / 2];
       const double ky0 = ay.k[iy0 + npy / 2];
       if (kx0 * kx0 + ky0 * ky0 > k_s2) break;
-      double sum = 0.0;
-      for (std::size_t q = 0; q < npy; ++q) {
-        const double ky2 = ay.k[iy0 + q] * ay.k[iy0 + q];
-        if (ky2 > k_s2) continue;
-        double row = 0.0;
-        for (std::size_t i = 0; i < npx; ++i) {
-          const double k2 = ax.k[ix0 + i] * ax.k[ix0 + i] + ky2;
-          if (k2 > k_s2) continue;
-          row += ax.sinc[ix0 + i] * spectrum(std::sqrt(k2));
-        }
-        sum += ay.sinc[iy0 + q] * row;
-      }
-      fold[n * sx + m] = sum;
+      fold[n * sx + m] = alias_sum(ax, ay, ix0, iy0, k_s2, spectrum);
     }
     row_end[static_cast<std::size_t>(n)] = m;
     std::fill(fold + n * sx + m, fold + (n + 1) * sx, 0.0);
@@ -872,51 +1187,60 @@ std::ptrdiff_t fold_aliases(const SplitPlan& p, const ShortRangeSpectrum& spectr
 
 // The 2-D DCT-I (FFTW REDFT00) of the sx x sy array `fold`, in place, as two batches of 1-D
 // transforms: along x over the first `rows` rows only (the others are zero and stay so), then
-// along y over every column.
+// along y over every column. An axis of length 1 (a wide axis) is left as it is.
 void dct1_in_place(double* fold, std::ptrdiff_t sx, std::ptrdiff_t sy, std::ptrdiff_t rows,
                    int threads) {
   const int nx_t = static_cast<int>(sx);
   const int ny_t = static_cast<int>(sy);
-  FftwPlan along_x = FftwPlan::create(threads, [&] {
-    const fftw_r2r_kind kind = FFTW_REDFT00;
-    return fftw_plan_many_r2r(1, &nx_t, static_cast<int>(std::max<std::ptrdiff_t>(rows, 1)), fold,
-                              nullptr, 1, nx_t, fold, nullptr, 1, nx_t, &kind, FFTW_ESTIMATE);
-  });
-  FftwPlan along_y = FftwPlan::create(threads, [&] {
-    const fftw_r2r_kind kind = FFTW_REDFT00;
-    return fftw_plan_many_r2r(1, &ny_t, nx_t, fold, nullptr, nx_t, 1, fold, nullptr, nx_t, 1, &kind,
-                              FFTW_ESTIMATE);
-  });
-  along_x.execute();
-  along_y.execute();
+  const fftw_r2r_kind kind = FFTW_REDFT00;
+  if (sx > 1) {
+    FftwPlan along_x = FftwPlan::create(threads, [&] {
+      return fftw_plan_many_r2r(1, &nx_t, static_cast<int>(std::max<std::ptrdiff_t>(rows, 1)), fold,
+                                nullptr, 1, nx_t, fold, nullptr, 1, nx_t, &kind, FFTW_ESTIMATE);
+    });
+    along_x.execute();
+  }
+  if (sy > 1) {
+    FftwPlan along_y = FftwPlan::create(threads, [&] {
+      return fftw_plan_many_r2r(1, &ny_t, nx_t, fold, nullptr, nx_t, 1, fold, nullptr, nx_t, 1,
+                                &kind, FFTW_ESTIMATE);
+    });
+    along_y.execute();
+  }
+}
+
+// The largest |k| that the fold reaches along a lattice axis (0 on a wide axis).
+double lattice_k_max(const LatticeAxis& a, double d) {
+  return a.h == 0 ? 0.0 : 2.0 * pi * (a.p_max + 0.5) / d;
 }
 
 void add_short_range(const SplitPlan& p, Field& quarter, std::vector<double>& spare,
                      SplitKernelReport& rep) {
   const auto start = std::chrono::steady_clock::now();
-  // Half periods (in cells): the images of the short-range kernel stay >= 32 sigma away.
-  const std::ptrdiff_t hx =
-      std::max<std::ptrdiff_t>(p.nx, static_cast<std::ptrdiff_t>(std::ceil(32.0 * p.sigma / p.dx)));
-  const std::ptrdiff_t hy =
-      std::max<std::ptrdiff_t>(p.ny, static_cast<std::ptrdiff_t>(std::ceil(32.0 * p.sigma / p.dy)));
-  const int px = alias_order(p, p.dx, rep);
-  const int py = alias_order(p, p.dy, rep);
-  rep.alias_order = std::max(px, py);
+  // Both axes wide: only S(0) = R(0) (1 - w(0)) = 0 is left.
+  if (p.lattice_x.h == 0 && p.lattice_y.h == 0) return;
+  const LatticeAxis& lx = p.lattice_x;
+  const LatticeAxis& ly = p.lattice_y;
   const double k_table =
-      std::min(p.k_r, std::hypot(2.0 * pi * (px + 0.5) / p.dx, 2.0 * pi * (py + 0.5) / p.dy));
+      std::min(p.k_r, std::hypot(lattice_k_max(lx, p.dx), lattice_k_max(ly, p.dy)));
   const ShortRangeSpectrum spectrum(p, k_table);
-  const std::ptrdiff_t sx = hx + 1;
-  const std::ptrdiff_t sy = hy + 1;
+  const std::ptrdiff_t sx = lx.h + 1;
+  const std::ptrdiff_t sy = ly.h + 1;
   double* const fold = scratch(spare, sx * sy);
   // Square cells on a square lattice: F(m, n) = F(n, m) (R is radial), fold half of it.
-  const bool symmetric = p.dx == p.dy && hx == hy && px == py;
-  const std::ptrdiff_t rows = fold_aliases(p, spectrum, alias_axis(hx, px, p.dx),
-                                           alias_axis(hy, py, p.dy), symmetric, fold, sx, sy);
+  const bool symmetric = p.dx == p.dy && lx.h == ly.h && lx.p_max == ly.p_max;
+  const std::ptrdiff_t rows =
+      fold_aliases(p, spectrum, alias_axis(lx.h, lx.p_max, p.dx), alias_axis(ly.h, ly.p_max, p.dy),
+                   symmetric, fold, sx, sy);
   dct1_in_place(fold, sx, sy, rows, p.threads);
-  // DCT-I of the even spectrum = the sum over the full period (1/(Mx My) = 1/(4 hx hy)).
-  const double norm = 1.0 / (4.0 * static_cast<double>(hx) * static_cast<double>(hy));
-  detail::parallel_for(0, p.ny, p.threads, [&](std::ptrdiff_t j) {
-    for (std::ptrdiff_t i = 0; i < p.nx; ++i) quarter(i, j) += norm * fold[j * sx + i];
+  // DCT-I of the even spectrum = the sum over the full period (1/(Mx My) = 1/(4 hx hy)); a wide
+  // axis contributes its cell's row only, with weight 1.
+  const double norm = (lx.h > 0 ? 0.5 / static_cast<double>(lx.h) : 1.0) *
+                      (ly.h > 0 ? 0.5 / static_cast<double>(ly.h) : 1.0);
+  const std::ptrdiff_t mx = lx.h > 0 ? p.nx : 1;
+  const std::ptrdiff_t my = ly.h > 0 ? p.ny : 1;
+  detail::parallel_for(0, my, p.threads, [&](std::ptrdiff_t j) {
+    for (std::ptrdiff_t i = 0; i < mx; ++i) quarter(i, j) += norm * fold[j * sx + i];
   });
   rep.seconds_short = detail::seconds_since(start);
 }
@@ -929,7 +1253,15 @@ void report_plan(const SplitPlan& p, SplitKernelReport& rep) {
   rep.remainder_zero = p.remainder_zero;
   if (p.remainder_zero) return;
   rep.sigma = p.sigma;
-  if (p.long_range) rep.cell_rule = p.stencil ? 1 : p.cell_nodes * p.subcells;
+  rep.alias_order = std::max(p.lattice_x.p_max, p.lattice_y.p_max);
+  rep.alias_capped = p.lattice_x.capped || p.lattice_y.capped;
+  rep.wide_x = p.wide_x;
+  rep.wide_y = p.wide_y;
+  if (!p.long_range) return;
+  const bool graded = p.quad_x.graded || p.quad_y.graded;
+  rep.cell_rule = p.stencil ? 1
+                  : graded  ? 0
+                           : std::max(p.quad_x.nodes * p.quad_x.sub, p.quad_y.nodes * p.quad_y.sub);
 }
 
 }  // namespace

@@ -12,7 +12,11 @@
 //     long-range kernel that is tabulated by a 1-D Hankel transform and integrated over each cell
 //     in space (no periodisation), and R (1 - w) = O(k^6) R has a short-range kernel whose
 //     cell-averaged coefficients are summed on a periodic lattice with every alias
-//     k + 2 pi (p/dx, q/dy) folded in (no truncation at Nyquist).
+//     k + 2 pi (p/dx, q/dy) folded in (no truncation at Nyquist). Along a cell side >= 128 sigma
+//     (a wide axis) the short kernel lies within the cell's own row and the lattice reduces to
+//     its k = 0 term; beyond 128 sigma_e from the origin the long-range kernel is tabulated in
+//     log r. The cost is then bounded by the grid size, not by the cells' or the domain's aspect
+//     ratio (docs/split_kernel.md, section 7).
 #include <cstddef>
 
 #include "../core/grid.hpp"
@@ -35,8 +39,10 @@ struct SplitKernelOptions {
   /// exponential has the same first moment as k H - Cinf (about the coating thickness).
   double beta = 0.0;
   /// Length sigma [m] of the window of the automatic route; 0 picks
-  /// max(min(lx, ly)/32, 1.5 max(dx, dy)). The result does not depend on it (to the tolerance);
-  /// the cost does.
+  /// max(min(lx, ly)/32, 1.5 min(dx, dy)), or the long side / 128 for cells >= 8 times longer
+  /// than wide whose long side would need more than 4 aliases (docs/split_kernel.md, section 7).
+  /// The result does not depend on it (to the tolerance); the cost does. A sigma so large against
+  /// a cell that the short-range lattice would exceed 2^27 entries is refused.
   double sigma = 0.0;
   SplitRoute route = SplitRoute::automatic;
   /// Relative tolerance [-] of every truncation (k cut-offs, alias series, Hankel table, cell
@@ -61,9 +67,12 @@ struct SplitKernelReport {
   bool alias_capped = false;    ///< the fold needed more than max_alias_order
   std::ptrdiff_t hankel_r_points = 0;  ///< radii of the Hankel table
   std::ptrdiff_t hankel_k_nodes = 0;   ///< quadrature nodes per radius
-  int cell_rule = 0;           ///< Gauss-Legendre nodes per cell side (incl. subdivision); 1: point
-                               ///< values and the 9-point cell-average stencil
-  double seconds = 0.0;        ///< wall-clock time of the whole construction [s]
+  int cell_rule = 0;     ///< Gauss-Legendre nodes per cell side (incl. subdivision); 1: point
+                         ///< values and the 9-point cell-average stencil; 0: panels graded
+                         ///< in r along a cell side longer than ~5 sigma
+  bool wide_x = false;   ///< the short-range lattice reduced to k = 0 along x (dx >= 128 sigma)
+  bool wide_y = false;   ///< the same along y
+  double seconds = 0.0;  ///< wall-clock time of the whole construction [s]
   double seconds_long = 0.0;   ///< of which the Hankel table and cell quadrature [s]
   double seconds_short = 0.0;  ///< of which the alias fold and its DCT [s]
 };

@@ -427,3 +427,142 @@ TEST_CASE("split kernel rejects bad options", "[split]") {
   CHECK_THROWS_AS(split_frf_kernel(grid, frf, o), InvalidArgument);
   CHECK_THROWS_AS(detail::split_rectangle_integral(0, 0, 1, 1, 0.0), InvalidArgument);
 }
+
+// ---- Elongated cells and domains: cost bounded by the grid, accuracy as for square cells ------
+//
+// The cases of the aspect-ratio benchmark (bench/bench_split_aspect.cpp): 24 x 24 cells on
+// 2 mm x ly for ly up to 4096 m (cells up to 2e6 times longer than wide), and 1 x 4096 and
+// 4096 x 1 cells on 2 mm x 2 mm (cells of 2 mm x 0.49 um). These take the wide-axis lattice, the
+// logarithmic tail table and the graded cell rules (docs/split_kernel.md, section 7).
+
+namespace {
+
+struct Elongated {
+  const char* what;
+  Grid grid;
+};
+
+std::vector<Elongated> elongated_grids() {
+  return {{"24 x 24 on 2 mm x 20 mm", Grid(24, 24, 2e-3, 2e-2)},
+          {"24 x 24 on 2 mm x 0.2 m", Grid(24, 24, 2e-3, 0.2)},
+          {"24 x 24 on 2 mm x 4096 m", Grid(24, 24, 2e-3, 4096.0)},
+          {"1 x 4096 on 2 mm x 2 mm", Grid(1, 4096, 2e-3, 2e-3)},
+          {"4096 x 1 on 2 mm x 2 mm", Grid(4096, 1, 2e-3, 2e-3)}};
+}
+
+// TiN (400 GPa, 0.25) 20 um bonded on steel (210 GPa, 0.3), the body of the benchmark.
+CoatedFrf tin_on_steel() {
+  return CoatedFrf(Material(400e9, 0.25), 20e-6, Material(210e9, 0.3), Interface::bonded);
+}
+
+}  // namespace
+
+TEST_CASE("split kernel on elongated cells: a homogeneous body is Love's kernel", "[split]") {
+  // R = 0: only the closed forms (a) remain, whatever the aspect ratio; as in the square test
+  // above, only 2 / (2 / E*) differs from E* in the last bit.
+  const Material steel(210e9, 0.3);
+  const HalfSpaceFrf half(steel);
+  const CoatedFrf same(steel, 20e-6, steel, Interface::bonded);
+  for (const Elongated& e : elongated_grids()) {
+    INFO(e.what);
+    const InfluenceKernel love = love_kernel(e.grid, steel.plane_strain_modulus());
+    for (const Frf* frf : std::vector<const Frf*>{&half, &same}) {
+      SplitKernelReport report;
+      const InfluenceKernel split = split_frf_kernel(e.grid, *frf, {}, &report);
+      CHECK(report.remainder_zero);
+      CHECK(max_abs_difference(split, love) <= 1e-14 * love.at(0, 0));
+    }
+  }
+}
+
+TEST_CASE("split kernel on elongated cells and domains reproduces the closed form", "[split]") {
+  // As "split remainder reproduces the closed form" above (beta = 2.5 b, so that R is not zero
+  // and must come out of the lattice and the Hankel part): b = 20 um, a layer 4 times thinner
+  // than the short cell side and up to 1e7 times thinner than the long one, and b = 0.5 mm,
+  // whose R reaches over many cells and into the logarithmic tail of the long part. Every
+  // coefficient within 1e-9 of K(0, 0), the tolerance of the square cases (measured: <= 2.3e-10).
+  // The Hankel table stays the same size for ly = 20 mm and 4096 m (the uniform table at
+  // ly = 4096 m would have needed ~4e8 radii): its size is checked, not its time.
+  for (const double b : {20e-6, 5e-4}) {
+    const ExponentialFrf frf(3.0, 1.0, b);
+    SplitKernelOptions off;
+    off.beta = 2.5 * b;
+    for (const Elongated& e : elongated_grids()) {
+      INFO(e.what << ", b = " << b);
+      SplitKernelReport report;
+      const InfluenceKernel k = split_frf_kernel(e.grid, frf, off, &report);
+      CHECK_FALSE(report.alias_capped);
+      CHECK(report.hankel_r_points < 4000);
+      const double dx = e.grid.dx();
+      const double dy = e.grid.dy();
+      const double k00 = closed_form(frf, b, 0.0, 0.0, dx, dy);
+      double worst = 0.0;
+      for (std::ptrdiff_t j = 0; j < e.grid.ny(); ++j)
+        for (std::ptrdiff_t i = 0; i < e.grid.nx(); ++i) {
+          const double ref =
+              closed_form(frf, b, static_cast<double>(i) * dx, static_cast<double>(j) * dy, dx, dy);
+          worst = std::max(worst, std::abs(k.at(i, j) - ref));
+        }
+      CHECK(worst <= 1e-9 * k00);
+    }
+  }
+}
+
+TEST_CASE("split kernel on elongated cells: a coated body agrees with the full alias fold",
+          "[split]") {
+  // TiN 20 um on steel. The automatic plan makes the long cell side a wide axis (no alias along
+  // it); the reference folds every alias of that side instead (max_alias_order 4096, a sigma for
+  // which the side is not wide, the uniform Hankel table only). 1e-9 of K(0, 0) as above
+  // (measured: 9e-11).
+  const CoatedFrf frf = tin_on_steel();
+  SplitKernelOptions folded;
+  folded.max_alias_order = 4096;
+  SECTION("1 x 4096 cells of 2 mm x 0.49 um, and 4096 x 1 the same transposed") {
+    const Grid grid(1, 4096, 2e-3, 2e-3);
+    SplitKernelReport report;
+    const InfluenceKernel k = split_frf_kernel(grid, frf, {}, &report);
+    CHECK(report.wide_x);
+    folded.sigma = 62.5e-6;
+    SplitKernelReport ref_report;
+    const InfluenceKernel ref = split_frf_kernel(grid, frf, folded, &ref_report);
+    CHECK_FALSE(ref_report.wide_x);
+    CHECK(ref_report.alias_order > 400);
+    const InfluenceKernel t = split_frf_kernel(Grid(4096, 1, 2e-3, 2e-3), frf);
+    double worst = 0.0;
+    double transposed = 0.0;
+    for (std::ptrdiff_t j = 0; j < 4096; ++j) {
+      worst = std::max(worst, std::abs(k.at(0, j) - ref.at(0, j)));
+      transposed = std::max(transposed, std::abs(k.at(0, j) - t.at(j, 0)));
+    }
+    CHECK(worst <= 1e-9 * k.at(0, 0));
+    CHECK(transposed <= 1e-12 * k.at(0, 0));
+  }
+  SECTION("24 x 24 cells of 83 um x 8.3 mm against the same cells on a 24 x 2 grid") {
+    const Grid grid(24, 24, 2e-3, 0.2);
+    SplitKernelReport report;
+    const InfluenceKernel k = split_frf_kernel(grid, frf, {}, &report);
+    CHECK(report.wide_y);
+    folded.sigma = 0.4e-3;
+    SplitKernelReport ref_report;
+    const InfluenceKernel ref =
+        split_frf_kernel(Grid(24, 2, 2e-3, 0.2 / 12.0), frf, folded, &ref_report);
+    CHECK_FALSE(ref_report.wide_y);
+    CHECK(ref_report.alias_order > 1000);
+    double worst = 0.0;
+    for (std::ptrdiff_t j = -1; j <= 1; ++j)
+      for (std::ptrdiff_t i = -23; i <= 23; ++i)
+        worst = std::max(worst, std::abs(k.at(i, j) - ref.at(i, j)));
+    CHECK(worst <= 1e-9 * k.at(0, 0));
+  }
+}
+
+TEST_CASE("split kernel refuses a short-range lattice that cannot fit", "[split]") {
+  // A sigma given by the caller sets the lattice's half period 32 sigma/d: 1 m against cells of
+  // 16 um would need ~4e12 entries. Refused before any allocation, naming the cause.
+  const Grid grid(64, 64, 1e-3, 1e-3);
+  SplitKernelOptions o;
+  o.sigma = 1.0;
+  CHECK_THROWS_AS(split_frf_kernel(grid, tin_on_steel(), o), InvalidArgument);
+  CHECK_THROWS_WITH(split_frf_kernel(grid, tin_on_steel(), o),
+                    Catch::Matchers::Contains("short-range lattice"));
+}
