@@ -1,41 +1,296 @@
 #include "cli/npy.hpp"
 
+#include <locale.h>
+
+#include <algorithm>
+#include <array>
 #include <bit>
+#include <cctype>
+#include <charconv>
+#include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <fstream>
-#include <sstream>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "cli/input_file.hpp"
 #include "core/error.hpp"
 
 namespace coatfft::cli {
+
+namespace fs = std::filesystem;
 
 static_assert(std::endian::native == std::endian::little, "the .npy writer assumes little endian");
 
 namespace {
 constexpr char kMagic[] = "\x93NUMPY";
 constexpr std::size_t kMagicSize = 6;
-// The text after 'key': in a .npy header dict, up to the next top-level comma or the closing
-// brace, blanks trimmed ("'<f8'", "False", "(3, 4)").
-std::string header_value(const std::string& header, const std::string& key) {
-  const auto at = header.find("'" + key + "'");
-  if (at == std::string::npos) return "";
-  auto begin = header.find(':', at);
-  if (begin == std::string::npos) return "";
-  ++begin;
-  int depth = 0;
-  auto end = begin;
-  for (; end < header.size(); ++end) {
-    const char c = header[end];
-    if (c == '(') ++depth;
-    if (c == ')') --depth;
-    if ((c == ',' && depth == 0) || c == '}') break;
+// NumPy itself refuses headers over 10000 bytes by default; a 2-D float64 header takes ~120.
+constexpr std::size_t kMaxHeaderBytes = 65536;
+constexpr std::size_t kMaxEchoed = 80;
+
+// One byte of text from a file as written in a message: '"', '\' and non-printable bytes escaped.
+std::string escaped(char c) {
+  constexpr char kHex[] = "0123456789abcdef";
+  const auto byte = static_cast<unsigned char>(c);
+  if (c == '"' || c == '\\') return {'\\', c};
+  if (c == '\n') return "\\n";
+  if (c == '\t') return "\\t";
+  if (c == '\r') return "\\r";
+  if (byte < 0x20 || byte >= 0x7f) return {'\\', 'x', kHex[byte >> 4], kHex[byte & 15]};
+  return {c};
+}
+
+// Text from a file as echoed in a message: in double quotes, escaped, and shortened as
+// detail::shorten does (at most 80 characters, "..." at the end of a longer text), without
+// cutting an escape in two.
+std::string quoted(std::string_view text) {
+  std::string out(1, '"');
+  std::size_t fits = out.size();  // the end of the last escape within 80 - 3 characters
+  for (const char c : text) {
+    out += escaped(c);
+    if (out.size() <= 1 + kMaxEchoed - 3) fits = out.size();
+    if (out.size() > 1 + kMaxEchoed) break;
   }
-  std::string value = header.substr(begin, end - begin);
-  value.erase(0, value.find_first_not_of(' '));
-  value.erase(value.find_last_not_of(' ') + 1);
-  return value;
+  if (out.size() > 1 + kMaxEchoed) {
+    out.resize(fits);
+    out += "...";
+  }
+  out += '"';
+  return out;
+}
+
+// ---- .npy header ---------------------------------------------------------------------------
+
+// The value texts of a .npy header dict, as in the file ("'<f8'", "False", "(3, 4)").
+struct NpyHeader {
+  std::optional<std::string_view> descr, fortran_order, shape;
+};
+
+// A strict reader of the header dict {'key': value, ...}: keys are quoted strings, values are
+// quoted strings, bracketed lists or tuples, or words (True, False); a trailing comma is allowed,
+// then only blanks up to the end of the header. Python's other literals do not occur there.
+class HeaderParser {
+ public:
+  explicit HeaderParser(std::string_view text) : text_(text) {}
+
+  // Fills `header`; false if the text is malformed (reason() says why).
+  bool parse(NpyHeader& header) {
+    if (!eat('{')) return fail("it is not a dict");
+    bool closed = eat('}');
+    while (!closed) {
+      if (!entry(header)) return false;
+      if (eat(',')) {
+        closed = eat('}');
+      } else if (eat('}')) {
+        closed = true;
+      } else {
+        return fail("expected ',' or '}' after a value");
+      }
+    }
+    skip_blanks("\n");
+    if (pos_ != text_.size()) return fail("text after the closing '}'");
+    if (!header.descr || !header.fortran_order || !header.shape)
+      return fail("'descr', 'fortran_order' or 'shape' is missing");
+    return true;
+  }
+  const char* reason() const { return reason_; }
+
+ private:
+  bool fail(const char* why) {
+    reason_ = why;
+    return false;
+  }
+  // One 'key': value of the dict, stored in `header`.
+  bool entry(NpyHeader& header) {
+    const auto key = quoted_string();
+    if (!key || !eat(':')) return fail("expected 'key': value");
+    const auto value = this->value();
+    if (!value) return fail("a value is malformed");
+    const std::string_view name = key->substr(1, key->size() - 2);
+    std::optional<std::string_view>* slot = name == "descr"           ? &header.descr
+                                            : name == "fortran_order" ? &header.fortran_order
+                                            : name == "shape"         ? &header.shape
+                                                                      : nullptr;
+    if (slot == nullptr) return fail("unknown key");
+    if (slot->has_value()) return fail("duplicate key");
+    *slot = value;
+    return true;
+  }
+  void skip_blanks(std::string_view more = "") {
+    while (pos_ < text_.size() && (text_[pos_] == ' ' || text_[pos_] == '\t' ||
+                                   more.find(text_[pos_]) != std::string_view::npos))
+      ++pos_;
+  }
+  bool eat(char c) {
+    skip_blanks();
+    if (pos_ >= text_.size() || text_[pos_] != c) return false;
+    ++pos_;
+    return true;
+  }
+  // A quoted string with its quotes ('<f8' or "<f8"; no escapes occur in a .npy header).
+  std::optional<std::string_view> quoted_string() {
+    skip_blanks();
+    if (pos_ >= text_.size() || (text_[pos_] != '\'' && text_[pos_] != '"')) return std::nullopt;
+    const auto close = text_.find(text_[pos_], pos_ + 1);
+    if (close == std::string_view::npos) return std::nullopt;
+    return take(close + 1);
+  }
+  std::optional<std::string_view> value();
+  std::string_view take(std::size_t end) {
+    const auto taken = text_.substr(pos_, end - pos_);
+    pos_ = end;
+    return taken;
+  }
+
+  std::string_view text_;
+  std::size_t pos_ = 0;
+  const char* reason_ = "";
+};
+
+std::optional<std::string_view> HeaderParser::value() {
+  skip_blanks();
+  if (pos_ >= text_.size()) return std::nullopt;
+  const char first = text_[pos_];
+  if (first == '\'' || first == '"') return quoted_string();
+  if (first == '(' || first == '[') {  // up to the matching bracket
+    int depth = 0;
+    for (std::size_t end = pos_; end < text_.size(); ++end) {
+      const char c = text_[end];
+      depth += (c == '(' || c == '[') - (c == ')' || c == ']');
+      if (depth == 0) return take(end + 1);
+    }
+    return std::nullopt;
+  }
+  std::size_t end = pos_;
+  while (end < text_.size() &&
+         (std::isalnum(static_cast<unsigned char>(text_[end])) != 0 || text_[end] == '_'))
+    ++end;
+  if (end == pos_) return std::nullopt;
+  return take(end);
+}
+
+// A string value without its quotes; empty for anything else.
+std::string_view unquoted(std::string_view value) {
+  if (value.size() < 2 || (value.front() != '\'' && value.front() != '"') ||
+      value.back() != value.front())
+    return {};
+  return value.substr(1, value.size() - 2);
+}
+
+struct Shape {
+  std::uint64_t rows = 0, cols = 0;
+  std::string_view text;  // as in the header, "(3, 4)"
+};
+
+// Reads a number of a shape at `pos`; false unless it is a positive decimal integer. Numbers too
+// large for 64 bits read as the largest one, which no file can hold.
+bool shape_number(std::string_view text, std::size_t& pos, std::uint64_t& value) {
+  pos = std::min(text.find_first_not_of(" \t", pos), text.size());
+  const char* begin = text.data() + pos;
+  const auto [end, error] = std::from_chars(begin, text.data() + text.size(), value);
+  if (error == std::errc::result_out_of_range) value = UINT64_MAX;
+  if (end == begin || value == 0) return false;
+  pos = static_cast<std::size_t>(end - text.data());
+  pos = std::min(text.find_first_not_of(" \t", pos), text.size());
+  return true;
+}
+
+// The shape of a 2-D array: "(rows, cols)", with an optional trailing comma and blanks
+// anywhere between the parts; nullopt for anything else.
+std::optional<Shape> parse_shape(std::string_view text) {
+  if (text.size() < 2 || text.front() != '(' || text.back() != ')') return std::nullopt;
+  Shape shape{0, 0, text};
+  text = text.substr(1, text.size() - 2);
+  std::size_t pos = 0;
+  if (!shape_number(text, pos, shape.rows) || pos == text.size() || text[pos] != ',')
+    return std::nullopt;
+  ++pos;
+  if (!shape_number(text, pos, shape.cols)) return std::nullopt;
+  if (pos < text.size() && text[pos] == ',')
+    pos = std::min(text.find_first_not_of(" \t", pos + 1), text.size());
+  if (pos != text.size()) return std::nullopt;
+  return shape;
+}
+
+// The header text as echoed in messages: as in the file, less NumPy's padding (trailing blanks
+// and the final newline).
+std::string header_for_message(std::string_view header) {
+  const auto end = header.find_last_not_of(" \n");
+  return quoted(header.substr(0, end == std::string_view::npos ? 0 : end + 1));
+}
+
+// The shape of the array the header describes, once its dtype and order are checked.
+Shape npy_shape(const fs::path& path, std::string_view text) {
+  NpyHeader header;
+  HeaderParser parser(text);
+  COATFFT_REQUIRE(parser.parse(header), path.string(), ": malformed .npy header (", parser.reason(),
+                  "): ", header_for_message(text));
+  const std::string_view descr = unquoted(*header.descr);
+  COATFFT_REQUIRE(descr == "<f8" || descr == "=f8" || descr == "f8", path.string(),
+                  ": dtype must be float64 ('<f8'), header is ", header_for_message(text));
+  COATFFT_REQUIRE(*header.fortran_order == "False", path.string(),
+                  ": array must be in C order (fortran_order False), header is ",
+                  header_for_message(text));
+  const std::optional<Shape> shape = parse_shape(*header.shape);
+  COATFFT_REQUIRE(shape, path.string(),
+                  ": array must be 2-D with a shape of two positive integers, shape is ",
+                  quoted(*header.shape), " in header ", header_for_message(text));
+  return *shape;
+}
+
+// The header of a .npy file and where its data starts.
+struct NpyStart {
+  std::string header;
+  std::uintmax_t data_offset = 0;
+};
+
+// Reads the magic string, version and header, checking each length against the file's size
+// before anything is allocated.
+NpyStart read_npy_start(InputFile& file) {
+  const std::string name = file.path().string();
+  char start[kMagicSize + 2] = {};
+  COATFFT_REQUIRE(file.size() >= sizeof start + 2, name, ": not a .npy file (", file.size(),
+                  " bytes)");
+  file.read_exact(start, sizeof start);
+  COATFFT_REQUIRE(std::string_view(start, kMagicSize) == std::string_view(kMagic, kMagicSize), name,
+                  ": not a .npy file");
+  const int major = static_cast<unsigned char>(start[kMagicSize]);
+  COATFFT_REQUIRE(major >= 1 && major <= 3, name, ": unsupported .npy version ", major);
+  const std::size_t length_bytes = major == 1 ? 2 : 4;
+  const std::uintmax_t preamble = sizeof start + length_bytes;
+  COATFFT_REQUIRE(file.size() >= preamble, name, ": truncated .npy header");
+  unsigned char length[4] = {};
+  file.read_exact(length, length_bytes);
+  std::size_t header_size = 0;
+  for (std::size_t k = length_bytes; k-- > 0;) header_size = header_size << 8 | length[k];
+  COATFFT_REQUIRE(header_size <= kMaxHeaderBytes, name, ": .npy header of ", header_size,
+                  " bytes, more than the limit of ", kMaxHeaderBytes);
+  COATFFT_REQUIRE(header_size <= file.size() - preamble, name, ": truncated .npy header of ",
+                  header_size, " bytes: the file has ", file.size() - preamble,
+                  " bytes after the header length");
+  NpyStart npy{std::string(header_size, '\0'), preamble + header_size};
+  file.read_exact(npy.header.data(), header_size);
+  return npy;
+}
+
+// Checks that the data after the header is exactly the rows x cols float64 values of `shape`;
+// returns their size in bytes.
+std::size_t npy_data_bytes(const fs::path& path, const NpyStart& npy, const Shape& shape,
+                           std::uintmax_t file_size) {
+  const std::uintmax_t have = file_size - npy.data_offset;
+  std::uintmax_t need = 0;
+  const bool overflow = __builtin_mul_overflow(shape.rows, shape.cols, &need) ||
+                        __builtin_mul_overflow(need, std::uintmax_t{8}, &need);
+  if (!overflow && need == have) return static_cast<std::size_t>(need);
+  const std::string needs = overflow ? std::string("more than 2^64") : std::to_string(need);
+  throw InvalidArgument(detail::concat(
+      path.string(), ": ", overflow || need > have ? "truncated data: " : "", "shape ",
+      quoted(shape.text), " needs ", needs, " bytes of float64 values after the ", npy.data_offset,
+      "-byte header, the file has ", have));
 }
 
 }  // namespace
@@ -62,92 +317,104 @@ void write_npy(const std::filesystem::path& path, const Field& field) {
   COATFFT_REQUIRE(out.good(), "failed writing ", path.string());
 }
 
-Field read_npy(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  COATFFT_REQUIRE(in.good(), path.string(), ": cannot open file");
-  char magic[kMagicSize + 2] = {};
-  in.read(magic, kMagicSize + 2);
-  COATFFT_REQUIRE(in.good() && std::string(magic, kMagicSize) == std::string(kMagic, kMagicSize),
-                  path.string(), ": not a .npy file");
-  const int major = static_cast<unsigned char>(magic[kMagicSize]);
-  std::size_t header_size = 0;
-  if (major == 1) {
-    unsigned char len[2] = {};
-    in.read(reinterpret_cast<char*>(len), 2);
-    header_size = len[0] | (static_cast<std::size_t>(len[1]) << 8);
-  } else {
-    COATFFT_REQUIRE(major == 2 || major == 3, path.string(), ": unsupported .npy version ", major);
-    unsigned char len[4] = {};
-    in.read(reinterpret_cast<char*>(len), 4);
-    header_size = len[0] | (static_cast<std::size_t>(len[1]) << 8) |
-                  (static_cast<std::size_t>(len[2]) << 16) |
-                  (static_cast<std::size_t>(len[3]) << 24);
-  }
-  COATFFT_REQUIRE(in.good() && header_size < (1u << 20), path.string(), ": corrupt .npy header");
-  std::string header(header_size, '\0');
-  in.read(header.data(), static_cast<std::streamsize>(header_size));
-  COATFFT_REQUIRE(in.good(), path.string(), ": truncated .npy header");
-
-  const std::string descr = header_value(header, "descr");
-  COATFFT_REQUIRE(descr == "'<f8'" || descr == "'=f8'" || descr == "'f8'", path.string(),
-                  ": dtype must be float64 ('<f8'), header is ", header);
-  COATFFT_REQUIRE(header_value(header, "fortran_order") == "False", path.string(),
-                  ": array must be in C order (fortran_order False)");
-  long rows = 0, cols = 0;
-  char close = 0;
-  std::istringstream shape(header_value(header, "shape"));
-  shape >> close >> rows >> close >> cols >> close;
-  COATFFT_REQUIRE(shape && (close == ')' || (close == ',' && (shape >> close) && close == ')')),
-                  path.string(), ": array must be 2-D, header is ", header);
-  COATFFT_REQUIRE(rows > 0 && cols > 0, path.string(), ": empty array of shape (", rows, ", ", cols,
-                  ")");
-  Field field(cols, rows);
-  in.read(reinterpret_cast<char*>(field.data()),
-          static_cast<std::streamsize>(field.size() * sizeof(double)));
-  COATFFT_REQUIRE(in.gcount() == static_cast<std::streamsize>(field.size() * sizeof(double)),
-                  path.string(), ": truncated data, expected ", rows, " x ", cols,
-                  " float64 values");
+Field read_npy(const fs::path& path, std::uintmax_t max_bytes) {
+  InputFile file(path, "a .npy file", max_bytes);
+  const NpyStart npy = read_npy_start(file);
+  const Shape shape = npy_shape(path, npy.header);
+  const std::size_t bytes = npy_data_bytes(path, npy, shape, file.size());
+  // rows x cols x 8 equals the data's size: both fit an Eigen::Index.
+  Field field(static_cast<Eigen::Index>(shape.cols), static_cast<Eigen::Index>(shape.rows));
+  file.read_exact(field.data(), bytes);
   return field;
 }
 
-Field read_csv_matrix(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  COATFFT_REQUIRE(in.good(), path.string(), ": cannot open file");
-  std::vector<std::vector<double>> rows;
-  std::string line;
-  int line_number = 0;
-  while (std::getline(in, line)) {
-    ++line_number;
-    if (const auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
-    for (char& c : line)
-      if (c == ',' || c == ';' || c == '\t' || c == '\r') c = ' ';
-    std::istringstream fields(line);
-    std::vector<double> row;
-    std::string token;
-    while (fields >> token) {
-      std::size_t used = 0;
-      double value = 0;
-      try {
-        value = std::stod(token, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      COATFFT_REQUIRE(used == token.size(), path.string(), ":", line_number, ": \"", token,
-                      "\" is not a number");
-      row.push_back(value);
-    }
-    if (row.empty()) continue;
-    COATFFT_REQUIRE(rows.empty() || row.size() == rows.front().size(), path.string(), ":",
-                    line_number, ": row has ", row.size(), " values, expected ",
-                    rows.front().size());
-    rows.push_back(std::move(row));
+namespace {
+
+// The values of a CSV file, row after row, and where its first row is.
+struct CsvTable {
+  std::vector<double> values;
+  std::size_t rows = 0, cols = 0;
+  std::size_t first_line = 0;
+};
+
+// A value's place in a CSV file, for messages: "PATH:LINE: row R, column C: ".
+struct CsvPlace {
+  const fs::path& path;
+  std::size_t line, row, column;
+};
+std::ostream& operator<<(std::ostream& os, const CsvPlace& at) {
+  return os << at.path.string() << ':' << at.line << ": row " << at.row << ", column " << at.column
+            << ": ";
+}
+
+bool is_csv_separator(char c) {
+  return c == ' ' || c == ',' || c == ';' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+}
+
+// strtod in the "C" locale (a decimal point, whatever locale the program set).
+double c_strtod(const std::string& text) {
+  static const locale_t c_locale = ::newlocale(LC_ALL_MASK, "C", locale_t{});
+  return ::strtod_l(text.c_str(), nullptr, c_locale);
+}
+
+double parse_csv_value(const CsvPlace& at, std::string_view token) {
+  std::string_view number = token;
+  if (number.size() > 1 && number[0] == '+' && number[1] != '-' && number[1] != '+')
+    number.remove_prefix(1);  // from_chars takes no '+'
+  double value = 0;
+  const auto [end, error] = std::from_chars(number.data(), number.data() + number.size(), value);
+  COATFFT_REQUIRE(end == number.data() + number.size() &&
+                      (error == std::errc{} || error == std::errc::result_out_of_range),
+                  at, quoted(token), " is not a number");
+  if (error == std::errc{}) return value;
+  // from_chars reports underflow and overflow alike; strtod tells them apart and gives an
+  // underflow its IEEE value (0 or a subnormal), as numpy.loadtxt reads it.
+  value = c_strtod(std::string(number));
+  COATFFT_REQUIRE(std::abs(value) != HUGE_VAL, at, quoted(token),
+                  " is out of the range of float64");
+  return value;
+}
+
+// Reads the values of one line (comment included) into `table`; a line without values is skipped.
+void read_csv_line(const fs::path& path, std::size_t line_number, std::string_view line,
+                   CsvTable& table) {
+  line = line.substr(0, line.find('#'));
+  std::size_t column = 0;
+  for (std::size_t pos = 0;;) {
+    while (pos < line.size() && is_csv_separator(line[pos])) ++pos;
+    if (pos == line.size()) break;
+    std::size_t end = pos;
+    while (end < line.size() && !is_csv_separator(line[end])) ++end;
+    table.values.push_back(
+        parse_csv_value({path, line_number, table.rows, column}, line.substr(pos, end - pos)));
+    ++column;
+    pos = end;
   }
-  COATFFT_REQUIRE(!rows.empty(), path.string(), ": no data");
-  Field field(static_cast<Eigen::Index>(rows.front().size()),
-              static_cast<Eigen::Index>(rows.size()));
-  for (std::size_t j = 0; j < rows.size(); ++j)
-    for (std::size_t i = 0; i < rows[j].size(); ++i)
-      field(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = rows[j][i];
+  if (column == 0) return;
+  if (table.rows == 0) {
+    table.cols = column;
+    table.first_line = line_number;
+  }
+  COATFFT_REQUIRE(column == table.cols, path.string(), ':', line_number, ": row ", table.rows,
+                  " has ", column, " columns, row 0 (line ", table.first_line, ") has ",
+                  table.cols);
+  ++table.rows;
+}
+
+}  // namespace
+
+Field read_csv_matrix(const fs::path& path, std::uintmax_t max_bytes) {
+  const std::string text = read_input_file(path, "a CSV file", max_bytes);
+  CsvTable table;
+  std::size_t line_number = 0;
+  for (std::size_t begin = 0; begin < text.size();) {
+    const std::size_t end = std::min(text.find('\n', begin), text.size());
+    read_csv_line(path, ++line_number, std::string_view(text).substr(begin, end - begin), table);
+    begin = end + 1;
+  }
+  COATFFT_REQUIRE(table.rows > 0, path.string(), ": no data");
+  Field field(static_cast<Eigen::Index>(table.cols), static_cast<Eigen::Index>(table.rows));
+  std::copy(table.values.begin(), table.values.end(), field.data());
   return field;
 }
 

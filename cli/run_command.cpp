@@ -41,8 +41,8 @@ Field read_pressure_file(const std::filesystem::path& file, const Grid& grid) {
                   grid.nx(), ")");
   for (Eigen::Index j = 0; j < p.cols(); ++j)
     for (Eigen::Index i = 0; i < p.rows(); ++i)
-      COATFFT_REQUIRE(std::isfinite(p(i, j)), file.string(), ": value at row ", j, ", column ", i,
-                      " is ", p(i, j), "; pressures must be finite");
+      COATFFT_REQUIRE(std::isfinite(p(i, j)), file.string(), ": row ", j, ", column ", i,
+                      ": pressure ", p(i, j), " is not finite");
   return p;
 }
 

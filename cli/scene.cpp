@@ -275,7 +275,10 @@ ContactSpec read_contact(const toml::table& table, const Grid& grid, const Layer
     COATFFT_REQUIRE(h.rows() == grid.nx() && h.cols() == grid.ny(), file.string(), ": shape (",
                     h.cols(), ", ", h.rows(), ") but the grid needs (ny, nx) = (", grid.ny(), ", ",
                     grid.nx(), ")");
-    COATFFT_REQUIRE(h.allFinite(), file.string(), ": the height map has non-finite values");
+    for (Eigen::Index j = 0; j < h.cols(); ++j)
+      for (Eigen::Index i = 0; i < h.rows(); ++i)
+        COATFFT_REQUIRE(std::isfinite(h(i, j)), file.string(), ": row ", j, ", column ", i,
+                        ": height ", h(i, j), " is not finite");
   }
   COATFFT_REQUIRE(reader.has("load") != reader.has("approach"),
                   "[contact] give exactly one of load (N) and approach (m)");
@@ -310,7 +313,7 @@ ContactSpec read_contact(const toml::table& table, const Grid& grid, const Layer
     }
   }
   // Catch geometry errors (a sphere smaller than the domain) before any work is done.
-  in_section("contact", [&] { return height(grid, spec.indenter); });
+  in_section("contact", [&] { check_indenter(grid, spec.indenter); });
   reader.finish();
   return spec;
 }

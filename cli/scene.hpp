@@ -40,8 +40,8 @@ struct ContactSpec {
   std::string indenter_name;  ///< "sphere", "paraboloid", "cylinder", "flat_punch", "height_map"
   Indenter indenter;
   std::filesystem::path height_file;  ///< the file of a height_map indenter
-  std::optional<double> load;      ///< total normal load [N] (load control), or
-  std::optional<double> approach;  ///< rigid-body approach [m] (approach control)
+  std::optional<double> load;         ///< total normal load [N] (load control), or
+  std::optional<double> approach;     ///< rigid-body approach [m] (approach control)
   double tolerance = 1e-10;
   int max_iterations = 1000;
   /// Report the rigid-body approach (load control). false: the approach is not computed, and an

@@ -26,56 +26,35 @@ Field sample(const Grid& grid, F&& f) {
 
 }  // namespace
 
-Field height(const Grid& grid, const Sphere& sphere) {
+void check_indenter(const Grid& grid, const Sphere& sphere) {
   const double R = sphere.radius;
   require_length(R, "Sphere: radius");
   // The farthest cell centre is a corner centre; beyond r = R the sphere has no lower surface.
-  const double x_max = std::abs(grid.x(0));
-  const double y_max = std::abs(grid.y(0));
-  const double r_max = std::hypot(x_max, y_max);
+  const double r_max = std::hypot(grid.x(0), grid.y(0));
   COATFFT_REQUIRE(r_max < R, "Sphere: radius = ", R,
                   " m, but the grid's farthest cell centre lies at r = ", r_max,
                   " m; the exact sphere needs R > r everywhere (enlarge R, shrink the domain, or "
                   "use a Paraboloid)");
-  // R - sqrt(R^2 - r^2) rewritten as r^2 / (R + sqrt(R^2 - r^2)): no cancellation for r << R.
-  return sample(grid, [R](double x, double y) {
-    const double r2 = x * x + y * y;
-    return r2 / (R + std::sqrt(R * R - r2));
-  });
 }
 
-Field height(const Grid& grid, const Paraboloid& paraboloid) {
-  const double R = paraboloid.radius;
-  require_length(R, "Paraboloid: radius");
-  return sample(grid, [R](double x, double y) { return (x * x + y * y) / (2.0 * R); });
+void check_indenter(const Grid&, const Paraboloid& paraboloid) {
+  require_length(paraboloid.radius, "Paraboloid: radius");
 }
 
-Field height(const Grid& grid, const Cylinder& cylinder) {
-  const double R = cylinder.radius;
-  const double L = cylinder.flat_length;
-  const double Re = cylinder.end_radius;
-  require_length(R, "Cylinder: radius");
-  require_length(Re, "Cylinder: end_radius");
-  COATFFT_REQUIRE(std::isfinite(L) && L >= 0, "Cylinder: flat_length = ", L,
+void check_indenter(const Grid&, const Cylinder& cylinder) {
+  require_length(cylinder.radius, "Cylinder: radius");
+  require_length(cylinder.end_radius, "Cylinder: end_radius");
+  COATFFT_REQUIRE(std::isfinite(cylinder.flat_length) && cylinder.flat_length >= 0,
+                  "Cylinder: flat_length = ", cylinder.flat_length,
                   " m, but it must be finite and >= 0");
-  return sample(grid, [=](double x, double y) {
-    const double s = std::max(std::abs(x) - 0.5 * L, 0.0);
-    return y * y / (2.0 * R) + s * s / (2.0 * Re);
-  });
 }
 
-Field height(const Grid& grid, const FlatPunch& punch) {
-  const double a = punch.radius;
-  const double rho = punch.edge_radius;
-  require_length(a, "FlatPunch: radius");
-  require_length(rho, "FlatPunch: edge_radius");
-  return sample(grid, [=](double x, double y) {
-    const double s = std::max(std::hypot(x, y) - a, 0.0);
-    return s * s / (2.0 * rho);
-  });
+void check_indenter(const Grid&, const FlatPunch& punch) {
+  require_length(punch.radius, "FlatPunch: radius");
+  require_length(punch.edge_radius, "FlatPunch: edge_radius");
 }
 
-Field height(const Grid& grid, const HeightMap& map) {
+void check_indenter(const Grid& grid, const HeightMap& map) {
   COATFFT_REQUIRE(map.heights.rows() == grid.nx() && map.heights.cols() == grid.ny(),
                   "HeightMap: shape (", map.heights.rows(), ", ", map.heights.cols(),
                   "), but the grid needs (nx, ny) = (", grid.nx(), ", ", grid.ny(), ")");
@@ -85,6 +64,51 @@ Field height(const Grid& grid, const HeightMap& map) {
                       ") = ", map.heights(i, j), ", but every height must be finite");
     }
   }
+}
+
+void check_indenter(const Grid& grid, const Indenter& indenter) {
+  std::visit([&grid](const auto& shape) { check_indenter(grid, shape); }, indenter);
+}
+
+Field height(const Grid& grid, const Sphere& sphere) {
+  check_indenter(grid, sphere);
+  const double R = sphere.radius;
+  // R - sqrt(R^2 - r^2) rewritten as r^2 / (R + sqrt(R^2 - r^2)): no cancellation for r << R.
+  return sample(grid, [R](double x, double y) {
+    const double r2 = x * x + y * y;
+    return r2 / (R + std::sqrt(R * R - r2));
+  });
+}
+
+Field height(const Grid& grid, const Paraboloid& paraboloid) {
+  check_indenter(grid, paraboloid);
+  const double R = paraboloid.radius;
+  return sample(grid, [R](double x, double y) { return (x * x + y * y) / (2.0 * R); });
+}
+
+Field height(const Grid& grid, const Cylinder& cylinder) {
+  check_indenter(grid, cylinder);
+  const double R = cylinder.radius;
+  const double L = cylinder.flat_length;
+  const double Re = cylinder.end_radius;
+  return sample(grid, [=](double x, double y) {
+    const double s = std::max(std::abs(x) - 0.5 * L, 0.0);
+    return y * y / (2.0 * R) + s * s / (2.0 * Re);
+  });
+}
+
+Field height(const Grid& grid, const FlatPunch& punch) {
+  check_indenter(grid, punch);
+  const double a = punch.radius;
+  const double rho = punch.edge_radius;
+  return sample(grid, [=](double x, double y) {
+    const double s = std::max(std::hypot(x, y) - a, 0.0);
+    return s * s / (2.0 * rho);
+  });
+}
+
+Field height(const Grid& grid, const HeightMap& map) {
+  check_indenter(grid, map);
   return map.heights;
 }
 

@@ -61,6 +61,15 @@ Field height(const Grid& grid, const FlatPunch& punch);
 Field height(const Grid& grid, const HeightMap& map);
 Field height(const Grid& grid, const Indenter& indenter);
 
+/// The checks of height() without sampling anything (no grid-sized allocation): for a reader of
+/// user input that must refuse a bad shape before it knows whether the grid fits in memory.
+void check_indenter(const Grid& grid, const Sphere& sphere);
+void check_indenter(const Grid& grid, const Paraboloid& paraboloid);
+void check_indenter(const Grid& grid, const Cylinder& cylinder);
+void check_indenter(const Grid& grid, const FlatPunch& punch);
+void check_indenter(const Grid& grid, const HeightMap& map);
+void check_indenter(const Grid& grid, const Indenter& indenter);
+
 /// True when the shape is a body of revolution about the z axis, so that the contact it makes on
 /// a layered (laterally uniform) body is a disk and has a contact radius: Sphere, Paraboloid,
 /// FlatPunch, and a Cylinder with no straight part and equal radii (L = 0, Re = R: the

@@ -68,7 +68,7 @@ void DcfftOperator::plan_transforms(Planning planning) {
     w.block = FftwComplexBuffer(static_cast<std::size_t>(my_ * block_));
     for (auto [plan, sign] :
          {std::pair{&w.forward_y, FFTW_FORWARD}, {&w.backward_y, FFTW_BACKWARD}})
-      *plan = FftwPlan::create(1, [&] {
+      *plan = FftwPlan::create(1, [&, sign = sign] {  // clang 14 cannot capture a binding
         return fftw_plan_many_dft(1, n_y, bw, w.block.data(), nullptr, 1, 2 * ny, w.block.data(),
                                   nullptr, 1, 2 * ny, sign, flags);
       });

@@ -74,8 +74,8 @@ void save_fftw_wisdom(const std::string& path) {
   }
   fs::rename(temporary, path, ec);
   if (ec) fs::remove(temporary);
-  COATFFT_REQUIRE(!ec, "save_fftw_wisdom: cannot write the wisdom file '", path, "': ",
-                  ec.message());
+  COATFFT_REQUIRE(!ec, "save_fftw_wisdom: cannot write the wisdom file '", path,
+                  "': ", ec.message());
 }
 
 namespace detail {

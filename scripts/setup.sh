@@ -5,8 +5,11 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir=${1:-build}
 
+# clang and libclang-rt-14-dev (libFuzzer and the sanitizer runtimes, only recommended by clang)
+# are for scripts/fuzz.sh.
 packages=(cmake g++ ninja-build pkg-config libfftw3-dev libeigen3-dev libgsl-dev libboost-dev
-          catch2 libtomlplusplus-dev libcli11-dev nlohmann-json3-dev python3-numpy python3-matplotlib)
+          catch2 libtomlplusplus-dev libcli11-dev nlohmann-json3-dev python3-numpy python3-matplotlib
+          clang libclang-rt-14-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,10 +1,19 @@
-// The .npy and CSV readers and writers of the CLI.
+// The .npy and CSV readers and writers of the CLI, and the checks on input files they share.
+#include <sys/stat.h>
+
 #include <catch2/catch.hpp>
+#include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <limits>
+#include <string>
 
+#include "cli/input_file.hpp"
 #include "cli/npy.hpp"
+#include "core/error.hpp"
 
 namespace fs = std::filesystem;
 using coatfft::Field;
@@ -94,4 +103,208 @@ TEST_CASE("CSV matrix: comments, blanks and commas; ragged rows and words refuse
                     Catch::Contains("ragged.csv:2"));
   std::ofstream(scratch("word.csv")) << "1,two,3\n";
   CHECK_THROWS_WITH(coatfft::cli::read_csv_matrix(scratch("word.csv")), Catch::Contains("\"two\""));
+}
+
+namespace {
+
+// A .npy file of version `major` (1: 2-byte header length, 2 and 3: 4-byte) holding `header`
+// as it is (no padding added) followed by `data_bytes` zero bytes.
+fs::path raw_npy(const std::string& name, int major, const std::string& header,
+                 std::size_t data_bytes) {
+  const fs::path path = scratch(name);
+  std::ofstream out(path, std::ios::binary);
+  out.write("\x93NUMPY", 6);
+  out.put(static_cast<char>(major));
+  out.put('\0');
+  const int length_bytes = major == 1 ? 2 : 4;
+  for (int k = 0; k < length_bytes; ++k) out.put(static_cast<char>(header.size() >> (8 * k)));
+  out << header << std::string(data_bytes, '\0');
+  return path;
+}
+
+// A FIFO with no writer: opening it for reading the ordinary way would block.
+fs::path fifo(const std::string& name) {
+  const fs::path path = scratch(name);
+  fs::remove(path);
+  REQUIRE(::mkfifo(path.c_str(), 0600) == 0);
+  return path;
+}
+
+fs::path symlink_to(const std::string& name, const fs::path& target) {
+  const fs::path path = scratch(name);
+  fs::remove(path);
+  fs::create_symlink(target, path);
+  return path;
+}
+
+std::string message_of(const std::function<void()>& call) {
+  try {
+    call();
+  } catch (const coatfft::InvalidArgument& e) {
+    return e.what();
+  }
+  FAIL("no InvalidArgument thrown");
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("input files: only regular files are opened, sizes are checked first",
+          "[cli][npy][bad_input]") {
+  using Catch::Contains;
+  using coatfft::cli::read_input_file;
+  std::ofstream(scratch("input.txt")) << "hello\n";
+  CHECK(read_input_file(scratch("input.txt"), "a test file", 100) == "hello\n");
+  CHECK(read_input_file(scratch("input.txt"), "a test file", 6) == "hello\n");
+  CHECK_THROWS_WITH(read_input_file(scratch("input.txt"), "a test file", 5),
+                    Contains("input.txt: 6 bytes, more than the limit of 5 bytes for a test file"));
+  CHECK_THROWS_WITH(read_input_file(scratch("absent.txt"), "a test file", 100),
+                    Contains("absent.txt: cannot open: No such file or directory"));
+  fs::create_directories(scratch("a_directory"));
+  CHECK_THROWS_WITH(read_input_file(scratch("a_directory"), "a test file", 100),
+                    Contains("a_directory: not a regular file (a directory)"));
+  CHECK_THROWS_WITH(read_input_file(fifo("input.fifo"), "a test file", 100),
+                    Contains("input.fifo: not a regular file (a FIFO)"));
+  CHECK_THROWS_WITH(read_input_file(symlink_to("zero.txt", "/dev/zero"), "a test file", 1u << 30),
+                    Contains("zero.txt: not a regular file (a character device)"));
+  CHECK(read_input_file(symlink_to("link.txt", scratch("input.txt")), "a test file", 100) ==
+        "hello\n");
+  CHECK(coatfft::cli::require_regular_input(scratch("input.txt"), "a test file", 100) == 6);
+  coatfft::cli::InputFile file(scratch("input.txt"), "a test file", 100);
+  char bytes[4] = {};
+  file.read_exact(bytes, 4);
+  CHECK(std::string(bytes, 4) == "hell");
+  CHECK_THROWS_WITH(file.read_exact(bytes, 4), Contains("changed while being read"));
+}
+
+TEST_CASE("npy and CSV: FIFOs, directories and devices are refused without blocking",
+          "[cli][npy][bad_input]") {
+  using Catch::Contains;
+  using coatfft::cli::read_csv_matrix;
+  using coatfft::cli::read_npy;
+  CHECK_THROWS_WITH(read_npy(fifo("pipe.npy")), Contains("pipe.npy: not a regular file (a FIFO)"));
+  CHECK_THROWS_WITH(read_csv_matrix(fifo("pipe.csv")),
+                    Contains("pipe.csv: not a regular file (a FIFO)"));
+  fs::create_directories(scratch("dir.npy"));
+  CHECK_THROWS_WITH(read_npy(scratch("dir.npy")), Contains("(a directory)"));
+  CHECK_THROWS_WITH(read_npy(symlink_to("zero.npy", "/dev/zero")),
+                    Contains("zero.npy: not a regular file (a character device)"));
+  CHECK_THROWS_WITH(read_csv_matrix(symlink_to("zero.csv", "/dev/zero")),
+                    Contains("zero.csv: not a regular file (a character device)"));
+  std::ofstream(scratch("limit.csv")) << "1, 2, 3\n";
+  CHECK_THROWS_WITH(read_csv_matrix(scratch("limit.csv"), 4),
+                    Contains("8 bytes, more than the limit of 4 bytes for a CSV file"));
+}
+
+TEST_CASE("npy: sizes in the header are checked against the file before allocating",
+          "[cli][npy][bad_input]") {
+  using Catch::Contains;
+  using coatfft::cli::read_npy;
+  const std::string dict = "{'descr': '<f8', 'fortran_order': False, 'shape': ";
+  // 60000 x 60000 doubles would take 28.8 GB: refused from the sizes alone, quickly.
+  const auto start = std::chrono::steady_clock::now();
+  CHECK_THROWS_WITH(read_npy(raw_npy("huge.npy", 1, dict + "(60000, 60000), }\n", 16)),
+                    Contains("huge.npy: truncated data: shape \"(60000, 60000)\" needs "
+                             "28800000000 bytes") &&
+                        Contains("the file has 16"));
+  CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(5));
+  CHECK_THROWS_WITH(read_npy(raw_npy("overflow.npy", 1, dict + "(4294967296, 4294967296), }", 8)),
+                    Contains("needs more than 2^64 bytes"));
+  CHECK_THROWS_WITH(
+      read_npy(raw_npy("digits.npy", 1, dict + "(123456789012345678901234567890, 1), }", 8)),
+      Contains("truncated data") && Contains("123456789012345678901234567890"));
+  CHECK_THROWS_WITH(read_npy(raw_npy("trailing.npy", 1, dict + "(1, 2), }", 24)),
+                    Contains("needs 16 bytes") && Contains("the file has 24"));
+  // A header length beyond the end of the file, and beyond the limit on headers.
+  const fs::path cut = raw_npy("cutheader.npy", 1, dict, 0);
+  fs::resize_file(cut, 20);
+  CHECK_THROWS_WITH(read_npy(cut), Contains("cutheader.npy: truncated .npy header"));
+  std::ofstream(scratch("bighead.npy"), std::ios::binary)
+      << std::string("\x93NUMPY\x02\x00\xff\xff\xff\x7f", 12) << "{";
+  CHECK_THROWS_WITH(read_npy(scratch("bighead.npy")),
+                    Contains(".npy header of 2147483647 bytes, more than the limit"));
+}
+
+TEST_CASE("npy: the header is parsed strictly and quoted as it is in the file",
+          "[cli][npy][bad_input]") {
+  using Catch::Contains;
+  using coatfft::cli::read_npy;
+  const std::string dict = "{'descr': '<f8', 'fortran_order': False, 'shape': ";
+  const std::string blanks_msg = message_of(
+      [&] { read_npy(raw_npy("blanks.npy", 1, dict + "(32 32 ), }" + std::string(40, ' '), 0)); });
+  CHECK_THAT(blanks_msg, Contains("2-D") && Contains("shape is \"(32 32 )\"") &&
+                             Contains("header \"" + dict + "(32 32 ), }\""));
+  CHECK_THAT(blanks_msg, !Contains("(32, 2)"));
+  for (const std::string shape :
+       {"(3,)", "()", "(3, 4, 5)", "(0, 4)", "(3, -4)", "(3, 4.0)", "(3,, 4)", "(+3, 4)", "(3 4,)"})
+    CHECK_THROWS_WITH(read_npy(raw_npy("shape.npy", 1, dict + shape + ", }", 96)),
+                      Contains("2-D") && Contains("\"" + shape + "\""));
+  // Blanks and a trailing comma are fine, and so is a version 2.0 header with double quotes.
+  CHECK(read_npy(raw_npy("spaced.npy", 1, dict + "( 3 ,4 , ), }\n", 96)).size() == 12);
+  CHECK(read_npy(raw_npy("v2.npy", 2,
+                         "{\"descr\": \"<f8\", \"fortran_order\": False, \"shape\": (2, 2)}", 32))
+            .size() == 4);
+  const std::string binary_msg =
+      message_of([&] { read_npy(raw_npy("binary.npy", 1, "{'descr': '<f8'\x01\xff\"\\", 0)); });
+  CHECK_THAT(binary_msg, Contains("malformed .npy header") &&
+                             Contains("\"{'descr': '<f8'\\x01\\xff\\\"\\\\\""));
+  // Shortened to 80 characters without cutting an escape in two.
+  const std::string cut_msg = message_of(
+      [&] { read_npy(raw_npy("cut.npy", 1, "{'descr': '<f8'" + std::string(70, '\x01'), 0)); });
+  CHECK_THAT(cut_msg,
+             Contains("'<f8'\\x01\\x01") && Contains("\\x01...\"") && !Contains("\\x0..."));
+  const std::string long_msg = message_of(
+      [&] { read_npy(raw_npy("long.npy", 1, dict + "(3, 4), 'x" + std::string(5000, 'y'), 0)); });
+  CHECK_THAT(long_msg, Contains("...\"") && Contains("malformed .npy header"));
+  CHECK(long_msg.size() < 200);
+  CHECK_THROWS_WITH(read_npy(raw_npy("unknown.npy", 1, dict + "(1, 1), 'extra': 1}", 8)),
+                    Contains("unknown key"));
+  CHECK_THROWS_WITH(read_npy(raw_npy("twice.npy", 1, dict + "(1, 1), 'shape': (1, 1)}", 8)),
+                    Contains("duplicate key"));
+  CHECK_THROWS_WITH(
+      read_npy(raw_npy("noshape.npy", 1, "{'descr': '<f8', 'fortran_order': False}", 8)),
+      Contains("is missing"));
+  CHECK_THROWS_WITH(read_npy(raw_npy("after.npy", 1, dict + "(1, 1)} x", 8)),
+                    Contains("after the closing"));
+}
+
+TEST_CASE("CSV matrix: float64 range, 1-based line numbers, 0-based rows and columns",
+          "[cli][npy][bad_input]") {
+  using Catch::Contains;
+  using coatfft::cli::read_csv_matrix;
+  std::ofstream(scratch("tiny.csv")) << "1e-400, -1e-400, 1e-310, +2.5\n4.9e-324, inf, -0, 7\n";
+  const Field f = read_csv_matrix(scratch("tiny.csv"));
+  REQUIRE(f.rows() == 4);
+  REQUIRE(f.cols() == 2);
+  CHECK(f(0, 0) == 0.0);  // underflow: the IEEE value strtod gives, as numpy.loadtxt reads it
+  CHECK(std::signbit(f(1, 0)));
+  CHECK(f(2, 0) == 1e-310);  // a subnormal
+  CHECK(std::fpclassify(f(2, 0)) == FP_SUBNORMAL);
+  CHECK(f(3, 0) == 2.5);
+  CHECK(f(0, 1) == std::numeric_limits<double>::denorm_min());
+  CHECK(std::isinf(f(1, 1)));
+
+  std::ofstream(scratch("big.csv")) << "# header\n\n1, 2\n3, -1e400\n";
+  const std::string big_msg = message_of([] { read_csv_matrix(scratch("big.csv")); });
+  CHECK(big_msg == scratch("big.csv").string() +
+                       ":4: row 1, column 1: \"-1e400\" is out of the range of float64");
+  std::ofstream(scratch("words.csv")) << "1 2 3\n# comment\n4 5 x6\n";
+  CHECK_THROWS_WITH(read_csv_matrix(scratch("words.csv")),
+                    Contains("words.csv:3: row 1, column 2: \"x6\" is not a number"));
+  std::ofstream(scratch("ragged2.csv")) << "\n1,2,3\n4,5,6\n\n7,8\n";
+  CHECK_THROWS_WITH(read_csv_matrix(scratch("ragged2.csv")),
+                    Contains("ragged2.csv:5: row 2 has 2 columns, row 0 (line 2) has 3"));
+  for (const char* bad : {"+", "+-1", "++1", "0x10", "1e", "5.5.5", "nan()x"}) {
+    std::ofstream(scratch("bad.csv")) << "1 " << bad << "\n";
+    CHECK_THROWS_WITH(read_csv_matrix(scratch("bad.csv")),
+                      Contains("bad.csv:1: row 0, column 1: \"") && Contains("is not a number"));
+  }
+  std::ofstream(scratch("long.csv")) << "1, " << std::string(5000, '7') << "x\n";
+  const std::string long_msg = message_of([] { read_csv_matrix(scratch("long.csv")); });
+  CHECK_THAT(long_msg, Contains("long.csv:1: row 0, column 1: \"777") && Contains("...\""));
+  CHECK(long_msg.size() < 200);
+  std::ofstream(scratch("nul.csv"), std::ios::binary) << std::string("1\0", 2) << "\n";
+  CHECK_THROWS_WITH(read_csv_matrix(scratch("nul.csv")), Contains("\"1\\x00\" is not a number"));
+  std::ofstream(scratch("empty.csv")) << "# nothing\n\n";
+  CHECK_THROWS_WITH(read_csv_matrix(scratch("empty.csv")), Contains("empty.csv: no data"));
 }

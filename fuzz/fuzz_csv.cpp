@@ -1,0 +1,20 @@
+// libFuzzer target: coatfft::cli::read_csv_matrix on arbitrary bytes. InvalidArgument is the
+// expected refusal; any other exception escapes and, like a crash or a sanitizer report, is a
+// finding.
+#include <cstddef>
+#include <cstdint>
+
+#include "cli/npy.hpp"
+#include "core/error.hpp"
+#include "fuzz/fuzz_input.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  static const coatfft::fuzz::ScratchFolder scratch("fuzz_csv");
+  const auto path = scratch.write("input.csv", data, size);
+  try {
+    const coatfft::Field field = coatfft::cli::read_csv_matrix(path);
+    if (field.size() == 0) __builtin_trap();  // the reader promises a non-empty array
+  } catch (const coatfft::InvalidArgument&) {
+  }
+  return 0;
+}
