@@ -15,26 +15,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// "a directory", "a FIFO", ...: what a path names instead of a regular file.
-const char* describe(fs::file_type type) {
-  switch (type) {
-    case fs::file_type::directory:
-      return "a directory";
-    case fs::file_type::character:
-      return "a character device";
-    case fs::file_type::block:
-      return "a block device";
-    case fs::file_type::fifo:
-      return "a FIFO";
-    case fs::file_type::socket:
-      return "a socket";
-    case fs::file_type::symlink:
-      return "a symbolic link";
-    default:
-      return "of an unknown type";
-  }
-}
-
 void check_size(const fs::path& path, std::uintmax_t size, std::string_view what,
                 std::uintmax_t max_bytes) {
   COATFFT_REQUIRE(size <= max_bytes, path.string(), ": ", size, " bytes, more than the limit of ",
@@ -53,13 +33,32 @@ void check_size(const fs::path& path, std::uintmax_t size, std::string_view what
 
 }  // namespace
 
+const char* describe_file_type(fs::file_type type) {
+  switch (type) {
+    case fs::file_type::directory:
+      return "a directory";
+    case fs::file_type::character:
+      return "a character device";
+    case fs::file_type::block:
+      return "a block device";
+    case fs::file_type::fifo:
+      return "a FIFO";
+    case fs::file_type::socket:
+      return "a socket";
+    case fs::file_type::symlink:
+      return "a symbolic link";
+    default:
+      return "of an unknown type";
+  }
+}
+
 std::uintmax_t require_regular_input(const fs::path& path, std::string_view what,
                                      std::uintmax_t max_bytes) {
   std::error_code error;
   const fs::file_status status = fs::status(path, error);  // follows symbolic links
   COATFFT_REQUIRE(!error, path.string(), ": cannot open: ", error.message());
   COATFFT_REQUIRE(status.type() == fs::file_type::regular, path.string(), ": not a regular file (",
-                  describe(status.type()), ")");
+                  describe_file_type(status.type()), ")");
   const std::uintmax_t size = fs::file_size(path, error);
   COATFFT_REQUIRE(!error, path.string(), ": cannot open: ", error.message());
   check_size(path, size, what, max_bytes);

@@ -18,6 +18,10 @@
 
 namespace coatfft::cli {
 
+/// "a directory", "a character device", "a FIFO", ...: what a path names instead of a regular
+/// file, for messages.
+const char* describe_file_type(std::filesystem::file_type type);
+
 /// Checks, without opening anything, that `path` names a regular file (symbolic links are
 /// followed) of at most `max_bytes` bytes, and returns its size. For a reader that hands the
 /// path to another library (FFTW's wisdom import) or reads the file piece by piece (InputFile).

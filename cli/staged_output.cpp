@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <fstream>
 
+#include "cli/input_file.hpp"
 #include "core/detail/shorten.hpp"
 #include "core/error.hpp"
 
@@ -16,24 +17,6 @@ namespace {
 
 std::string quoted(const fs::path& path) {
   return detail::concat('"', detail::shorten(path.string()), '"');
-}
-
-std::string kind_of(fs::file_type type) {
-  switch (type) {
-    case fs::file_type::directory:
-      return "a folder";
-    case fs::file_type::symlink:
-      return "a symbolic link";
-    case fs::file_type::block:
-    case fs::file_type::character:
-      return "a device";
-    case fs::file_type::fifo:
-      return "a FIFO";
-    case fs::file_type::socket:
-      return "a socket";
-    default:
-      return "not a regular file";
-  }
 }
 
 // A hidden name beside `path`, unique to this process: ".NAME.partial-PID".
@@ -84,7 +67,7 @@ void check_output_target(const fs::path& target, std::string_view what,
   const fs::file_status status = fs::symlink_status(target, ec);
   if (!fs::exists(status)) return;
   COATFFT_REQUIRE(fs::is_regular_file(status), what, " ", quoted(target), " exists and is ",
-                  kind_of(status.type()), ": coatfft replaces only regular files");
+                  describe_file_type(status.type()), ": coatfft replaces only regular files");
   for (const fs::path& input : inputs) {
     COATFFT_REQUIRE(!fs::equivalent(target, input, ec), what, " ", quoted(target),
                     " is an input of this run (", quoted(input), "): choose another output");
@@ -101,7 +84,7 @@ StagedOutput::StagedOutput(fs::path outdir, std::vector<std::string> names,
   const fs::file_status status = fs::status(outdir_, ec);
   if (!fs::exists(status)) return;
   COATFFT_REQUIRE(fs::is_directory(status), "output folder ", quoted(outdir), " exists and is ",
-                  kind_of(status.type()));
+                  describe_file_type(status.type()));
   for (const std::string& name : names_) check_output_target(outdir_ / name, "output", inputs_);
 }
 
