@@ -243,6 +243,10 @@ TEST_CASE("extreme numbers are refused with the key, never as an internal error"
               "material = \"" + std::string(100000, 'x') + "\"", "unknown material"},
   };
   for (const auto& c : cases) check_refused(kGoodScene, c);
+  // The documented limit of 64 coatings (docs/scene_format.md), named in the message.
+  std::string coatings;
+  for (int n = 0; n < 100; ++n) coatings += "[[coating]]\nmaterial = \"steel\"\nthickness = 1e-6\n";
+  check_refused(kGoodScene, BadCase{"coatings_100", "[pressure]", coatings + "[pressure]", "64"});
   // The long name is shortened in the message.
   const fs::path scene = write_scene(kGoodScene, "long_name", "material = \"steel\"",
                                      "material = \"" + std::string(100000, 'x') + "\"");
