@@ -27,11 +27,44 @@ void check_size(const fs::path& path, std::uintmax_t size, std::string_view what
   throw InvalidArgument(path.string() + ": " + doing + ": " + reason);
 }
 
+constexpr std::size_t max_echoed = 80;
+
+// One byte of text from a file as written in a message: '"', '\' and non-printable bytes escaped.
+std::string escaped(char c) {
+  constexpr char kHex[] = "0123456789abcdef";
+  const auto byte = static_cast<unsigned char>(c);
+  if (c == '"' || c == '\\') return {'\\', c};
+  if (c == '\n') return "\\n";
+  if (c == '\t') return "\\t";
+  if (c == '\r') return "\\r";
+  if (byte < 0x20 || byte >= 0x7f) return {'\\', 'x', kHex[byte >> 4], kHex[byte & 15]};
+  return {c};
+}
+
 [[noreturn]] void throw_changed(const fs::path& path) {
   throw InvalidArgument(path.string() + ": the file changed while being read");
 }
 
 }  // namespace
+
+// Text from a file as echoed in a message: in double quotes, escaped, and shortened as
+// detail::shorten does (at most 80 characters, "..." at the end of a longer text), without
+// cutting an escape in two.
+std::string quoted_excerpt(std::string_view text) {
+  std::string out(1, '"');
+  std::size_t fits = out.size();  // the end of the last escape within 80 - 3 characters
+  for (const char c : text) {
+    out += escaped(c);
+    if (out.size() <= 1 + max_echoed - 3) fits = out.size();
+    if (out.size() > 1 + max_echoed) break;
+  }
+  if (out.size() > 1 + max_echoed) {
+    out.resize(fits);
+    out += "...";
+  }
+  out += '"';
+  return out;
+}
 
 const char* describe_file_type(fs::file_type type) {
   switch (type) {

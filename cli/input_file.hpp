@@ -18,6 +18,14 @@
 
 namespace coatfft::cli {
 
+/// Text from a file as echoed in a message: in double quotes, with '"', '\\' and non-printable
+/// bytes escaped ("\\x01"), and at most 80 characters inside the quotes ("..." ends a longer
+/// text; an escape is never cut in two).
+std::string quoted_excerpt(std::string_view text);
+
+/// Default limit on the size of a .npy or CSV file: 4 GiB (a 16384 x 16384 .npy takes 2 GiB).
+inline constexpr std::uintmax_t kMaxArrayFileBytes = std::uintmax_t{4} << 30;
+
 /// "a directory", "a character device", "a FIFO", ...: what a path names instead of a regular
 /// file, for messages.
 const char* describe_file_type(std::filesystem::file_type type);

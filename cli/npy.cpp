@@ -1,7 +1,5 @@
 #include "cli/npy.hpp"
 
-#include <locale.h>
-
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -30,38 +28,6 @@ constexpr char kMagic[] = "\x93NUMPY";
 constexpr std::size_t kMagicSize = 6;
 // NumPy itself refuses headers over 10000 bytes by default; a 2-D float64 header takes ~120.
 constexpr std::size_t kMaxHeaderBytes = 65536;
-constexpr std::size_t kMaxEchoed = 80;
-
-// One byte of text from a file as written in a message: '"', '\' and non-printable bytes escaped.
-std::string escaped(char c) {
-  constexpr char kHex[] = "0123456789abcdef";
-  const auto byte = static_cast<unsigned char>(c);
-  if (c == '"' || c == '\\') return {'\\', c};
-  if (c == '\n') return "\\n";
-  if (c == '\t') return "\\t";
-  if (c == '\r') return "\\r";
-  if (byte < 0x20 || byte >= 0x7f) return {'\\', 'x', kHex[byte >> 4], kHex[byte & 15]};
-  return {c};
-}
-
-// Text from a file as echoed in a message: in double quotes, escaped, and shortened as
-// detail::shorten does (at most 80 characters, "..." at the end of a longer text), without
-// cutting an escape in two.
-std::string quoted(std::string_view text) {
-  std::string out(1, '"');
-  std::size_t fits = out.size();  // the end of the last escape within 80 - 3 characters
-  for (const char c : text) {
-    out += escaped(c);
-    if (out.size() <= 1 + kMaxEchoed - 3) fits = out.size();
-    if (out.size() > 1 + kMaxEchoed) break;
-  }
-  if (out.size() > 1 + kMaxEchoed) {
-    out.resize(fits);
-    out += "...";
-  }
-  out += '"';
-  return out;
-}
 
 // ---- .npy header ---------------------------------------------------------------------------
 
@@ -220,7 +186,7 @@ std::optional<Shape> parse_shape(std::string_view text) {
 // and the final newline).
 std::string header_for_message(std::string_view header) {
   const auto end = header.find_last_not_of(" \n");
-  return quoted(header.substr(0, end == std::string_view::npos ? 0 : end + 1));
+  return quoted_excerpt(header.substr(0, end == std::string_view::npos ? 0 : end + 1));
 }
 
 // The shape of the array the header describes, once its dtype and order are checked.
@@ -238,7 +204,7 @@ Shape npy_shape(const fs::path& path, std::string_view text) {
   const std::optional<Shape> shape = parse_shape(*header.shape);
   COATFFT_REQUIRE(shape, path.string(),
                   ": array must be 2-D with a shape of two positive integers, shape is ",
-                  quoted(*header.shape), " in header ", header_for_message(text));
+                  quoted_excerpt(*header.shape), " in header ", header_for_message(text));
   return *shape;
 }
 
@@ -289,8 +255,8 @@ std::size_t npy_data_bytes(const fs::path& path, const NpyStart& npy, const Shap
   const std::string needs = overflow ? std::string("more than 2^64") : std::to_string(need);
   throw InvalidArgument(detail::concat(
       path.string(), ": ", overflow || need > have ? "truncated data: " : "", "shape ",
-      quoted(shape.text), " needs ", needs, " bytes of float64 values after the ", npy.data_offset,
-      "-byte header, the file has ", have));
+      quoted_excerpt(shape.text), " needs ", needs, " bytes of float64 values after the ",
+      npy.data_offset, "-byte header, the file has ", have));
 }
 
 }  // namespace
@@ -325,96 +291,6 @@ Field read_npy(const fs::path& path, std::uintmax_t max_bytes) {
   // rows x cols x 8 equals the data's size: both fit an Eigen::Index.
   Field field(static_cast<Eigen::Index>(shape.cols), static_cast<Eigen::Index>(shape.rows));
   file.read_exact(field.data(), bytes);
-  return field;
-}
-
-namespace {
-
-// The values of a CSV file, row after row, and where its first row is.
-struct CsvTable {
-  std::vector<double> values;
-  std::size_t rows = 0, cols = 0;
-  std::size_t first_line = 0;
-};
-
-// A value's place in a CSV file, for messages: "PATH:LINE: row R, column C: ".
-struct CsvPlace {
-  const fs::path& path;
-  std::size_t line, row, column;
-};
-std::ostream& operator<<(std::ostream& os, const CsvPlace& at) {
-  return os << at.path.string() << ':' << at.line << ": row " << at.row << ", column " << at.column
-            << ": ";
-}
-
-bool is_csv_separator(char c) {
-  return c == ' ' || c == ',' || c == ';' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
-}
-
-// strtod in the "C" locale (a decimal point, whatever locale the program set).
-double c_strtod(const std::string& text) {
-  static const locale_t c_locale = ::newlocale(LC_ALL_MASK, "C", locale_t{});
-  return ::strtod_l(text.c_str(), nullptr, c_locale);
-}
-
-double parse_csv_value(const CsvPlace& at, std::string_view token) {
-  std::string_view number = token;
-  if (number.size() > 1 && number[0] == '+' && number[1] != '-' && number[1] != '+')
-    number.remove_prefix(1);  // from_chars takes no '+'
-  double value = 0;
-  const auto [end, error] = std::from_chars(number.data(), number.data() + number.size(), value);
-  COATFFT_REQUIRE(end == number.data() + number.size() &&
-                      (error == std::errc{} || error == std::errc::result_out_of_range),
-                  at, quoted(token), " is not a number");
-  if (error == std::errc{}) return value;
-  // from_chars reports underflow and overflow alike; strtod tells them apart and gives an
-  // underflow its IEEE value (0 or a subnormal), as numpy.loadtxt reads it.
-  value = c_strtod(std::string(number));
-  COATFFT_REQUIRE(std::abs(value) != HUGE_VAL, at, quoted(token),
-                  " is out of the range of float64");
-  return value;
-}
-
-// Reads the values of one line (comment included) into `table`; a line without values is skipped.
-void read_csv_line(const fs::path& path, std::size_t line_number, std::string_view line,
-                   CsvTable& table) {
-  line = line.substr(0, line.find('#'));
-  std::size_t column = 0;
-  for (std::size_t pos = 0;;) {
-    while (pos < line.size() && is_csv_separator(line[pos])) ++pos;
-    if (pos == line.size()) break;
-    std::size_t end = pos;
-    while (end < line.size() && !is_csv_separator(line[end])) ++end;
-    table.values.push_back(
-        parse_csv_value({path, line_number, table.rows, column}, line.substr(pos, end - pos)));
-    ++column;
-    pos = end;
-  }
-  if (column == 0) return;
-  if (table.rows == 0) {
-    table.cols = column;
-    table.first_line = line_number;
-  }
-  COATFFT_REQUIRE(column == table.cols, path.string(), ':', line_number, ": row ", table.rows,
-                  " has ", column, " columns, row 0 (line ", table.first_line, ") has ",
-                  table.cols);
-  ++table.rows;
-}
-
-}  // namespace
-
-Field read_csv_matrix(const fs::path& path, std::uintmax_t max_bytes) {
-  const std::string text = read_input_file(path, "a CSV file", max_bytes);
-  CsvTable table;
-  std::size_t line_number = 0;
-  for (std::size_t begin = 0; begin < text.size();) {
-    const std::size_t end = std::min(text.find('\n', begin), text.size());
-    read_csv_line(path, ++line_number, std::string_view(text).substr(begin, end - begin), table);
-    begin = end + 1;
-  }
-  COATFFT_REQUIRE(table.rows > 0, path.string(), ": no data");
-  Field field(static_cast<Eigen::Index>(table.cols), static_cast<Eigen::Index>(table.rows));
-  std::copy(table.values.begin(), table.values.end(), field.data());
   return field;
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// Reading and writing 2-D float64 arrays as NumPy .npy (format 1.0, C order) and plain CSV.
+// Reading and writing 2-D float64 arrays as NumPy .npy (format 1.0, C order); CSV is cli/csv.hpp.
 // A Field (nx, ny) is stored as shape (ny, nx): row j is y_j (docs/conventions.md), which is
 // the Field's own memory layout, so no transposition happens.
 //
@@ -11,12 +11,10 @@
 #include <cstdint>
 #include <filesystem>
 
+#include "cli/input_file.hpp"
 #include "core/types.hpp"
 
 namespace coatfft::cli {
-
-/// Default limit on the size of a .npy or CSV file: 4 GiB (a 16384 x 16384 .npy takes 2 GiB).
-inline constexpr std::uintmax_t kMaxArrayFileBytes = std::uintmax_t{4} << 30;
 
 /// Writes `field` as a (ny, nx) little-endian float64 .npy file.
 void write_npy(const std::filesystem::path& path, const Field& field);
@@ -27,13 +25,5 @@ void write_npy(const std::filesystem::path& path, const Field& field);
 /// followed by rows x cols x 8 bytes. Throws InvalidArgument naming the file for anything else,
 /// quoting the header as it is in the file (less its padding).
 Field read_npy(const std::filesystem::path& path, std::uintmax_t max_bytes = kMaxArrayFileBytes);
-
-/// Reads a CSV matrix (rows separated by newlines, values by commas, semicolons or blanks; '#'
-/// starts a comment; lines without values are skipped) into a Field (cols, rows). Values are
-/// decimal numbers as std::from_chars reads them, with an optional leading '+' ("inf" and "nan"
-/// included); a value too small for float64 reads as 0 or a subnormal, as strtod gives it, a value
-/// too large is refused. Throws InvalidArgument on ragged rows, non-numbers or an empty file.
-Field read_csv_matrix(const std::filesystem::path& path,
-                      std::uintmax_t max_bytes = kMaxArrayFileBytes);
 
 }  // namespace coatfft::cli

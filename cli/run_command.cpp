@@ -10,6 +10,7 @@
 #include <optional>
 #include <vector>
 
+#include "cli/csv.hpp"
 #include "cli/npy.hpp"
 #include "cli/operator_from_scene.hpp"
 #include "cli/resources.hpp"

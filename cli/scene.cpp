@@ -7,6 +7,7 @@
 #include <set>
 #include <vector>
 
+#include "cli/csv.hpp"
 #include "cli/input_file.hpp"
 #include "cli/npy.hpp"
 #include "core/detail/parse_name.hpp"

@@ -1,9 +1,10 @@
 #pragma once
 // Output that cannot destroy (docs/scene_format.md, "Output folder"). A run's files are written
-// into a hidden staging folder (inside an existing OUTDIR, beside a new one) and appear in OUTDIR together, once all of them are
-// complete; a failure or an interruption at any point leaves OUTDIR as it was. coatfft replaces
-// only regular files it is about to produce, never an input of the run, and removes only files
-// that an earlier run wrote (listed in OUTDIR/.coatfft-outputs) and this run does not produce.
+// into a hidden staging folder (inside an existing OUTDIR, beside a new one) and appear in OUTDIR
+// together, once all of them are complete; a failure or an interruption at any point leaves OUTDIR
+// as it was. coatfft replaces only regular files it is about to produce, never an input of the run,
+// and removes only files that an earlier run wrote (listed in OUTDIR/.coatfft-outputs) and this run
+// does not produce.
 #include <filesystem>
 #include <memory>
 #include <string>

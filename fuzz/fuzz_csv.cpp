@@ -4,7 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "cli/npy.hpp"
+#include "cli/csv.hpp"
 #include "core/error.hpp"
 #include "fuzz/fuzz_input.hpp"
 

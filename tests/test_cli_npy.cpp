@@ -11,6 +11,7 @@
 #include <limits>
 #include <string>
 
+#include "cli/csv.hpp"
 #include "cli/input_file.hpp"
 #include "cli/npy.hpp"
 #include "core/error.hpp"

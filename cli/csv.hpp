@@ -1,0 +1,22 @@
+#pragma once
+// Reading 2-D arrays from plain CSV files (pressure and height maps). A Field (nx, ny) is read
+// from ny lines of nx values: row j is y_j, as in the .npy files (cli/npy.hpp, whose rules for
+// messages this reader follows: "PATH:LINE: row j, column i: ...", 1-based lines, 0-based rows
+// and columns, values quoted and shortened).
+#include <cstdint>
+#include <filesystem>
+
+#include "cli/input_file.hpp"
+#include "core/types.hpp"
+
+namespace coatfft::cli {
+
+/// Reads a CSV matrix (rows separated by newlines, values by commas, semicolons or blanks; '#'
+/// starts a comment; lines without values are skipped) into a Field (cols, rows). Values are
+/// decimal numbers as std::from_chars reads them, with an optional leading '+' ("inf" and "nan"
+/// included); a value too small for float64 reads as 0 or a subnormal, as strtod gives it, a value
+/// too large is refused. Throws InvalidArgument on ragged rows, non-numbers or an empty file.
+Field read_csv_matrix(const std::filesystem::path& path,
+                      std::uintmax_t max_bytes = kMaxArrayFileBytes);
+
+}  // namespace coatfft::cli
