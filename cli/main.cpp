@@ -5,6 +5,7 @@
 #include <iostream>
 #include <string_view>
 
+#include "cli/check_command.hpp"
 #include "cli/frf_command.hpp"
 #include "cli/resources.hpp"
 #include "cli/run_command.hpp"
@@ -17,9 +18,9 @@ namespace {
 bool refuse_unknown_command(int argc, char** argv) {
   if (argc < 2 || argv[1][0] == '-') return false;
   const std::string_view word = argv[1];
-  if (word == "run" || word == "frf") return false;
+  if (word == "run" || word == "frf" || word == "check") return false;
   std::cerr << "coatfft: error: unknown command \"" << coatfft::detail::shorten(word)
-            << "\" (commands: run, frf; see coatfft --help)\n";
+            << "\" (commands: run, check, frf; see coatfft --help)\n";
   return true;
 }
 
@@ -39,6 +40,15 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, coatfft::cli::max_repeat));
   run_cmd->add_option("--max-memory", max_memory,
                       "Memory the run may use, e.g. 4G (default: what the machine has available)");
+
+  coatfft::cli::CheckOptions check;
+  std::string check_max_memory;
+  CLI::App* check_cmd = app.add_subcommand(
+      "check",
+      "Validate a scene as run does and print what it would compute (JSON), computing "
+      "and writing nothing");
+  check_cmd->add_option("scene", check.scene, "Scene file (TOML)")->required();
+  check_cmd->add_option("--max-memory", check_max_memory, "As for run");
 
   coatfft::cli::FrfOptions frf;
   CLI::App* frf_cmd = app.add_subcommand("frf", "Print the FRF of a scene's body as a CSV table");
@@ -71,6 +81,11 @@ int main(int argc, char** argv) {
       return 3;
     }
     if (*frf_cmd) coatfft::cli::frf_command(frf);
+    if (*check_cmd) {
+      if (!check_max_memory.empty())
+        check.max_memory = coatfft::cli::parse_memory_size(check_max_memory, "--max-memory");
+      coatfft::cli::check_command(check);
+    }
   } catch (const coatfft::InvalidArgument& e) {
     std::cerr << "coatfft: error: " << e.what() << '\n';
     return 2;

@@ -50,16 +50,20 @@ void load_wisdom(const Scene& scene, const StagedOutput& out) {
 BuiltOperator operator_from_scene(const Scene& scene) {
   const MethodSpec& method = scene.method;
   BuiltOperator built = make_operator(scene.grid, scene.body, method.options);
-  const std::optional<double> error = built.report.predicted_error;
-  COATFFT_REQUIRE(!error || *error <= pipeline_refusal_error, "[method] name = \"",
-                  to_string(built.report.method), "\": predicted error ", *error,
-                  " of max |u| on these cells with alpha = ", built.report.alpha.value_or(0),
-                  " (docs/theory.md 4.6): the result would be meaningless; use \"frf-split\" "
-                  "(exact on any cells) or square cells and a larger alpha");
+  refuse_untrustworthy(built.report);
   if (!method.wisdom.empty())
     write_file_atomically(method.wisdom, "[method] wisdom", export_fftw_wisdom(),
                           scene.input_files);
   return built;
+}
+
+void refuse_untrustworthy(const OperatorReport& report) {
+  const std::optional<double> error = report.predicted_error;
+  COATFFT_REQUIRE(!error || *error <= pipeline_refusal_error, "[method] name = \"",
+                  to_string(report.method), "\": predicted error ", *error,
+                  " of max |u| on these cells with alpha = ", report.alpha.value_or(0),
+                  " (docs/theory.md 4.6): the result would be meaningless; use \"frf-split\" "
+                  "(exact on any cells) or square cells and a larger alpha");
 }
 
 std::vector<std::string> operator_warnings(const OperatorReport& report) {

@@ -30,6 +30,9 @@ inline constexpr double pipeline_refusal_error = 1.0;
 /// on a coating), and when an FRF pipeline's predicted error exceeds pipeline_refusal_error.
 BuiltOperator operator_from_scene(const Scene& scene);
 
+/// Throws InvalidArgument when the report's predicted error exceeds pipeline_refusal_error.
+void refuse_untrustworthy(const OperatorReport& report);
+
 /// Warnings about what was built, for stderr and summary.json's "warnings": an FRF pipeline whose
 /// predicted error exceeds pipeline_warning_error.
 std::vector<std::string> operator_warnings(const OperatorReport& report);

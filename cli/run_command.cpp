@@ -15,6 +15,7 @@
 #include "cli/operator_from_scene.hpp"
 #include "cli/resources.hpp"
 #include "cli/scene.hpp"
+#include "cli/scene_pressure.hpp"
 #include "cli/staged_output.hpp"
 #include "contact/contact_solver.hpp"
 #include "contact/indenter.hpp"
@@ -32,34 +33,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 using coatfft::detail::seconds_since;
 
-Field read_pressure_file(const std::filesystem::path& file, const Grid& grid) {
-  const std::string ext = file.extension().string();
-  COATFFT_REQUIRE(ext == ".npy" || ext == ".csv", "[pressure] path = ", file.string(),
-                  ": must end in .npy or .csv");
-  Field p = ext == ".npy" ? read_npy(file) : read_csv_matrix(file);
-  COATFFT_REQUIRE(p.rows() == grid.nx() && p.cols() == grid.ny(), file.string(), ": shape (",
-                  p.cols(), ", ", p.rows(), ") but the grid needs (ny, nx) = (", grid.ny(), ", ",
-                  grid.nx(), ")");
-  for (Eigen::Index j = 0; j < p.cols(); ++j)
-    for (Eigen::Index i = 0; i < p.rows(); ++i)
-      COATFFT_REQUIRE(std::isfinite(p(i, j)), file.string(), ": row ", j, ", column ", i,
-                      ": pressure ", p(i, j), " is not finite");
-  return p;
-}
-
-Field pressure_from_scene(const Scene& scene) {
-  const PressureSpec& spec = *scene.pressure;
-  switch (spec.kind) {
-    case PressureKind::file:
-      return read_pressure_file(spec.file, scene.grid);
-    case PressureKind::hertz:
-      return hertz_pressure(scene.grid, spec.amplitude, spec.radius, spec.sampling);
-    case PressureKind::uniform_disk:
-      return uniform_disk_pressure(scene.grid, spec.amplitude, spec.radius, spec.sampling);
-  }
-  throw InvalidArgument("[pressure] kind: unknown");
-}
-
 // Median wall time of `repeat` applications of `op` to `pressure`; leaves the result in `uz`,
 // which must come out finite.
 double time_applications(const Scene& scene, SurfaceOperator& op, const Field& pressure, Field& uz,
@@ -72,24 +45,6 @@ double time_applications(const Scene& scene, SurfaceOperator& op, const Field& p
                   " Pa, [grid] lx = ", scene.grid.lx(), " m, ly = ", scene.grid.ly(),
                   " m; rescale the units of the load and the moduli");
   return seconds;
-}
-
-// A load narrower than a cell, sampled at the cell centres, either misses every cell (u = 0) or
-// fills a whole cell (a force far above the intended one), and either way the output looks
-// plausible. Cell averages keep the force, so they stay allowed.
-void require_load(const Scene& scene, const Field& pressure) {
-  const Grid& grid = scene.grid;
-  const PressureSpec& load = *scene.pressure;
-  if (load.kind != PressureKind::file && load.sampling == Sampling::centre) {
-    COATFFT_REQUIRE(
-        2.0 * load.radius >= std::max(grid.dx(), grid.dy()), "[pressure] a = ", load.radius,
-        " m: the load is narrower than a cell (dx = ", grid.dx(), " m, dy = ", grid.dy(),
-        " m from [grid] lx, ly, nx, ny) and is sampled at "
-        "the cell centres; refine the grid or use sampling = \"cell_average\"");
-  }
-  COATFFT_REQUIRE((pressure != 0.0).any(),
-                  load.kind == PressureKind::file ? load.file.string() : std::string("[pressure]"),
-                  ": the pressure is zero on every cell: nothing to compute");
 }
 
 // Index of the cell centre nearest the origin; for an even count the two middle cells tie and
@@ -155,8 +110,7 @@ void write_outputs(StagedOutput& out, const Grid& grid, const Field& pressure, c
 
 RunStatus run_pressure(const Scene& scene, const RunOptions& options, StagedOutput& out) {
   const Grid& grid = scene.grid;
-  const Field pressure = pressure_from_scene(scene);
-  require_load(scene, pressure);
+  const Field pressure = scene_pressure(scene);
   BuiltOperator built = operator_from_scene(scene);
   Field uz;
   const double apply_seconds = time_applications(scene, *built.op, pressure, uz, options.repeat);

@@ -329,3 +329,31 @@ name = "frf-spectral"
     CHECK_FALSE(fs::exists(out));
   }
 }
+
+TEST_CASE("coatfft check validates as run does, prints the plan and writes nothing",
+          "[cli][safety]") {
+  const fs::path dir = fresh("safety_check");
+  const fs::path scene = write_scene(kGoodScene, "safety_check/scene", "", "");
+  const auto before = snapshot(dir);
+  std::string text;
+  {
+    FILE* pipe = popen((std::string(COATFFT_EXE) + " check " + scene.string()).c_str(), "r");
+    REQUIRE(pipe != nullptr);
+    char buffer[4096];
+    for (std::size_t n; (n = fread(buffer, 1, sizeof buffer, pipe)) > 0;) text.append(buffer, n);
+    CHECK(pclose(pipe) == 0);
+  }
+  const nlohmann::json plan = nlohmann::json::parse(text);
+  CHECK(plan["method"] == "dcfft");
+  CHECK(plan["problem"] == "pressure");
+  CHECK(plan["nx"] == 33);
+  // The estimate of docs/scene_format.md: 4 fields + 20 bytes per cell of the 66 x 66 lattice.
+  CHECK(plan["estimated_memory_bytes"].get<double>() == 8.0 * 4 * 33 * 33 + 20.0 * 66 * 66);
+  CHECK(plan["warnings"].empty());
+  CHECK(snapshot(dir) == before);
+  // What run refuses before computing, check refuses too.
+  const fs::path narrow = write_scene(kGoodScene, "safety_check/narrow", "a = 1.0e-3", "a = 1e-9");
+  check_refusal(run_coatfft("check " + narrow.string()), "[pressure] a");
+  check_refusal(run_coatfft("check " + scene.string() + " --max-memory 10K"), "--max-memory");
+  CHECK(snapshot(dir).size() == before.size() + 1);  // narrow.toml, nothing else
+}

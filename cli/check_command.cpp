@@ -1,0 +1,65 @@
+#include "cli/check_command.hpp"
+
+#include <iomanip>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "cli/operator_from_scene.hpp"
+#include "cli/resources.hpp"
+#include "cli/scene.hpp"
+#include "cli/scene_pressure.hpp"
+#include "convolution/pipeline_error.hpp"
+#include "core/error.hpp"
+#include "frf/frf.hpp"
+
+namespace coatfft::cli {
+
+namespace {
+
+// What make_operator will report as predicted_error, without building the operator: the FRF
+// model, or the homogeneous one where the FRF model's reference cannot take the body.
+std::optional<double> predicted_error(const Scene& scene) {
+  const OperatorOptions& o = scene.method.options;
+  if (o.method != Method::frf_spectral && o.method != Method::frf_dcfft) return std::nullopt;
+  const auto frf = make_frf(scene.body);
+  try {
+    return predicted_pipeline_error(scene.grid, *frf, o.method, o.alpha, o.threads);
+  } catch (const InvalidArgument&) {
+    return predicted_pipeline_error(scene.grid, o.method, o.alpha, o.threads);
+  }
+}
+
+}  // namespace
+
+void check_command(const CheckOptions& options) {
+  const Scene scene = read_scene(options.scene);
+  check_memory(scene, options.max_memory);
+  if (scene.pressure) scene_pressure(scene);  // reads and checks the load as run does
+  OperatorReport report;
+  report.method = scene.method.options.method;
+  report.predicted_error = predicted_error(scene);
+  if (report.predicted_error) report.alpha = scene.method.options.alpha;
+  refuse_untrustworthy(report);
+
+  const Grid& grid = scene.grid;
+  const MemoryEstimate memory = estimate_memory(scene);
+  const std::optional<double> available = available_memory();
+  nlohmann::json out;
+  out["scene"] = options.scene.string();
+  out["problem"] = scene.contact ? "contact" : "pressure";
+  out["method"] = to_string(report.method);
+  out["nx"] = grid.nx();
+  out["ny"] = grid.ny();
+  out["lx"] = grid.lx();
+  out["ly"] = grid.ly();
+  out["dx"] = grid.dx();
+  out["dy"] = grid.dy();
+  out["estimated_memory_bytes"] = memory.bytes;
+  out["memory_drivers"] = memory.drivers;
+  out["available_memory_bytes"] = available ? nlohmann::json(*available) : nlohmann::json();
+  if (report.predicted_error) out["predicted_error"] = *report.predicted_error;
+  out["warnings"] = operator_warnings(report);
+  std::cout << std::setw(2) << out << '\n';
+}
+
+}  // namespace coatfft::cli
