@@ -16,17 +16,11 @@ namespace coatfft::cli {
 
 namespace {
 
-// What make_operator will report as predicted_error, without building the operator: the FRF
-// model, or the homogeneous one where the FRF model's reference cannot take the body.
+// What make_operator will report as predicted_error, without building the operator.
 std::optional<double> predicted_error(const Scene& scene) {
   const OperatorOptions& o = scene.method.options;
   if (o.method != Method::frf_spectral && o.method != Method::frf_dcfft) return std::nullopt;
-  const auto frf = make_frf(scene.body);
-  try {
-    return predicted_pipeline_error(scene.grid, *frf, o.method, o.alpha, o.threads);
-  } catch (const InvalidArgument&) {
-    return predicted_pipeline_error(scene.grid, o.method, o.alpha, o.threads);
-  }
+  return predicted_pipeline_error(scene.grid, *make_frf(scene.body), o.method, o.alpha, o.threads);
 }
 
 }  // namespace

@@ -31,18 +31,6 @@ G0Result pipeline_g0(const Grid& grid, const Frf& frf, const OperatorOptions& o)
   return lattice_g0(grid, frf, o.alpha, min_alpha, o.g0, o.g0_tolerance, "make_operator");
 }
 
-// The predicted error of an FRF pipeline (docs/theory.md 4.6), computed once the operator is built,
-// so that an FRF the pipeline cannot use has already been refused with the pipeline's own message.
-// The prediction is advice, not a condition of the build: an FRF that the FRF model's reference
-// (the split kernel) refuses is predicted by the homogeneous model instead of failing the build.
-double predicted_error(const Grid& grid, const Frf& frf, const OperatorOptions& o) {
-  try {
-    return predicted_pipeline_error(grid, frf, o.method, o.alpha, o.threads);
-  } catch (const InvalidArgument&) {
-    return predicted_pipeline_error(grid, o.method, o.alpha, o.threads);
-  }
-}
-
 // The operator of an FRF method; `report` is filled with what was chosen.
 std::unique_ptr<SurfaceOperator> frf_operator(const Grid& grid, const Frf& frf,
                                               const OperatorOptions& o, OperatorReport& report) {
@@ -55,7 +43,9 @@ std::unique_ptr<SurfaceOperator> frf_operator(const Grid& grid, const Frf& frf,
       report.g0 = op->g0();
       report.fft_nx = op->extended_nx();
       report.fft_ny = op->extended_ny();
-      report.predicted_error = predicted_error(grid, frf, o);
+      // Predicted once the operator is built, so that an FRF the pipeline cannot use has been
+      // refused with the pipeline's own message (docs/theory.md 4.6).
+      report.predicted_error = predicted_pipeline_error(grid, frf, o.method, o.alpha, o.threads);
       return op;
     }
     case Method::frf_dcfft: {
@@ -65,7 +55,7 @@ std::unique_ptr<SurfaceOperator> frf_operator(const Grid& grid, const Frf& frf,
       const InfluenceKernel kernel =
           timed_kernel(report, [&] { return frf_dcfft_kernel(grid, frf, o.alpha, g0, o.threads); });
       auto op = std::make_unique<DcfftOperator>(kernel, o.planning, o.threads);
-      report.predicted_error = predicted_error(grid, frf, o);
+      report.predicted_error = predicted_pipeline_error(grid, frf, o.method, o.alpha, o.threads);
       return op;
     }
     case Method::frf_split: {

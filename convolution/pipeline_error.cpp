@@ -282,7 +282,14 @@ double predicted_pipeline_error(const Grid& grid, const Frf& frf, Method method,
     return homogeneous_error(proxy, method, threads);
   const std::optional<PipelineErrorProxy> coated = coated_proxy(grid, proxy);
   if (!coated) return homogeneous_error(proxy, method, threads);
-  const double e = coated_error(*coated, frf, method, threads);
+  double e = 0.0;
+  try {
+    e = coated_error(*coated, frf, method, threads);
+  } catch (const InvalidArgument&) {
+    // The FRF model's reference (the split kernel) refuses this FRF: the homogeneous model
+    // answers instead, since a prediction must not fail a build the pipeline itself accepts.
+    return homogeneous_error(proxy, method, threads);
+  }
   if (coated->grid == proxy.grid && coated->alpha == proxy.alpha) return e;
   // The coating's factor, measured on the square-celled proxy, carried over to the homogeneous
   // prediction of the finer (or more elongated) one: docs/theory.md 4.6.3.

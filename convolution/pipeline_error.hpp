@@ -39,8 +39,10 @@ double predicted_pipeline_error(const Grid& grid, Method method, double alpha, i
 /// measured), a soft one lowers it. The homogeneous prediction is returned instead where `frf` is
 /// within 1 % of the substrate's C0/k up to 8/a (a half-space; a coating much thinner than the
 /// load: the split kernel's ~10 ms are saved), where no such proxy fits (domains longer than
-/// 64:1), and where `frf` cannot be split (c0 or c_inf not finite and positive). Same errors as
-/// above; the FRF must be safe to call concurrently when threads > 1 (every Frf of frf/ is).
+/// 64:1), and where `frf` cannot be split (c0 or c_inf not finite and positive) or the split
+/// kernel of the proxy refuses it: the prediction is advice, and never fails for the body alone.
+/// Same errors as above for the arguments; the FRF must be safe to call concurrently when
+/// threads > 1 (every Frf of frf/ is).
 double predicted_pipeline_error(const Grid& grid, const Frf& frf, Method method, double alpha,
                                 int threads = 1);
 
