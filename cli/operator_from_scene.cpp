@@ -5,7 +5,6 @@
 
 #include "cli/input_file.hpp"
 #include "convolution/fftw_wisdom.hpp"
-#include "core/detail/shorten.hpp"
 #include "core/error.hpp"
 
 namespace coatfft::cli {
@@ -28,10 +27,10 @@ bool same_file(const fs::path& a, const fs::path& b) {
 void load_wisdom(const Scene& scene, const StagedOutput& out) {
   const fs::path& wisdom = scene.method.wisdom;
   if (wisdom.empty()) return;
-  const std::string where = "[method] wisdom = \"" + detail::shorten(wisdom.string()) + "\"";
+  const std::string where = "[method] wisdom = " + quoted_excerpt(wisdom.string());
   for (const fs::path& input : scene.input_files)
     COATFFT_REQUIRE(!same_file(wisdom, input), where, " is an input of this run (",
-                    detail::shorten(input.string()), "): name a file of its own");
+                    quoted_excerpt(input.string()), "): name a file of its own");
   for (const fs::path& target : out.targets())
     COATFFT_REQUIRE(!same_file(wisdom, target), where,
                     " is an output of this run: name a file outside the output folder's outputs");

@@ -10,7 +10,6 @@
 #include <optional>
 #include <vector>
 
-#include "cli/csv.hpp"
 #include "cli/npy.hpp"
 #include "cli/operator_from_scene.hpp"
 #include "cli/resources.hpp"
@@ -21,8 +20,6 @@
 #include "contact/indenter.hpp"
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
-#include "loads/hertz_pressure.hpp"
-#include "loads/uniform_disk_pressure.hpp"
 #include "validation/hertz.hpp"
 #include "validation/hertz_contact.hpp"
 

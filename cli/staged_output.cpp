@@ -6,7 +6,6 @@
 #include <fstream>
 
 #include "cli/input_file.hpp"
-#include "core/detail/shorten.hpp"
 #include "core/error.hpp"
 
 namespace coatfft::cli {
@@ -15,8 +14,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// Paths in messages are quoted as file text is (cli/input_file.hpp): escaped and shortened.
 std::string quoted(const fs::path& path) {
-  return detail::concat('"', detail::shorten(path.string()), '"');
+  return quoted_excerpt(path.string());
 }
 
 // A hidden name beside `path`, unique to this process: ".NAME.partial-PID".
