@@ -4,6 +4,8 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "cli/automatic_method.hpp"
+#include "cli/load_error_report.hpp"
 #include "cli/operator_from_scene.hpp"
 #include "cli/resources.hpp"
 #include "cli/scene.hpp"
@@ -20,13 +22,17 @@ namespace {
 std::optional<double> predicted_error(const Scene& scene) {
   const OperatorOptions& o = scene.method.options;
   if (o.method != Method::frf_spectral && o.method != Method::frf_dcfft) return std::nullopt;
-  return predicted_pipeline_error(scene.grid, *make_frf(scene.body), o.method, o.alpha, o.threads);
+  return predicted_pipeline_error(scene.grid, *body_frf(scene), o.method, o.alpha, o.threads);
 }
 
 }  // namespace
 
 void check_command(const CheckOptions& options) {
-  const Scene scene = read_scene(options.scene);
+  Scene scene = read_scene(options.scene);
+  // As run does: a pressure is applied once (run --repeat aside), a contact solve about
+  // contact_applications times.
+  const double applications = scene.contact ? contact_applications : 1.0;
+  const std::optional<AutomaticChoice> automatic = resolve_automatic_method(scene, applications);
   check_memory(scene, options.max_memory);
   if (scene.pressure) scene_pressure(scene);  // reads and checks the load as run does
   OperatorReport report;
@@ -48,10 +54,19 @@ void check_command(const CheckOptions& options) {
   out["ly"] = grid.ly();
   out["dx"] = grid.dx();
   out["dy"] = grid.dy();
+  out["method_requested"] = automatic ? "auto" : std::string(to_string(report.method));
+  if (automatic) out["auto"] = automatic_choice_json(*automatic, scene.method.tolerance);
+  const MethodCandidate cost = predicted_scene_cost(scene, applications);
+  out["estimated_seconds"] = {{"setup", cost.setup_seconds},
+                              {"apply", cost.apply_seconds},
+                              {"applications", applications},
+                              {"total", cost.total_seconds}};
+  out["refinement"] = refinement_json(scene);
   out["estimated_memory_bytes"] = memory.bytes;
   out["memory_drivers"] = memory.drivers;
   out["available_memory_bytes"] = available ? nlohmann::json(*available) : nlohmann::json();
   if (report.predicted_error) out["predicted_error"] = *report.predicted_error;
+  if (automatic) out["predicted_error"] = out["auto"]["predicted_error"];
   out["warnings"] = operator_warnings(report);
   std::cout << std::setw(2) << out << '\n';
 }

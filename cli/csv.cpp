@@ -68,17 +68,10 @@ double parse_csv_value(const CsvPlace& at, std::string_view token) {
 // Reads the values of one line (comment included) into `table`; a line without values is skipped.
 void read_csv_line(const fs::path& path, std::size_t line_number, std::string_view line,
                    CsvTable& table) {
-  line = line.substr(0, line.find('#'));
   std::size_t column = 0;
-  for (std::size_t pos = 0;;) {
-    while (pos < line.size() && is_csv_separator(line[pos])) ++pos;
-    if (pos == line.size()) break;
-    std::size_t end = pos;
-    while (end < line.size() && !is_csv_separator(line[end])) ++end;
-    table.values.push_back(
-        parse_csv_value({path, line_number, table.rows, column}, line.substr(pos, end - pos)));
+  for (const std::string_view token : csv_tokens(line)) {
+    table.values.push_back(parse_csv_value({path, line_number, table.rows, column}, token));
     ++column;
-    pos = end;
   }
   if (column == 0) return;
   if (table.rows == 0) {
@@ -92,6 +85,25 @@ void read_csv_line(const fs::path& path, std::size_t line_number, std::string_vi
 }
 
 }  // namespace
+
+std::vector<std::string_view> csv_tokens(std::string_view line) {
+  line = line.substr(0, line.find('#'));
+  std::vector<std::string_view> tokens;
+  for (std::size_t pos = 0;;) {
+    while (pos < line.size() && is_csv_separator(line[pos])) ++pos;
+    if (pos == line.size()) break;
+    std::size_t end = pos;
+    while (end < line.size() && !is_csv_separator(line[end])) ++end;
+    tokens.push_back(line.substr(pos, end - pos));
+    pos = end;
+  }
+  return tokens;
+}
+
+double csv_value(const fs::path& path, std::size_t line, std::size_t row, std::size_t column,
+                 std::string_view token) {
+  return parse_csv_value({path, line, row, column}, token);
+}
 
 Field read_csv_matrix(const fs::path& path, std::uintmax_t max_bytes) {
   const std::string text = read_input_file(path, "a CSV file", max_bytes);

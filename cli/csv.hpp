@@ -3,8 +3,11 @@
 // from ny lines of nx values: row j is y_j, as in the .npy files (cli/npy.hpp, whose rules for
 // messages this reader follows: "PATH:LINE: row j, column i: ...", 1-based lines, 0-based rows
 // and columns, values quoted and shortened).
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <string_view>
+#include <vector>
 
 #include "cli/input_file.hpp"
 #include "core/types.hpp"
@@ -18,5 +21,15 @@ namespace coatfft::cli {
 /// too large is refused. Throws InvalidArgument on ragged rows, non-numbers or an empty file.
 Field read_csv_matrix(const std::filesystem::path& path,
                       std::uintmax_t max_bytes = kMaxArrayFileBytes);
+
+/// The values of one line of a CSV file as read_csv_matrix splits it: the text before '#', cut at
+/// commas, semicolons and blanks; empty for a line without values. For readers of CSV files with
+/// a header line (cli/frf_table_file.hpp).
+std::vector<std::string_view> csv_tokens(std::string_view line);
+
+/// One value as read_csv_matrix reads it; refused with "PATH:LINE: row R, column C: \"...\" is
+/// not a number" (or out of the range of float64).
+double csv_value(const std::filesystem::path& path, std::size_t line, std::size_t row,
+                 std::size_t column, std::string_view token);
 
 }  // namespace coatfft::cli

@@ -1,6 +1,7 @@
 // The coatfft command-line program. This is the only place where exceptions become exit codes:
 // 2 for bad input (coatfft::InvalidArgument, bad flags), 3 for a contact solve that did not
-// converge (outputs are written, summary.json says converged = false), 1 for anything else.
+// converge (outputs are written, summary.json says converged = false), 1 for a failed
+// validate-frf check and anything else.
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <string_view>
@@ -9,6 +10,7 @@
 #include "cli/frf_command.hpp"
 #include "cli/resources.hpp"
 #include "cli/run_command.hpp"
+#include "cli/validate_frf_command.hpp"
 #include "core/detail/shorten.hpp"
 #include "core/error.hpp"
 
@@ -18,9 +20,9 @@ namespace {
 bool refuse_unknown_command(int argc, char** argv) {
   if (argc < 2 || argv[1][0] == '-') return false;
   const std::string_view word = argv[1];
-  if (word == "run" || word == "frf" || word == "check") return false;
+  if (word == "run" || word == "frf" || word == "check" || word == "validate-frf") return false;
   std::cerr << "coatfft: error: unknown command \"" << coatfft::detail::shorten(word)
-            << "\" (commands: run, check, frf; see coatfft --help)\n";
+            << "\" (commands: run, check, validate-frf, frf; see coatfft --help)\n";
   return true;
 }
 
@@ -40,6 +42,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, coatfft::cli::max_repeat));
   run_cmd->add_option("--max-memory", max_memory,
                       "Memory the run may use, e.g. 4G (default: what the machine has available)");
+  run_cmd->add_flag("--quiet", run.quiet,
+                    "No progress on the terminal (warnings and errors are still printed)");
 
   coatfft::cli::CheckOptions check;
   std::string check_max_memory;
@@ -49,6 +53,16 @@ int main(int argc, char** argv) {
       "and writing nothing");
   check_cmd->add_option("scene", check.scene, "Scene file (TOML)")->required();
   check_cmd->add_option("--max-memory", check_max_memory, "As for run");
+
+  coatfft::cli::ValidateFrfOptions validate;
+  CLI::App* validate_cmd = app.add_subcommand(
+      "validate-frf",
+      "Check a scene's [frf] table against its [substrate] and [[coating]] (exit 1 if a check "
+      "fails)");
+  validate_cmd->add_option("scene", validate.scene, "Scene file (TOML) with [frf] and [substrate]")
+      ->required();
+  validate_cmd->add_option("--tolerance", validate.tolerance,
+                           "Largest relative difference accepted (default 1e-6)");
 
   coatfft::cli::FrfOptions frf;
   CLI::App* frf_cmd = app.add_subcommand("frf", "Print the FRF of a scene's body as a CSV table");
@@ -86,6 +100,7 @@ int main(int argc, char** argv) {
         check.max_memory = coatfft::cli::parse_memory_size(check_max_memory, "--max-memory");
       coatfft::cli::check_command(check);
     }
+    if (*validate_cmd && !coatfft::cli::validate_frf_command(validate)) return 1;
   } catch (const coatfft::InvalidArgument& e) {
     std::cerr << "coatfft: error: " << e.what() << '\n';
     return 2;

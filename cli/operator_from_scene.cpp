@@ -48,7 +48,10 @@ void load_wisdom(const Scene& scene, const StagedOutput& out) {
 
 BuiltOperator operator_from_scene(const Scene& scene) {
   const MethodSpec& method = scene.method;
-  BuiltOperator built = make_operator(scene.grid, scene.body, method.options);
+  // name = "auto" may have reduced the body (cli/automatic_method.hpp).
+  const LayerStack& body = method.reduced_body ? *method.reduced_body : *scene.body;
+  BuiltOperator built = scene.frf ? make_operator(scene.grid, *scene.frf, method.options)
+                                  : make_operator(scene.grid, body, method.options);
   refuse_untrustworthy(built.report);
   if (!method.wisdom.empty())
     write_file_atomically(method.wisdom, "[method] wisdom", export_fftw_wisdom(),

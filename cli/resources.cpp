@@ -6,6 +6,7 @@
 #include <fstream>
 #include <string>
 
+#include "convolution/dcfft_operator.hpp"
 #include "core/detail/shorten.hpp"
 #include "core/error.hpp"
 
@@ -31,9 +32,16 @@ std::pair<double, std::string> transform_lattice(const Scene& scene) {
       return {o.alpha * o.alpha * nx * ny,
               detail::concat(sizes, ", [method] alpha = ", o.alpha, " (extended ", o.alpha * nx,
                              " x ", o.alpha * ny, " lattice)")};
-    default:
-      return {4.0 * nx * ny, detail::concat(sizes, " (padded ", 2 * grid.nx(), " x ", 2 * grid.ny(),
-                                            " transform)")};
+    default: {
+      // DC-FFT's padded lattice: frf-dcfft at alpha = 2 hands it a spectrum (exactly 2n).
+      const auto form = o.method == Method::frf_dcfft && o.alpha == 2.0
+                            ? InfluenceKernel::Form::spectrum
+                            : InfluenceKernel::Form::coefficients;
+      const std::ptrdiff_t mx = DcfftOperator::padded_size(grid.nx(), form);
+      const std::ptrdiff_t my = DcfftOperator::padded_size(grid.ny(), form);
+      return {static_cast<double>(mx) * static_cast<double>(my),
+              detail::concat(sizes, " (padded ", mx, " x ", my, " transform)")};
+    }
   }
 }
 

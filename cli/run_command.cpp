@@ -1,5 +1,7 @@
 #include "cli/run_command.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -10,8 +12,13 @@
 #include <optional>
 #include <vector>
 
+#include "cli/a_posteriori.hpp"
+#include "cli/automatic_method.hpp"
+#include "cli/frf_table_file.hpp"
+#include "cli/load_error_report.hpp"
 #include "cli/npy.hpp"
 #include "cli/operator_from_scene.hpp"
+#include "cli/progress.hpp"
 #include "cli/resources.hpp"
 #include "cli/scene.hpp"
 #include "cli/scene_pressure.hpp"
@@ -27,6 +34,7 @@ namespace coatfft::cli {
 
 namespace {
 
+using Automatic = std::optional<AutomaticChoice>;
 using Clock = std::chrono::steady_clock;
 using coatfft::detail::seconds_since;
 
@@ -37,10 +45,9 @@ double time_applications(const Scene& scene, SurfaceOperator& op, const Field& p
   const double seconds = coatfft::detail::time_applications(op, pressure, uz, repeat);
   // Finite inputs can still overflow: |u| ~ p L / E* and the transforms sum p over the grid.
   COATFFT_REQUIRE(uz.allFinite(), "the displacement overflows double precision: max pressure ",
-                  pressure.abs().maxCoeff(),
-                  " Pa, [substrate] E* = ", scene.body.substrate().plane_strain_modulus(),
-                  " Pa, [grid] lx = ", scene.grid.lx(), " m, ly = ", scene.grid.ly(),
-                  " m; rescale the units of the load and the moduli");
+                  pressure.abs().maxCoeff(), " Pa, ", scene.frf ? "[frf] 2/c0" : "[substrate] E*",
+                  " = ", 2.0 / body_frf(scene)->c0(), " Pa, [grid] lx = ", scene.grid.lx(),
+                  " m, ly = ", scene.grid.ly(), " m; rescale the units of the load and the moduli");
   return seconds;
 }
 
@@ -50,8 +57,9 @@ Eigen::Index centre_index(std::ptrdiff_t n) {
   return static_cast<Eigen::Index>((n - 1) / 2);
 }
 
-nlohmann::json common_summary(const Scene& scene, const BuiltOperator& built, double apply_seconds,
-                              int repeat, const Field& pressure, const Field& uz) {
+nlohmann::json common_summary(const Scene& scene, const Automatic& automatic,
+                              const BuiltOperator& built, double apply_seconds, int repeat,
+                              const Field& pressure, const Field& uz) {
   const Grid& grid = scene.grid;
   nlohmann::json summary;
   summary["method"] = to_string(built.report.method);
@@ -71,6 +79,19 @@ nlohmann::json common_summary(const Scene& scene, const BuiltOperator& built, do
   for (const auto& warning : summary["warnings"])
     std::cerr << "coatfft: warning: " << warning.get<std::string>() << '\n';
   summary.update(operator_report_json(built.report));
+  summary["method_requested"] =
+      automatic ? "auto" : std::string(to_string(scene.method.options.method));
+  if (automatic) {
+    summary["auto"] = automatic_choice_json(*automatic, scene.method.tolerance);
+    // The operator's predicted error with the reduction's: a pipeline's own proxy prediction
+    // (operator_report_json) is kept where it is larger.
+    const double predicted = summary["auto"]["predicted_error"].get<double>();
+    if (!summary.contains("predicted_error") || summary["predicted_error"].is_null() ||
+        summary["predicted_error"].get<double>() < predicted)
+      summary["predicted_error"] = predicted;
+  }
+  if (const auto* table = dynamic_cast<const TabulatedFrf*>(scene.frf.get()))
+    summary["frf_table"] = frf_table_json(scene.frf_file, *table);
   return summary;
 }
 
@@ -91,12 +112,35 @@ void write_displacement_csv(const std::filesystem::path& path, const Grid& grid,
   COATFFT_REQUIRE(out.good(), "failed writing ", path.string());
 }
 
-void write_outputs(StagedOutput& out, const Grid& grid, const Field& pressure, const Field& uz,
-                   const Field* gap, const nlohmann::json& summary) {
-  write_npy(out.path("uz.npy"), uz);
-  write_npy(out.path("pressure.npy"), pressure);
-  if (gap) write_npy(out.path("gap.npy"), *gap);
-  write_displacement_csv(out.path("displacement.csv"), grid, pressure, uz);
+// The files a run writes, in the order of the manifest (cli/staged_output.hpp). Only these are
+// checked, staged and committed.
+std::vector<std::string> output_names(const OutputSpec& spec) {
+  std::vector<std::string> names;
+  if (spec.uz) names.push_back("uz.npy");
+  if (spec.pressure) names.push_back("pressure.npy");
+  if (spec.displacement_csv) names.push_back("displacement.csv");
+  names.push_back("summary.json");
+  if (spec.gap) names.push_back("gap.npy");
+  return names;
+}
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string text;
+  for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
+  return text;
+}
+
+// Writes the requested outputs only: the CSV text, the costliest of them (a 2048^2 grid makes
+// hundreds of megabytes of decimal text), is not even formatted when it is not asked for.
+void write_outputs(StagedOutput& out, const OutputSpec& spec, const Grid& grid,
+                   const Field& pressure, const Field& uz, const Field* gap,
+                   const nlohmann::json& summary, Progress& progress) {
+  progress.stage("writing " + joined(output_names(spec)));
+  if (spec.uz) write_npy(out.path("uz.npy"), uz);
+  if (spec.pressure) write_npy(out.path("pressure.npy"), pressure);
+  if (spec.gap && gap) write_npy(out.path("gap.npy"), *gap);
+  if (spec.displacement_csv)
+    write_displacement_csv(out.path("displacement.csv"), grid, pressure, uz);
   {
     std::ofstream json(out.path("summary.json"));
     json << std::setw(2) << summary << '\n';
@@ -105,44 +149,68 @@ void write_outputs(StagedOutput& out, const Grid& grid, const Field& pressure, c
   out.commit();
 }
 
-RunStatus run_pressure(const Scene& scene, const RunOptions& options, StagedOutput& out) {
+// "setting up the operator (dcfft)".
+std::string setup_stage(const Scene& scene) {
+  return detail::concat("setting up the operator (", to_string(scene.method.options.method), ")");
+}
+
+std::string applications_stage(int repeat) {
+  return detail::concat("applying the operator (", repeat, repeat == 1 ? " time)" : " times)");
+}
+
+RunStatus run_pressure(const Scene& scene, const Automatic& automatic, const RunOptions& options,
+                       StagedOutput& out, Progress& progress) {
   const Grid& grid = scene.grid;
   const Field pressure = scene_pressure(scene);
+  progress.stage(setup_stage(scene));
   BuiltOperator built = operator_from_scene(scene);
+  progress.stage(applications_stage(options.repeat));
   Field uz;
   const double apply_seconds = time_applications(scene, *built.op, pressure, uz, options.repeat);
 
   nlohmann::json summary =
-      common_summary(scene, built, apply_seconds, options.repeat, pressure, uz);
+      common_summary(scene, automatic, built, apply_seconds, options.repeat, pressure, uz);
+  summary["a_posteriori"] = a_posteriori_check(scene, uz);
+  summary["load_discretization"] = load_discretization_json(scene, *built.op, pressure, uz);
+  summary["refinement"] = refinement_json(scene);
   const PressureSpec& load = *scene.pressure;
-  if (load.kind == PressureKind::hertz && scene.body.is_homogeneous()) {
+  if (load.kind == PressureKind::hertz && !scene.frf && scene.body->is_homogeneous()) {
     summary["max_error_vs_hertz"] = max_error_vs_hertz(
-        grid, uz, load.amplitude, load.radius, scene.body.substrate().plane_strain_modulus());
+        grid, uz, load.amplitude, load.radius, scene.body->substrate().plane_strain_modulus());
   }
-  write_outputs(out, grid, pressure, uz, nullptr, summary);
+  write_outputs(out, scene.output, grid, pressure, uz, nullptr, summary, progress);
   return RunStatus::ok;
 }
 
-RunStatus run_contact(Scene scene, const RunOptions& options, StagedOutput& out) {
+ContactOptions solver_options(const ContactSpec& spec, Progress& progress) {
+  ContactOptions options;
+  options.tolerance = spec.tolerance;
+  options.max_iterations = spec.max_iterations;
+  // Under load control the approach is the only output that depends on g(0) (docs/contact.md).
+  options.compute_approach = spec.report_approach;
+  options.on_iteration = [&progress](int k, double residual) { progress.iteration(k, residual); };
+  return options;
+}
+
+RunStatus run_contact(Scene scene, const Automatic& automatic, const RunOptions& options,
+                      StagedOutput& out, Progress& progress) {
   const ContactSpec& spec = *scene.contact;
   const Grid& grid = scene.grid;
   if (spec.indenter_material) {
     // Two homogeneous elastic bodies in frictionless normal contact deform as one half-space of
     // the composite modulus (Johnson section 4.2); only E* enters the normal compliance.
-    const Material& body = scene.body.substrate();
+    const Material& body = scene.body->substrate();
     const double E_star = composite_modulus(body, *spec.indenter_material);
     const double nu = body.poisson_ratio();
     scene.body = LayerStack(Material(E_star * (1 - nu * nu), nu));
   }
   const Field height_field = height(grid, spec.indenter);
+  progress.stage(setup_stage(scene));
   BuiltOperator built = operator_from_scene(scene);
 
-  ContactOptions contact_options;
-  contact_options.tolerance = spec.tolerance;
-  contact_options.max_iterations = spec.max_iterations;
-  // Under load control the approach is the only output that depends on g(0) (docs/contact.md).
-  contact_options.compute_approach = spec.report_approach;
-  ContactSolver solver(*built.op, contact_options);
+  ContactSolver solver(*built.op, solver_options(spec, progress));
+  progress.stage(spec.load ? "solving the contact (load control)"
+                           : "solving the contact (approach control)");
   const auto start = Clock::now();
   const ContactResult result = spec.load ? solver.solve_load(height_field, *spec.load)
                                          : solver.solve_approach(height_field, *spec.approach);
@@ -152,12 +220,14 @@ RunStatus run_contact(Scene scene, const RunOptions& options, StagedOutput& out)
                   "the domain is too small for this contact; enlarge [grid] lx and ly (and nx, ny "
                   "to keep the cell size) or lower the load");
 
-  Field uz;
+  progress.stage(applications_stage(options.repeat));
+  Field uz;  // only for the timing: the solver returned the displacement
   const double apply_seconds =
       time_applications(scene, *built.op, result.pressure, uz, options.repeat);
-  nlohmann::json summary = common_summary(scene, built, apply_seconds, options.repeat,
+  nlohmann::json summary = common_summary(scene, automatic, built, apply_seconds, options.repeat,
                                           result.pressure, result.displacement);
   summary["indenter"] = spec.indenter_name;
+  summary["a_posteriori"] = a_posteriori_check(scene, result.displacement);
   summary["solve_seconds"] = solve_seconds;
   summary["load"] = result.load;
   // Keys that do not apply stay in the summary with the value null.
@@ -183,11 +253,11 @@ RunStatus run_contact(Scene scene, const RunOptions& options, StagedOutput& out)
 
   const bool hertzian = std::holds_alternative<Paraboloid>(spec.indenter) ||
                         std::holds_alternative<Sphere>(spec.indenter);
-  if (hertzian && scene.body.is_homogeneous()) {
+  if (hertzian && !scene.frf && scene.body->is_homogeneous()) {
     const double R = std::holds_alternative<Sphere>(spec.indenter)
                          ? std::get<Sphere>(spec.indenter).radius
                          : std::get<Paraboloid>(spec.indenter).radius;
-    const double E_star = scene.body.substrate().plane_strain_modulus();
+    const double E_star = scene.body->substrate().plane_strain_modulus();
     const HertzSphere hertz = spec.load ? hertz_sphere_for_load(*spec.load, R, E_star)
                                         : hertz_sphere_for_approach(*spec.approach, R, E_star);
     summary["hertz"] = {{"load", hertz.load},
@@ -195,7 +265,9 @@ RunStatus run_contact(Scene scene, const RunOptions& options, StagedOutput& out)
                         {"max_pressure", hertz.max_pressure},
                         {"approach", hertz.approach}};
   }
-  write_outputs(out, grid, result.pressure, result.displacement, &result.gap, summary);
+  // The solver computes the gap in any case; it is saved only when [output] asks for it.
+  write_outputs(out, scene.output, grid, result.pressure, result.displacement, &result.gap, summary,
+                progress);
   return result.converged ? RunStatus::ok : RunStatus::not_converged;
 }
 
@@ -204,16 +276,22 @@ RunStatus run_contact(Scene scene, const RunOptions& options, StagedOutput& out)
 RunStatus run_command(const RunOptions& options) {
   COATFFT_REQUIRE(options.repeat >= 1 && options.repeat <= max_repeat,
                   "--repeat = ", options.repeat, " must be in 1..", max_repeat);
+  Progress progress(progress_wanted(options.quiet, ::isatty(STDERR_FILENO) == 1), std::cerr);
   Scene scene = read_scene(options.scene);
+  // name = "auto" chooses the body and the method first: the memory estimate is the chosen one's.
+  const Automatic automatic = resolve_automatic_method(
+      scene, scene.contact ? contact_applications : static_cast<double>(options.repeat));
   check_memory(scene, options.max_memory);
   // Every output target is checked now, before any work: a run that cannot write is refused at
-  // once, not after minutes of computing.
-  std::vector<std::string> names{"uz.npy", "pressure.npy", "displacement.csv", "summary.json"};
-  if (scene.contact) names.push_back("gap.npy");
-  StagedOutput out(options.outdir, names, scene.input_files);
+  // once, not after minutes of computing. Outputs of an earlier run that this one does not
+  // write are left to the manifest (stale ones removed at the commit).
+  StagedOutput out(options.outdir, output_names(scene.output), scene.input_files);
   load_wisdom(scene, out);
-  if (scene.contact) return run_contact(std::move(scene), options, out);
-  return run_pressure(scene, options, out);
+  const RunStatus status = scene.contact
+                               ? run_contact(std::move(scene), automatic, options, out, progress)
+                               : run_pressure(scene, automatic, options, out, progress);
+  progress.finish();
+  return status;
 }
 
 }  // namespace coatfft::cli

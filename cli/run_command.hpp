@@ -12,14 +12,18 @@ struct RunOptions {
   int repeat = 1;  ///< operator applications timed; apply_seconds is their median
   /// Memory the run may use [bytes] (--max-memory); by default what the machine has available.
   std::optional<double> max_memory;
+  /// No progress on the terminal (--quiet); warnings and errors are still printed.
+  bool quiet = false;
 };
 
 /// What the run reports to the shell besides exceptions.
 enum class RunStatus { ok, not_converged };
 
-/// Runs the scene and writes OUTDIR/{uz.npy, pressure.npy, displacement.csv, summary.json}
-/// (+ gap.npy for a contact) all at once (cli/staged_output.hpp). Throws InvalidArgument on bad
-/// input, and leaves OUTDIR as it was on any failure.
+/// Runs the scene and writes the outputs its [output] section asks for (by default
+/// OUTDIR/{uz.npy, pressure.npy, displacement.csv, summary.json}, + gap.npy for a contact) all at
+/// once (cli/staged_output.hpp). Reports progress on stderr when it is a terminal, unless quiet
+/// (cli/progress.hpp). Throws InvalidArgument on bad input, and leaves OUTDIR as it was on any
+/// failure.
 RunStatus run_command(const RunOptions& options);
 
 }  // namespace coatfft::cli

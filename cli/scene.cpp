@@ -2,12 +2,15 @@
 
 #include <toml++/toml.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <set>
+#include <thread>
 #include <vector>
 
 #include "cli/csv.hpp"
+#include "cli/frf_table_file.hpp"
 #include "cli/input_file.hpp"
 #include "cli/npy.hpp"
 #include "core/detail/parse_name.hpp"
@@ -63,6 +66,20 @@ class SectionReader {
   }
   std::string string(std::string_view key, std::string fallback) {
     return has(key) ? string(key) : fallback;
+  }
+  /// The list of strings at `key` (possibly empty).
+  std::vector<std::string> strings(std::string_view key) {
+    const toml::node& node = require(key);
+    const toml::array* array = node.as_array();
+    COATFFT_REQUIRE(array != nullptr, where(key), " must be a list of strings, got ",
+                    describe(node));
+    std::vector<std::string> values;
+    for (const toml::node& element : *array) {
+      COATFFT_REQUIRE(element.is_string(), where(key),
+                      " must be a list of strings, got an entry of type ", describe(element));
+      values.push_back(element.value<std::string>().value());
+    }
+    return values;
   }
   /// The enumerator named by the string at `key` (`fallback` when absent), by `parse` (which
   /// throws InvalidArgument "\"x\" is not one of ..." for an unknown name).
@@ -160,18 +177,76 @@ Material read_material(SectionReader& reader) {
   return Material(E, nu);
 }
 
-Grid read_grid(const toml::table& root) {
+// [grid]: nx and ny, or refine = "auto" with tolerance_total (the grid is then chosen once the
+// load and the body are known: refine_grid).
+struct GridSection {
+  double lx = 0.0;
+  double ly = 0.0;
+  std::optional<Grid> grid;               // nx and ny given
+  std::optional<double> tolerance_total;  // refine = "auto"
+};
+
+GridSection read_grid(const toml::table& root) {
   SectionReader reader(section(root, "grid", true), "grid");
   return in_section("grid", [&] {
-    const auto nx = reader.integer("nx");
-    const auto ny = reader.integer("ny");
-    // Guard against input that would exhaust memory before FFTW does (2nx x 2ny padded arrays).
-    COATFFT_REQUIRE(nx <= 65536 && ny <= 65536, "nx = ", nx, ", ny = ", ny,
-                    ": at most 65536 cells per direction");
-    Grid grid(nx, ny, reader.number("lx"), reader.number("ly"));
+    GridSection g{reader.number("lx"), reader.number("ly"), std::nullopt, std::nullopt};
+    if (reader.choice("refine", "none", {"none", "auto"}) == "auto") {
+      COATFFT_REQUIRE(!reader.has("nx") && !reader.has("ny"),
+                      "refine = \"auto\" chooses nx and ny: remove them");
+      const double t = reader.number("tolerance_total");
+      COATFFT_REQUIRE(t > 0 && t <= 0.1, reader.where("tolerance_total"), " = ", t,
+                      " must be in (0, 0.1]");
+      g.tolerance_total = t;
+      Grid(1, 1, g.lx, g.ly);  // checks lx and ly now
+    } else {
+      COATFFT_REQUIRE(!reader.has("tolerance_total"), reader.where("tolerance_total"),
+                      ": applies only with refine = \"auto\"");
+      const auto nx = reader.integer("nx");
+      const auto ny = reader.integer("ny");
+      // Guard against input that would exhaust memory before FFTW does (padded arrays).
+      COATFFT_REQUIRE(nx <= 65536 && ny <= 65536, "nx = ", nx, ", ny = ", ny,
+                      ": at most 65536 cells per direction");
+      g.grid = Grid(nx, ny, g.lx, g.ly);
+    }
     reader.finish();
-    return grid;
+    return g;
   });
+}
+
+PressureSpec read_pressure(const toml::table& table, const Grid& grid,
+                           const std::filesystem::path& scene_dir);
+
+// refine = "auto": the grid on which the load's discretisation error is within tolerance_total
+// less the operator's tolerance ([method] tolerance, by default a tenth of tolerance_total).
+Grid refine_grid(const toml::table& root, const GridSection& g, Scene& scene) {
+  MethodSpec& m = scene.method;
+  COATFFT_REQUIRE(m.automatic,
+                  "[grid] refine = \"auto\" needs [method] name = \"auto\": the "
+                  "total tolerance is shared between the load's cells and the operator");
+  COATFFT_REQUIRE(root.contains("pressure"),
+                  "[grid] refine = \"auto\" applies to a known "
+                  "pressure ([pressure] kind = \"hertz\" or \"uniform_disk\")");
+  const toml::table& method = section(root, "method", false);
+  if (!method.contains("tolerance")) m.tolerance = *g.tolerance_total / 10;
+  COATFFT_REQUIRE(m.tolerance < *g.tolerance_total, "[method] tolerance = ", m.tolerance,
+                  " must be below [grid] tolerance_total = ", *g.tolerance_total);
+  const PressureSpec p = in_section("pressure", [&] {
+    return read_pressure(section(root, "pressure", true), Grid(1, 1, g.lx, g.ly), {});
+  });
+  COATFFT_REQUIRE(p.kind != PressureKind::file,
+                  "[grid] refine = \"auto\" needs an analytic "
+                  "load: [pressure] kind = \"hertz\" or \"uniform_disk\"");
+  const AnalyticLoad load{
+      p.kind == PressureKind::hertz ? AnalyticLoad::Kind::hertz : AnalyticLoad::Kind::uniform_disk,
+      p.amplitude, p.radius, p.sampling};
+  GridRefinementOptions options;
+  options.body_factor = load_error_body_factor(*body_frf(scene), load);
+  const double share = m.tolerance / *g.tolerance_total;
+  GridChoice choice = in_section("grid", [&] {
+    return choose_grid_for_tolerance(g.lx, g.ly, load, *g.tolerance_total, share, options);
+  });
+  scene.refinement = GridRefinement{*g.tolerance_total, choice};
+  return choice.grid;
 }
 
 LayerStack read_body(const toml::table& root) {
@@ -200,6 +275,13 @@ LayerStack read_body(const toml::table& root) {
     }
   }
   return in_section("coating", [&] { return LayerStack(std::move(coatings), substrate); });
+}
+
+// [substrate] is required, unless [frf] gives the body as a table and no stack is described.
+std::optional<LayerStack> read_optional_body(const toml::table& root) {
+  if (root.contains("frf") && !root.contains("substrate") && !root.contains("coating"))
+    return std::nullopt;
+  return read_body(root);
 }
 
 PressureSpec read_pressure(const toml::table& table, const Grid& grid,
@@ -244,7 +326,8 @@ Field read_height_map(const std::filesystem::path& file) {
   return ext == ".npy" ? read_npy(file) : read_csv_matrix(file);
 }
 
-ContactSpec read_contact(const toml::table& table, const Grid& grid, const LayerStack& body,
+// `stack_body`: the body the operator is built from when it is a stack, nullptr for a table.
+ContactSpec read_contact(const toml::table& table, const Grid& grid, const LayerStack* stack_body,
                          const std::filesystem::path& scene_dir) {
   SectionReader reader(table, "contact");
   ContactSpec spec;
@@ -297,7 +380,10 @@ ContactSpec read_contact(const toml::table& table, const Grid& grid, const Layer
                   " = ", max_iterations, " must be in 1..1000000");
   spec.max_iterations = static_cast<int>(max_iterations);
   if (reader.has("indenter_material") || reader.has("indenter_E") || reader.has("indenter_nu")) {
-    COATFFT_REQUIRE(body.is_homogeneous(),
+    COATFFT_REQUIRE(stack_body != nullptr,
+                    "[contact] an elastic indenter needs a homogeneous body given by [substrate] "
+                    "(composite modulus); with a table body ([frf]) the indenter must be rigid");
+    COATFFT_REQUIRE(stack_body->is_homogeneous(),
                     "[contact] an elastic indenter needs a homogeneous body (composite modulus); "
                     "for a coated body the indenter must be rigid");
     if (reader.has("indenter_material")) {
@@ -321,15 +407,21 @@ ContactSpec read_contact(const toml::table& table, const Grid& grid, const Layer
 
 // Keys that would be ignored by the chosen method are refused: a user who sets alpha for dcfft
 // believes it does something.
-void refuse_keys_not_applying(const SectionReader& reader, Method method) {
-  const bool pipeline = method == Method::frf_spectral || method == Method::frf_dcfft;
+void refuse_keys_not_applying(const SectionReader& reader, const MethodSpec& spec) {
+  const Method method = spec.options.method;
+  const std::string name = spec.automatic ? "auto" : std::string(to_string(method));
+  const bool pipeline =
+      !spec.automatic && (method == Method::frf_spectral || method == Method::frf_dcfft);
   for (const char* key : {"alpha", "g0", "g0_tol"})
     COATFFT_REQUIRE(pipeline || !reader.has(key), reader.where(key),
                     ": applies only to the FRF "
                     "pipelines \"frf-spectral\" and \"frf-dcfft\", not to name = \"",
-                    to_string(method), "\"");
+                    name, "\"", spec.automatic ? " (which chooses them)" : "");
+  COATFFT_REQUIRE(spec.automatic || !reader.has("tolerance"), reader.where("tolerance"),
+                  ": applies only to name = \"auto\", not to name = \"", name, "\"");
   for (const char* key : {"planning", "wisdom"})
-    COATFFT_REQUIRE(method != Method::direct || !reader.has(key), reader.where(key),
+    COATFFT_REQUIRE(spec.automatic || method != Method::direct || !reader.has(key),
+                    reader.where(key),
                     ": FFTW settings do not apply to name = \"direct\", which uses no FFT");
 }
 
@@ -337,8 +429,24 @@ MethodSpec read_method(const toml::table& root, const std::filesystem::path& sce
   SectionReader reader(section(root, "method", false), "method");
   MethodSpec spec;
   OperatorOptions& o = spec.options;
-  o.method = reader.named("name", o.method, parse_method);
-  refuse_keys_not_applying(reader, o.method);
+  spec.automatic = reader.string("name", "auto") == "auto";
+  if (!spec.automatic) {
+    o.method = reader.named("name", o.method, [](std::string_view name) {
+      try {
+        return parse_method(name);
+      } catch (const InvalidArgument& e) {
+        throw InvalidArgument(detail::concat(e.what(), " or \"auto\""));
+      }
+    });
+  }
+  refuse_keys_not_applying(reader, spec);
+  if (spec.automatic) {
+    spec.tolerance = reader.number("tolerance", spec.tolerance);
+    COATFFT_REQUIRE(spec.tolerance >= 1e-12 && spec.tolerance <= 0.1, reader.where("tolerance"),
+                    " = ", spec.tolerance, " must be in [1e-12, 0.1]");
+    // The threads the choice may use: all the machine's, unless the scene caps them.
+    o.threads = std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, max_threads);
+  }
   o.alpha = reader.number("alpha", o.alpha);
   // omitted is not a user's choice: a load-controlled contact makes it (report_approach).
   o.g0 = reader.named("g0", o.g0, [](std::string_view name) {
@@ -358,6 +466,77 @@ MethodSpec read_method(const toml::table& root, const std::filesystem::path& sce
   return spec;
 }
 
+// The names of [output] fields and the flag each sets; "summary" sets none, since summary.json
+// is always written (naming it is allowed, so that a list can say everything it expects).
+struct OutputField {
+  std::string_view name;
+  bool OutputSpec::*flag;
+};
+constexpr std::array<OutputField, 5> output_fields{
+    {{"uz", &OutputSpec::uz},
+     {"pressure", &OutputSpec::pressure},
+     {"gap", &OutputSpec::gap},
+     {"displacement_csv", &OutputSpec::displacement_csv},
+     {"summary", nullptr}}};
+
+// Sets the flag of one name of [output] fields, refusing an unknown name and "gap" for a scene
+// that has none.
+void select_output(OutputSpec& spec, const std::string& name, const SectionReader& reader,
+                   bool contact) {
+  const auto field = std::find_if(output_fields.begin(), output_fields.end(),
+                                  [&](const OutputField& f) { return f.name == name; });
+  if (field == output_fields.end()) {
+    std::string list;
+    for (const OutputField& f : output_fields)
+      list += (list.empty() ? "\"" : ", \"") + std::string(f.name) + "\"";
+    throw InvalidArgument(detail::concat(reader.where("fields"), ": ", quoted_excerpt(name),
+                                         " is not one of ", list));
+  }
+  COATFFT_REQUIRE(contact || name != "gap", reader.where("fields"),
+                  ": \"gap\" applies only to a [contact] scene (a known [pressure] has no gap)");
+  if (field->flag != nullptr) spec.*field->flag = true;
+}
+
+OutputSpec read_output(const toml::table& root, bool contact) {
+  SectionReader reader(section(root, "output", false), "output");
+  OutputSpec spec;
+  spec.gap = contact;
+  if (reader.has("fields")) {
+    const std::vector<std::string> names = reader.strings("fields");
+    COATFFT_REQUIRE(!names.empty(), reader.where("fields"),
+                    " = []: name at least one output (summary.json is always written: "
+                    "fields = [\"summary\"] writes only it)");
+    spec = OutputSpec{false, false, false, false};
+    std::set<std::string> seen;
+    for (const std::string& name : names) {
+      select_output(spec, name, reader, contact);  // a known name from here on
+      COATFFT_REQUIRE(seen.insert(name).second, reader.where("fields"), ": \"", name,
+                      "\" is listed twice");
+    }
+  }
+  reader.finish();
+  return spec;
+}
+
+// [frf]: the body as a table of its FRF. Love's coefficients (direct, dcfft) need a material,
+// which a table does not give, so those methods are refused here rather than when building.
+void read_frf(const toml::table& root, const std::filesystem::path& scene_dir, Scene& scene) {
+  SectionReader reader(section(root, "frf", true), "frf");
+  std::filesystem::path file = reader.string("path");
+  if (file.is_relative()) file = scene_dir / file;
+  std::optional<double> c0, c_inf;
+  if (reader.has("c0")) c0 = positive(reader, "c0");
+  if (reader.has("c_inf")) c_inf = positive(reader, "c_inf");
+  reader.finish();
+  const Method method = scene.method.options.method;
+  COATFFT_REQUIRE(scene.method.automatic || !uses_love_coefficients(method), "[method] name = \"",
+                  to_string(method),
+                  "\" uses Love's coefficients of a homogeneous material, which a table body "
+                  "([frf]) does not give; use \"frf-split\", \"frf-dcfft\" or \"frf-spectral\"");
+  scene.frf = in_section("frf", [&] { return read_frf_table(file, c0, c_inf); });
+  scene.frf_file = file;
+}
+
 constexpr std::ptrdiff_t max_direct_cells = 1 << 16;
 
 // A scene is a few hundred bytes; a megabyte is far beyond any real one.
@@ -366,8 +545,8 @@ constexpr std::uintmax_t max_scene_bytes = 1 << 20;
 toml::table parse_scene_text(const std::string& text, const std::filesystem::path& path) {
   try {
     toml::table root = toml::parse(text, path.string());
-    const std::set<std::string> known{"grid",     "substrate", "coating",
-                                      "pressure", "contact",   "method"};
+    const std::set<std::string> known{"grid",    "substrate", "coating", "pressure",
+                                      "contact", "method",    "output",  "frf"};
     for (auto&& [key, node] : root) {
       COATFFT_REQUIRE(known.count(std::string(key.str())), "unknown section or key \"",
                       detail::shorten(key.str()), "\"");
@@ -397,9 +576,16 @@ Scene read_scene(const std::filesystem::path& path) {
   return with_file_name(path, [&] {
     const toml::table root = parse_scene_text(text, path);
     const std::filesystem::path scene_dir = path.parent_path();
-    Scene scene{read_grid(root), read_body(root),
-                std::nullopt,    read_method(root, scene_dir),
-                std::nullopt,    {}};
+    const GridSection grid = read_grid(root);
+    Scene scene{grid.grid.value_or(Grid(1, 1, grid.lx, grid.ly)),
+                read_optional_body(root),
+                std::nullopt,
+                read_method(root, scene_dir),
+                std::nullopt,
+                {},
+                {}};
+    if (root.contains("frf")) read_frf(root, scene_dir, scene);
+    if (grid.tolerance_total) scene.grid = refine_grid(root, grid, scene);
     in_section("method", [&] { check_operator_options(scene.grid, scene.method.options); });
     // Direct summation costs (nx ny)^2 operations per application: hours beyond this size.
     COATFFT_REQUIRE(
@@ -414,13 +600,16 @@ Scene read_scene(const std::filesystem::path& path) {
       scene.pressure = read_pressure(section(root, "pressure", true), scene.grid, scene_dir);
     else
       scene.contact = in_section("contact", [&] {
-        return read_contact(section(root, "contact", true), scene.grid, scene.body, scene_dir);
+        return read_contact(section(root, "contact", true), scene.grid,
+                            scene.frf ? nullptr : &*scene.body, scene_dir);
       });
+    scene.output = read_output(root, scene.contact.has_value());
     // g(0) only shifts every displacement by one constant, which a load-controlled contact
     // absorbs in its approach; when that approach is not reported, g(0) is not computed at all.
     if (scene.contact && !scene.contact->report_approach)
       scene.method.options.g0 = G0Method::omitted;
     scene.input_files.push_back(path);
+    if (scene.frf) scene.input_files.push_back(scene.frf_file);
     if (scene.pressure && scene.pressure->kind == PressureKind::file)
       scene.input_files.push_back(scene.pressure->file);
     if (scene.contact && !scene.contact->height_file.empty())
@@ -432,6 +621,11 @@ Scene read_scene(const std::filesystem::path& path) {
 LayerStack read_scene_body(const std::filesystem::path& path) {
   const std::string text = read_input_file(path, "a scene file", max_scene_bytes);
   return with_file_name(path, [&] { return read_body(parse_scene_text(text, path)); });
+}
+
+std::shared_ptr<const Frf> body_frf(const Scene& scene) {
+  if (scene.frf) return scene.frf;
+  return make_frf(*scene.body);
 }
 
 }  // namespace coatfft::cli

@@ -3,6 +3,7 @@
 // read_scene() validates everything it can before any work starts, so that a bad scene ends with
 // one line naming the key and the value, and no output.
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -10,7 +11,9 @@
 #include "contact/indenter.hpp"
 #include "convolution/make_operator.hpp"
 #include "core/grid.hpp"
+#include "frf/frf.hpp"
 #include "layers/layer_stack.hpp"
+#include "loads/grid_refinement.hpp"
 #include "loads/sampling.hpp"
 
 namespace coatfft::cli {
@@ -31,7 +34,16 @@ struct PressureSpec {
 /// threads are read into the library's OperatorOptions (checked by check_operator_options). A
 /// load-controlled contact with report_approach = false sets options.g0 = G0Method::omitted.
 struct MethodSpec {
+  /// name = "auto" (the default): method, kernel tolerance, threads and a reduced body are
+  /// chosen for `tolerance` (cli/automatic_method.hpp, docs/auto.md); `options` then holds the
+  /// user's planning and, in threads, the most threads the choice may use.
+  bool automatic = true;
+  /// [method] tolerance: the largest operator error relative to max |u| (name = "auto" only).
+  double tolerance = 1e-4;
   OperatorOptions options;
+  /// Set by resolve_automatic_method when a simpler body is within the tolerance
+  /// (model/body_reduction.hpp): the body the operator is built for.
+  std::optional<LayerStack> reduced_body;
   std::filesystem::path wisdom;  ///< FFTW wisdom file to load and save (optional)
 };
 
@@ -53,17 +65,43 @@ struct ContactSpec {
   std::optional<Material> indenter_material;
 };
 
-/// Exactly one of `pressure` and `contact` is set.
+/// [output]: the files `coatfft run` writes (docs/scene_format.md, "[output]"). summary.json is
+/// always written; it is not a choice. Without [output] (or its key fields) every file that
+/// applies is written.
+struct OutputSpec {
+  bool uz = true;                ///< uz.npy
+  bool pressure = true;          ///< pressure.npy
+  bool gap = false;              ///< gap.npy: a [contact] scene only (its default there is true)
+  bool displacement_csv = true;  ///< displacement.csv
+};
+
+/// [grid] refine = "auto": nx and ny chosen so that the load's discretisation error stays within
+/// tolerance_total less the operator's tolerance (loads/grid_refinement.hpp).
+struct GridRefinement {
+  double tolerance_total = 0.0;
+  GridChoice choice;
+};
+
+/// Exactly one of `pressure` and `contact` is set. The body is `frf` when [frf] gives a table
+/// (every operator is built from it; `body`, if [substrate] is also given, only describes what
+/// the table claims to be, for `coatfft validate-frf`); otherwise `body`, which is then set.
 struct Scene {
   Grid grid;
-  LayerStack body;
+  std::optional<LayerStack> body;
   std::optional<PressureSpec> pressure;
   MethodSpec method;
   std::optional<ContactSpec> contact;
-  /// The scene file and the files it names (pressure, height map): the run's inputs, which no
-  /// output may replace. The wisdom file is method.wisdom.
+  /// The scene file and the files it names (pressure, height map, FRF table): the run's inputs,
+  /// which no output may replace. The wisdom file is method.wisdom.
   std::vector<std::filesystem::path> input_files;
+  OutputSpec output;
+  std::shared_ptr<const Frf> frf = nullptr;  ///< [frf]: the body as a table (TabulatedFrf)
+  std::filesystem::path frf_file = {};       ///< [frf] path
+  std::optional<GridRefinement> refinement = std::nullopt;  ///< set when [grid] refine = "auto"
 };
+
+/// The FRF of the scene's body: the [frf] table, or make_frf of [substrate] and [[coating]].
+std::shared_ptr<const Frf> body_frf(const Scene& scene);
 
 /// Parses and validates a scene file. Throws InvalidArgument with a one-line message
 /// ("scene.toml: [grid] nx = 0: ...") on any problem. Relative file paths in the scene are

@@ -46,6 +46,9 @@ class PolonskyKeerIteration {
   // One iteration; the status once the iteration has ended, nothing while it goes on.
   std::optional<ContactStatus> iterate(double tolerance);
 
+  // The relative pressure change of the last step (infinity before the first).
+  double residual() const { return residual_; }
+
   // The result for the current iterate (one more operator application, for its displacement).
   ContactResult result(ContactStatus status, int iterations, bool compute_approach);
 
@@ -379,7 +382,10 @@ ContactResult ContactSolver::run(const Field& h, ContactControl control, double 
   int iterations = 0;
   while (iterations < options_.max_iterations) {
     ++iterations;
-    if (const std::optional<ContactStatus> end = iteration.iterate(options_.tolerance)) {
+    const std::optional<ContactStatus> end = iteration.iterate(options_.tolerance);
+    const bool stepped = !end || *end == ContactStatus::converged;
+    if (stepped && options_.on_iteration) options_.on_iteration(iterations, iteration.residual());
+    if (end) {
       status = *end;
       break;
     }

@@ -6,6 +6,7 @@
 // the rigid-body approach, the gap is g = h + u - delta and the solution satisfies
 //   p >= 0,  g >= 0,  p g = 0   (complementarity), and either  sum p dx dy = W  (load control)
 //   or delta given (approach control).
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -32,6 +33,11 @@ struct ContactOptions {
   /// independent of N (24-33 for Hertz from 64^2 to 1024^2, against 46-137 without). Off gives
   /// the classic Polonsky-Keer iteration.
   bool preconditioned = true;
+  /// Called, when set, after every iteration that took a step (all but a breakdown), with the
+  /// iteration's number (1, 2, ...) and the residual it left (the relative pressure change, as
+  /// ContactResult::residual): a caller can show progress, since the solver itself never prints.
+  /// It runs on the solving thread and costs one call per iteration; throttling is the caller's.
+  std::function<void(int iteration, double residual)> on_iteration;
 };
 
 /// Which quantity the solve prescribes.

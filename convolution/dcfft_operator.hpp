@@ -1,7 +1,12 @@
 #pragma once
 // DC-FFT (Liu, Wang & Liu, Wear 243 (2000) 101): the linear convolution of the pressure with
 // space-domain influence coefficients, computed exactly (to rounding) as a circular convolution on
-// the zero-padded (2nx, 2ny) grid. Spinu (2021), section 3.
+// a zero-padded (mx, my) grid. Spinu (2021), section 3. Any period M >= 2n - 1 is exact: the
+// offsets d in [-(n - 1), n - 1] sit at the slots d and M + d with zeros between, and never
+// overlap. The coefficient form takes the smallest even 7-smooth M (core/fft_size.hpp), since
+// 2n itself can be a slow FFT length (an application on 2 x 127 cost 4.5-5 times one on 2 x 128;
+// docs/benchmarks.md, "Fast FFT sizes"); the spectrum form keeps M = 2n, the only lattice its
+// samples are given on.
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -14,10 +19,10 @@ namespace coatfft {
 
 /// Surface operator u = K * p (linear convolution) by DC-FFT for an influence kernel in either of
 /// its forms. Everything is planned in the constructor: the kernel's real spectrum (a DCT-I of the
-/// coefficient quarter, or the given spectrum quarter, with FFTW's 1/(4 nx ny) folded in) and the
+/// coefficient quarter, or the given spectrum quarter, with FFTW's 1/(mx my) folded in) and the
 /// FFTW plans on owned buffers; apply() only copies, transforms and multiplies. The padded
-/// transform is pruned: three quarters of the padded input are zeros and three quarters of the
-/// padded output are discarded, so the x transforms run on the ny data rows only and the y
+/// transform is pruned: three quarters (or more) of the padded input are zeros and as much of the
+/// padded output is discarded, so the x transforms run on the ny data rows only and the y
 /// transforms on cache-sized column blocks.
 class DcfftOperator final : public SurfaceOperator {
  public:
@@ -36,9 +41,17 @@ class DcfftOperator final : public SurfaceOperator {
 
   /// Wall-clock seconds the constructor took (kernel transform and FFTW planning) [s].
   double setup_seconds() const { return setup_seconds_; }
+  /// The padded transform lengths mx, my of apply().
+  std::ptrdiff_t padded_nx() const { return mx_; }
+  std::ptrdiff_t padded_ny() const { return my_; }
+
+  /// The padded length of an axis of n >= 1 cells for a kernel of form `form`: 2n for the
+  /// spectrum form, the smallest even 7-smooth length >= 2n - 1 for coefficients (throws
+  /// InvalidArgument for n < 1). What memory estimates should assume.
+  static std::ptrdiff_t padded_size(std::ptrdiff_t n, InfluenceKernel::Form form);
 
  private:
-  // One worker's scratch: a block of `block_` spectrum columns of all 2ny rows, column-major
+  // One worker's scratch: a block of `block_` spectrum columns of all my rows, column-major
   // (each column contiguous), with its own in-place y plans.
   struct Worker {
     FftwComplexBuffer block;
@@ -55,9 +68,10 @@ class DcfftOperator final : public SurfaceOperator {
   Grid grid_;
   std::ptrdiff_t nx_;
   std::ptrdiff_t ny_;
-  std::ptrdiff_t mx_;  // padded sizes 2 nx, 2 ny
+  std::ptrdiff_t mx_;  // padded sizes (padded_size), even
   std::ptrdiff_t my_;
-  std::ptrdiff_t hx_;     // nx + 1: complex entries per r2c row, also the spectrum's row length
+  std::ptrdiff_t hx_;     // mx/2 + 1: complex entries per r2c row, also the spectrum's row length
+  std::ptrdiff_t hy_;     // my/2: the spectrum's rows ky > hy mirror my - ky
   std::ptrdiff_t block_;  // spectrum columns per y-transform block
   std::ptrdiff_t nb_blocks_;
   int threads_;
@@ -67,8 +81,8 @@ class DcfftOperator final : public SurfaceOperator {
   FftwComplexBuffer rows_;
   FftwPlan forward_x_;
   FftwPlan backward_x_;
-  // Kernel spectrum times 1/(4 nx ny), real, column-major [kx][ky], hx x (ny + 1): the rows
-  // ky > ny mirror 2ny - ky.
+  // Kernel spectrum times 1/(mx my), real, column-major [kx][ky], hx x (hy + 1): the rows
+  // ky > hy mirror my - ky.
   FftwRealBuffer kernel_spectrum_;
   std::vector<Worker> workers_;
   double setup_seconds_ = 0.0;

@@ -90,9 +90,12 @@ BuiltOperator timed(const Grid& grid, const OperatorOptions& options, Build&& bu
   check_operator_options(grid, options);
   const auto start = std::chrono::steady_clock::now();
   BuiltOperator built;
-  built.report.fft_nx = 2 * grid.nx();  // DC-FFT's padded lattice unless the method says else
-  built.report.fft_ny = 2 * grid.ny();
   built.op = build(built.report);
+  // DC-FFT's padded lattice, whichever method built it (frf-spectral sets its own in `build`).
+  if (const auto* dc = dynamic_cast<const DcfftOperator*>(built.op.get())) {
+    built.report.fft_nx = dc->padded_nx();
+    built.report.fft_ny = dc->padded_ny();
+  }
   built.report.method = built.op->method();
   if (built.report.method == Method::direct) built.report.fft_nx = built.report.fft_ny = 0;
   built.report.setup_seconds = detail::seconds_since(start);

@@ -1264,7 +1264,47 @@ void report_plan(const SplitPlan& p, SplitKernelReport& rep) {
                            : std::max(p.quad_x.nodes * p.quad_x.sub, p.quad_y.nodes * p.quad_y.sub);
 }
 
+// Work counts of the plan (split_frf_kernel_work): the fold visits the lattice entries inside
+// |k| < k_r (spacing pi/(h d) along an axis), each summing its (2 p_max + 1) aliases per axis
+// (half of them on a symmetric lattice); the long part evaluates its Hankel table and a rule of
+// nodes^2 points per cell (9 with the stencil, ~8 panels per side when graded).
+double fold_terms(const SplitPlan& p) {
+  if (!p.short_range || (p.lattice_x.h == 0 && p.lattice_y.h == 0)) return 0.0;
+  const auto axis_entries = [&](const LatticeAxis& a, double d) {
+    if (a.h == 0) return 1.0;
+    return std::min(static_cast<double>(a.h + 1), p.k_r * static_cast<double>(a.h) * d / pi + 1);
+  };
+  const auto aliases = [](const LatticeAxis& a) { return a.h == 0 ? 1.0 : 2.0 * a.p_max + 1.0; };
+  const double entries = axis_entries(p.lattice_x, p.dx) * axis_entries(p.lattice_y, p.dy);
+  const bool symmetric = p.dx == p.dy && p.lattice_x.h == p.lattice_y.h;
+  return (symmetric ? 0.5 : 1.0) * (pi / 4.0) * entries * aliases(p.lattice_x) *
+         aliases(p.lattice_y);
+}
+
+double cell_nodes(const SplitPlan& p) {
+  const double cells = static_cast<double>(p.nx) * static_cast<double>(p.ny);
+  if (p.stencil) return 9.0 * cells;
+  const auto per_axis = [](const AxisQuadrature& q) { return q.graded ? 16.0 : q.nodes * q.sub; };
+  return cells * per_axis(p.quad_x) * per_axis(p.quad_y);
+}
+
 }  // namespace
+
+SplitKernelWork split_frf_kernel_work(const Grid& grid, const Frf& frf,
+                                      const SplitKernelOptions& options) {
+  const SplitPlan p = make_split_plan(grid, frf, options);
+  SplitKernelWork work;
+  work.remainder_zero = p.remainder_zero;
+  if (p.remainder_zero) return work;
+  work.fold_terms = fold_terms(p);
+  if (p.long_range) {
+    const double r_table = std::min(p.r_max, p.r_uniform);
+    const double nodes = static_cast<double>(hankel_panel_nodes * (p.panel_edges.size() - 1));
+    work.hankel_evaluations = nodes * r_table / p.dr;
+    work.cell_nodes = cell_nodes(p);
+  }
+  return work;
+}
 
 // The method of split_frf_kernel.hpp, part by part. The kernel is even in x and y: only its
 // quarter di, dj >= 0 is computed (DcfftOperator transforms it directly, and the (2nx, 2ny)

@@ -85,6 +85,19 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
                                  const SplitKernelOptions& options = {},
                                  SplitKernelReport* report = nullptr);
 
+/// The work split_frf_kernel would do on `grid` for `frf`, counted from its plan without
+/// computing any coefficient (the plan scans the FRF: about a millisecond): the inputs of the
+/// setup-time model of the automatic method choice (convolution/auto_method.hpp, docs/auto.md).
+/// The counts are proportional to the time of each part, not exact operation counts.
+struct SplitKernelWork {
+  double hankel_evaluations = 0.0;  ///< Bessel evaluations of the long-range table
+  double cell_nodes = 0.0;          ///< table lookups of the long-range cell integrals
+  double fold_terms = 0.0;          ///< alias terms of the short-range fold
+  bool remainder_zero = false;      ///< R vanished: Love's coefficients only
+};
+SplitKernelWork split_frf_kernel_work(const Grid& grid, const Frf& frf,
+                                      const SplitKernelOptions& options = {});
+
 namespace detail {
 /// \iint over the dx x dy rectangle centred at the origin of 1/sqrt((x - x')^2 + (y - y')^2 +
 /// beta^2) dx' dy' [m], beta > 0 [m]: the 4-corner sum of F(X, Y) = X asinh(Y/sqrt(X^2 + beta^2))

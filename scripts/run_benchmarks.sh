@@ -5,12 +5,13 @@
 #   bench/results/spinu_figures/*.csv, bench/results/sweep_reference_check.csv,
 #   bench/results/coatfft_run_rss.txt, docs/figures/spinu_fig{2,3}_*.png, and (not with --tiny,
 #   whose sweep has no coated case) docs/validation.md's block coated_convergence;
-#   with --full also bench/results/dcfft.csv, setup.csv, setup_2048.csv, setup_alpha4.csv,
-#   frf_eval.csv, contact.csv and their blocks in docs/benchmarks.md (dcfft_direct: direct
-#   summation against DC-FFT).
+#   with --full also bench/results/dcfft.csv, fft_sizes.csv, setup.csv, setup_2048.csv,
+#   setup_alpha4.csv, frf_eval.csv, contact.csv and their blocks in docs/benchmarks.md
+#   (dcfft_direct: direct summation against DC-FFT), and auto_tolerance.csv (docs/auto.md,
+#   section 5: the automatic method choice against hand-picked settings).
 # Programs (bench/, one per file; each takes --help): bench_sweep (with its child bench_sweep_row),
-# bench_reference_check, bench_figures, bench_peak_rss, and with --full bench_dcfft, bench_setup,
-# bench_frf, bench_contact.
+# bench_reference_check, bench_figures, bench_peak_rss, and with --full bench_dcfft,
+# bench_fft_sizes, bench_setup, bench_frf, bench_contact, bench_auto_tolerance.
 #
 # Usage: scripts/run_benchmarks.sh [--full | --quick | --tiny]   (default --full, ~10 min on 2 cores;
 #        --quick and --tiny run the sweep only)
@@ -28,7 +29,8 @@ python=/usr/bin/python3
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCOATFFT_BUILD_BENCH=ON \
   -DCOATFFT_BUILD_CLI=ON >/dev/null
 targets="bench_sweep bench_sweep_row bench_reference_check bench_figures bench_peak_rss coatfft_exe"
-[ "$mode" = "--full" ] && targets="$targets bench_dcfft bench_setup bench_frf bench_contact"
+[ "$mode" = "--full" ] && targets="$targets bench_dcfft bench_fft_sizes bench_setup bench_frf bench_contact"
+[ "$mode" = "--full" ] && targets="$targets bench_auto_tolerance"
 # shellcheck disable=SC2086
 cmake --build "$build" -j "${JOBS:-2}" --target $targets
 bench=$build/bench
@@ -92,6 +94,8 @@ fi
 if [ "$mode" = "--full" ]; then
   echo "== DC-FFT against the bare padded FFTW pipeline"
   "$bench/bench_dcfft" "$results/dcfft.csv"
+  echo "== DC-FFT on awkward sizes (fast FFT padding)"
+  "$bench/bench_fft_sizes" "$results/fft_sizes.csv"
   echo "== setup against application"
   "$bench/bench_setup" "$results/setup.csv" --sizes 512,1024 --threads 1,2 --reps 5
   "$bench/bench_setup" "$results/setup_2048.csv" --sizes 2048 --threads 1,2 --reps 3
@@ -100,9 +104,12 @@ if [ "$mode" = "--full" ]; then
   "$bench/bench_frf" "$results/frf_eval.csv"
   echo "== contact solver"
   "$bench/bench_contact" "$results/contact.csv"
+  echo "== automatic method choice per tolerance, against hand-picked settings"
+  "$bench/bench_auto_tolerance" "$results/auto_tolerance.csv"
   doc=$root/docs/benchmarks.md
   "$python" "$blocks" "$doc" dcfft "$results/dcfft.csv"
   "$python" "$blocks" "$doc" dcfft_direct "$results/dcfft.csv" --view direct-speedup
+  "$python" "$blocks" "$doc" fft_sizes "$results/fft_sizes.csv"
   "$python" "$blocks" "$doc" setup "$results/setup.csv"
   "$python" "$blocks" "$doc" setup_2048 "$results/setup_2048.csv"
   "$python" "$blocks" "$doc" frf_eval "$results/frf_eval.csv"

@@ -347,8 +347,9 @@ TEST_CASE("coatfft check validates as run does, prints the plan and writes nothi
   CHECK(plan["method"] == "dcfft");
   CHECK(plan["problem"] == "pressure");
   CHECK(plan["nx"] == 33);
-  // The estimate of docs/scene_format.md: 4 fields + 20 bytes per cell of the 66 x 66 lattice.
-  CHECK(plan["estimated_memory_bytes"].get<double>() == 8.0 * 4 * 33 * 33 + 20.0 * 66 * 66);
+  // The estimate of docs/scene_format.md: 4 fields + 20 bytes per cell of the padded lattice,
+  // 70 x 70 (the smallest even 7-smooth length >= 2 n - 1 = 65).
+  CHECK(plan["estimated_memory_bytes"].get<double>() == 8.0 * 4 * 33 * 33 + 20.0 * 70 * 70);
   CHECK(plan["warnings"].empty());
   CHECK(snapshot(dir) == before);
   // What run refuses before computing, check refuses too.

@@ -1,6 +1,6 @@
 // DcfftOperator against the direct multi-summation (DirectOperator) and against a plain,
 // unpruned padded-FFT convolution written here with complex 2-D FFTW transforms; plus linearity,
-// symmetry, plan reuse and input checks.
+// symmetry, plan reuse and input checks; the padding to fast FFT lengths on awkward grids.
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -15,8 +15,11 @@
 #include "convolution/direct_operator.hpp"
 #include "convolution/fftw_plan.hpp"
 #include "convolution/influence_kernel.hpp"
+#include "convolution/split_frf_kernel.hpp"
 #include "core/error.hpp"
 #include "core/norms.hpp"
+#include "frf/frf.hpp"
+#include "layers/layer_stack.hpp"
 
 using coatfft::DcfftOperator;
 using coatfft::DirectOperator;
@@ -182,6 +185,74 @@ TEST_CASE("DC-FFT plans are reusable: applying twice gives identical results",
   (void)op.apply(random_field(20, 13, 8u));
   const Field again = op.apply(p);
   CHECK((first == again).all());
+}
+
+TEST_CASE("DC-FFT pads awkward sizes to fast even lengths exactly", "[convolution][dcfft]") {
+  // 2n = 254, 66, 22, 1022 (n = 127, 33, 11, 511) have a prime factor > 7; the padded lengths
+  // are the smallest even 7-smooth lengths >= 2n - 1, and 2n where 2n already is one (7, 1, 5, 3).
+  struct Case {
+    std::ptrdiff_t nx, ny, mx, my;
+  };
+  for (const Case& c :
+       {Case{127, 33, 256, 70}, Case{11, 7, 24, 14}, Case{1, 5, 2, 10}, Case{511, 3, 1024, 6}}) {
+    const Grid grid(c.nx, c.ny, 1e-3 * double(c.nx), 1.3e-3 * double(c.ny));
+    const InfluenceKernel kernel = coatfft::love_kernel(grid, 2.2e11);
+    const Field p = random_field(c.nx, c.ny, 31u).abs() * 1e9;
+    DcfftOperator dcfft(kernel);
+    INFO(c.nx << " x " << c.ny);
+    CHECK(dcfft.padded_nx() == c.mx);
+    CHECK(dcfft.padded_ny() == c.my);
+    // Positive pressures on a positive kernel: no cancellation, so both sides carry round-off
+    // of order eps log2(mx my) relative to max|u| (measured 2e-16 to 7e-15 here); 1e-12 is the
+    // project's consistency tier. A wrong slot or a wrap-around overlap would be O(1e-3) or more.
+    CHECK(coatfft::rel_linf(dcfft.apply(p), DirectOperator(kernel).apply(p)) < 1e-12);
+    // And on signed random coefficients and pressures (no structure that could hide a shift).
+    const InfluenceKernel noise = random_kernel(grid, 5u + unsigned(c.nx));
+    const Field q = random_field(c.nx, c.ny, 37u);
+    CHECK(coatfft::rel_linf(DcfftOperator(noise, coatfft::Planning::estimate, 2).apply(q),
+                            DirectOperator(noise).apply(q)) < 1e-12);
+  }
+}
+
+TEST_CASE("DC-FFT keeps the exact 2n lattice for a kernel given as its spectrum",
+          "[convolution][dcfft]") {
+  // The spectrum form by its definition (influence_kernel.hpp): the cosine sum over all offsets
+  // |di| < nx, |dj| < ny of the coefficients. On 11 x 7 the coefficient form pads to (24, 14),
+  // the spectrum form must stay on (22, 14), and both must be the linear convolution.
+  const Grid grid(11, 7, 1.1e-3, 0.7e-3);
+  const InfluenceKernel love = coatfft::love_kernel(grid, 2.2e11);
+  const double pi = std::acos(-1.0);
+  Field spectrum = Field::Zero(12, 8);
+  for (std::ptrdiff_t jy = 0; jy <= 7; ++jy)
+    for (std::ptrdiff_t jx = 0; jx <= 11; ++jx)
+      for (std::ptrdiff_t dj = -6; dj <= 6; ++dj)
+        for (std::ptrdiff_t di = -10; di <= 10; ++di)
+          spectrum(jx, jy) += love.at(di, dj) * std::cos(pi * double(jx * di) / 11.0) *
+                              std::cos(pi * double(jy * dj) / 7.0);
+  DcfftOperator from_spectrum(InfluenceKernel(grid, InfluenceKernel::Form::spectrum, spectrum));
+  CHECK(from_spectrum.padded_nx() == 22);
+  CHECK(from_spectrum.padded_ny() == 14);
+  CHECK(DcfftOperator::padded_size(11, InfluenceKernel::Form::coefficients) == 24);
+  const Field p = random_field(11, 7, 41u).abs() * 1e9;
+  // The cosine sum rounds like the DCT (~1e-16 per term, 273 terms): well inside 1e-12.
+  CHECK(coatfft::rel_linf(from_spectrum.apply(p), DirectOperator(love).apply(p)) < 1e-12);
+}
+
+TEST_CASE("DC-FFT of a coated body's split kernel on an odd grid equals direct summation",
+          "[convolution][dcfft][split]") {
+  // 37 x 23 cells (2n = 74, 46 are slow lengths; padded to 80 x 48) of a 1 um TiN-like coating
+  // on steel, 10 um cells: the split kernel is a general coefficient kernel, not Love's.
+  const Grid grid(37, 23, 370e-6, 230e-6);
+  const coatfft::LayerStack body(
+      {coatfft::Coating{coatfft::Material(600e9, 0.25), 1e-6, coatfft::Interface::bonded}},
+      coatfft::Material(210e9, 0.3));
+  const InfluenceKernel kernel = coatfft::split_frf_kernel(grid, *coatfft::make_frf(body));
+  const Field p = random_field(37, 23, 43u).abs() * 1e9;
+  DcfftOperator dcfft(kernel);
+  CHECK(dcfft.padded_nx() == 80);
+  CHECK(dcfft.padded_ny() == 48);
+  // A positive load, as for Love's kernel: the same round-off tier (measured 3e-15).
+  CHECK(coatfft::rel_linf(dcfft.apply(p), DirectOperator(kernel).apply(p)) < 1e-12);
 }
 
 TEST_CASE("Operators refuse a pressure of the wrong shape", "[convolution][bad_input]") {

@@ -1,0 +1,59 @@
+#pragma once
+// Progress of `coatfft run` on a terminal (docs/scene_format.md, "Progress on the terminal"): the
+// stage a long run is in and the iterations of a contact solve. A run that ends within a second
+// prints nothing, and nothing is printed under --quiet or when stderr is not a terminal, so that
+// scripts and tests see only warnings and errors there.
+//
+// Progress is reported from the computing thread, between the steps it already takes: a stage is
+// announced when it starts, so a long first stage (the operator's setup) shows only through the
+// elapsed time on the line of the stage after it. No thread or timer is needed, and nothing else
+// writing to stderr (warnings) can be interleaved with a progress line.
+#include <chrono>
+#include <cstddef>
+#include <iosfwd>
+#include <string>
+#include <string_view>
+
+namespace coatfft::cli {
+
+/// Whether `coatfft run` reports progress: only on a terminal, and not under --quiet.
+bool progress_wanted(bool quiet, bool stderr_is_terminal);
+
+/// Progress lines on one stream. Nothing is printed before `delay` has passed since the start;
+/// after it every stage is one line, and iterations update one line in place ('\r') at most once
+/// per `interval`, so that a terminal gets a few lines per second at most.
+class Progress {
+ public:
+  using Clock = std::chrono::steady_clock;
+  static constexpr std::chrono::milliseconds delay{1000};
+  static constexpr std::chrono::milliseconds interval{250};
+
+  /// Prints on `out` when `enabled`; the run's time counts from `start`.
+  Progress(bool enabled, std::ostream& out, Clock::time_point start = Clock::now());
+  /// Ends a line that iteration() left open, so that what follows on the stream (an error
+  /// message) starts a line of its own.
+  ~Progress();
+  Progress(const Progress&) = delete;
+  Progress& operator=(const Progress&) = delete;
+
+  /// A stage begins, e.g. "setting up the operator (dcfft)".
+  void stage(std::string_view what, Clock::time_point now = Clock::now());
+  /// Iteration `k` of a contact solve left `residual`.
+  void iteration(int k, double residual, Clock::time_point now = Clock::now());
+  /// The run is done: a last line with its total time, if anything was printed before.
+  void finish(Clock::time_point now = Clock::now());
+
+ private:
+  bool due(Clock::time_point now) const;
+  std::string prefix(Clock::time_point now) const;
+  void end_line();
+
+  bool enabled_;
+  std::ostream& out_;
+  Clock::time_point start_;
+  Clock::time_point last_print_;
+  bool printed_ = false;
+  std::size_t open_line_ = 0;  ///< length of the line iteration() left open; 0 when none is
+};
+
+}  // namespace coatfft::cli

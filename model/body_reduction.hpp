@@ -1,0 +1,56 @@
+#pragma once
+// Reduced models of a layered body: where a coating's effect on the surface displacement is
+// below the tolerance, the displacement is computed for a simpler body (docs/auto.md, section 2):
+//
+//   substrate       every coating far thinner than the load is felt through (the substrate alone);
+//   top_half_space  the top coating so thick that the loaded region does not reach below it;
+//   merged          adjacent layers elastically equal (or nearly) to the medium below them
+//                   become one layer, and a coating equal to the substrate joins it.
+//
+// The effect of a reduction is bounded in Fourier space, for an axisymmetric reference load p of
+// transform P(k), by
+//
+//   max_x |u_reduced - u_full| / u_full(0) <= \int |H_red - H_full| |P| k dk / \int H_full P k dk,
+//
+// (u(0) = (1/2 pi) \int H P k dk, and |J0| <= 1): a bound on the whole surface, for the
+// continuous load. A reduction is used only where this bound is within the budget.
+#include <string>
+#include <vector>
+
+#include "../frf/frf.hpp"
+#include "../layers/layer_stack.hpp"
+#include "../validation/hankel_displacement.hpp"
+
+namespace coatfft {
+
+/// An axisymmetric load standing for the scene's load in the effect bound: its shape and radius
+/// (the amplitude cancels). Its transform is axisymmetric_load_transform.
+struct ReferenceLoad {
+  AxisymmetricLoad shape = AxisymmetricLoad::hertz;
+  double radius = 0.0;  ///< [m], > 0
+};
+
+/// The bound above for replacing the body of FRF `full` by that of `reduced` under `load`
+/// (relative to the full body's displacement at the load's centre). The integral runs to
+/// k a = 1e8, and beyond it an analytic bound of the tail is added, so the value is an upper
+/// bound to the quadrature's accuracy (1e-4 relative), times a margin of 1.5 for the scene's
+/// load not being the reference load (docs/auto.md, section 2).
+double reduction_effect(const Frf& full, const Frf& reduced, const ReferenceLoad& load);
+
+struct BodyReduction {
+  LayerStack body;              ///< the body to compute with: the given one where not reduced
+  std::string kind = "none";    ///< "none", "substrate", "top_half_space", "merged"
+  double estimated_effect = 0;  ///< reduction_effect of `body` against the given body
+  std::string why;              ///< one sentence, for reports
+  /// The reductions tried, each "kind: effect", for reports.
+  std::vector<std::pair<std::string, double>> tried;
+};
+
+/// The simplest body whose effect bound, the largest over `loads` (at least one), is within
+/// `budget` (> 0): a homogeneous one (substrate or top_half_space, the smaller effect of the
+/// admissible ones) before merged layers; otherwise `stack` itself. A homogeneous `stack` is
+/// returned as it is.
+BodyReduction reduce_body(const LayerStack& stack, const std::vector<ReferenceLoad>& loads,
+                          double budget);
+
+}  // namespace coatfft

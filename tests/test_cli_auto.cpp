@@ -1,0 +1,104 @@
+// [method] name = "auto" through the command line (cli/automatic_method.hpp, docs/auto.md): the
+// default method, its report in summary.json and `coatfft check`, reductions, refusals, and named
+// methods kept as they were.
+#include <catch2/catch.hpp>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "tests/cli_process.hpp"
+
+using namespace coatfft_test;
+
+namespace {
+
+nlohmann::json run_summary(const std::string& name, const std::string& scene_text) {
+  const fs::path scene = write_scene(scene_text, name, "", "");
+  const fs::path out = scratch(name + "_out");
+  fs::remove_all(out);
+  const ProcessResult r = run_coatfft("run " + scene.string() + " -o " + out.string());
+  INFO(r.stderr_text);
+  REQUIRE(r.status == 0);
+  std::ifstream in(out / "summary.json");
+  return nlohmann::json::parse(in);
+}
+
+// kGoodScene without its [method] section, with `extra` appended.
+std::string scene_without_method(const std::string& extra) {
+  std::string text = kGoodScene;
+  text.erase(text.find("[method]"));
+  return text + extra;
+}
+
+const std::string coating = "[[coating]]\nE = 21e9\nnu = 0.3\nthickness = 1e-4\n";
+
+}  // namespace
+
+TEST_CASE("a scene without [method] runs auto: Love's DC-FFT on a homogeneous body",
+          "[cli][auto]") {
+  const nlohmann::json s = run_summary("auto_homogeneous", scene_without_method(""));
+  CHECK(s["method"] == "dcfft");
+  CHECK(s["method_requested"] == "auto");
+  REQUIRE(s.contains("auto"));
+  CHECK(s["auto"]["tolerance"] == 1e-4);
+  CHECK(s["auto"]["method"] == "dcfft");
+  CHECK(s["auto"]["candidates"].size() == 5);
+  CHECK(s["auto"]["reduction"]["kind"] == "none");
+  CHECK(s["predicted_error"].get<double>() <= 1e-4);
+  CHECK(!s["auto"]["why"].get<std::string>().empty());
+}
+
+TEST_CASE("a coated scene without [method] runs frf-split within the tolerance", "[cli][auto]") {
+  const nlohmann::json s =
+      run_summary("auto_coated", scene_without_method(coating + "[method]\ntolerance = 1e-3\n"));
+  CHECK(s["method"] == "frf-split");
+  CHECK(s["auto"]["split_tolerance"] == 1e-3);
+  CHECK(s["auto"]["predicted_error"].get<double>() <= 1e-3);
+  // The same scene by frf-split at its default kernel tolerance: the results agree within the
+  // tolerance (max |u| ~ uz_max).
+  const nlohmann::json named = run_summary(
+      "auto_coated_named", scene_without_method(coating + "[method]\nname = \"frf-split\"\n"));
+  CHECK(named["method_requested"] == "frf-split");
+  CHECK_FALSE(named.contains("auto"));
+  CHECK(std::abs(s["uz_max"].get<double>() - named["uz_max"].get<double>()) <=
+        1e-3 * named["uz_max"].get<double>());
+}
+
+TEST_CASE("auto reduces a coating whose effect is below the tolerance", "[cli][auto]") {
+  const std::string thin = "[[coating]]\nE = 400e9\nnu = 0.25\nthickness = 2e-7\n";
+  const nlohmann::json s =
+      run_summary("auto_thin", scene_without_method(thin + "[method]\ntolerance = 1e-3\n"));
+  CHECK(s["auto"]["reduction"]["kind"] == "substrate");
+  CHECK(s["method"] == "dcfft");
+  CHECK(s["auto"]["reduction"]["estimated_effect"].get<double>() <= 0.9e-3);
+  const nlohmann::json strict =
+      run_summary("auto_thin_strict", scene_without_method(thin + "[method]\ntolerance = 1e-5\n"));
+  CHECK(strict["auto"]["reduction"]["kind"] == "none");
+  CHECK(strict["method"] == "frf-split");
+}
+
+TEST_CASE("auto's keys are refused where they do not apply", "[cli][auto]") {
+  const std::string base = scene_without_method("[method]\nname = \"auto\"\n");
+  check_refused(base, {"auto_alpha", "name = \"auto\"\n", "name = \"auto\"\nalpha = 4\n",
+                       "(which chooses them)"});
+  check_refused(base, {"auto_tol_zero", "name = \"auto\"\n", "name = \"auto\"\ntolerance = 0\n",
+                       "[method] tolerance"});
+  check_refused(base, {"auto_tol_named", "name = \"auto\"\n",
+                       "name = \"dcfft\"\ntolerance = 1e-3\n", "applies only to name = \"auto\""});
+  check_refused(base, {"auto_bad_name", "name = \"auto\"\n", "name = \"fast\"\n", "\"auto\""});
+}
+
+TEST_CASE("coatfft check prints auto's choice, sizes, memory and time", "[cli][auto]") {
+  const fs::path scene = write_scene(scene_without_method(coating), "auto_check", "", "");
+  const fs::path json = scratch("auto_check.json");
+  const std::string command = std::string(COATFFT_EXE) + " check " + scene.string() + " > " +
+                              json.string() + " 2>/dev/null";
+  REQUIRE(std::system(command.c_str()) == 0);
+  std::ifstream in(json);
+  const nlohmann::json c = nlohmann::json::parse(in);
+  CHECK(c["method"] == "frf-split");
+  CHECK(c["method_requested"] == "auto");
+  CHECK(c["auto"]["why"].get<std::string>().rfind("frf-split", 0) == 0);
+  CHECK(c["estimated_seconds"]["total"].get<double>() > 0);
+  CHECK(c["estimated_memory_bytes"].get<double>() > 0);
+}
