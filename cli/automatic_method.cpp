@@ -73,6 +73,7 @@ std::optional<AutomaticChoice> resolve_automatic_method(Scene& scene, double app
   request.applications = applications;
   request.max_threads = m.options.threads;
   request.planning = m.options.planning;
+  request.first_in_process = true;  // a command-line run builds one operator
   if (scene.frf) {
     choice.method = choose_method(scene.grid, *scene.frf, request);
   } else {
@@ -143,9 +144,9 @@ nlohmann::json automatic_choice_json(const AutomaticChoice& choice, double toler
 
 MethodCandidate predicted_scene_cost(const Scene& scene, double applications) {
   const OperatorOptions& o = scene.method.options;
-  if (scene.frf) return predict_method(scene.grid, *scene.frf, o, applications);
+  if (scene.frf) return predict_method(scene.grid, *scene.frf, o, applications, true);
   const LayerStack& body = scene.method.reduced_body ? *scene.method.reduced_body : *scene.body;
-  return predict_method(scene.grid, body, o, applications);
+  return predict_method(scene.grid, body, o, applications, true);
 }
 
 }  // namespace coatfft::cli

@@ -56,7 +56,7 @@ MemoryEstimate estimate_memory(const Scene& scene) {
   double per_lattice_cell = 2.5 * 8.0;
   const Method method = scene.method.options.method;
   if (method == Method::frf_split || method == Method::frf_dcfft) per_lattice_cell += 8.0;
-  double bytes = 8.0 * fields * cells + per_lattice_cell * lattice;
+  double bytes = program_bytes + 8.0 * fields * cells + per_lattice_cell * lattice;
   if (method == Method::frf_dcfft) {
     const double alpha = scene.method.options.alpha;
     bytes += 16.0 * alpha * alpha * cells;  // the FRF sampled on the alpha-extended lattice

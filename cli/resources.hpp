@@ -26,6 +26,13 @@ struct MemoryEstimate {
 /// kernel spectrum of the method (docs/scene_format.md gives the formula).
 MemoryEstimate estimate_memory(const Scene& scene);
 
+/// What the program itself takes before any array of the scene (its code, the C++, FFTW, GSL and
+/// TOML libraries, FFTW's plans and tables, the heap's start): the peak resident set of
+/// `coatfft run` on the smallest example scenes (65^2-128^2 cells: 9.6-10.5 MiB, less 0.5-2.3 MiB
+/// of arrays; scripts/check_estimates_check.py) rounded up. Part of estimate_memory, so that small
+/// scenes are not estimated at a fraction of what they take.
+inline constexpr double program_bytes = 10.0 * 1024 * 1024;
+
 /// The memory this process may use [bytes]: MemAvailable of /proc/meminfo, or the cgroup's
 /// memory.max when smaller; nullopt when neither can be read.
 std::optional<double> available_memory();

@@ -24,6 +24,9 @@ struct AutoRequest {
   /// Threads the choice may use, in 1..max_threads; it picks fewer where they do not pay.
   int max_threads = 1;
   Planning planning = Planning::estimate;
+  /// The operator is the first FFTW plan of its process (a command-line run): the methods that
+  /// use FFTW then also pay fftw_start_seconds (model/cost_model.hpp).
+  bool first_in_process = false;
 };
 
 /// One method as the model sees it.
@@ -56,9 +59,10 @@ MethodChoice choose_method(const Grid& grid, const Frf& frf, const AutoRequest& 
 /// frf-split; +inf for the lattice pipelines, whose error convolution/pipeline_error.hpp
 /// predicts). Love's methods on a layered body are reported not admissible.
 MethodCandidate predict_method(const Grid& grid, const LayerStack& body,
-                               const OperatorOptions& options, double applications);
+                               const OperatorOptions& options, double applications,
+                               bool first_in_process = false);
 MethodCandidate predict_method(const Grid& grid, const Frf& frf, const OperatorOptions& options,
-                               double applications);
+                               double applications, bool first_in_process = false);
 
 /// The alpha auto gives frf-spectral and frf-dcfft: 2, rounded up so that the extended lattice
 /// alpha n is a fast FFT length (2^a 3^b 5^c 7^d, as DC-FFT's padding) where one alpha can make

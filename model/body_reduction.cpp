@@ -6,6 +6,8 @@
 #include <limits>
 #include <memory>
 #include <numbers>
+#include <utility>
+#include <vector>
 
 #include "core/detail/brief.hpp"
 #include "core/error.hpp"
@@ -56,35 +58,46 @@ double integrate(const std::function<double(double)>& f, double a, double b, dou
   return gsl_qag(f, a, b, abs_tol, rel_tol, GSL_INTEG_GAUSS21, ws).value;
 }
 
-// \int_0^{t_exact/a} f dk over panels of half a period of the load's oscillation.
-double integrate_oscillating(const std::function<double(double)>& f, double a, double abs_tol,
-                             gsl_integration_workspace* ws) {
-  double sum = 0.0;
-  for (double t = 0.0; t < t_exact; t += pi / 2)
-    sum += integrate(f, t / a, std::min(t + pi / 2, t_exact) / a, abs_tol, ws);
-  return sum;
+// The panels of the integral in t = k a: half-periods of P up to t_exact, then doubling.
+std::vector<std::pair<double, double>> panels() {
+  std::vector<std::pair<double, double>> p;
+  for (double t = 0.0; t < t_exact; t += pi / 2) p.emplace_back(t, std::min(t + pi / 2, t_exact));
+  for (double t = t_exact; t < t_end; t *= 2) p.emplace_back(t, std::min(2 * t, t_end));
+  return p;
 }
 
 }  // namespace
 
-double reduction_effect(const Frf& full, const Frf& reduced, const ReferenceLoad& load) {
+namespace {
+
+// 2 pi u(0) = \int H P k dk of `full` under `load`: the bound's denominator.
+double centre_integral(const Frf& full, const ReferenceLoad& load) {
   COATFFT_REQUIRE(std::isfinite(load.radius) && load.radius > 0,
                   "reduction_effect: radius = ", load.radius, " m, but it must be finite and > 0");
+  const double u0 = 2 * pi * hankel_displacement(full, load.shape, 1.0, load.radius, 0.0, 1e-8);
+  COATFFT_REQUIRE(std::isfinite(u0) && u0 > 0, "reduction_effect: u(0) = ", u0, " for FRF '",
+                  full.name(), "'");
+  return u0;
+}
+
+// reduction_effect with its denominator `u0` (centre_integral) given.
+double effect_bound(const Frf& full, const Frf& reduced, const ReferenceLoad& load, double u0,
+                    double stop_above) {
   const GslHandlerOff quiet;
   const GslWorkspace ws = make_gsl_workspace(200);
   const double a = load.radius;
   const auto dh = [&](double k) { return std::abs(full(k) - reduced(k)); };
-  const auto transform = [&](double k) {
-    return axisymmetric_load_transform(load.shape, 1.0, a, k);
+  const auto exact = [&](double k) {
+    return dh(k) * std::abs(axisymmetric_load_transform(load.shape, 1.0, a, k)) * k;
   };
-  // 2 pi u(0) = \int H P k dk, the denominator.
-  const double u0 = 2 * pi * hankel_displacement(full, load.shape, 1.0, a, 0.0, 1e-8);
-  const double abs_tol = 1e-8 * std::abs(u0);
-  double diff = integrate_oscillating([&](double k) { return dh(k) * std::abs(transform(k)) * k; },
-                                      a, abs_tol, ws.get());
-  for (double t = t_exact; t < t_end; t *= 2) {
-    diff += integrate([&](double k) { return dh(k) * load_envelope(load, k) * k; }, t / a,
-                      std::min(2 * t, t_end) / a, abs_tol, ws.get());
+  const auto envelope = [&](double k) { return dh(k) * load_envelope(load, k) * k; };
+  const double abs_tol = 1e-8 * u0;
+  double diff = 0.0;
+  for (const auto& [t0, t1] : panels()) {
+    diff += t1 <= t_exact ? integrate(exact, t0 / a, t1 / a, abs_tol, ws.get())
+                          : integrate(envelope, t0 / a, t1 / a, abs_tol, ws.get());
+    // The integrand is >= 0: a partial sum above stop_above settles the comparison.
+    if (reference_margin * diff / u0 > stop_above) return reference_margin * diff / u0;
   }
   // Beyond t_end, k |dH| is at its limit |Cinf_full - Cinf_reduced| (the layers' exponential
   // terms are e^-(k h) small there unless a layer is thinner than a / 1e6); the larger of the
@@ -92,9 +105,16 @@ double reduction_effect(const Frf& full, const Frf& reduced, const ReferenceLoad
   const double k_end = t_end / a;
   const double kdh = std::max(k_end * dh(k_end), std::abs(full.c_inf() - reduced.c_inf()));
   diff += tail_bound(load, kdh);
-  COATFFT_REQUIRE(std::isfinite(diff) && u0 > 0, "reduction_effect: the bound is not finite (",
-                  diff, " / ", u0, ") for FRFs '", full.name(), "' and '", reduced.name(), "'");
+  COATFFT_REQUIRE(std::isfinite(diff), "reduction_effect: the bound is not finite for FRFs '",
+                  full.name(), "' and '", reduced.name(), "'");
   return reference_margin * diff / u0;
+}
+
+}  // namespace
+
+double reduction_effect(const Frf& full, const Frf& reduced, const ReferenceLoad& load,
+                        double stop_above) {
+  return effect_bound(full, reduced, load, centre_integral(full, load), stop_above);
 }
 
 namespace {
@@ -113,22 +133,29 @@ struct Trial {
   double effect;
 };
 
-double largest_effect(const Frf& full, const LayerStack& reduced,
-                      const std::vector<ReferenceLoad>& loads) {
+// The largest effect over `loads`; above `budget`, only a lower bound above it (the bound's
+// integral stops there: the reduction is refused either way).
+struct Reference {
+  const Frf& full;
+  const std::vector<ReferenceLoad>& loads;
+  std::vector<double> u0;  // centre_integral of each load, computed once
+  double budget;
+};
+
+double largest_effect(const Reference& ref, const LayerStack& reduced) {
   const std::unique_ptr<Frf> frf = make_frf(reduced);
   double effect = 0.0;
-  for (const ReferenceLoad& load : loads)
-    effect = std::max(effect, reduction_effect(full, *frf, load));
+  for (std::size_t i = 0; i < ref.loads.size() && effect <= ref.budget; ++i)
+    effect = std::max(effect, effect_bound(ref.full, *frf, ref.loads[i], ref.u0[i], ref.budget));
   return effect;
 }
 
 // The merge of one pair of `current` with the smallest effect on `full`.
-Trial best_merge(const Frf& full, const LayerStack& current,
-                 const std::vector<ReferenceLoad>& loads) {
+Trial best_merge(const Reference& ref, const LayerStack& current) {
   Trial best{current, std::numeric_limits<double>::infinity()};
   for (std::size_t i = 0; i < current.coatings().size(); ++i) {
     LayerStack candidate = merged(current, i);
-    const double effect = largest_effect(full, candidate, loads);
+    const double effect = largest_effect(ref, candidate);
     if (effect < best.effect) best = {std::move(candidate), effect};
   }
   return best;
@@ -159,12 +186,14 @@ BodyReduction reduce_body(const LayerStack& stack, const std::vector<ReferenceLo
   BodyReduction r{stack, "none", 0.0, "the body is homogeneous", {}};
   if (stack.is_homogeneous()) return r;
   const std::unique_ptr<Frf> full = make_frf(stack);
+  Reference ref{*full, loads, {}, budget};
+  for (const ReferenceLoad& load : loads) ref.u0.push_back(centre_integral(*full, load));
   // Homogeneous bodies first: Love's exact DC-FFT then applies.
   const LayerStack homogeneous[2] = {LayerStack(stack.substrate()),
                                      LayerStack(stack.coatings().front().material)};
   const char* kinds[2] = {"substrate", "top_half_space"};
   for (int i = 0; i < 2; ++i) {
-    const double effect = largest_effect(*full, homogeneous[i], loads);
+    const double effect = largest_effect(ref, homogeneous[i]);
     r.tried.emplace_back(kinds[i], effect);
     if (effect <= budget && (r.kind == "none" || effect < r.estimated_effect)) {
       r.body = homogeneous[i];
@@ -175,8 +204,7 @@ BodyReduction reduce_body(const LayerStack& stack, const std::vector<ReferenceLo
   if (r.kind == "none") {
     // Merge pairs while the merged body stays within the budget (effects against the given
     // body, not the previous step: they do not add up unchecked).
-    for (Trial t = best_merge(*full, stack, loads); t.effect <= budget;
-         t = best_merge(*full, t.body, loads)) {
+    for (Trial t = best_merge(ref, stack); t.effect <= budget; t = best_merge(ref, t.body)) {
       r.tried.emplace_back("merged", t.effect);
       r.body = t.body;
       r.kind = "merged";

@@ -14,6 +14,7 @@
 //
 // (u(0) = (1/2 pi) \int H P k dk, and |J0| <= 1): a bound on the whole surface, for the
 // continuous load. A reduction is used only where this bound is within the budget.
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -35,14 +36,19 @@ struct ReferenceLoad {
 /// k a = 1e8, and beyond it an analytic bound of the tail is added, so the value is an upper
 /// bound to the quadrature's accuracy (1e-4 relative), times a margin of 1.5 for the scene's
 /// load not being the reference load (docs/auto.md, section 2).
-double reduction_effect(const Frf& full, const Frf& reduced, const ReferenceLoad& load);
+/// With `stop_above` finite, the integration stops as soon as the bound exceeds it (its
+/// integrand is >= 0) and that partial value, a lower bound of the bound, is returned: enough to
+/// refuse a reduction, at a fraction of the cost.
+double reduction_effect(const Frf& full, const Frf& reduced, const ReferenceLoad& load,
+                        double stop_above = std::numeric_limits<double>::infinity());
 
 struct BodyReduction {
   LayerStack body;              ///< the body to compute with: the given one where not reduced
   std::string kind = "none";    ///< "none", "substrate", "top_half_space", "merged"
   double estimated_effect = 0;  ///< reduction_effect of `body` against the given body
   std::string why;              ///< one sentence, for reports
-  /// The reductions tried, each "kind: effect", for reports.
+  /// The reductions tried with their effects, for reports; an effect above the budget is a lower
+  /// bound (reduction_effect's stop_above).
   std::vector<std::pair<std::string, double>> tried;
 };
 

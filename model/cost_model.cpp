@@ -9,16 +9,17 @@ namespace {
 
 // Constants fitted by bench_auto_calibration (bench/results/auto_calibration.csv, relative least
 // squares; docs/auto.md section 3) [s per unit of work].
-constexpr double apply_fixed = 5.0e-6;
-constexpr double apply_per_point_log = 2.7e-10;  // per P log2 P of the padded lattice
+constexpr double apply_fixed = 0.0;              // dropped by the fit (negative)
+constexpr double apply_per_point_log = 2.4e-10;  // per P log2 P of the padded lattice
+constexpr double fftw_start = 8.4e-3;            // the first plan of a process, once
 constexpr double direct_per_pair = 5.4e-10;      // per (cell, cell) pair (bench/results/sweep.csv)
-constexpr double love_fixed = 6.1e-5;
-constexpr double love_per_cell = 3.2e-8;
-constexpr double love_per_point_log = 1.0e-9;
-constexpr double split_fixed = 6.3e-4;
-constexpr double split_per_cell = 3.5e-8;
-constexpr double split_per_fold_term = 1.2e-8;
-constexpr double split_per_hankel = 4.1e-8;
+constexpr double love_fixed = 1.4e-5;
+constexpr double love_per_cell = 8.9e-8;
+constexpr double love_per_point_log = 0.0;  // dropped by the fit (negative)
+constexpr double split_fixed = 9.0e-4;
+constexpr double split_per_cell = 1.9e-8;
+constexpr double split_per_fold_term = 1.06e-8;
+constexpr double split_per_hankel = 2.2e-8;
 
 double point_log(std::ptrdiff_t fft_nx, std::ptrdiff_t fft_ny) {
   const double p = static_cast<double>(fft_nx) * static_cast<double>(fft_ny);
@@ -26,6 +27,10 @@ double point_log(std::ptrdiff_t fft_nx, std::ptrdiff_t fft_ny) {
 }
 
 }  // namespace
+
+double fftw_start_seconds() {
+  return fftw_start;
+}
 
 double assumed_speedup(double points, int threads) {
   if (threads <= 1 || points < 262144.0) return 1.0;

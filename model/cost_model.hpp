@@ -25,6 +25,12 @@ double predicted_love_setup_seconds(const Grid& grid, std::ptrdiff_t fft_nx, std
 /// Setup of frf-split with the counted `work` of its kernel [s], on `threads` threads.
 double predicted_split_setup_seconds(const Grid& grid, const SplitKernelWork& work, int threads);
 
+/// FFTW's start in a process: the first plan of a process costs this much more than the later
+/// ones (its planner and codelet tables; bench_auto_calibration's first build of an 8 x 8 dcfft
+/// operator against its later ones) [s]. A command-line run pays it once; a program that builds
+/// operators repeatedly pays it only for its first.
+double fftw_start_seconds();
+
 /// Parallel speed-up assumed for `threads` threads on a transform of `points` points: none
 /// below 2^18 points (the threads' start-up eats the gain), 0.7 per extra thread above.
 double assumed_speedup(double points, int threads);

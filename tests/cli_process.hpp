@@ -58,6 +58,40 @@ a = 1.0e-3
 name = "dcfft"
 )";
 
+// A small sphere contact on steel (10 N, 32 x 32 cells).
+inline const char* kSmallContactScene = R"([grid]
+nx = 32
+ny = 32
+lx = 3.0e-3
+ly = 3.0e-3
+[substrate]
+material = "steel"
+[contact]
+indenter = "sphere"
+radius = 0.01
+load = 10.0
+)";
+
+// TiN 2 um on steel by frf-spectral on 64^2 square cells: Spinu's (2021) pipeline at alpha = 2 is
+// about 2.5 % off (docs/validation_frf_pipelines.md), so the run warns.
+inline const char* kPipelineWarningScene = R"([grid]
+nx = 64
+ny = 64
+lx = 4e-3
+ly = 4e-3
+[substrate]
+material = "steel"
+[[coating]]
+material = "titanium_nitride"
+thickness = 2e-6
+[pressure]
+kind = "hertz"
+p0 = 1e9
+a = 1e-3
+[method]
+name = "frf-spectral"
+)";
+
 // Writes `base` with `from` replaced by `to` (the one change under test) to NAME.toml.
 inline fs::path write_scene(const std::string& base, const std::string& name,
                             const std::string& from, const std::string& to) {

@@ -14,18 +14,6 @@ using namespace coatfft_test;
 
 namespace {
 
-const char* kContactScene = R"([grid]
-nx = 32
-ny = 32
-lx = 3.0e-3
-ly = 3.0e-3
-[substrate]
-material = "steel"
-[contact]
-indenter = "sphere"
-radius = 0.01
-load = 10.0
-)";
 
 std::string text_of(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -97,10 +85,10 @@ TEST_CASE("[output] fields: only the files named, as a full run writes them", "[
 }
 
 TEST_CASE("[output] fields of a contact: gap.npy by default and on request", "[cli][output]") {
-  const fs::path full = run_default(kContactScene, "output_contact_full");
+  const fs::path full = run_default(kSmallContactScene, "output_contact_full");
   CHECK(names_in(full) == std::set<std::string>{".coatfft-outputs", "uz.npy", "pressure.npy",
                                                 "displacement.csv", "summary.json", "gap.npy"});
-  const fs::path gap = run_with_fields(kContactScene, "output_contact_gap", R"(["gap"])");
+  const fs::path gap = run_with_fields(kSmallContactScene, "output_contact_gap", R"(["gap"])");
   CHECK(names_in(gap) == std::set<std::string>{".coatfft-outputs", "gap.npy", "summary.json"});
   CHECK(text_of(gap / "gap.npy") == text_of(full / "gap.npy"));
   CHECK(keys_of(gap / "summary.json") == keys_of(full / "summary.json"));

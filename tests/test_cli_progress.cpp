@@ -191,23 +191,7 @@ TEST_CASE("coatfft run prints no progress when stderr is not a terminal", "[cli]
 TEST_CASE("warnings are printed under --quiet too", "[cli][progress]") {
   // An FRF pipeline with a predicted error above 1e-2 (TiN 2 um on steel, 64^2, frf-spectral):
   // its warning is about the result, not progress, and is printed under --quiet too.
-  const std::string base = R"([grid]
-nx = 64
-ny = 64
-lx = 4e-3
-ly = 4e-3
-[substrate]
-material = "steel"
-[[coating]]
-material = "titanium_nitride"
-thickness = 2e-6
-[pressure]
-kind = "hertz"
-p0 = 1e9
-a = 1e-3
-[method]
-name = "frf-spectral"
-)";
+  const std::string base = kPipelineWarningScene;
   const fs::path scene = write_scene(base, "progress_quiet_warning", "", "");
   const ProcessResult result = run_coatfft("run " + scene.string() + " -o " +
                                            scratch("progress_quiet_out").string() + " --quiet");

@@ -17,18 +17,6 @@ using namespace coatfft_test;
 
 namespace {
 
-const char* kContactScene = R"([grid]
-nx = 32
-ny = 32
-lx = 3.0e-3
-ly = 3.0e-3
-[substrate]
-material = "steel"
-[contact]
-indenter = "sphere"
-radius = 0.01
-load = 10.0
-)";
 
 // A fresh, empty scratch folder.
 fs::path fresh(const std::string& name) {
@@ -126,7 +114,7 @@ TEST_CASE("a failed run leaves OUTDIR byte-identical", "[cli][safety]") {
 TEST_CASE("outputs of an earlier run that the new run does not produce are removed, others kept",
           "[cli][safety]") {
   const fs::path dir = fresh("safety_stale");
-  const fs::path contact = write_scene(kContactScene, "safety_stale/contact", "", "");
+  const fs::path contact = write_scene(kSmallContactScene, "safety_stale/contact", "", "");
   const fs::path pressure = write_scene(kGoodScene, "safety_stale/pressure", "", "");
   const fs::path out = dir / "out";
   REQUIRE(run_coatfft("run " + contact.string() + " -o " + out.string()).status == 0);
@@ -252,7 +240,7 @@ TEST_CASE("extreme numbers are refused with the key, never as an internal error"
                                      "material = \"" + std::string(100000, 'x') + "\"");
   CHECK(run_coatfft("run " + scene.string() + " -o " + scratch("long_out").string())
             .stderr_text.size() < 400);
-  const fs::path indenter = write_scene(kContactScene, "indenter_int64", "load = 10.0",
+  const fs::path indenter = write_scene(kSmallContactScene, "indenter_int64", "load = 10.0",
                                         "load = 10.0\nindenter_E = -9223372036854775808\n"
                                         "indenter_nu = 0.3");
   check_refusal(run_coatfft("run " + indenter.string() + " -o " + scratch("ind_out").string()),
@@ -263,7 +251,7 @@ TEST_CASE("messages: version, unknown command, one contact-edge line", "[cli][sa
   const ProcessResult version = run_coatfft("--version");
   CHECK(version.status == 0);
   check_refusal(run_coatfft("frobnicate"), "unknown command \"frobnicate\"");
-  const fs::path edge = write_scene(kContactScene, "edge", "load = 10.0", "load = 1e6");
+  const fs::path edge = write_scene(kSmallContactScene, "edge", "load = 10.0", "load = 1e6");
   const ProcessResult result =
       run_coatfft("run " + edge.string() + " -o " + scratch("edge_out").string());
   check_refusal(result, "enlarge [grid] lx and ly");
@@ -276,23 +264,7 @@ TEST_CASE("the FRF pipelines warn above 1e-2 predicted error and refuse above 1"
   // about 2.5 % off (docs/validation_frf_pipelines.md), so a warning with the prediction. Cells
   // with dx/dy = 100: the pipelines' result is off by more than max |u| itself; refused, with
   // the exact method named.
-  const std::string base = R"([grid]
-nx = 64
-ny = 64
-lx = 4e-3
-ly = 4e-3
-[substrate]
-material = "steel"
-[[coating]]
-material = "titanium_nitride"
-thickness = 2e-6
-[pressure]
-kind = "hertz"
-p0 = 1e9
-a = 1e-3
-[method]
-name = "frf-spectral"
-)";
+  const std::string base = kPipelineWarningScene;
   const fs::path out = scratch("pipeline_warning_out");
   fs::remove_all(out);
   const fs::path square = write_scene(base, "pipeline_square", "", "");
@@ -347,9 +319,11 @@ TEST_CASE("coatfft check validates as run does, prints the plan and writes nothi
   CHECK(plan["method"] == "dcfft");
   CHECK(plan["problem"] == "pressure");
   CHECK(plan["nx"] == 33);
-  // The estimate of docs/scene_format.md: 4 fields + 20 bytes per cell of the padded lattice,
+  // The estimate of docs/scene_format.md: the program's 10 MiB, 4 fields + 20 bytes per cell of
+  // the padded lattice,
   // 70 x 70 (the smallest even 7-smooth length >= 2 n - 1 = 65).
-  CHECK(plan["estimated_memory_bytes"].get<double>() == 8.0 * 4 * 33 * 33 + 20.0 * 70 * 70);
+  CHECK(plan["estimated_memory_bytes"].get<double>() ==
+        10.0 * 1024 * 1024 + 8.0 * 4 * 33 * 33 + 20.0 * 70 * 70);
   CHECK(plan["warnings"].empty());
   CHECK(snapshot(dir) == before);
   // What run refuses before computing, check refuses too.
