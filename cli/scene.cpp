@@ -241,6 +241,9 @@ Grid refine_grid(const toml::table& root, const GridSection& g, Scene& scene) {
       p.amplitude, p.radius, p.sampling};
   GridRefinementOptions options;
   options.body_factor = load_error_body_factor(*body_frf(scene), load);
+  // The search estimates on the grids it tries: at most 1024 cells a side keeps it to seconds
+  // and a few hundred MB before the scene's memory is checked. Finer grids: give nx and ny.
+  options.max_cells = max_refined_cells;
   const double share = m.tolerance / *g.tolerance_total;
   GridChoice choice = in_section("grid", [&] {
     return choose_grid_for_tolerance(g.lx, g.ly, load, *g.tolerance_total, share, options);

@@ -75,6 +75,9 @@ struct OutputSpec {
   bool displacement_csv = true;  ///< displacement.csv
 };
 
+/// The most cells along an axis that [grid] refine = "auto" chooses.
+inline constexpr std::ptrdiff_t max_refined_cells = 1024;
+
 /// [grid] refine = "auto": nx and ny chosen so that the load's discretisation error stays within
 /// tolerance_total less the operator's tolerance (loads/grid_refinement.hpp).
 struct GridRefinement {

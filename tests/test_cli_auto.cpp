@@ -147,6 +147,13 @@ sampling = "cell_average"
                           "needs [method] name = \"auto\""});
   check_refused(refined, {"refine_tol", "tolerance_total = 1e-2", "tolerance_total = 0.5",
                           "tolerance_total"});
+  // A centre-sampled disk converges like dx: 1e-3 would need ~5000 cells a side, over the
+  // limit of 1024; refused at once (from the coarse grids' fit), not after minutes.
+  std::string disk = refined;
+  disk.replace(disk.find("tolerance_total = 1e-2"), 22, "tolerance_total = 1e-3");
+  disk.replace(disk.find("kind = \"hertz\"\np0"), 18, "kind = \"uniform_disk\"\np");
+  disk.replace(disk.find("\"cell_average\""), 14, "\"centre\"");
+  check_refused(disk, {"refine_out_of_reach", "", "", "out of reach"});
   check_refused(kGoodScene,
                 {"refine_without", "lx = 3.0e-3\n", "lx = 3.0e-3\ntolerance_total = 1e-2\n",
                  "applies only with refine = \"auto\""});
