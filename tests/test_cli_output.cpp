@@ -14,7 +14,6 @@ using namespace coatfft_test;
 
 namespace {
 
-
 std::string text_of(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};

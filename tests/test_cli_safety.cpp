@@ -17,7 +17,6 @@ using namespace coatfft_test;
 
 namespace {
 
-
 // A fresh, empty scratch folder.
 fs::path fresh(const std::string& name) {
   const fs::path dir = scratch(name);
