@@ -240,7 +240,16 @@ Grid refine_grid(const toml::table& root, const GridSection& g, Scene& scene) {
       p.kind == PressureKind::hertz ? AnalyticLoad::Kind::hertz : AnalyticLoad::Kind::uniform_disk,
       p.amplitude, p.radius, p.sampling};
   GridRefinementOptions options;
-  options.body_factor = load_error_body_factor(*body_frf(scene), load);
+  try {
+    options.body_factor = load_error_body_factor(*body_frf(scene), load);
+  } catch (const InvalidArgument&) {
+    throw;
+  } catch (const Error& e) {  // the factor's Hankel reference did not converge
+    throw InvalidArgument(
+        detail::concat("[grid] refine = \"auto\": the load's error on this "
+                       "body cannot be estimated (",
+                       e.what(), "); give nx and ny"));
+  }
   // The search estimates on the grids it tries: at most 1024 cells a side keeps it to seconds
   // and a few hundred MB before the scene's memory is checked. Finer grids: give nx and ny.
   options.max_cells = max_refined_cells;

@@ -10,8 +10,10 @@
 // Both are arrays of shape (nx + 1, ny + 1), x fastest. In the coefficient form the entries
 // di = nx and dj = ny are offsets the linear convolution of nx x ny cells never uses (0 by
 // convention); in the spectrum form whatever the spectrum implies at the offsets +-nx, +-ny is
-// irrelevant for the same reason. A DC-FFT transforms the coefficient form by a DCT-I, which is
-// exactly the spectrum form.
+// irrelevant for the same reason. A DC-FFT transforms the coefficient form by a DCT-I, which on
+// the 2n lattice is exactly the spectrum form; on a longer padded lattice (a fast FFT length,
+// DcfftOperator::padded_size) the coefficients are zero-padded first, and a spectrum form keeps
+// its 2n lattice.
 #include <cstddef>
 
 #include "../core/grid.hpp"

@@ -137,5 +137,3 @@ TEST_CASE("centre_relative_error normalises by the centre displacement", "[hertz
   CHECK(coatfft::centre_relative_error(1.1, 1.0, 2.0) == Approx(0.05));
   CHECK_THROWS_AS(coatfft::centre_relative_error(1.0, 1.0, 0.0), coatfft::InvalidArgument);
 }
-
-
