@@ -14,15 +14,14 @@ nlohmann::json a_posteriori_check(const Scene& scene, const Field& uz) {
             {"measure", "none: only hertz and uniform_disk loads have a reference"}};
   const PressureSpec& load = *scene.pressure;
   const Grid& grid = scene.grid;
-  // The cell centre nearest the origin (the load's centre): for an even count the lower one.
-  const auto i = static_cast<Eigen::Index>((grid.nx() - 1) / 2);
-  const auto j = static_cast<Eigen::Index>((grid.ny() - 1) / 2);
+  // The cell centre nearest the origin, the load's centre.
+  const std::ptrdiff_t i = grid.centre_i();
+  const std::ptrdiff_t j = grid.centre_j();
   const double r = std::hypot(grid.x(i), grid.y(j));
-  const AxisymmetricLoad shape =
-      load.kind == PressureKind::hertz ? AxisymmetricLoad::hertz : AxisymmetricLoad::uniform_disk;
   double reference = 0.0;
   try {
-    reference = hankel_displacement(*body_frf(scene), shape, load.amplitude, load.radius, r, 1e-10);
+    reference = hankel_displacement(*body_frf(scene), axisymmetric_shape(load), load.amplitude,
+                                    load.radius, r, 1e-10);
   } catch (const Error& e) {
     // A check, not the result: a reference that does not converge is reported, not fatal.
     return {{"error", nullptr},

@@ -53,9 +53,7 @@ std::vector<ReferenceLoad> reference_loads(const Scene& scene) {
     loads = {{AxisymmetricLoad::hertz, std::max(grid.dx(), grid.dy())},
              {AxisymmetricLoad::hertz, 0.5 * std::min(grid.lx(), grid.ly())}};
   } else {
-    const bool hertz = scene.pressure->kind == PressureKind::hertz;
-    loads = {
-        {hertz ? AxisymmetricLoad::hertz : AxisymmetricLoad::uniform_disk, scene.pressure->radius}};
+    loads = {{axisymmetric_shape(*scene.pressure), scene.pressure->radius}};
   }
   // A load narrower than a cell acts on the grid as one cell.
   for (ReferenceLoad& load : loads) load.radius = std::max(load.radius, grid.dx() * 0.5);

@@ -56,7 +56,8 @@ void check_command(const CheckOptions& options) {
   out["dy"] = grid.dy();
   out["method_requested"] = automatic ? "auto" : std::string(to_string(report.method));
   if (automatic) out["auto"] = automatic_choice_json(*automatic, scene.method.tolerance);
-  const MethodCandidate cost = predicted_scene_cost(scene, applications);
+  const MethodCandidate cost =
+      automatic ? automatic->method.chosen : predicted_scene_cost(scene, applications);
   out["estimated_seconds"] = {{"setup", cost.setup_seconds},
                               {"apply", cost.apply_seconds},
                               {"applications", applications},

@@ -8,11 +8,8 @@ nlohmann::json load_discretization_json(const Scene& scene, SurfaceOperator& op,
                                         const Field& pressure, const Field& uz) {
   if (!scene.pressure || scene.pressure->kind == PressureKind::file) return nullptr;
   const PressureSpec& p = *scene.pressure;
-  const AnalyticLoad load{
-      p.kind == PressureKind::hertz ? AnalyticLoad::Kind::hertz : AnalyticLoad::Kind::uniform_disk,
-      p.amplitude, p.radius, p.sampling};
   const LoadDiscretizationEstimate e =
-      estimate_load_discretization_error(op, load, pressure, uz.abs().maxCoeff());
+      estimate_load_discretization_error(op, analytic_load(p), pressure, uz.abs().maxCoeff());
   return {{"estimated_error", e.relative_error},
           {"absolute_error", e.absolute_error},
           {"sampling", p.sampling == Sampling::centre ? "centre" : "cell_average"}};

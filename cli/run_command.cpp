@@ -51,12 +51,6 @@ double time_applications(const Scene& scene, SurfaceOperator& op, const Field& p
   return seconds;
 }
 
-// Index of the cell centre nearest the origin; for an even count the two middle cells tie and
-// the lower index (centre at -d/2) is taken.
-Eigen::Index centre_index(std::ptrdiff_t n) {
-  return static_cast<Eigen::Index>((n - 1) / 2);
-}
-
 nlohmann::json common_summary(const Scene& scene, const Automatic& automatic,
                               const BuiltOperator& built, double apply_seconds, int repeat,
                               const Field& pressure, const Field& uz) {
@@ -71,7 +65,7 @@ nlohmann::json common_summary(const Scene& scene, const Automatic& automatic,
   summary["apply_seconds"] = apply_seconds;
   summary["repeat"] = repeat;
   summary["total_load"] = pressure.sum() * grid.dx() * grid.dy();
-  summary["uz_center"] = uz(centre_index(grid.nx()), centre_index(grid.ny()));
+  summary["uz_center"] = uz(grid.centre_i(), grid.centre_j());
   summary["uz_max"] = uz.maxCoeff();
   summary["estimated_memory_bytes"] = estimate_memory(scene).bytes;
   // The contact solver's notes join this list later; they reach stderr through the exit status.

@@ -216,6 +216,21 @@ GridSection read_grid(const toml::table& root) {
 PressureSpec read_pressure(const toml::table& table, const Grid& grid,
                            const std::filesystem::path& scene_dir);
 
+}  // namespace
+
+AnalyticLoad analytic_load(const PressureSpec& spec) {
+  return {spec.kind == PressureKind::hertz ? AnalyticLoad::Kind::hertz
+                                           : AnalyticLoad::Kind::uniform_disk,
+          spec.amplitude, spec.radius, spec.sampling};
+}
+
+AxisymmetricLoad axisymmetric_shape(const PressureSpec& spec) {
+  return spec.kind == PressureKind::hertz ? AxisymmetricLoad::hertz
+                                          : AxisymmetricLoad::uniform_disk;
+}
+
+namespace {
+
 // refine = "auto": the grid on which the load's discretisation error is within tolerance_total
 // less the operator's tolerance ([method] tolerance, by default a tenth of tolerance_total).
 Grid refine_grid(const toml::table& root, const GridSection& g, Scene& scene) {
@@ -236,9 +251,7 @@ Grid refine_grid(const toml::table& root, const GridSection& g, Scene& scene) {
   COATFFT_REQUIRE(p.kind != PressureKind::file,
                   "[grid] refine = \"auto\" needs an analytic "
                   "load: [pressure] kind = \"hertz\" or \"uniform_disk\"");
-  const AnalyticLoad load{
-      p.kind == PressureKind::hertz ? AnalyticLoad::Kind::hertz : AnalyticLoad::Kind::uniform_disk,
-      p.amplitude, p.radius, p.sampling};
+  const AnalyticLoad load = analytic_load(p);
   GridRefinementOptions options;
   try {
     options.body_factor = load_error_body_factor(*body_frf(scene), load);

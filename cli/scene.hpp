@@ -15,6 +15,7 @@
 #include "layers/layer_stack.hpp"
 #include "loads/grid_refinement.hpp"
 #include "loads/sampling.hpp"
+#include "validation/hankel_displacement.hpp"
 
 namespace coatfft::cli {
 
@@ -29,6 +30,12 @@ struct PressureSpec {
   Sampling sampling = Sampling::centre;  ///< kind = "sampling": "centre" or "cell_average"
   std::filesystem::path file;            ///< .npy or .csv of shape (ny, nx) [Pa], for kind = "file"
 };
+
+/// The analytic load of a hertz or uniform_disk [pressure] (not a file): for the estimate of its
+/// discretisation error and the grid chosen for it (loads/), and its shape for the Hankel
+/// reference and the reduced models (validation/, model/).
+AnalyticLoad analytic_load(const PressureSpec& spec);
+AxisymmetricLoad axisymmetric_shape(const PressureSpec& spec);
 
 /// [method]: how displacements are computed. The keys name, alpha, g0, g0_tol, planning and
 /// threads are read into the library's OperatorOptions (checked by check_operator_options). A

@@ -26,6 +26,10 @@ class Grid {
   double x(std::ptrdiff_t i) const { return -0.5 * lx_ + (static_cast<double>(i) + 0.5) * dx(); }
   /// Cell centre y_j = -ly/2 + (j + 1/2) dy [m].
   double y(std::ptrdiff_t j) const { return -0.5 * ly_ + (static_cast<double>(j) + 0.5) * dy(); }
+  /// Indices of the cell whose centre is nearest the origin; for an even count the two middle
+  /// cells tie and the lower index (centre at -d/2) is taken.
+  std::ptrdiff_t centre_i() const { return (nx_ - 1) / 2; }
+  std::ptrdiff_t centre_j() const { return (ny_ - 1) / 2; }
 
   bool operator==(const Grid&) const = default;
 

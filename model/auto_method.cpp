@@ -97,16 +97,14 @@ MethodCandidate split_candidate(const Context& x, double split_tolerance) {
 // frf-spectral, and more setup of frf-dcfft, for an error falling only like 1/alpha). Their
 // error is a periodisation error that only a proxy run predicts (convolution/pipeline_error.hpp),
 // so it is evaluated only where the method, prediction included, would be the cheapest.
-// Their cost at `alpha`, without the error prediction.
+// lattice_cost: their cost at `alpha`, without the error prediction.
 MethodCandidate lattice_cost(const Context& x, Method method, double alpha) {
   MethodCandidate c{method, inf, 0, 0, 0, false, ""};
   const auto mx =
       static_cast<std::ptrdiff_t>(std::llround(alpha * static_cast<double>(x.grid.nx())));
   const auto my =
       static_cast<std::ptrdiff_t>(std::llround(alpha * static_cast<double>(x.grid.ny())));
-  const double samples = static_cast<double>(mx) * static_cast<double>(my) / 8.0;
-  // FRF samples at ~0.2 us each (bench/results/frf_eval.csv), plans and transforms as DC-FFT's.
-  c.setup_seconds = 2e-7 * samples + predicted_love_setup_seconds(x.grid, mx, my);
+  c.setup_seconds = predicted_lattice_setup_seconds(x.grid, mx, my);
   c.apply_seconds = predicted_dcfft_apply_seconds(mx, my, x.threads);
   c.total_seconds = c.setup_seconds + x.request.applications * c.apply_seconds;
   return c;

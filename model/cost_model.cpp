@@ -16,6 +16,8 @@ constexpr double direct_per_pair = 5.4e-10;      // per (cell, cell) pair (bench
 constexpr double love_fixed = 1.4e-5;
 constexpr double love_per_cell = 8.9e-8;
 constexpr double love_per_point_log = 0.0;  // dropped by the fit (negative)
+// One FRF evaluation: 0.05 us (one coating) to 0.6 us (five) in bench/results/frf_eval.csv.
+constexpr double frf_sample = 2e-7;
 constexpr double split_fixed = 9.0e-4;
 constexpr double split_per_cell = 1.9e-8;
 constexpr double split_per_fold_term = 1.06e-8;
@@ -52,6 +54,11 @@ double predicted_love_setup_seconds(const Grid& grid, std::ptrdiff_t fft_nx,
                                     std::ptrdiff_t fft_ny) {
   const double cells = static_cast<double>(grid.nx()) * static_cast<double>(grid.ny());
   return love_fixed + love_per_cell * cells + love_per_point_log * point_log(fft_nx, fft_ny);
+}
+
+double predicted_lattice_setup_seconds(const Grid& grid, std::ptrdiff_t mx, std::ptrdiff_t my) {
+  const double samples = static_cast<double>(mx) * static_cast<double>(my) / 8.0;
+  return frf_sample * samples + predicted_love_setup_seconds(grid, mx, my);
 }
 
 double predicted_split_setup_seconds(const Grid& grid, const SplitKernelWork& work, int threads) {

@@ -22,6 +22,11 @@ double predicted_direct_apply_seconds(const Grid& grid);
 /// Setup of Love's DC-FFT (coefficients, kernel transform, plans) [s].
 double predicted_love_setup_seconds(const Grid& grid, std::ptrdiff_t fft_nx, std::ptrdiff_t fft_ny);
 
+/// Setup of frf-spectral or frf-dcfft on an (mx, my) extended lattice [s], without g(0) and
+/// the prediction of their error: the FRF sampled once per point of an eighth of the lattice
+/// (sample_frf_half_spectrum's symmetries), plans and transforms as Love's DC-FFT.
+double predicted_lattice_setup_seconds(const Grid& grid, std::ptrdiff_t mx, std::ptrdiff_t my);
+
 /// Setup of frf-split with the counted `work` of its kernel [s], on `threads` threads.
 double predicted_split_setup_seconds(const Grid& grid, const SplitKernelWork& work, int threads);
 
