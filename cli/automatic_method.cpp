@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <variant>
 
 #include "validation/hertz_contact.hpp"
@@ -29,10 +30,7 @@ std::vector<ReferenceLoad> contact_loads(const Scene& scene, const ContactSpec& 
   const double* radius = nullptr;
   if (const auto* s = std::get_if<Sphere>(&spec.indenter)) radius = &s->radius;
   if (const auto* p = std::get_if<Paraboloid>(&spec.indenter)) radius = &p->radius;
-  if (radius == nullptr) {
-    return {{AxisymmetricLoad::hertz, std::max(grid.dx(), grid.dy())},
-            {AxisymmetricLoad::hertz, 0.5 * std::min(grid.lx(), grid.ly())}};
-  }
+  if (radius == nullptr) return unknown_load_references(grid);
   std::vector<ReferenceLoad> loads;
   for (const double E_star : bounding_moduli(scene)) {
     const HertzSphere h = spec.load ? hertz_sphere_for_load(*spec.load, *radius, E_star)
@@ -44,14 +42,18 @@ std::vector<ReferenceLoad> contact_loads(const Scene& scene, const ContactSpec& 
 
 }  // namespace
 
+std::vector<ReferenceLoad> unknown_load_references(const Grid& grid) {
+  return {{AxisymmetricLoad::hertz, std::max(grid.dx(), grid.dy())},
+          {AxisymmetricLoad::hertz, 0.5 * std::min(grid.lx(), grid.ly())}};
+}
+
 std::vector<ReferenceLoad> reference_loads(const Scene& scene) {
   const Grid& grid = scene.grid;
   std::vector<ReferenceLoad> loads;
   if (scene.contact) {
     loads = contact_loads(scene, *scene.contact);
   } else if (scene.pressure->kind == PressureKind::file) {
-    loads = {{AxisymmetricLoad::hertz, std::max(grid.dx(), grid.dy())},
-             {AxisymmetricLoad::hertz, 0.5 * std::min(grid.lx(), grid.ly())}};
+    loads = unknown_load_references(grid);
   } else {
     loads = {{axisymmetric_shape(*scene.pressure), scene.pressure->radius}};
   }
@@ -60,27 +62,39 @@ std::vector<ReferenceLoad> reference_loads(const Scene& scene) {
   return loads;
 }
 
+AutomaticChoice choose_automatically(const Grid& grid, const LayerStack& body,
+                                     std::vector<ReferenceLoad> loads, AutoRequest request) {
+  AutomaticChoice choice;
+  choice.applications = request.applications;
+  choice.reference_loads = std::move(loads);
+  choice.reduction = reduce_body(body, choice.reference_loads, reduction_share * request.tolerance);
+  request.tolerance -= choice.reduction->estimated_effect;
+  choice.method = choose_method(grid, choice.reduction->body, request);
+  return choice;
+}
+
+AutomaticChoice choose_automatically(const Grid& grid, const Frf& frf,
+                                     std::vector<ReferenceLoad> loads, const AutoRequest& request) {
+  AutomaticChoice choice;
+  choice.applications = request.applications;
+  choice.reference_loads = std::move(loads);
+  choice.method = choose_method(grid, frf, request);
+  return choice;
+}
+
 std::optional<AutomaticChoice> resolve_automatic_method(Scene& scene, double applications) {
   MethodSpec& m = scene.method;
   if (!m.automatic) return std::nullopt;
-  AutomaticChoice choice;
-  choice.applications = applications;
-  choice.reference_loads = reference_loads(scene);
   AutoRequest request;
   request.tolerance = m.tolerance;
   request.applications = applications;
   request.max_threads = m.options.threads;
   request.planning = m.options.planning;
   request.first_in_process = true;  // a command-line run builds one operator
-  if (scene.frf) {
-    choice.method = choose_method(scene.grid, *scene.frf, request);
-  } else {
-    choice.reduction =
-        reduce_body(*scene.body, choice.reference_loads, reduction_share * m.tolerance);
-    request.tolerance = m.tolerance - choice.reduction->estimated_effect;
-    choice.method = choose_method(scene.grid, choice.reduction->body, request);
-    if (choice.reduction->kind != "none") m.reduced_body = choice.reduction->body;
-  }
+  AutomaticChoice choice =
+      scene.frf ? choose_automatically(scene.grid, *scene.frf, reference_loads(scene), request)
+                : choose_automatically(scene.grid, *scene.body, reference_loads(scene), request);
+  if (choice.reduction && choice.reduction->kind != "none") m.reduced_body = choice.reduction->body;
   // g(0) omitted is the scene's own choice (a load-controlled contact without the approach).
   const G0Method g0 = m.options.g0;
   m.options = choice.method.options;

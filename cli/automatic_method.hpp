@@ -35,6 +35,19 @@ struct AutomaticChoice {
 /// ends of the range of sizes the scene can hold.
 std::vector<ReferenceLoad> reference_loads(const Scene& scene);
 
+/// The reference loads of a load whose shape is not known (a file, a cylinder, a height map, or
+/// none yet): a Hertz load one cell wide and one half the domain wide, the two ends of the range
+/// of sizes the grid can hold.
+std::vector<ReferenceLoad> unknown_load_references(const Grid& grid);
+
+/// The automatic choice for a layered body on `grid`: the reduced body (reduction_share of the
+/// tolerance, for `loads`), then the method for the rest of request.tolerance.
+AutomaticChoice choose_automatically(const Grid& grid, const LayerStack& body,
+                                     std::vector<ReferenceLoad> loads, AutoRequest request);
+/// The same for a body given by its FRF alone, which is never reduced.
+AutomaticChoice choose_automatically(const Grid& grid, const Frf& frf,
+                                     std::vector<ReferenceLoad> loads, const AutoRequest& request);
+
 /// For name = "auto": chooses the body and the method for `applications` applications and
 /// writes them into scene.method (options; reduced_body when reduced). Nothing for a named
 /// method. Throws InvalidArgument when no method meets the tolerance.

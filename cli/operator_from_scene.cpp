@@ -13,9 +13,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Wisdom of a few hundred plans is tens of kilobytes.
-constexpr std::uintmax_t max_wisdom_bytes = 64 << 20;
-
 bool same_file(const fs::path& a, const fs::path& b) {
   std::error_code ec;
   if (fs::equivalent(a, b, ec)) return true;
@@ -23,6 +20,15 @@ bool same_file(const fs::path& a, const fs::path& b) {
 }
 
 }  // namespace
+
+std::string read_wisdom_file(const fs::path& path) {
+  constexpr std::uintmax_t max_wisdom_bytes = 64 << 20;
+  return read_input_file(path, "an FFTW wisdom file", max_wisdom_bytes);
+}
+
+bool holds_fftw_wisdom(const std::string& text) {
+  return text.rfind("(fftw-3", 0) == 0;
+}
 
 void load_wisdom(const Scene& scene, const StagedOutput& out) {
   const fs::path& wisdom = scene.method.wisdom;
@@ -37,8 +43,8 @@ void load_wisdom(const Scene& scene, const StagedOutput& out) {
   std::error_code ec;
   if (!fs::exists(fs::symlink_status(wisdom, ec))) return;  // written after planning
   check_output_target(wisdom, "[method] wisdom", scene.input_files);
-  const std::string text = read_input_file(wisdom, "an FFTW wisdom file", max_wisdom_bytes);
-  COATFFT_REQUIRE(text.rfind("(fftw-3", 0) == 0, where,
+  const std::string text = read_wisdom_file(wisdom);
+  COATFFT_REQUIRE(holds_fftw_wisdom(text), where,
                   " exists and does not hold FFTW wisdom (it does not start with \"(fftw-3\"): "
                   "coatfft will not overwrite it");
   if (!import_fftw_wisdom(text))

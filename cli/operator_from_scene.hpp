@@ -12,6 +12,12 @@
 
 namespace coatfft::cli {
 
+/// The text of the FFTW wisdom file at `path` (at most 64 MiB: wisdom of a few hundred plans is
+/// tens of kilobytes; a FIFO or a device is refused, cli/input_file.hpp).
+std::string read_wisdom_file(const std::filesystem::path& path);
+/// Whether `text` is FFTW wisdom, by its first characters.
+bool holds_fftw_wisdom(const std::string& text);
+
 /// Checks and imports the scene's FFTW wisdom file, if it names one. The wisdom file is neither
 /// an input nor an output of the run (refused when it is the scene, a file the scene reads, or
 /// one of `out`'s files), and an existing file must be a regular file holding FFTW wisdom: a

@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <span>
+#include <vector>
 
 #include "core/detail/parallel_for.hpp"
 #include "core/detail/timing.hpp"
@@ -41,6 +43,8 @@ Field sample_frf_quarter(const Frf& frf, std::ptrdiff_t qx, std::ptrdiff_t qy, d
   // (jx, jy) equals the one at (jy, jx), so only jy <= jx is evaluated (half the FRF calls) and
   // the rest is copied. FRF evaluations dominate the cost (exp, expm1, sinh per call for a
   // coating), so the lower triangle is the work; it is shared by interleaved columns.
+  // Each column's samples are one Frf::evaluate batch, written straight into the column (x is
+  // contiguous in a Field): one call per column for an FRF with a cost per call.
   const bool swap = dkx == dky;
   Field q(qx, qy);
   const auto column = [&](std::ptrdiff_t jy) {
@@ -49,8 +53,11 @@ Field sample_frf_quarter(const Frf& frf, std::ptrdiff_t qx, std::ptrdiff_t qy, d
     // Rows jx < jy are mirrored from column jx, row jy: possible only where jy < qx.
     const std::ptrdiff_t first = std::max<std::ptrdiff_t>(swap && jy < qx ? jy : 0, jy == 0);
     if (jy == 0 && qx > 0) q(0, 0) = 0.0;
+    if (first >= qx) return;
+    std::vector<double> k(static_cast<std::size_t>(qx - first));
     for (std::ptrdiff_t jx = first; jx < qx; ++jx)
-      q(jx, jy) = frf(std::hypot(dkx * static_cast<double>(jx), ky));
+      k[static_cast<std::size_t>(jx - first)] = std::hypot(dkx * static_cast<double>(jx), ky);
+    frf.evaluate(k, std::span<double>(&q(first, jy), k.size()));
   };
   // An FRF refusing a wavenumber throws in a worker: parallel_for rethrows it here.
   detail::parallel_for(0, qy, threads, column);

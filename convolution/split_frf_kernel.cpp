@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -67,15 +68,22 @@ class Remainder {
   Remainder(const Frf& frf, double c_inf, double A, double beta)
       : frf_(&frf), c_inf_(c_inf), A_(A), beta_(beta) {}
 
-  // k H(k) - Cinf (dimension of C), checked.
-  double q(double k) const {
-    const double h = (*frf_)(k);
-    COATFFT_REQUIRE(std::isfinite(h) && h > 0, "split_frf_kernel: the FRF '", frf_->name(),
-                    "' gives H(", k, " rad/m) = ", h, " m/Pa, but it must be finite and > 0");
-    return k * h - c_inf_;
+  // k H(k) - Cinf (dimension of C), checked: for the searches that need one k at a time.
+  double q(double k) const { return checked_q(k, (*frf_)(k)); }
+  // q at every k of `k` into `out` (same size): one Frf::evaluate batch, each value checked as
+  // q(k) checks it. Every sampling loop goes through here, so that an FRF with a cost per call
+  // (Frf::evaluate) pays it once per loop.
+  void q(std::span<const double> k, std::span<double> out) const {
+    if (k.empty()) return;  // no call for nothing (a call may cost)
+    frf_->evaluate(k, out);
+    for (std::size_t i = 0; i < k.size(); ++i) out[i] = checked_q(k[i], out[i]);
   }
   double exponential(double k) const { return A_ == 0.0 ? 0.0 : A_ * std::exp(-beta_ * k); }
-  double exact(double k) const { return (q(k) - exponential(k)) / k; }
+  // The exact R at every k > 0 of `k` into `out`, one batch.
+  void exact(std::span<const double> k, std::span<double> out) const {
+    q(k, out);
+    for (std::size_t i = 0; i < k.size(); ++i) out[i] = (out[i] - exponential(k[i])) / k[i];
+  }
 
   // Tabulates R on [k_lo, k_hi], log-spaced; beyond k_hi k H - Cinf is negligible, below k_lo R
   // is constant to the table's accuracy.
@@ -84,8 +92,9 @@ class Remainder {
     du_ = std::log(10.0) / per_decade;
     const auto n = static_cast<std::ptrdiff_t>(std::ceil((std::log(k_hi) - u0_) / du_)) + 1;
     table_.resize(static_cast<std::size_t>(std::max<std::ptrdiff_t>(n, 4)));
-    for (std::size_t i = 0; i < table_.size(); ++i)
-      table_[i] = exact(std::exp(u0_ + du_ * static_cast<double>(i)));
+    std::vector<double> k(table_.size());
+    for (std::size_t i = 0; i < k.size(); ++i) k[i] = std::exp(u0_ + du_ * static_cast<double>(i));
+    exact(k, table_);
     k_lo_ = k_lo;
     k_hi_ = std::exp(u0_ + du_ * static_cast<double>(table_.size() - 1));
   }
@@ -110,6 +119,12 @@ class Remainder {
   }
 
  private:
+  double checked_q(double k, double h) const {
+    COATFFT_REQUIRE(std::isfinite(h) && h > 0, "split_frf_kernel: the FRF '", frf_->name(),
+                    "' gives H(", k, " rad/m) = ", h, " m/Pa, but it must be finite and > 0");
+    return k * h - c_inf_;
+  }
+
   const Frf* frf_ = nullptr;
   double c_inf_ = 0.0;
   double A_ = 0.0;
@@ -140,11 +155,10 @@ FrfSamples sample_frf(const Remainder& rem, double A, double c_max, double l_min
   FrfSamples s;
   s.k.resize(static_cast<std::size_t>(n));
   s.q.resize(static_cast<std::size_t>(n));
-  for (std::size_t i = 0; i < s.k.size(); ++i) {
+  for (std::size_t i = 0; i < s.k.size(); ++i)
     s.k[i] = k_a * std::pow(10.0, static_cast<double>(i) / per_decade);
-    s.q[i] = rem.q(s.k[i]);
-    s.q_max = std::max(s.q_max, std::abs(s.q[i]));
-  }
+  rem.q(s.k, s.q);
+  for (const double qi : s.q) s.q_max = std::max(s.q_max, std::abs(qi));
   return s;
 }
 
@@ -329,7 +343,7 @@ EvenTable hankel_table(const std::vector<double>& kw, const std::vector<double>&
 
 // f on [k0, k_max] at uniform spacing dk (nodes from k0 - 2 dk, so that every lookup has a
 // centred 6-point stencil), quintic Lagrange interpolation (error ~ dk^6 f^(6) / 1000); 0 beyond
-// k_max.
+// k_max. f maps the vector of nodes |k| to the values there: one batch (Frf::evaluate).
 class UniformTable {
  public:
   UniformTable() = default;
@@ -337,9 +351,10 @@ class UniformTable {
   UniformTable(const F& f, double k0, double dk, double k_max)
       : k0_(k0 - 2.0 * dk), dk_(dk), k_max_(k_max) {
     const auto n = static_cast<std::ptrdiff_t>(std::ceil((k_max - k0) / dk)) + 6;
-    v_.resize(static_cast<std::size_t>(n));
+    std::vector<double> k(static_cast<std::size_t>(n));
     for (std::ptrdiff_t i = 0; i < n; ++i)
-      v_[static_cast<std::size_t>(i)] = f(std::abs(k0_ + dk * static_cast<double>(i)));
+      k[static_cast<std::size_t>(i)] = std::abs(k0_ + dk * static_cast<double>(i));
+    v_ = f(k);
   }
   std::ptrdiff_t size() const { return static_cast<std::ptrdiff_t>(v_.size()); }
   double operator()(double k) const {
@@ -716,18 +731,17 @@ void assign_singular_terms(const SplitPlan& p, Field& quarter) {
 
 // ---- (c) long range, R w: Hankel table in r, quadrature over each cell ------------------------
 
-// Gauss-Legendre nodes and weights (times the integrand's factors `f`) on the panels `edges`.
-template <typename F>
-void panel_rule(const std::vector<double>& edges, const F& f, std::vector<double>& kn,
+// Gauss-Legendre nodes and weights on the panels `edges`; the caller multiplies the weights by
+// the integrand's factors, all nodes at once (an FRF is sampled in one batch, Frf::evaluate).
+void panel_rule(const std::vector<double>& edges, std::vector<double>& kn,
                 std::vector<double>& kw) {
   const detail::GaussLegendreView g16 = detail::gauss_legendre(hankel_panel_nodes);
   for (std::size_t e = 0; e + 1 < edges.size(); ++e) {
     const double mid = 0.5 * (edges[e] + edges[e + 1]);
     const double half = 0.5 * (edges[e + 1] - edges[e]);
     for (std::size_t q = 0; q < g16.nodes.size(); ++q) {
-      const double k = mid + half * g16.nodes[q];
-      kn.push_back(k);
-      kw.push_back(half * g16.weights[q] * f(k));
+      kn.push_back(mid + half * g16.nodes[q]);
+      kw.push_back(half * g16.weights[q]);
     }
   }
 }
@@ -737,9 +751,11 @@ void panel_rule(const std::vector<double>& edges, const F& f, std::vector<double
 EvenTable long_range_kernel(const SplitPlan& p) {
   std::vector<double> kn;
   std::vector<double> kw;
-  panel_rule(
-      p.panel_edges,
-      [&](double k) { return p.remainder.exact(k) * window(p.sigma, k) * k / (2.0 * pi); }, kn, kw);
+  panel_rule(p.panel_edges, kn, kw);
+  std::vector<double> r(kn.size());
+  p.remainder.exact(kn, r);
+  for (std::size_t j = 0; j < kn.size(); ++j)
+    kw[j] *= r[j] * window(p.sigma, kn[j]) * kn[j] / (2.0 * pi);
   return hankel_table(kw, kn, p.dr, std::min(p.r_max, p.r_uniform), p.threads);
 }
 
@@ -788,10 +804,9 @@ std::vector<double> tail_table(const SplitPlan& p, double u0, double du) {
   std::vector<double> tn;
   std::vector<double> tw;
   const double t_c = 32.0 * std::sqrt(p.s_c);
-  panel_rule(
-      hankel_panel_edges(t_c, 1.0, std::exp(u0) * p.k_lo),
-      [&](double t) { return window(1.0 / 32.0, t) * gsl_sf_bessel_J0(t) * t / (2.0 * pi); }, tn,
-      tw);
+  panel_rule(hankel_panel_edges(t_c, 1.0, std::exp(u0) * p.k_lo), tn, tw);
+  for (std::size_t j = 0; j < tn.size(); ++j)
+    tw[j] *= window(1.0 / 32.0, tn[j]) * gsl_sf_bessel_J0(tn[j]) * tn[j] / (2.0 * pi);
   const auto n_end = static_cast<std::ptrdiff_t>(std::ceil((std::log(p.r_max) - u0) / du)) + 4;
   const double negligible = 1e-2 * p.tolerance * p.c_inf / (2.0 * pi);
   std::vector<double> tail;
@@ -1053,19 +1068,41 @@ class ShortRangeSpectrum {
   double operator()(double k) const { return k < k1_ ? lo_(k) : hi_(k); }
 
  private:
-  double exact(double k) const {
-    if (k == 0.0) return p_.sigma == 0.0 ? p_.remainder(0.0) : 0.0;
-    return p_.remainder.exact(k) * one_minus_window(p_.sigma, k);
+  // S at every k >= 0 of `k`; those > 0 in one batch (Frf::evaluate). At k = 0, where H is
+  // infinite, the limit: R(0) from the table times 1 - w(0) (1 for sigma = 0, else 0).
+  std::vector<double> exact(const std::vector<double>& k) const {
+    std::vector<double> positive;
+    positive.reserve(k.size());
+    for (const double ki : k)
+      if (ki != 0.0) positive.push_back(ki);
+    std::vector<double> r(positive.size());
+    p_.remainder.exact(positive, r);
+    std::vector<double> v(k.size());
+    for (std::size_t i = 0, j = 0; i < k.size(); ++i) {
+      if (k[i] != 0.0)
+        v[i] = r[j++] * one_minus_window(p_.sigma, k[i]);
+      else
+        v[i] = p_.sigma == 0.0 ? p_.remainder(0.0) : 0.0;
+    }
+    return v;
+  }
+  // The largest error of `t` at the midpoints of its nodes, less R's rounding noise there.
+  double midpoint_error(const UniformTable& t, double k_from, double k_to, double dk) const {
+    std::vector<double> mid;
+    for (double k = k_from + 0.5 * dk; k < k_to; k += dk)
+      if (k > 0.0) mid.push_back(k);
+    const std::vector<double> f = exact(mid);
+    double err = 0.0;
+    for (std::size_t i = 0; i < mid.size(); ++i)
+      err = std::max(err, std::abs(t(mid[i]) - f[i]) - noise_ / mid[i]);
+    return err;
   }
   UniformTable refined(double k_from, double k_to, double dk) const {
-    const auto f = [this](double k) { return exact(k); };
+    const auto f = [this](const std::vector<double>& k) { return exact(k); };
     UniformTable t;
     for (int it = 0; it < 10; ++it) {
       t = UniformTable(f, k_from, dk, k_to);
-      double err = 0.0;
-      for (double k = k_from + 0.5 * dk; k < k_to; k += dk)
-        if (k > 0.0) err = std::max(err, std::abs(t(k) - f(k)) - noise_ / k);
-      if (err <= tol_) break;
+      if (midpoint_error(t, k_from, k_to, dk) <= tol_) break;
       dk *= 0.5;
     }
     return t;

@@ -6,6 +6,7 @@
 // k in rad/m. With u^ = H(k) p^, H(k) is the 2-D transform of the point-force Green's function
 // [m/Pa], radial, so it depends only on k = |k|. Homogeneous: H(k) = 2 / (E* k).
 #include <memory>
+#include <span>
 #include <string>
 
 namespace coatfft {
@@ -17,6 +18,14 @@ class Frf {
   virtual ~Frf() = default;
   /// H(k) [m/Pa] at wavenumber magnitude k > 0 [rad/m]; finite and > 0.
   virtual double operator()(double k) const = 0;
+  /// H at every wavenumber of `k` (each finite and > 0) into `h` (same size) [m/Pa]: the form for
+  /// callers that sample many wavenumbers at once (a lattice column, a table), so that an FRF
+  /// whose evaluation has a large fixed cost per call (a Python callable of a numpy array, a
+  /// solver) pays it once per batch rather than once per wavenumber. The pipelines call it from
+  /// several worker threads at once, like operator(), and expect the values operator() gives
+  /// (their results are then the same whichever form an FRF overrides). The default calls
+  /// operator() for each, in order; throws InvalidArgument when the sizes differ.
+  virtual void evaluate(std::span<const double> k, std::span<double> h) const;
   /// C0 = lim_{k->0} k H(k) [m/Pa * rad/m]: 2 / E*_substrate.
   virtual double c0() const = 0;
   /// Cinf = lim_{k->inf} k H(k): 2 / E*_top (the top coating, or the substrate).

@@ -1,6 +1,7 @@
 #include "frf/frf_table.hpp"
 
 #include <cmath>
+#include <vector>
 
 #include "core/error.hpp"
 
@@ -17,13 +18,18 @@ std::vector<FrfTableRow> frf_table(const LayerStack& stack, const Frf& frf, doub
   const double c_substrate = 2.0 / stack.substrate().plane_strain_modulus();
   const double log_min = std::log(k_min);
   const double step = (std::log(k_max) - log_min) / (nb_points - 1);
+  const auto n = static_cast<std::size_t>(nb_points);
+  std::vector<double> k(n);
+  for (std::size_t i = 0; i < n; ++i) k[i] = std::exp(log_min + static_cast<double>(i) * step);
+  k.front() = k_min;  // the endpoints exactly, not through exp(log)
+  k.back() = k_max;
+  // One batch for the whole table (an FRF may have a cost per call, Frf::evaluate).
+  std::vector<double> h(n);
+  frf.evaluate(k, h);
   std::vector<FrfTableRow> rows;
-  rows.reserve(static_cast<std::size_t>(nb_points));
-  for (int i = 0; i < nb_points; ++i) {
-    const double k = i == 0 ? k_min : i == nb_points - 1 ? k_max : std::exp(log_min + i * step);
-    const double h = frf(k);
-    rows.push_back({k, k * h_total, h, h * k / c_substrate});
-  }
+  rows.reserve(n);
+  for (std::size_t i = 0; i < n; ++i)
+    rows.push_back({k[i], k[i] * h_total, h[i], h[i] * k[i] / c_substrate});
   return rows;
 }
 

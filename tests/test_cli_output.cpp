@@ -1,13 +1,22 @@
 // The [output] section of a scene: `coatfft run` writes the files it names (and summary.json,
 // always), byte for byte as a full run writes them, checks and replaces no others, and refuses
-// lists it cannot honour with one line and no output.
+// lists it cannot honour with one line and no output. run_scene (cli/scene_run.hpp) computes
+// what the run writes, without writing anything.
+#include <array>
 #include <catch2/catch.hpp>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
+#include <sstream>
 #include <string>
 
+#include "cli/npy.hpp"
+#include "cli/scene_run.hpp"
+#include "core/error.hpp"
 #include "tests/cli_process.hpp"
 
 using namespace coatfft_test;
@@ -53,6 +62,92 @@ fs::path run_default(const std::string& base, const std::string& name) {
   REQUIRE(run_coatfft("run " + write_scene(base, name, "", "").string() + " -o " + out.string())
               .status == 0);
   return out;
+}
+
+// The scene `base` alone in a fresh folder NAME/, so that anything written beside it shows.
+fs::path scene_in_own_folder(const std::string& base, const std::string& name) {
+  fs::remove_all(scratch(name));
+  fs::create_directories(scratch(name));
+  return write_scene(base, name + "/scene", "", "");
+}
+
+nlohmann::json json_of(const fs::path& file) {
+  nlohmann::json json;
+  std::ifstream(file) >> json;
+  return json;
+}
+
+// Bit for bit: the same computation, not merely close values.
+bool same_bits(const coatfft::Field& a, const coatfft::Field& b) {
+  return a.rows() == b.rows() && a.cols() == b.cols() &&
+         std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) == 0;
+}
+
+// `json` without its measured times (keys ending in "_seconds" but not the cost model's
+// "predicted_..._seconds"), at any depth: what two runs of one scene share.
+nlohmann::json without_timings(const nlohmann::json& json) {
+  if (json.is_array()) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const auto& item : json) out.push_back(without_timings(item));
+    return out;
+  }
+  if (!json.is_object()) return json;
+  nlohmann::json out = nlohmann::json::object();
+  for (const auto& item : json.items()) {
+    const std::string& key = item.key();
+    const bool measured =
+        key.size() > 8 && key.ends_with("_seconds") && !key.starts_with("predicted");
+    if (!measured) out[key] = without_timings(item.value());
+  }
+  return out;
+}
+
+// std::cerr captured while alive.
+class CaptureStderr {
+ public:
+  CaptureStderr() : old_(std::cerr.rdbuf(text_.rdbuf())) {}
+  ~CaptureStderr() { std::cerr.rdbuf(old_); }
+  CaptureStderr(const CaptureStderr&) = delete;
+  CaptureStderr& operator=(const CaptureStderr&) = delete;
+  std::string text() const { return text_.str(); }
+
+ private:
+  std::ostringstream text_;
+  std::streambuf* old_;
+};
+
+// run_scene on `base` (in a folder of its own, which must stay as it was, and with nothing
+// printed) against `coatfft run` of the same scene: the same fields bit for bit, the same summary
+// but for the times. Returns run_scene's result.
+coatfft::cli::SceneRun check_run_scene_as_run(const std::string& base, const std::string& name) {
+  const fs::path scene = scene_in_own_folder(base, name);
+  const auto before = snapshot(scene.parent_path());
+  std::optional<coatfft::cli::SceneRun> result;
+  std::string printed;
+  {
+    CaptureStderr captured;
+    result.emplace(coatfft::cli::run_scene(scene));
+    printed = captured.text();
+  }
+  CHECK(printed.empty());
+  CHECK(snapshot(scene.parent_path()) == before);
+  coatfft::cli::SceneRun& run = *result;
+
+  const fs::path out = scratch(name + "_out");
+  fs::remove_all(out);
+  REQUIRE(run_coatfft("run " + scene.string() + " -o " + out.string()).status == 0);
+  CHECK(same_bits(run.uz, coatfft::cli::read_npy(out / "uz.npy")));
+  CHECK(same_bits(run.pressure, coatfft::cli::read_npy(out / "pressure.npy")));
+  CHECK(run.gap.has_value() == fs::exists(out / "gap.npy"));
+  if (run.gap) CHECK(same_bits(*run.gap, coatfft::cli::read_npy(out / "gap.npy")));
+  CHECK(keys_of(out / "summary.json") == [&] {
+    std::set<std::string> keys;
+    for (const auto& item : run.summary.items()) keys.insert(item.key());
+    return keys;
+  }());
+  CHECK(without_timings(run.summary) == without_timings(json_of(out / "summary.json")));
+  CHECK(run.grid.nx() == run.summary["nx"].get<long>());
+  return std::move(run);
 }
 
 }  // namespace
@@ -138,4 +233,80 @@ TEST_CASE("[output] fields that cannot be honoured are refused with the key and 
   const ProcessResult checked = run_coatfft("check " + scene.string());
   CHECK(checked.status == 2);
   CHECK(checked.stderr_text.find("[output] fields") != std::string::npos);
+}
+
+TEST_CASE("run_scene computes what coatfft run writes, and writes nothing", "[cli][output]") {
+  SECTION("a known pressure") {
+    const coatfft::cli::SceneRun run = check_run_scene_as_run(kGoodScene, "run_scene_pressure");
+    CHECK(run.status == coatfft::cli::RunStatus::ok);
+    CHECK_FALSE(run.gap);
+    CHECK(run.uz.rows() == 33);
+  }
+  SECTION("a contact, with its gap") {
+    const coatfft::cli::SceneRun run =
+        check_run_scene_as_run(kSmallContactScene, "run_scene_contact");
+    CHECK(run.status == coatfft::cli::RunStatus::ok);
+    CHECK(run.gap);
+    CHECK(run.summary["converged"] == true);
+  }
+  SECTION("a run that warns: in the summary only, where the CLI prints it too") {
+    const coatfft::cli::SceneRun run =
+        check_run_scene_as_run(kPipelineWarningScene, "run_scene_warning");
+    REQUIRE(run.summary["warnings"].size() == 1);
+    const ProcessResult printed =
+        run_coatfft("run " + scratch("run_scene_warning/scene.toml").string() + " -o " +
+                    scratch("run_scene_warning_out").string());
+    CHECK(printed.stderr_text ==
+          "coatfft: warning: " + run.summary["warnings"][0].get<std::string>() + "\n");
+  }
+}
+
+TEST_CASE("run_scene reads the wisdom file of the scene but never writes it", "[cli][output]") {
+  const std::string with_wisdom = std::string(kGoodScene) + "wisdom = \"wisdom.fftw\"\n";
+  const fs::path scene = scene_in_own_folder(with_wisdom, "run_scene_wisdom");
+  const fs::path wisdom = scene.parent_path() / "wisdom.fftw";
+  coatfft::cli::run_scene(scene);
+  CHECK_FALSE(fs::exists(wisdom));
+  // coatfft run writes it; run_scene then reads it and leaves it as it is.
+  const fs::path out = scratch("run_scene_wisdom_out");
+  fs::remove_all(out);
+  REQUIRE(run_coatfft("run " + scene.string() + " -o " + out.string()).status == 0);
+  REQUIRE(fs::exists(wisdom));
+  const auto before = snapshot(scene.parent_path());
+  const coatfft::cli::SceneRun run = coatfft::cli::run_scene(scene);
+  CHECK(snapshot(scene.parent_path()) == before);
+  CHECK(same_bits(run.uz, coatfft::cli::read_npy(out / "uz.npy")));
+}
+
+TEST_CASE("run_scene refuses a bad scene with the message coatfft run prints",
+          "[cli][output][bad_input]") {
+  const std::array cases{
+      BadCase{"run_scene_bad_nx", "nx = 33", "nx = 0", "nx = 0, but nx must be"},
+      BadCase{"run_scene_bad_key", "[method]", "[method]\nnmae = \"dcfft\"", "nmae"},
+      BadCase{"run_scene_bad_output", "name = \"dcfft\"\n",
+              "name = \"dcfft\"\n[output]\nfields = []\n", "[output] fields"},
+  };
+  for (const BadCase& c : cases) {
+    INFO(c.name);
+    const fs::path scene = write_scene(kGoodScene, c.name, c.from, c.to);
+    const ProcessResult refused = run_coatfft("run " + scene.string() + " -o " +
+                                              scratch(std::string(c.name) + "_out").string());
+    REQUIRE(refused.status == 2);
+    std::string message;
+    try {
+      coatfft::cli::run_scene(scene);
+    } catch (const coatfft::InvalidArgument& e) {
+      message = e.what();
+    }
+    CHECK(message.find(c.must_mention) != std::string::npos);
+    CHECK(refused.stderr_text == "coatfft: error: " + message + "\n");
+  }
+  // A scene file that is not there, and a repeat count out of range.
+  const fs::path missing = scratch("run_scene_missing.toml");
+  fs::remove(missing);
+  CHECK_THROWS_AS(coatfft::cli::run_scene(missing), coatfft::InvalidArgument);
+  coatfft::cli::SceneRunOptions options;
+  options.repeat = 0;
+  CHECK_THROWS_WITH(coatfft::cli::run_scene(scratch("run_scene_bad_nx.toml"), options),
+                    Catch::Contains("--repeat = 0"));
 }

@@ -2,6 +2,7 @@
 // coatfft's own FRFs written as tables pass, tables with the errors a user's FRF could carry
 // fail naming the check, a table body runs like the stack it tabulates, and bad tables and
 // scenes are refused with one line. The fixture tables are written here, into a scratch folder.
+// The checks' library form, validate_frf, passes and fails FRFs that are not tables alike.
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -14,8 +15,13 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "cli/frf_validation.hpp"
 #include "cli/npy.hpp"
+#include "core/error.hpp"
+#include "core/grid.hpp"
 #include "frf/frf.hpp"
 #include "layers/layer_stack.hpp"
 #include "materials/catalog.hpp"
@@ -296,4 +302,117 @@ TEST_CASE("the tabulated-FRF example passes validate-frf and runs", "[cli][valid
   fs::remove_all(out);
   result = run_captured("run " + (dir / "tabulated_frf.toml").string() + " -o " + out.string());
   CHECK(result.status == 0);
+}
+
+// The library form of validate-frf (cli/frf_validation.hpp), on FRFs that are not tables: the
+// form the Python module calls with a user's own FRF. A small grid keeps it fast: 0.2 mm, 64
+// cells a side, resolves k h = 6e-3 .. 20 of a 2 um coating.
+namespace {
+
+LayerStack thin_coated_stack() {
+  return LayerStack({{material_by_name("titanium_nitride"), 2e-6, Interface::bonded}},
+                    material_by_name("steel"));
+}
+
+const coatfft::Grid small_grid(64, 64, 2e-4, 2e-4);
+
+// An FRF that is `exact` times factor(k), with c0 scaled by c0_factor: the errors a user's FRF
+// could carry, without a table between.
+class DistortedFrf final : public coatfft::Frf {
+ public:
+  DistortedFrf(const coatfft::Frf& exact, std::function<double(double)> factor, double c0_factor)
+      : exact_(exact), factor_(std::move(factor)), c0_factor_(c0_factor) {}
+  double operator()(double k) const override { return exact_(k) * factor_(k); }
+  double c0() const override { return c0_factor_ * exact_.c0(); }
+  double c_inf() const override { return exact_.c_inf(); }
+  std::string name() const override { return "distorted"; }
+
+ private:
+  const coatfft::Frf& exact_;
+  std::function<double(double)> factor_;
+  double c0_factor_;
+};
+
+std::string failed_checks(const coatfft::cli::FrfValidation& result) {
+  std::string failed;
+  for (const auto& check : result.checks)
+    if (!check.passed) failed += (failed.empty() ? "" : ", ") + check.name;
+  return failed;
+}
+
+}  // namespace
+
+TEST_CASE("validate_frf passes coatfft's own FRF of the stack, sampled over the grid",
+          "[cli][validate_frf]") {
+  const LayerStack stack = thin_coated_stack();
+  const auto frf = coatfft::make_frf(stack);
+  const auto result = coatfft::cli::validate_frf(*frf, stack, small_grid, 1e-6);
+  INFO(failed_checks(result));
+  CHECK(result.passed);
+  CHECK(result.reference == "coatfft's " + frf->name() + " FRF of the stack");
+  std::vector<std::string> names;
+  for (const auto& check : result.checks) {
+    names.push_back(check.name);
+    CHECK(check.passed);
+    CHECK(check.difference <= check.tolerance);
+  }
+  CHECK(names == std::vector<std::string>{"c0", "c_inf", "frf_at_points", "frf_between_points",
+                                          "hertz_frf_split", "hertz_hankel",
+                                          "uniform_disk_frf_split", "uniform_disk_hankel"});
+  // Not a table: no given-or-estimated note on the limits, and H is sampled over the
+  // wavenumbers the grid resolves (2 pi / (10 L) = 3.1e3 .. 10 pi / dx = 1.0e7 rad/m).
+  CHECK(result.checks[0].detail == "k -> 0");
+  CHECK(result.checks[1].detail == "k -> inf");
+  // A tolerance below what the references resolve is raised to their floors.
+  const auto strict = coatfft::cli::validate_frf(*frf, stack, small_grid, 1e-12);
+  CHECK(strict.checks[2].tolerance == 1e-12);
+  CHECK(strict.checks[4].tolerance == 1e-10);
+  CHECK(strict.checks[5].tolerance == 1e-9);
+}
+
+TEST_CASE("validate_frf catches a wrong FRF, naming the check", "[cli][validate_frf]") {
+  const LayerStack stack = thin_coated_stack();
+  const auto exact = coatfft::make_frf(stack);
+  const double h = 2e-6;
+  SECTION("off by 1e-3 over one decade of k") {
+    const DistortedFrf off(
+        *exact, [&](double k) { return k * h >= 0.1 && k * h <= 1 ? 1.001 : 1.0; }, 1.0);
+    const auto result = coatfft::cli::validate_frf(off, stack, small_grid, 1e-6);
+    const std::string failed = failed_checks(result);
+    INFO(failed);
+    CHECK_FALSE(result.passed);
+    CHECK(failed.find("frf_at_points, frf_between_points") == 0);
+    CHECK(result.checks[2].difference == Approx(1e-3).epsilon(1e-9));
+    // The limits are right: the error lies in between.
+    CHECK(result.checks[0].passed);
+    CHECK(result.checks[1].passed);
+  }
+  SECTION("a wrong c0") {
+    const DistortedFrf wrong_c0(
+        *exact, [](double) { return 1.0; }, 1.001);
+    const auto result = coatfft::cli::validate_frf(wrong_c0, stack, small_grid, 1e-6);
+    INFO(failed_checks(result));
+    CHECK_FALSE(result.passed);
+    CHECK(failed_checks(result).find("c0") == 0);
+    CHECK(result.checks[0].difference == Approx(1e-3).epsilon(1e-9));
+    CHECK(result.checks[2].passed);
+  }
+}
+
+TEST_CASE("validate_frf refuses a tolerance outside (0, 1) and a load without force",
+          "[cli][validate_frf][bad_input]") {
+  const LayerStack stack = thin_coated_stack();
+  const auto frf = coatfft::make_frf(stack);
+  for (const double tolerance : {0.0, 1.0, -1e-6, std::nan("")})
+    CHECK_THROWS_AS(coatfft::cli::validate_frf(*frf, stack, small_grid, tolerance),
+                    coatfft::InvalidArgument);
+  CHECK_THROWS_WITH(coatfft::cli::validate_frf(*frf, stack, small_grid, 0.0),
+                    Catch::Matchers::Contains("--tolerance = 0 must be in (0, 1)"));
+  coatfft::cli::FrfValidationOptions options;
+  options.load = coatfft::cli::FrfCheckLoad{coatfft::AxisymmetricLoad::hertz, 0.0, 5e-5,
+                                            coatfft::Sampling::cell_average};
+  CHECK_THROWS_AS(coatfft::cli::validate_frf(*frf, stack, small_grid, 1e-6, options),
+                  coatfft::InvalidArgument);
+  CHECK_THROWS_WITH(coatfft::cli::validate_frf(*frf, stack, small_grid, 1e-6, options),
+                    Catch::Matchers::Contains("amplitude = 0"));
 }

@@ -1,0 +1,268 @@
+#include "cli/scene_run.hpp"
+
+#include <chrono>
+#include <iostream>
+#include <string>
+#include <utility>
+#include <variant>
+
+#include "cli/a_posteriori.hpp"
+#include "cli/frf_table_file.hpp"
+#include "cli/load_error_report.hpp"
+#include "cli/operator_from_scene.hpp"
+#include "cli/progress.hpp"
+#include "cli/resources.hpp"
+#include "cli/scene_pressure.hpp"
+#include "contact/contact_solver.hpp"
+#include "contact/indenter.hpp"
+#include "convolution/fftw_wisdom.hpp"
+#include "core/detail/timing.hpp"
+#include "core/error.hpp"
+#include "validation/hertz.hpp"
+#include "validation/hertz_contact.hpp"
+
+namespace coatfft::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Automatic = std::optional<AutomaticChoice>;
+using Clock = std::chrono::steady_clock;
+using coatfft::detail::seconds_since;
+
+// Median wall time of `repeat` applications of `op` to `pressure`; leaves the result in `uz`,
+// which must come out finite.
+double time_applications(const Scene& scene, SurfaceOperator& op, const Field& pressure, Field& uz,
+                         int repeat) {
+  const double seconds = coatfft::detail::time_applications(op, pressure, uz, repeat);
+  // Finite inputs can still overflow: |u| ~ p L / E* and the transforms sum p over the grid.
+  COATFFT_REQUIRE(uz.allFinite(), "the displacement overflows double precision: max pressure ",
+                  pressure.abs().maxCoeff(), " Pa, ", scene.frf ? "[frf] 2/c0" : "[substrate] E*",
+                  " = ", 2.0 / body_frf(scene)->c0(), " Pa, [grid] lx = ", scene.grid.lx(),
+                  " m, ly = ", scene.grid.ly(), " m; rescale the units of the load and the moduli");
+  return seconds;
+}
+
+nlohmann::json common_summary(const Scene& scene, const Automatic& automatic,
+                              const BuiltOperator& built, double apply_seconds, int repeat,
+                              const Field& pressure, const Field& uz) {
+  const Grid& grid = scene.grid;
+  nlohmann::json summary;
+  summary["method"] = to_string(built.report.method);
+  summary["nx"] = grid.nx();
+  summary["ny"] = grid.ny();
+  summary["lx"] = grid.lx();
+  summary["ly"] = grid.ly();
+  summary["setup_seconds"] = built.report.setup_seconds;
+  summary["apply_seconds"] = apply_seconds;
+  summary["repeat"] = repeat;
+  summary["total_load"] = pressure.sum() * grid.dx() * grid.dy();
+  summary["uz_center"] = uz(grid.centre_i(), grid.centre_j());
+  summary["uz_max"] = uz.maxCoeff();
+  summary["estimated_memory_bytes"] = estimate_memory(scene).bytes;
+  // The contact solver's notes join this list later. Nothing is printed here: run_scene prints
+  // nothing, and the CLI prints the operator's warnings itself (cli/run_command.cpp).
+  summary["warnings"] = operator_warnings(built.report);
+  summary.update(operator_report_json(built.report));
+  summary["method_requested"] =
+      automatic ? "auto" : std::string(to_string(scene.method.options.method));
+  if (automatic) {
+    summary["auto"] = automatic_choice_json(*automatic, scene.method.tolerance);
+    // The operator's predicted error with the reduction's: a pipeline's own proxy prediction
+    // (operator_report_json) is kept where it is larger.
+    const double predicted = summary["auto"]["predicted_error"].get<double>();
+    if (!summary.contains("predicted_error") || summary["predicted_error"].is_null() ||
+        summary["predicted_error"].get<double>() < predicted)
+      summary["predicted_error"] = predicted;
+  }
+  if (const auto* table = dynamic_cast<const TabulatedFrf*>(scene.frf.get()))
+    summary["frf_table"] = frf_table_json(scene.frf_file, *table);
+  return summary;
+}
+
+// The error measure of Spinu (2021), section 5: max |u_num - u_exact| / u_exact(0).
+double max_error_vs_hertz(const Grid& grid, const Field& uz, double p0, double a, double E_star) {
+  const double u0 = hertz_displacement(0.0, p0, a, E_star);
+  return (uz - hertz_displacement_field(grid, p0, a, E_star)).abs().maxCoeff() / u0;
+}
+
+// "setting up the operator (dcfft)".
+std::string setup_stage(const Scene& scene) {
+  return detail::concat("setting up the operator (", to_string(scene.method.options.method), ")");
+}
+
+std::string applications_stage(int repeat) {
+  return detail::concat("applying the operator (", repeat, repeat == 1 ? " time)" : " times)");
+}
+
+SceneRun compute_pressure(const Scene& scene, const Automatic& automatic, int repeat,
+                          Progress& progress) {
+  const Grid& grid = scene.grid;
+  Field pressure = scene_pressure(scene);
+  progress.stage(setup_stage(scene));
+  BuiltOperator built = operator_from_scene(scene);
+  progress.stage(applications_stage(repeat));
+  Field uz;
+  const double apply_seconds = time_applications(scene, *built.op, pressure, uz, repeat);
+
+  nlohmann::json summary =
+      common_summary(scene, automatic, built, apply_seconds, repeat, pressure, uz);
+  summary["a_posteriori"] = a_posteriori_check(scene, uz);
+  summary["load_discretization"] = load_discretization_json(scene, *built.op, pressure, uz);
+  summary["refinement"] = refinement_json(scene);
+  const PressureSpec& load = *scene.pressure;
+  if (load.kind == PressureKind::hertz && !scene.frf && scene.body->is_homogeneous()) {
+    summary["max_error_vs_hertz"] = max_error_vs_hertz(
+        grid, uz, load.amplitude, load.radius, scene.body->substrate().plane_strain_modulus());
+  }
+  return {grid,         std::move(pressure), std::move(uz),
+          std::nullopt, std::move(summary),  RunStatus::ok};
+}
+
+ContactOptions solver_options(const ContactSpec& spec, Progress& progress) {
+  ContactOptions options;
+  options.tolerance = spec.tolerance;
+  options.max_iterations = spec.max_iterations;
+  // Under load control the approach is the only output that depends on g(0) (docs/contact.md).
+  options.compute_approach = spec.report_approach;
+  options.on_iteration = [&progress](int k, double residual) { progress.iteration(k, residual); };
+  return options;
+}
+
+// summary.json's "hertz": the Hertz solution of a sphere or paraboloid on a homogeneous body, for
+// comparison; null for any other contact.
+nlohmann::json hertz_json(const Scene& scene) {
+  const ContactSpec& spec = *scene.contact;
+  const bool hertzian = std::holds_alternative<Paraboloid>(spec.indenter) ||
+                        std::holds_alternative<Sphere>(spec.indenter);
+  if (!hertzian || scene.frf || !scene.body->is_homogeneous()) return nullptr;
+  const double R = std::holds_alternative<Sphere>(spec.indenter)
+                       ? std::get<Sphere>(spec.indenter).radius
+                       : std::get<Paraboloid>(spec.indenter).radius;
+  const double E_star = scene.body->substrate().plane_strain_modulus();
+  const HertzSphere hertz = spec.load ? hertz_sphere_for_load(*spec.load, R, E_star)
+                                      : hertz_sphere_for_approach(*spec.approach, R, E_star);
+  return {{"load", hertz.load},
+          {"contact_radius", hertz.contact_radius},
+          {"max_pressure", hertz.max_pressure},
+          {"approach", hertz.approach}};
+}
+
+// The contact's keys of summary.json, after common_summary's.
+void add_contact_summary(nlohmann::json& summary, const Scene& scene, const ContactResult& result,
+                         double solve_seconds) {
+  const ContactSpec& spec = *scene.contact;
+  summary["indenter"] = spec.indenter_name;
+  summary["a_posteriori"] = a_posteriori_check(scene, result.displacement);
+  summary["solve_seconds"] = solve_seconds;
+  summary["load"] = result.load;
+  // Keys that do not apply stay in the summary with the value null.
+  const auto or_null = [](const std::optional<double>& value) {
+    return value ? nlohmann::json(*value) : nlohmann::json();
+  };
+  summary["approach"] = or_null(result.approach);
+  summary["contact_area"] = result.contact_area;
+  // sqrt(A / pi) is a contact radius only for a round contact; for any other shape it is just
+  // the radius of the disk of equal area.
+  summary["equivalent_radius"] = or_null(result.contact_radius);
+  summary["contact_radius"] =
+      is_axisymmetric(spec.indenter) ? or_null(result.contact_radius) : nlohmann::json();
+  summary["max_pressure"] = result.max_pressure;
+  summary["iterations"] = result.iterations;
+  summary["residual"] = result.residual;
+  summary["converged"] = result.converged;
+  summary["status"] = to_string(result.status);
+  if (!result.warning.empty()) {
+    summary["warning"] = result.warning;
+    summary["warnings"].push_back(result.warning);
+  }
+  // Absent, not null, when it does not apply: summary.json has always been so.
+  if (nlohmann::json hertz = hertz_json(scene); !hertz.is_null()) summary["hertz"] = hertz;
+}
+
+SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat, Progress& progress) {
+  const ContactSpec& spec = *scene.contact;
+  if (spec.indenter_material) {
+    // Two homogeneous elastic bodies in frictionless normal contact deform as one half-space of
+    // the composite modulus (Johnson section 4.2); only E* enters the normal compliance.
+    const Material& body = scene.body->substrate();
+    const double E_star = composite_modulus(body, *spec.indenter_material);
+    const double nu = body.poisson_ratio();
+    scene.body = LayerStack(Material(E_star * (1 - nu * nu), nu));
+  }
+  const Field height_field = height(scene.grid, spec.indenter);
+  progress.stage(setup_stage(scene));
+  BuiltOperator built = operator_from_scene(scene);
+
+  ContactSolver solver(*built.op, solver_options(spec, progress));
+  progress.stage(spec.load ? "solving the contact (load control)"
+                           : "solving the contact (approach control)");
+  const auto start = Clock::now();
+  ContactResult result = spec.load ? solver.solve_load(height_field, *spec.load)
+                                   : solver.solve_approach(height_field, *spec.approach);
+  const double solve_seconds = seconds_since(start);
+  COATFFT_REQUIRE(!result.touches_boundary,
+                  "[contact] the contact reaches the domain edge (pressure > 0 on a border cell): "
+                  "the domain is too small for this contact; enlarge [grid] lx and ly (and nx, ny "
+                  "to keep the cell size) or lower the load");
+
+  progress.stage(applications_stage(repeat));
+  Field uz;  // only for the timing: the solver returned the displacement
+  const double apply_seconds = time_applications(scene, *built.op, result.pressure, uz, repeat);
+  nlohmann::json summary = common_summary(scene, automatic, built, apply_seconds, repeat,
+                                          result.pressure, result.displacement);
+  add_contact_summary(summary, scene, result, solve_seconds);
+  // The solver computes the gap in any case; the CLI saves it only when [output] asks for it.
+  return {scene.grid,
+          std::move(result.pressure),
+          std::move(result.displacement),
+          std::move(result.gap),
+          std::move(summary),
+          result.converged ? RunStatus::ok : RunStatus::not_converged};
+}
+
+// run_scene's FFTW wisdom: the scene's wisdom file is imported when it exists, and
+// scene.method.wisdom is cleared so that operator_from_scene does not save it. run_scene writes
+// no file at all, and the checks of load_wisdom guard only what `coatfft run` is about to write
+// (the wisdom file must not be an input or an output of the run, nor a file of another kind).
+// Wisdom only makes planning faster: a file that does not hold FFTW's (or another version's) is
+// ignored, as a missing one is. A FIFO, a device or an oversized file is still refused before
+// anything is read (cli/input_file.hpp).
+void import_wisdom_read_only(Scene& scene) {
+  const fs::path wisdom = std::exchange(scene.method.wisdom, fs::path());
+  std::error_code ec;
+  if (wisdom.empty() || !fs::exists(fs::status(wisdom, ec))) return;
+  const std::string text = read_wisdom_file(wisdom);
+  if (holds_fftw_wisdom(text)) import_fftw_wisdom(text);
+}
+
+}  // namespace
+
+PreparedScene prepare_scene(const fs::path& scene_file, const SceneRunOptions& options) {
+  COATFFT_REQUIRE(options.repeat >= 1 && options.repeat <= max_repeat,
+                  "--repeat = ", options.repeat, " must be in 1..", max_repeat);
+  Scene scene = read_scene(scene_file);
+  // name = "auto" chooses the body and the method first: the memory estimate is the chosen one's.
+  std::optional<AutomaticChoice> automatic = resolve_automatic_method(
+      scene, scene.contact ? contact_applications : static_cast<double>(options.repeat));
+  check_memory(scene, options.max_memory);
+  return {std::move(scene), std::move(automatic)};
+}
+
+SceneRun compute_scene(PreparedScene prepared, const SceneRunOptions& options) {
+  // Without a Progress of the caller's, one that never prints: the computation reports to it all
+  // the same.
+  Progress silent(false, std::cerr);
+  Progress& progress = options.progress ? *options.progress : silent;
+  if (prepared.scene.contact)
+    return compute_contact(std::move(prepared.scene), prepared.automatic, options.repeat, progress);
+  return compute_pressure(prepared.scene, prepared.automatic, options.repeat, progress);
+}
+
+SceneRun run_scene(const fs::path& scene_file, const SceneRunOptions& options) {
+  PreparedScene prepared = prepare_scene(scene_file, options);
+  import_wisdom_read_only(prepared.scene);
+  return compute_scene(std::move(prepared), options);
+}
+
+}  // namespace coatfft::cli

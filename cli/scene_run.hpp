@@ -1,0 +1,71 @@
+#pragma once
+// What `coatfft run` computes for a scene, without writing anything: the fields and the object
+// that summary.json gets. `coatfft run` (cli/run_command.hpp) computes through the same functions
+// and then writes the result; run_scene() hands it to the caller (the Python module's run_scene).
+//
+// A run has three steps: prepare_scene() reads and checks the scene (name = "auto" resolved, the
+// memory checked), the caller then settles the FFTW wisdom file (the CLI loads and later saves
+// it; run_scene only reads it), and compute_scene() builds the operator and computes.
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "cli/automatic_method.hpp"
+#include "cli/scene.hpp"
+#include "core/grid.hpp"
+#include "core/types.hpp"
+
+namespace coatfft::cli {
+
+class Progress;
+
+/// What the run reports to the shell besides exceptions.
+enum class RunStatus { ok, not_converged };
+
+/// What a run of a scene computes: the fields and summary.json's object.
+struct SceneRun {
+  Grid grid;
+  Field pressure;            ///< [Pa], shape (nx, ny): the scene's load or the contact pressure
+  Field uz;                  ///< [m], shape (nx, ny)
+  std::optional<Field> gap;  ///< contact scenes only [m]
+  /// Exactly the object summary.json gets. Its "warnings" are not printed anywhere: printing
+  /// them is the caller's job (the CLI prints them on stderr).
+  nlohmann::json summary;
+  /// ok, or not_converged for a contact that did not converge (summary["warning"] says why).
+  RunStatus status = RunStatus::ok;
+};
+
+struct SceneRunOptions {
+  int repeat = 1;  ///< operator applications timed; apply_seconds is their median
+  /// Memory the run may use [bytes]; by default what the machine has available.
+  std::optional<double> max_memory;
+  /// Where the stages and the contact solver's iterations are reported; nothing is reported
+  /// without one. The caller owns it and calls its finish().
+  Progress* progress = nullptr;
+};
+
+/// A scene read and checked, ready to compute.
+struct PreparedScene {
+  Scene scene;
+  std::optional<AutomaticChoice> automatic;  ///< set when [method] name = "auto"
+};
+
+/// Reads the scene file, checks options.repeat, resolves name = "auto" (which chooses the body
+/// and the method, and so the memory estimate) and refuses a scene whose estimate exceeds
+/// options.max_memory. Throws InvalidArgument with the message `coatfft run` prints.
+PreparedScene prepare_scene(const std::filesystem::path& scene_file,
+                            const SceneRunOptions& options);
+
+/// Builds the operator (which saves the FFTW wisdom file when scene.method.wisdom names one) and
+/// computes: the displacement of a known pressure, or the contact solve, each timed over
+/// options.repeat applications. Prints nothing but progress. Throws InvalidArgument on a result
+/// that cannot be trusted (overflow, a contact reaching the domain edge).
+SceneRun compute_scene(PreparedScene prepared, const SceneRunOptions& options);
+
+/// Everything `coatfft run SCENE` does except writing: prepare_scene, the scene's FFTW wisdom
+/// file read if it exists (never written), compute_scene. Writes no file and prints nothing (but
+/// progress, when given one); throws InvalidArgument with the message `coatfft run` prints for a
+/// bad scene.
+SceneRun run_scene(const std::filesystem::path& scene_file, const SceneRunOptions& options = {});
+
+}  // namespace coatfft::cli

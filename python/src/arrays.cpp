@@ -1,0 +1,54 @@
+#include "arrays.hpp"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+
+namespace py = pybind11;
+
+namespace coatfft::python {
+
+namespace {
+// "(3, 4)": a numpy shape as Python prints it.
+std::string shape_text(const DoubleArray& array) {
+  std::string text = "(";
+  for (py::ssize_t d = 0; d < array.ndim(); ++d)
+    text += (d ? ", " : "") + std::to_string(array.shape(d));
+  return text + (array.ndim() == 1 ? ",)" : ")");
+}
+}  // namespace
+
+Field field_from_array(const DoubleArray& array, const Grid& grid, std::string_view what) {
+  COATFFT_REQUIRE(array.ndim() == 2 && array.shape(0) == grid.ny() && array.shape(1) == grid.nx(),
+                  what, ": shape ", shape_text(array), ", but the grid needs (ny, nx) = (",
+                  grid.ny(), ", ", grid.nx(), ")");
+  // Same memory layout: row j of the C-order array is column j of the Field.
+  Field field = Eigen::Map<const Field>(array.data(), grid.nx(), grid.ny());
+  if (!field.allFinite()) {
+    for (Eigen::Index j = 0; j < field.cols(); ++j)
+      for (Eigen::Index i = 0; i < field.rows(); ++i)
+        COATFFT_REQUIRE(std::isfinite(field(i, j)), what, "[", j, ", ", i, "] = ", field(i, j),
+                        " is not finite");
+  }
+  return field;
+}
+
+py::array_t<double> array_from_field(Field&& field) {
+  auto* owned = new Field(std::move(field));
+  py::capsule owner(owned, [](void* p) { delete static_cast<Field*>(p); });
+  const auto nx = static_cast<py::ssize_t>(owned->rows());
+  const auto ny = static_cast<py::ssize_t>(owned->cols());
+  const auto item = static_cast<py::ssize_t>(sizeof(double));
+  return py::array_t<double>({ny, nx}, {nx * item, item}, owned->data(), owner);
+}
+
+py::array_t<double> array_like(const DoubleArray& like, std::vector<double>&& values) {
+  auto* owned = new std::vector<double>(std::move(values));
+  py::capsule owner(owned, [](void* p) { delete static_cast<std::vector<double>*>(p); });
+  std::vector<py::ssize_t> shape(like.shape(), like.shape() + like.ndim());
+  return py::array_t<double>(shape, owned->data(), owner);
+}
+
+}  // namespace coatfft::python

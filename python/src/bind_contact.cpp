@@ -1,0 +1,112 @@
+// solve_contact and ContactResult: the Polonsky & Keer (1999) solver of contact/ on an Operator.
+#include <pybind11/stl.h>
+
+#include <optional>
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "contact/contact_solver.hpp"
+#include "core/error.hpp"
+#include "operator.hpp"
+
+namespace py = pybind11;
+using namespace pybind11::literals;
+
+namespace coatfft::python {
+
+namespace {
+
+// The result with its fields as numpy arrays (moved, not copied).
+struct PyContactResult {
+  py::array_t<double> pressure, displacement, gap;
+  double load = 0.0;
+  std::optional<double> approach;
+  double contact_area = 0.0;
+  std::optional<double> contact_radius;
+  double max_pressure = 0.0;
+  int iterations = 0;
+  double residual = 0.0;
+  bool converged = false;
+  std::string status;
+  bool touches_boundary = false;
+  std::string warning;
+};
+
+PyContactResult to_python(ContactResult&& r) {
+  PyContactResult out;
+  out.pressure = array_from_field(std::move(r.pressure));
+  out.displacement = array_from_field(std::move(r.displacement));
+  out.gap = array_from_field(std::move(r.gap));
+  out.load = r.load;
+  out.approach = r.approach;
+  out.contact_area = r.contact_area;
+  out.contact_radius = r.contact_radius;
+  out.max_pressure = r.max_pressure;
+  out.iterations = r.iterations;
+  out.residual = r.residual;
+  out.converged = r.converged;
+  out.status = std::string(to_string(r.status));
+  out.touches_boundary = r.touches_boundary;
+  out.warning = r.warning;
+  return out;
+}
+
+PyContactResult solve_contact(Operator& op, const DoubleArray& height, std::optional<double> load,
+                              std::optional<double> approach, double tolerance, int max_iterations,
+                              bool preconditioned) {
+  COATFFT_REQUIRE(load.has_value() != approach.has_value(),
+                  "solve_contact: give exactly one of load [N] and approach [m]");
+  const Field h = field_from_array(height, op.grid(), "solve_contact: height");
+  ContactOptions options;
+  options.tolerance = tolerance;
+  options.max_iterations = max_iterations;
+  options.preconditioned = preconditioned;
+  // The approach is part of the result, unless the operator was built without g(0) (a named
+  // pipeline with g0 = "omitted"), which leaves the displacement's level unknown. Under approach
+  // control that level is what the approach is measured against: the solve would converge to a
+  // wrong load, so it is refused.
+  options.compute_approach = op.has_g0();
+  COATFFT_REQUIRE(options.compute_approach || !approach,
+                  "solve_contact: approach control needs the displacement's level, but the "
+                  "operator was built with g0 = \"omitted\"; build it with g0 = \"regularized\" "
+                  "or \"quadrature\", or give a load");
+  ContactResult result;
+  {
+    py::gil_scoped_release release;
+    const auto guard = op.lock();
+    ContactSolver solver(op.op(), options);
+    result = load ? solver.solve_load(h, *load) : solver.solve_approach(h, *approach);
+  }
+  return to_python(std::move(result));
+}
+
+}  // namespace
+
+void bind_contact(py::module_& m) {
+  py::class_<PyContactResult>(m, "ContactResult", "One contact solve: fields (ny, nx) and scalars.")
+      .def_readonly("pressure", &PyContactResult::pressure, "p [Pa]")
+      .def_readonly("displacement", &PyContactResult::displacement, "u [m]")
+      .def_readonly("gap", &PyContactResult::gap, "h + u - approach [m]")
+      .def_readonly("load", &PyContactResult::load, "total force [N]")
+      .def_readonly("approach", &PyContactResult::approach, "rigid-body approach [m]")
+      .def_readonly("contact_area", &PyContactResult::contact_area, "[m^2]")
+      .def_readonly("contact_radius", &PyContactResult::contact_radius,
+                    "sqrt(area / pi) [m]; None without contact")
+      .def_readonly("max_pressure", &PyContactResult::max_pressure, "[Pa]")
+      .def_readonly("iterations", &PyContactResult::iterations)
+      .def_readonly("residual", &PyContactResult::residual, "last relative pressure change")
+      .def_readonly("converged", &PyContactResult::converged)
+      .def_readonly("status", &PyContactResult::status,
+                    "\"converged\", \"iteration_limit\", \"pressure_vanished\" or "
+                    "\"non_positive_curvature\"")
+      .def_readonly("touches_boundary", &PyContactResult::touches_boundary,
+                    "pressure on a border cell: the domain is too small")
+      .def_readonly("warning", &PyContactResult::warning);
+  m.def("solve_contact", &solve_contact, "op"_a, "height"_a, py::kw_only(), "load"_a = py::none(),
+        "approach"_a = py::none(), "tolerance"_a = 1e-10, "max_iterations"_a = 1000,
+        "preconditioned"_a = true,
+        "Frictionless normal contact of a rigid indenter of initial separation `height` [m] "
+        "(ny, nx) on the operator's body, under a total load [N] or an approach [m].");
+}
+
+}  // namespace coatfft::python

@@ -1,0 +1,75 @@
+// Scenes and FRF checks as the command line has them: run_scene (what `coatfft run` computes,
+// without writing files) and validate_frf (the checks of `coatfft validate-frf`).
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <filesystem>
+#include <optional>
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "bodies.hpp"
+#include "cli/frf_validation.hpp"
+#include "cli/scene_run.hpp"
+#include "core/error.hpp"
+
+namespace py = pybind11;
+using namespace pybind11::literals;
+
+namespace coatfft::python {
+
+namespace {
+
+// The path as a str or any os.PathLike (pathlib.Path), as Python's own file functions take it.
+py::dict run_scene(const std::filesystem::path& path) {
+  std::optional<cli::SceneRun> computed;
+  {
+    py::gil_scoped_release release;
+    computed = cli::run_scene(path);
+  }
+  cli::SceneRun& run = *computed;
+  py::dict out;
+  out["uz"] = array_from_field(std::move(run.uz));
+  out["pressure"] = array_from_field(std::move(run.pressure));
+  if (run.gap) out["gap"] = array_from_field(std::move(*run.gap));
+  out["summary"] = dict_from_json_text(run.summary.dump());
+  return out;
+}
+
+py::dict validate_frf(py::handle frf_object, py::handle claim_object, const Grid& grid,
+                      double tolerance) {
+  // The command's own check names its --tolerance flag; Python names the keyword.
+  COATFFT_REQUIRE(tolerance > 0 && tolerance < 1, "validate_frf: tolerance = ", tolerance,
+                  " must be in (0, 1)");
+  const Body frf = body_from_object(frf_object, "frf");
+  const Body claim = body_from_object(claim_object, "body");
+  COATFFT_REQUIRE(claim.stack,
+                  "validate_frf: body must be a LayerStack or a Material (what the "
+                  "FRF is checked against), not an Frf");
+  cli::FrfValidation result;
+  {
+    py::gil_scoped_release release;
+    result = cli::validate_frf(*frf.response(), *claim.stack, grid, tolerance);
+  }
+  py::list checks;
+  for (const cli::FrfCheck& c : result.checks)
+    checks.append(py::dict("name"_a = c.name, "difference"_a = c.difference,
+                           "tolerance"_a = c.tolerance, "passed"_a = c.passed,
+                           "detail"_a = c.detail, "reference"_a = c.reference));
+  return py::dict("passed"_a = result.passed, "checks"_a = checks,
+                  "reference"_a = result.reference);
+}
+
+}  // namespace
+
+void bind_scene(py::module_& m) {
+  m.def("run_scene", &run_scene, "path"_a,
+        "What `coatfft run` computes for the scene file: a dict of arrays (ny, nx) \"uz\", "
+        "\"pressure\" (and \"gap\" for a contact) and \"summary\" (summary.json's dict). Writes "
+        "nothing.");
+  m.def("validate_frf", &validate_frf, "frf"_a, "body"_a, "grid"_a, "tolerance"_a = 1e-6,
+        "The checks of `coatfft validate-frf`: `frf` against the body it claims to be, on `grid`; "
+        "a dict with \"passed\" and the \"checks\".");
+}
+
+}  // namespace coatfft::python

@@ -1,0 +1,39 @@
+#pragma once
+// Operator in Python: a built SurfaceOperator with its report. apply() runs without the GIL, so
+// one operator is guarded by a mutex: SurfaceOperator::apply is not safe from two threads at
+// once, and two Python threads may call it together.
+#include <pybind11/pybind11.h>
+
+#include <mutex>
+#include <string_view>
+
+#include "arrays.hpp"
+#include "convolution/make_operator.hpp"
+
+namespace coatfft::python {
+
+class Operator {
+ public:
+  Operator(BuiltOperator built, pybind11::dict report)
+      : built_(std::move(built)), report_(std::move(report)) {}
+
+  const Grid& grid() const { return built_.op->grid(); }
+  const pybind11::dict& report() const { return report_; }
+  std::string_view method() const { return to_string(built_.report.method); }
+  /// Whether the displacement's level is known: not for an FRF pipeline built with
+  /// g0 = "omitted", whose displacements carry an unknown constant offset.
+  bool has_g0() const { return !built_.report.g0 || built_.report.g0->method != G0Method::omitted; }
+  /// u [m] of the pressure p [Pa], both (ny, nx).
+  pybind11::array_t<double> apply(const DoubleArray& pressure);
+
+  /// The operator, for a caller that holds lock() and has released the GIL.
+  SurfaceOperator& op() { return *built_.op; }
+  std::unique_lock<std::mutex> lock() { return std::unique_lock(mutex_); }
+
+ private:
+  BuiltOperator built_;
+  pybind11::dict report_;
+  std::mutex mutex_;
+};
+
+}  // namespace coatfft::python
