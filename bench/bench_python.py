@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """What a call from Python adds to the library's own work (docs/python.md, "Performance").
 
-- apply: Operator.apply(p) from Python (numpy array in, a new array out) against the same
+- apply: Operator.apply(p) from Python (numpy array in, a new array out, or into an array given
+  as `out`) against the same
   operator's apply() timed in C++ (coatfft._coatfft.timing.apply_seconds, into a field allocated
   once) at 64^2 and 1024^2, for Love's DC-FFT on steel and frf-split on TiN 2 um on steel. The
   overhead is the difference of the medians; the two are timed in alternating rounds, so that
@@ -25,12 +26,12 @@ import coatfft
 from coatfft._coatfft import timing
 
 
-def python_apply_seconds(op, p, repeat):
-    """Median of `repeat` Operator.apply calls from Python."""
+def python_apply_seconds(op, p, repeat, out=None):
+    """Median of `repeat` Operator.apply calls from Python (into `out` when given)."""
     seconds = []
     for _ in range(repeat):
         start = time.perf_counter()
-        op.apply(p)
+        op.apply(p, out=out)
         seconds.append(time.perf_counter() - start)
     return statistics.median(seconds)
 
@@ -59,12 +60,16 @@ def apply_rows(rounds):
         for name, body, method in bodies():
             op = coatfft.make_operator(grid, body, method=method)
             op.apply(p)  # warm-up
-            py, cpp = [], []
+            out = np.empty(grid.shape)
+            py, py_out, cpp = [], [], []
             for _ in range(rounds):
                 py.append(python_apply_seconds(op, p, repeat))
+                py_out.append(python_apply_seconds(op, p, repeat, out))
                 cpp.append(timing.apply_seconds(op, p, repeat))
-            py_s, cpp_s = statistics.median(py), statistics.median(cpp)
-            rows.append(("apply", name, method, n * n, py_s, cpp_s, py_s - cpp_s, py_s / cpp_s))
+            cpp_s = statistics.median(cpp)
+            for kind, seconds in (("apply", py), ("apply_out", py_out)):
+                py_s = statistics.median(seconds)
+                rows.append((kind, name, method, n * n, py_s, cpp_s, py_s - cpp_s, py_s / cpp_s))
     return rows
 
 
@@ -90,7 +95,8 @@ def write(path, rows, rounds):
         f"# hardware_threads = {os.cpu_count()}",
         f"# python = {platform.python_version()}, numpy {np.__version__}, coatfft {coatfft.__version__}",
         f"# load_average = {os.getloadavg()[0]:.2f}",
-        "# apply rows: python_s = median Operator.apply(p) from Python (array in, new array out); "
+        "# apply rows: python_s = median Operator.apply(p) from Python (array in, new array out; "
+        "apply_out: into an array given as out=); "
         "cpp_s = median apply() timed in C++ on the same operator and pressure; "
         f"{rounds} alternating rounds, medians of their medians; size = nx * ny",
         "# frf rows: python_s = coatfft.frf(body, k), one call on 1e6 wavenumbers; "

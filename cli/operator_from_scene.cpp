@@ -65,9 +65,9 @@ BuiltOperator operator_from_scene(const Scene& scene) {
   return built;
 }
 
-void refuse_untrustworthy(const OperatorReport& report) {
+void refuse_untrustworthy(const OperatorReport& report, std::string_view who) {
   const std::optional<double> error = report.predicted_error;
-  COATFFT_REQUIRE(!error || *error <= pipeline_refusal_error, "[method] name = \"",
+  COATFFT_REQUIRE(!error || *error <= pipeline_refusal_error, who, " = \"",
                   to_string(report.method), "\": predicted error ", *error,
                   " of max |u| on these cells with alpha = ", report.alpha.value_or(0),
                   " (docs/theory.md 4.6): the result would be meaningless; use \"frf-split\" "

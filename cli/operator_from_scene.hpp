@@ -4,6 +4,7 @@
 // keys of summary.json.
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "cli/scene.hpp"
@@ -36,8 +37,9 @@ inline constexpr double pipeline_refusal_error = 1.0;
 /// on a coating), and when an FRF pipeline's predicted error exceeds pipeline_refusal_error.
 BuiltOperator operator_from_scene(const Scene& scene);
 
-/// Throws InvalidArgument when the report's predicted error exceeds pipeline_refusal_error.
-void refuse_untrustworthy(const OperatorReport& report);
+/// Throws InvalidArgument when the report's predicted error exceeds pipeline_refusal_error; the
+/// message starts with `who` and the method's name (`[method] name = "frf-spectral"`).
+void refuse_untrustworthy(const OperatorReport& report, std::string_view who = "[method] name");
 
 /// Warnings about what was built, for stderr and summary.json's "warnings": an FRF pipeline whose
 /// predicted error exceeds pipeline_warning_error.

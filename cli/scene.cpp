@@ -562,8 +562,6 @@ void read_frf(const toml::table& root, const std::filesystem::path& scene_dir, S
   scene.frf_file = file;
 }
 
-constexpr std::ptrdiff_t max_direct_cells = 1 << 16;
-
 // A scene is a few hundred bytes; a megabyte is far beyond any real one.
 constexpr std::uintmax_t max_scene_bytes = 1 << 20;
 

@@ -2,6 +2,7 @@
 // The scene file: a small TOML description of one computation (docs/scene_format.md).
 // read_scene() validates everything it can before any work starts, so that a bad scene ends with
 // one line naming the key and the value, and no output.
+#include <cstddef>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -53,6 +54,10 @@ struct MethodSpec {
   std::optional<LayerStack> reduced_body;
   std::filesystem::path wisdom;  ///< FFTW wisdom file to load and save (optional)
 };
+
+/// The most cells `direct` is run on: its cost grows as (nx ny)^2, hours beyond this size (and
+/// dcfft gives the same result).
+inline constexpr std::ptrdiff_t max_direct_cells = 1 << 16;
 
 /// [contact]: a frictionless normal contact with an indenter (contact/).
 struct ContactSpec {

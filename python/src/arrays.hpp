@@ -16,9 +16,21 @@ namespace coatfft::python {
 using DoubleArray =
     pybind11::array_t<double, pybind11::array::c_style | pybind11::array::forcecast>;
 
-/// The (ny, nx) array `array` as a Field of `grid`'s shape; `what` names it in the errors
-/// (InvalidArgument, i.e. ValueError): a wrong shape, or a value not finite.
+/// InvalidArgument (ValueError) unless `array` has the shape (ny, nx) of `grid`; `what` names it.
+void check_shape(const pybind11::array& array, const Grid& grid, std::string_view what);
+
+/// Copies the (ny, nx) array into `field` (resized to (nx, ny)): InvalidArgument for a value not
+/// finite. Reads only the array's memory, so it may run without the GIL.
+void copy_into_field(const DoubleArray& array, Field& field, std::string_view what);
+
+/// The (ny, nx) array `array` as a Field of `grid`'s shape: check_shape, then copy_into_field.
 Field field_from_array(const DoubleArray& array, const Grid& grid, std::string_view what);
+
+/// Where a result of shape (ny, nx) goes: a new array when `out` is None, else `out` itself,
+/// which must be a writable, C-contiguous float64 array of that shape (ValueError; TypeError for
+/// an object that is no array).
+pybind11::array_t<double> output_array(const pybind11::object& out, const Grid& grid,
+                                       std::string_view what);
 
 /// `field` (nx, ny) as a numpy array of shape (ny, nx) that owns it (no copy).
 pybind11::array_t<double> array_from_field(Field&& field);

@@ -110,13 +110,18 @@ void bind_material(py::module_& m) {
           "__eq__", [](const Material& a, const Material& b) { return a == b; }, py::is_operator())
       .def("__repr__", py::overload_cast<const Material&>(&repr));
   m.def("material", &material_by_name, "name"_a,
-        "The catalogue's material of that name (\"steel\", \"tin\", ...; material_names()).");
+        "The catalogue's material of that name (\"steel\", \"titanium_nitride\", ...; "
+        "material_names()).");
   m.def("material_names", &material_names, "The names of the catalogue's materials.");
 }
 
 void bind_stack(py::module_& m) {
   py::class_<Coating>(m, "Coating", "A coating of a layer stack, and its interface below.")
       .def(py::init([](const Material& material, double thickness, std::string_view interface) {
+             // Refused here, where it is written, rather than when a LayerStack gets it.
+             COATFFT_REQUIRE(std::isfinite(thickness) && thickness > 0,
+                             "Coating: thickness = ", thickness,
+                             " m, but it must be finite and > 0");
              return Coating{material, thickness, parse_interface(interface)};
            }),
            "material"_a, "thickness"_a, "interface"_a = "bonded",
@@ -146,7 +151,12 @@ void bind_frfs(py::module_& m) {
       .def("__call__", &evaluate_frf, "k"_a, "H at every k [rad/m] of an array")
       .def_property_readonly("c0", &Frf::c0, "lim k H(k) at k -> 0 [1/Pa]")
       .def_property_readonly("c_inf", &Frf::c_inf, "lim k H(k) at k -> inf [1/Pa]")
-      .def_property_readonly("name", &Frf::name);
+      .def_property_readonly("name", &Frf::name)
+      .def("__repr__", [](const py::object& self) {
+        const Frf& f = self.cast<const Frf&>();
+        return py::str("{}(name={!r}, c0={!r}, c_inf={!r})")
+            .format(py::type::of(self).attr("__name__"), f.name(), f.c0(), f.c_inf());
+      });
   py::class_<UserFrf, Frf, std::shared_ptr<UserFrf>>(m, "UserFrf")
       .def(py::init<py::function, double, double>(), "function"_a, "c0"_a, "c_inf"_a,
            "An FRF given by function(k) -> H for a float64 array k [rad/m]; c0, c_inf [1/Pa].")

@@ -101,7 +101,13 @@ void bind_contact(py::module_& m) {
                     "\"non_positive_curvature\"")
       .def_readonly("touches_boundary", &PyContactResult::touches_boundary,
                     "pressure on a border cell: the domain is too small")
-      .def_readonly("warning", &PyContactResult::warning);
+      .def_readonly("warning", &PyContactResult::warning)
+      .def("__repr__", [](const PyContactResult& r) {
+        return py::str(
+                   "ContactResult(status={!r}, iterations={}, load={!r}, contact_area={!r}, "
+                   "max_pressure={!r})")
+            .format(r.status, r.iterations, r.load, r.contact_area, r.max_pressure);
+      });
   m.def("solve_contact", &solve_contact, "op"_a, "height"_a, py::kw_only(), "load"_a = py::none(),
         "approach"_a = py::none(), "tolerance"_a = 1e-10, "max_iterations"_a = 1000,
         "preconditioned"_a = true,

@@ -75,8 +75,8 @@ void bind_grid(py::module_& m) {
       .def(
           "__eq__", [](const Grid& a, const Grid& b) { return a == b; }, py::is_operator())
       .def("__repr__", [](const Grid& g) {
-        return detail::concat("Grid(nx=", g.nx(), ", ny=", g.ny(), ", lx=", g.lx(), ", ly=", g.ly(),
-                              ")");
+        return py::str("Grid(nx={}, ny={}, lx={!r}, ly={!r})")
+            .format(g.nx(), g.ny(), g.lx(), g.ly());
       });
 }
 

@@ -2,6 +2,8 @@
 // the scene's [method] options as keywords, and name = "auto" (docs/auto.md) as the default.
 #include <pybind11/stl.h>
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -11,7 +13,7 @@
 #include "bodies.hpp"
 #include "cli/automatic_method.hpp"
 #include "cli/operator_from_scene.hpp"
-#include "convolution/fftw_wisdom.hpp"
+#include "cli/scene.hpp"
 #include "core/detail/parse_name.hpp"
 #include "core/threads.hpp"
 #include "operator.hpp"
@@ -21,60 +23,104 @@ using namespace pybind11::literals;
 
 namespace coatfft::python {
 
-py::array_t<double> Operator::apply(const DoubleArray& pressure) {
-  Field p = field_from_array(pressure, grid(), "apply: pressure");
-  Field u;
+py::array_t<double> Operator::apply(const DoubleArray& pressure, const py::object& out) {
+  check_shape(pressure, grid(), "apply: pressure");
+  py::array_t<double> u = output_array(out, grid(), "apply: out");
+  double* target = u.mutable_data();
   {
     py::gil_scoped_release release;
     const auto guard = lock();
-    built_.op->apply(p, u);
+    // The pressure is copied first, so `out` may be the pressure's own array.
+    copy_into_field(pressure, pressure_, "apply: pressure");
+    built_.op->apply(pressure_, displacement_);
+    // Finite pressures can still overflow: |u| ~ p L / E*.
+    COATFFT_REQUIRE(displacement_.allFinite(),
+                    "apply: the displacement overflows double precision; rescale the units of the "
+                    "pressure and the moduli");
+    std::copy_n(displacement_.data(), displacement_.size(), target);
   }
-  // Finite pressures can still overflow: |u| ~ p L / E*.
-  COATFFT_REQUIRE(u.allFinite(),
-                  "apply: the displacement overflows double precision; rescale "
-                  "the units of the pressure and the moduli");
-  return array_from_field(std::move(u));
+  return u;
 }
 
 namespace {
 
-// The keywords of make_operator, as the scene's [method] keys (docs/scene_format.md).
+// The keywords of make_operator, as the scene's [method] keys (docs/scene_format.md), and the
+// cost model's `applications` and `load_radius` for method = "auto".
 struct MethodKeywords {
   std::string method;
-  std::optional<double> tolerance, alpha, g0_tol, load_radius;
-  std::optional<std::string> g0;
-  std::string planning;
+  std::optional<double> tolerance, alpha, g0_tol, load_radius, applications;
+  std::optional<std::string> g0, planning;
   std::optional<int> threads;
-  double applications;
 };
 
-// The keyword `name` refused for `method`, with the scene reader's reasons.
+// The keyword `name` refused for `method`, with the scene reader's reasons: a user who sets a
+// keyword believes it does something.
 void refuse_if(bool given, const char* name, const std::string& method, const char* why) {
   COATFFT_REQUIRE(!given, "make_operator: ", name, " applies only to ", why, ", not to method = \"",
                   method, "\"");
 }
 
-OperatorOptions named_options(const Grid& grid, const MethodKeywords& k) {
-  OperatorOptions o;
+// The value of a named keyword, its error message naming it ("make_operator: planning = ...").
+template <typename Parse>
+auto parse_keyword(const char* name, const std::string& value, Parse&& parse) {
   try {
-    o.method = parse_method(k.method);
+    return parse(value);
   } catch (const InvalidArgument& e) {
-    throw InvalidArgument(detail::concat("make_operator: method = ", e.what(), " or \"auto\""));
+    throw InvalidArgument(detail::concat("make_operator: ", name, " = ", e.what()));
   }
-  const bool pipeline = samples_frf_lattice(o.method);
-  refuse_if(k.tolerance.has_value(), "tolerance", k.method, "method = \"auto\"");
-  refuse_if(k.load_radius.has_value(), "load_radius", k.method, "method = \"auto\"");
+}
+
+Planning planning_keyword(const MethodKeywords& k) {
+  return parse_keyword("planning", k.planning.value_or("estimate"), parse_planning);
+}
+
+int threads_keyword(const MethodKeywords& k, int otherwise) {
+  const int threads = k.threads.value_or(otherwise);
+  COATFFT_REQUIRE(threads >= 1 && threads <= max_threads, "make_operator: threads = ", threads,
+                  " must be in 1..", max_threads);
+  return threads;
+}
+
+void refuse_keywords_not_applying(const MethodKeywords& k, Method method) {
+  const bool pipeline = samples_frf_lattice(method);
+  for (const auto& [given, name] : {std::pair{k.tolerance.has_value(), "tolerance"},
+                                    std::pair{k.load_radius.has_value(), "load_radius"},
+                                    std::pair{k.applications.has_value(), "applications"}})
+    refuse_if(given, name, k.method, "method = \"auto\"");
   for (const auto& [given, name] :
        {std::pair{k.alpha.has_value(), "alpha"}, std::pair{k.g0.has_value(), "g0"},
         std::pair{k.g0_tol.has_value(), "g0_tol"}})
     refuse_if(given && !pipeline, name, k.method, "\"frf-spectral\" and \"frf-dcfft\"");
+  refuse_if(k.planning && method == Method::direct, "planning", k.method,
+            "the methods that use FFTW (direct uses no FFT)");
+}
+
+OperatorOptions named_options(const Grid& grid, const MethodKeywords& k) {
+  OperatorOptions o;
+  o.method = parse_keyword("method", k.method, [](const std::string& name) {
+    try {
+      return parse_method(name);
+    } catch (const InvalidArgument& e) {
+      throw InvalidArgument(detail::concat(e.what(), " or \"auto\""));
+    }
+  });
+  refuse_keywords_not_applying(k, o.method);
+  COATFFT_REQUIRE(o.method != Method::direct || grid.nb_cells() <= cli::max_direct_cells,
+                  "make_operator: method = \"direct\" on ", grid.nx(), " x ", grid.ny(),
+                  " cells: direct summation is limited to ", cli::max_direct_cells,
+                  " cells (its cost grows as (nx ny)^2); use \"dcfft\", which gives the same "
+                  "result");
   o.alpha = k.alpha.value_or(o.alpha);
   if (k.g0)
-    o.g0 = detail::parse_name(
-        *k.g0, std::array{G0Method::regularized, G0Method::quadrature, G0Method::omitted});
+    o.g0 = parse_keyword("g0", *k.g0, [](const std::string& name) {
+      return detail::parse_name(
+          name, std::array{G0Method::regularized, G0Method::quadrature, G0Method::omitted});
+    });
   o.g0_tolerance = k.g0_tol.value_or(o.g0_tolerance);
-  o.planning = parse_planning(k.planning);
-  o.threads = k.threads.value_or(1);
+  COATFFT_REQUIRE(o.g0_tolerance > 0 && o.g0_tolerance < 1,
+                  "make_operator: g0_tol = ", o.g0_tolerance, " must be in (0, 1)");
+  o.planning = planning_keyword(k);
+  o.threads = threads_keyword(k, 1);
   check_operator_options(grid, o);
   return o;
 }
@@ -92,10 +138,14 @@ cli::AutomaticChoice automatic_choice(const Grid& grid, const Body& body, const 
   request.tolerance = k.tolerance.value_or(request.tolerance);
   COATFFT_REQUIRE(request.tolerance >= 1e-12 && request.tolerance <= 0.1,
                   "make_operator: tolerance = ", request.tolerance, " must be in [1e-12, 0.1]");
-  request.applications = k.applications;
+  request.applications = k.applications.value_or(1.0);
+  COATFFT_REQUIRE(request.applications >= 1 && std::isfinite(request.applications),
+                  "make_operator: applications = ", request.applications,
+                  " must be finite and >= 1");
+  // The threads the choice may use: all the machine's, unless capped (as a scene's [method]).
   const int cores = static_cast<int>(std::thread::hardware_concurrency());
-  request.max_threads = k.threads.value_or(std::clamp(cores, 1, max_threads));
-  request.planning = parse_planning(k.planning);
+  request.max_threads = threads_keyword(k, std::clamp(cores, 1, max_threads));
+  request.planning = planning_keyword(k);
   request.first_in_process = first_operator;
   std::vector<ReferenceLoad> loads = cli::unknown_load_references(grid);
   if (k.load_radius) {
@@ -144,7 +194,7 @@ std::unique_ptr<Operator> make_operator_py(const Grid& grid, py::handle body_obj
     built = stack ? make_operator(grid, *stack, options) : make_operator(grid, *body.frf, options);
   }
   first_operator = false;
-  cli::refuse_untrustworthy(built.report);
+  cli::refuse_untrustworthy(built.report, "make_operator: method");
   py::dict report = report_dict(grid, built, k, choice);
   warn_each(report["warnings"]);
   return std::make_unique<Operator>(std::move(built), std::move(report));
@@ -154,9 +204,10 @@ std::unique_ptr<Operator> make_operator_py(const Grid& grid, py::handle body_obj
 
 void bind_operator(py::module_& m) {
   py::class_<Operator>(m, "Operator", "The surface-displacement operator of a body on a grid.")
-      .def("apply", &Operator::apply, "p"_a,
-           "u [m, positive into the body] of the pressure p [Pa], arrays of shape (ny, nx).")
-      .def("__call__", &Operator::apply, "p"_a)
+      .def("apply", &Operator::apply, "p"_a, "out"_a = py::none(),
+           "u [m, positive into the body] of the pressure p [Pa], arrays of shape (ny, nx); "
+           "written into `out` (a float64 C-contiguous array) when given.")
+      .def("__call__", &Operator::apply, "p"_a, "out"_a = py::none())
       .def_property_readonly("grid", &Operator::grid)
       // A copy: the operator's own report (which solve_contact reads) stays as built.
       .def_property_readonly(
@@ -165,20 +216,23 @@ void bind_operator(py::module_& m) {
             return py::module_::import("copy").attr("deepcopy")(o.report());
           },
           "method, timings [s], FFT sizes, g(0), the automatic choice, ... (a copy)")
-      .def_property_readonly("method", [](const Operator& o) { return o.method(); });
+      .def_property_readonly("method", [](const Operator& o) { return o.method(); })
+      .def("__repr__", [](const Operator& o) {
+        return py::str("Operator(method={!r}, grid={!r})").format(o.method(), py::cast(o.grid()));
+      });
   m.def(
       "make_operator",
       [](const Grid& grid, py::handle body, std::string method, std::optional<double> tolerance,
          std::optional<double> alpha, std::optional<std::string> g0, std::optional<double> g0_tol,
-         std::string planning, std::optional<int> threads, double applications,
-         std::optional<double> load_radius) {
+         std::optional<std::string> planning, std::optional<int> threads,
+         std::optional<double> applications, std::optional<double> load_radius) {
         return make_operator_py(grid, body,
                                 {std::move(method), tolerance, alpha, g0_tol, load_radius,
-                                 std::move(g0), std::move(planning), threads, applications});
+                                 applications, std::move(g0), std::move(planning), threads});
       },
       "grid"_a, "body"_a, py::kw_only(), "method"_a = "auto", "tolerance"_a = py::none(),
       "alpha"_a = py::none(), "g0"_a = py::none(), "g0_tol"_a = py::none(),
-      "planning"_a = "estimate", "threads"_a = py::none(), "applications"_a = 1.0,
+      "planning"_a = py::none(), "threads"_a = py::none(), "applications"_a = py::none(),
       "load_radius"_a = py::none(),
       "The operator of `body` (LayerStack, Material or Frf) on `grid`; keywords as the scene's "
       "[method] keys (docs/python.md).");

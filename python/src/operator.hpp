@@ -1,7 +1,9 @@
 #pragma once
 // Operator in Python: a built SurfaceOperator with its report. apply() runs without the GIL, so
 // one operator is guarded by a mutex: SurfaceOperator::apply is not safe from two threads at
-// once, and two Python threads may call it together.
+// once, and two Python threads may call it together. The pressure and the displacement pass
+// through two fields the operator keeps: an application then allocates nothing but its result
+// (none with `out`), since fresh grid-sized memory costs its page faults on every call.
 #include <pybind11/pybind11.h>
 
 #include <mutex>
@@ -23,8 +25,8 @@ class Operator {
   /// Whether the displacement's level is known: not for an FRF pipeline built with
   /// g0 = "omitted", whose displacements carry an unknown constant offset.
   bool has_g0() const { return !built_.report.g0 || built_.report.g0->method != G0Method::omitted; }
-  /// u [m] of the pressure p [Pa], both (ny, nx).
-  pybind11::array_t<double> apply(const DoubleArray& pressure);
+  /// u [m] of the pressure p [Pa], both (ny, nx); into `out` when it is an array (output_array).
+  pybind11::array_t<double> apply(const DoubleArray& pressure, const pybind11::object& out);
 
   /// The operator, for a caller that holds lock() and has released the GIL.
   SurfaceOperator& op() { return *built_.op; }
@@ -34,6 +36,8 @@ class Operator {
   BuiltOperator built_;
   pybind11::dict report_;
   std::mutex mutex_;
+  Field pressure_;      // apply()'s input, copied from numpy
+  Field displacement_;  // and its output, before it is copied out
 };
 
 }  // namespace coatfft::python

@@ -62,11 +62,9 @@ def test_unknown_material():
 
 @pytest.mark.parametrize("thickness", [0.0, -1e-6, float("nan"), float("inf")])
 def test_coating_bad_thickness(thickness):
-    # Checked when the coating enters a stack (docs/python.md), naming it (1-based, top first).
-    coating = coatfft.Coating(TIN, thickness)
-    raises(ValueError, r"LayerStack: coating 2: thickness = .* m, but the thickness must be "
-           r"finite and > 0",
-           lambda: coatfft.LayerStack(STEEL, [coatfft.Coating(TIN, 1e-6), coating]))
+    # Refused where it is written, at Coating().
+    raises(ValueError, r"Coating: thickness = .* m, but it must be finite and > 0",
+           lambda: coatfft.Coating(TIN, thickness))
 
 
 def test_coating_and_stack_errors():
@@ -284,13 +282,15 @@ def test_option_values_refused():
     def make(body=STACK, **keywords):
         return lambda: coatfft.make_operator(GRID, body, **keywords)
 
-    raises(ValueError, r'"exhaustive" is not one of "estimate", "measure"',
+    # Every message names the keyword as it is written in the call.
+    raises(ValueError, r'make_operator: planning = "exhaustive" is not one of "estimate", "measure"',
            make(method="frf-split", planning="exhaustive"))
-    raises(ValueError, r'"exhaustive" is not one of "estimate", "measure"',
+    raises(ValueError, r'make_operator: planning = "exhaustive" is not one of "estimate", "measure"',
            make(planning="exhaustive"))
-    raises(ValueError, r'"bogus" is not one of "regularized", "quadrature", "omitted"',
+    raises(ValueError,
+           r'make_operator: g0 = "bogus" is not one of "regularized", "quadrature", "omitted"',
            make(method="frf-spectral", g0="bogus"))
-    raises(ValueError, r"g\(0\) tolerance = 1 must be in \(0, 1\)",
+    raises(ValueError, r"make_operator: g0_tol = 1 must be in \(0, 1\)",
            make(method="frf-dcfft", g0_tol=1.0))
     raises(ValueError, r"alpha = 0.5 must be >= 1", make(method="frf-spectral", alpha=0.5))
     raises(ValueError, r"alpha = nan must be >= 1", make(method="frf-spectral", alpha=np.nan))
@@ -299,16 +299,37 @@ def test_option_values_refused():
     raises(ValueError, r"alpha = 1.5: frf-dcfft needs alpha >= 2",
            make(method="frf-dcfft", alpha=1.5))
     for threads in (0, 257):
-        raises(ValueError, rf"threads = {threads}:? must be in 1..256",
+        raises(ValueError, rf"make_operator: threads = {threads} must be in 1..256",
                make(method="frf-split", threads=threads))
-        raises(ValueError, rf"threads = {threads}:? must be in 1..256", make(threads=threads))
+        raises(ValueError, rf"make_operator: threads = {threads} must be in 1..256",
+               make(threads=threads))
     for tolerance in (1e-13, 0.2):
         raises(ValueError, rf"make_operator: tolerance = {tolerance:g} must be in "
                r"\[1e-12, 0.1\]", make(tolerance=tolerance))
     for radius in (0.0, np.nan):
         raises(ValueError, r"make_operator: load_radius = .* m must be finite and > 0",
                make(load_radius=radius))
-    raises(ValueError, r"applications = 0.5: must be >= 1", make(applications=0.5))
+    for applications in (0.5, np.inf):
+        raises(ValueError, r"make_operator: applications = .* must be finite and >= 1",
+               make(applications=applications))
+
+
+def test_keywords_that_do_not_apply_are_refused():
+    # As a scene's [method]: a keyword the method does not use is refused, not ignored.
+    for method in ("direct", "dcfft", "frf-split"):
+        raises(ValueError, rf'make_operator: applications applies only to method = "auto", not '
+               rf'to method = "{method}"',
+               lambda: coatfft.make_operator(GRID, STEEL, method=method, applications=100.0))
+    raises(ValueError, r'make_operator: planning applies only to the methods that use FFTW '
+           r'\(direct uses no FFT\), not to method = "direct"',
+           lambda: coatfft.make_operator(GRID, STEEL, method="direct", planning="measure"))
+
+
+def test_direct_is_limited_as_in_scenes():
+    grid = coatfft.Grid(257, 256, 1e-3, 1e-3)  # 65792 cells > 65536
+    raises(ValueError, r'make_operator: method = "direct" on 257 x 256 cells: direct summation is '
+           r"limited to 65536 cells",
+           lambda: coatfft.make_operator(grid, STEEL, method="direct"))
 
 
 def test_body_refused_by_the_method():

@@ -29,7 +29,7 @@ def test_grid_properties():
     assert g.x.shape == (5,) and g.y.shape == (3,) and g.x.dtype == np.float64
     even = coatfft.Grid(4, 2, 1.0, 1.0)
     np.testing.assert_allclose(even.x, [-0.375, -0.125, 0.125, 0.375], rtol=0, atol=1e-17)
-    assert repr(g) == "Grid(nx=5, ny=3, lx=2, ly=0.3)"
+    assert repr(g) == "Grid(nx=5, ny=3, lx=2.0, ly=0.3)"
     assert g == coatfft.Grid(5, 3, 2.0, 0.3) and g != coatfft.Grid(3, 5, 2.0, 0.3)
     assert g != coatfft.Grid(5, 3, 2.0, 0.31)
     assert g != 3 and not (g == "grid")  # another type is unequal, not a TypeError
