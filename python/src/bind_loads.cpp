@@ -8,6 +8,7 @@
 #include "bindings.hpp"
 #include "bodies.hpp"
 #include "core/error.hpp"
+#include "load_names.hpp"
 #include "loads/hertz_pressure.hpp"
 #include "loads/uniform_disk_pressure.hpp"
 #include "validation/hankel_displacement.hpp"
@@ -17,8 +18,6 @@ namespace py = pybind11;
 using namespace pybind11::literals;
 
 namespace coatfft::python {
-
-namespace {
 
 Sampling parse_sampling(std::string_view name) {
   if (name == "centre") return Sampling::centre;
@@ -33,6 +32,8 @@ AxisymmetricLoad parse_load(std::string_view name) {
   throw InvalidArgument(
       detail::concat("load = \"", name, "\" is not one of \"hertz\", \"uniform_disk\""));
 }
+
+namespace {
 
 // f(r) at every radius of an array (any shape), without the GIL: radius by radius.
 template <typename Function>

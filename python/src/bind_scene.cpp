@@ -12,6 +12,7 @@
 #include "cli/frf_validation.hpp"
 #include "cli/scene_run.hpp"
 #include "core/error.hpp"
+#include "load_names.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;
@@ -36,8 +37,24 @@ py::dict run_scene(const std::filesystem::path& path) {
   return out;
 }
 
+// The load of the displacement checks, as a scene's [pressure] gives it to the command: none
+// (the default loads), or a shape with its amplitude [Pa], radius [m] and sampling.
+cli::FrfValidationOptions validation_options(const std::optional<std::string>& load,
+                                             double amplitude, std::optional<double> radius,
+                                             const std::string& sampling) {
+  cli::FrfValidationOptions options;
+  COATFFT_REQUIRE(load.has_value() == radius.has_value(),
+                  "validate_frf: give load and load_radius together (or neither, for the default "
+                  "loads)");
+  if (load)
+    options.load =
+        cli::FrfCheckLoad{parse_load(*load), amplitude, *radius, parse_sampling(sampling)};
+  return options;
+}
+
 py::dict validate_frf(py::handle frf_object, py::handle claim_object, const Grid& grid,
-                      double tolerance) {
+                      double tolerance, const std::optional<std::string>& load, double amplitude,
+                      std::optional<double> load_radius, const std::string& sampling) {
   // The command's own check names its --tolerance flag; Python names the keyword.
   COATFFT_REQUIRE(tolerance > 0 && tolerance < 1, "validate_frf: tolerance = ", tolerance,
                   " must be in (0, 1)");
@@ -46,10 +63,12 @@ py::dict validate_frf(py::handle frf_object, py::handle claim_object, const Grid
   COATFFT_REQUIRE(claim.stack,
                   "validate_frf: body must be a LayerStack or a Material (what the "
                   "FRF is checked against), not an Frf");
+  const cli::FrfValidationOptions options =
+      validation_options(load, amplitude, load_radius, sampling);
   cli::FrfValidation result;
   {
     py::gil_scoped_release release;
-    result = cli::validate_frf(*frf.response(), *claim.stack, grid, tolerance);
+    result = cli::validate_frf(*frf.response(), *claim.stack, grid, tolerance, options);
   }
   py::list checks;
   for (const cli::FrfCheck& c : result.checks)
@@ -68,8 +87,12 @@ void bind_scene(py::module_& m) {
         "\"pressure\" (and \"gap\" for a contact) and \"summary\" (summary.json's dict). Writes "
         "nothing.");
   m.def("validate_frf", &validate_frf, "frf"_a, "body"_a, "grid"_a, "tolerance"_a = 1e-6,
+        py::kw_only(), "load"_a = py::none(), "amplitude"_a = 1e6, "load_radius"_a = py::none(),
+        "sampling"_a = "cell_average",
         "The checks of `coatfft validate-frf`: `frf` against the body it claims to be, on `grid`; "
-        "a dict with \"passed\" and the \"checks\".");
+        "a dict with \"passed\" and the \"checks\". `load` (\"hertz\" or \"uniform_disk\", "
+        "with `amplitude` [Pa], `load_radius` [m], `sampling`) replaces the check load of its "
+        "kind, as a scene's [pressure] does for the command.");
 }
 
 }  // namespace coatfft::python

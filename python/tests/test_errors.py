@@ -495,6 +495,15 @@ def test_validate_frf_errors():
     raises(TypeError, WRONG_BODY.replace("body", "frf", 1) + "str",
            lambda: coatfft.validate_frf("x", STACK, GRID))
     raises(TypeError, WRONG_BODY + "int", lambda: coatfft.validate_frf(STACK, 3, GRID))
+    raises(ValueError, r"validate_frf: give load and load_radius together",
+           lambda: coatfft.validate_frf(STACK, STACK, GRID, load="hertz"))
+    raises(ValueError, r"validate_frf: give load and load_radius together",
+           lambda: coatfft.validate_frf(STACK, STACK, GRID, load_radius=1e-4))
+    raises(ValueError, r'load = "cone" is not one of "hertz", "uniform_disk"',
+           lambda: coatfft.validate_frf(STACK, STACK, GRID, load="cone", load_radius=1e-4))
+    raises(ValueError, r'sampling = "corner" is not one of "centre", "cell_average"',
+           lambda: coatfft.validate_frf(STACK, STACK, GRID, load="hertz", load_radius=1e-4,
+                                        sampling="corner"))
     raises(TypeError, "incompatible function arguments",
            lambda: coatfft.validate_frf(STACK, STACK, "grid"))
 

@@ -221,24 +221,28 @@ def test_validate_frf_reports_an_frf_inconsistent_with_its_limits():
     assert "the integral of the FRF failed" in hankel["detail"]
 
 
-def test_validate_frf_equals_the_program(coatfft_exe, tmp_path):
+@pytest.mark.parametrize("with_load", [False, True])
+def test_validate_frf_equals_the_program(coatfft_exe, tmp_path, with_load):
     # The table of examples/scenes/tabulated_frf.toml, checked by `coatfft validate-frf` and by
     # validate_frf on the scene's grid against the body its [substrate] and [[coating]] claim.
-    # The program replaces a check's load by the scene's [pressure] of that kind, which
-    # validate_frf has no keyword for: the scene here has a [contact] instead, so that both use
-    # the default loads.
+    # The program replaces the Hertz check load by the scene's [pressure] (p0 = 1 GPa, a = 1 mm,
+    # cell averages), which validate_frf takes as keywords; without a [pressure] (a [contact]
+    # instead) both use the default loads.
     text = (SCENES / "tabulated_frf.toml").read_text()
     text = text.replace('path = "tabulated_frf.csv"',
                         f'path = "{(SCENES / "tabulated_frf.csv").as_posix()}"')
-    text = text[:text.index("[pressure]")] + text[text.index("[method]"):]
-    text += '\n[contact]\nindenter = "sphere"\nradius = 0.01\nload = 1.0\n'
+    if not with_load:
+        text = text[:text.index("[pressure]")] + text[text.index("[method]"):]
+        text += '\n[contact]\nindenter = "sphere"\nradius = 0.01\nload = 1.0\n'
     scene = tmp_path / "table.toml"
     scene.write_text(text)
     done = subprocess.run([coatfft_exe, "validate-frf", str(scene)], capture_output=True,
                           text=True, timeout=120)
     assert done.returncode == 0, done.stderr
+    load = dict(load="hertz", amplitude=1e9, load_radius=1e-3,
+                sampling="cell_average") if with_load else {}
     result = coatfft.validate_frf(example_table(), tin_on_steel(1e-4),
-                                  coatfft.Grid(97, 97, 4e-3, 4e-3))
+                                  coatfft.Grid(97, 97, 4e-3, 4e-3), **load)
     assert result["passed"]
     rows = {}
     for line in done.stdout.splitlines():

@@ -1,0 +1,14 @@
+#pragma once
+// The names of load shapes and samplings as Python passes them: "hertz", "uniform_disk";
+// "centre", "cell_average". InvalidArgument (ValueError) for another name.
+#include <string_view>
+
+#include "loads/sampling.hpp"
+#include "validation/hankel_displacement.hpp"
+
+namespace coatfft::python {
+
+Sampling parse_sampling(std::string_view name);
+AxisymmetricLoad parse_load(std::string_view name);
+
+}  // namespace coatfft::python
