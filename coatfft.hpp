@@ -2,6 +2,7 @@
 // Every public header of coatfft: #include <coatfft/coatfft.hpp>.
 #include "contact/contact_solver.hpp"
 #include "contact/indenter.hpp"
+#include "convolution/cerruti_influence.hpp"
 #include "convolution/fftw_wisdom.hpp"
 #include "convolution/frf_influence_kernel.hpp"
 #include "convolution/g0.hpp"
@@ -22,6 +23,7 @@
 #include "frf/frf.hpp"
 #include "frf/frf_table.hpp"
 #include "frf/half_space_frf.hpp"
+#include "frf/layer_modes.hpp"
 #include "frf/multilayer_frf.hpp"
 #include "frf/tabulated_frf.hpp"
 #include "layers/layer_stack.hpp"
