@@ -15,6 +15,7 @@
 #include "convolution/cerruti_influence.hpp"
 #include "core/error.hpp"
 #include "core/gsl_quadrature.hpp"
+#include "long_double_gauss_legendre.hpp"
 #include "materials/material.hpp"
 
 using coatfft::cerruti_influence;
@@ -223,28 +224,9 @@ TEST_CASE("cerruti_influence equals a 2-D adaptive quadrature of Cerruti's point
 // so that it keeps its relative accuracy near x = 0.
 std::array<long double, 2> long_double_rule(long double x, long double y, long double a,
                                             long double b, long double nu) {
-  constexpr int n = 30;
-  std::array<long double, n> t{};
-  std::array<long double, n> w{};
-  for (int i = 0; i < n; ++i) {
-    long double z = std::cos(std::numbers::pi_v<long double> * (i + 0.75L) / (n + 0.5L));
-    long double dp = 1.0L;
-    for (int it = 0; it < 100; ++it) {
-      long double p0 = 1.0L;
-      long double p1 = z;
-      for (int j = 2; j <= n; ++j) {
-        const long double p2 = ((2.0L * j - 1.0L) * z * p1 - (j - 1.0L) * p0) / j;
-        p0 = p1;
-        p1 = p2;
-      }
-      dp = n * (z * p1 - p0) / (z * z - 1.0L);
-      const long double step = p1 / dp;
-      z -= step;
-      if (std::abs(step) < 1e-19L) break;
-    }
-    t[static_cast<std::size_t>(i)] = z;
-    w[static_cast<std::size_t>(i)] = 2.0L / ((1.0L - z * z) * dp * dp);
-  }
+  const LongDoubleRule rule = long_double_gauss_legendre(30);
+  const std::vector<long double>& t = rule.nodes;
+  const std::vector<long double>& w = rule.weights;
   long double sxx = 0.0L;
   long double szx = 0.0L;
   for (std::size_t i = 0; i < t.size(); ++i) {

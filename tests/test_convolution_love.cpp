@@ -19,6 +19,7 @@
 #include "core/error.hpp"
 #include "core/grid.hpp"
 #include "core/norms.hpp"
+#include "long_double_gauss_legendre.hpp"
 
 using coatfft::love_influence;
 
@@ -178,27 +179,9 @@ TEST_CASE("love_kernel holds love_influence / E* at every offset, in wrap-around
 // Beyond 8 cells it converges like (4 r/d)^(-2n), so 20 and 24 points are exact to long double
 // rounding (~1e-19), which the test checks by comparing the two.
 long double long_double_rule(int n, long double x, long double y, long double a, long double b) {
-  std::vector<long double> t(static_cast<std::size_t>(n));
-  std::vector<long double> w(t.size());
-  for (int i = 0; i < n; ++i) {
-    long double z = std::cos(std::numbers::pi_v<long double> * (i + 0.75L) / (n + 0.5L));
-    long double dp = 1.0L;
-    for (int it = 0; it < 100; ++it) {
-      long double p0 = 1.0L;
-      long double p1 = z;
-      for (int j = 2; j <= n; ++j) {
-        const long double p2 = ((2.0L * j - 1.0L) * z * p1 - (j - 1.0L) * p0) / j;
-        p0 = p1;
-        p1 = p2;
-      }
-      dp = n * (z * p1 - p0) / (z * z - 1.0L);
-      const long double step = p1 / dp;
-      z -= step;
-      if (std::abs(step) < 1e-19L) break;
-    }
-    t[static_cast<std::size_t>(i)] = z;
-    w[static_cast<std::size_t>(i)] = 2.0L / ((1.0L - z * z) * dp * dp);
-  }
+  const LongDoubleRule rule = long_double_gauss_legendre(n);
+  const std::vector<long double>& t = rule.nodes;
+  const std::vector<long double>& w = rule.weights;
   long double sum = 0.0L;
   for (std::size_t i = 0; i < t.size(); ++i)
     for (std::size_t j = 0; j < t.size(); ++j) {
