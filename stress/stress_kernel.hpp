@@ -1,0 +1,59 @@
+#pragma once
+// Influence coefficients of the stresses on one plane z = const inside any layer stack: the six
+// stresses at the cell centres (i dx, j dy, z) under a unit uniform load on the cell at the origin
+// (a cell-integrated load, not a point load), for pressure and, when asked, the tractions q_x,
+// q_y. They come from the stress FRFs of docs/theory.md 2.7 (frf/stress_frf.hpp) sampled on the
+// lattice of an alpha-times extended period, times the cell's transform, with every alias
+// k + 2 pi (p/dx, q/dy) folded in up to the tolerance (no truncation at Nyquist), and brought to
+// space by a DCT/DST (docs/theory.md 2.8). The k = 0 sample is the FRF's mean over directions.
+// What remains is the periodisation of the kernel's far field by the images at distances >=
+// (alpha - 1) L, measured in docs/stress.md.
+#include <array>
+#include <span>
+
+#include "../core/grid.hpp"
+#include "../core/types.hpp"
+#include "../frf/layer_modes.hpp"
+#include "../layers/layer_stack.hpp"
+
+namespace coatfft {
+
+struct StressKernelOptions {
+  /// Period of the sampling lattice over the domain length, an integer >= 2 (2 is DC-FFT's own
+  /// padded lattice; the periodisation error falls like alpha^-3, docs/stress.md).
+  int alpha = 4;
+  /// Relative size [-] of the FRF terms left out of the alias series; in (0, 1e-3].
+  double tolerance = 1e-12;
+  /// Largest alias order |p|, |q| folded (>= 0). Planes much shallower than a cell need
+  /// about dx/z orders; at z = 0 the series is cut here (see report).
+  int max_alias_order = 64;
+  /// Threads of the lattice loop, in [1, max_threads]; the result does not depend on it.
+  int threads = 1;
+};
+
+/// What stress_plane_kernel did.
+struct StressKernelReport {
+  int alias_order = 0;            ///< largest alias order folded
+  bool alias_capped = false;      ///< the series needed more than max_alias_order
+  long long frf_evaluations = 0;  ///< LayerModes solves
+  double seconds = 0.0;           ///< wall-clock time [s]
+};
+
+/// The coefficients of one plane. coefficients[c][l] holds K(i dx, j dy) for 0 <= i < nx,
+/// 0 <= j < ny [Pa per Pa of load] of stress component c (StressComponent order xx, yy, zz, yz,
+/// xz, xy) under load l (SurfaceLoad order p, q_x, q_y); the other quadrants follow from the
+/// parity stress_frf_odd(c, l). Loads not built are empty arrays.
+struct StressPlaneKernel {
+  double depth = 0.0;
+  std::array<std::array<Field, 3>, 6> coefficients;
+};
+
+/// The kernel of the plane at `depth` [m] (finite, >= 0; on an interface in the medium `side`
+/// names) of the body `stack`, on `grid`, for the pressure and, if `tangential`, the tractions.
+/// Throws InvalidArgument on bad options or depth.
+StressPlaneKernel stress_plane_kernel(const Grid& grid, const LayerStack& stack, double depth,
+                                      InterfaceSide side, bool tangential,
+                                      const StressKernelOptions& options = {},
+                                      StressKernelReport* report = nullptr);
+
+}  // namespace coatfft

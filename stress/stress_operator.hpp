@@ -1,0 +1,83 @@
+#pragma once
+// Stresses on planes z = const inside a layered body under surface loads: the linear convolution
+// of the cell-integrated loads with each plane's influence coefficients (stress/stress_kernel.hpp),
+// computed exactly (to rounding) as a circular one on a zero-padded grid, as DC-FFT does for the
+// surface displacement (Liu, Wang & Liu 2000). Everything is planned in the constructor; apply()
+// transforms each load once, then per plane multiplies and runs six inverse transforms: a plane
+// costs about three surface applications (docs/stress.md).
+#include <array>
+#include <cstddef>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "../convolution/planning.hpp"
+#include "../core/grid.hpp"
+#include "../core/types.hpp"
+#include "../frf/stress_frf.hpp"
+#include "../layers/layer_stack.hpp"
+#include "stress_kernel.hpp"
+
+namespace coatfft {
+
+/// Six stress fields per plane, in stress.npy's order (xx, yy, zz, yz, xz, xy), each (nx, ny) [Pa].
+using PlaneStress = std::array<Field, 6>;
+
+struct StressOperatorOptions {
+  StressKernelOptions kernel;  ///< how each plane's coefficients are made
+  /// Medium of a depth equal to an interface depth.
+  InterfaceSide side = InterfaceSide::below;
+  /// Whether the tractions q_x, q_y are loads too (their kernels cost twice the pressure's).
+  bool tangential = false;
+  Planning planning = Planning::estimate;
+};
+
+class StressOperator {
+ public:
+  /// Plans the planes at `depths` [m] (each finite, >= 0) of the body `stack` on `grid`.
+  /// Throws InvalidArgument on bad options, an empty or non-finite depth list, or tangential
+  /// loads on a stack with a frictionless interface (a net tangential force has no equilibrium
+  /// there: the coating slides, docs/theory.md 2.3).
+  StressOperator(const Grid& grid, const LayerStack& stack, std::vector<double> depths,
+                 const StressOperatorOptions& options = {});
+  ~StressOperator();
+  StressOperator(StressOperator&&) noexcept;
+  StressOperator& operator=(StressOperator&&) noexcept;
+
+  const Grid& grid() const { return grid_; }
+  const std::vector<double>& depths() const { return depths_; }
+  bool tangential() const { return tangential_; }
+
+  /// The stresses on every plane under the pressure (compression positive) and, for a
+  /// tangential operator, the tractions q_x, q_y the surface receives (null: zero), each
+  /// (nx, ny) [Pa] as cell values. `stress` is resized to one PlaneStress per depth.
+  void apply(const Field& pressure, const Field* qx, const Field* qy,
+             std::vector<PlaneStress>& stress);
+
+  /// Wall-clock seconds of the constructor [s], and the kernels' reports, one per plane.
+  double setup_seconds() const { return setup_seconds_; }
+  const std::vector<StressKernelReport>& kernel_reports() const { return reports_; }
+  /// Bytes the operator holds (kernel spectra and buffers).
+  std::size_t memory_bytes() const;
+
+ private:
+  struct Transforms;  // FFTW plans and buffers: FFTW stays out of the public headers
+
+  void plan_transforms(Planning planning);
+  void transform_load(int load, const Field* field);
+  void multiply_spectra(int plane, int component);
+
+  Grid grid_;
+  std::vector<double> depths_;
+  bool tangential_;
+  int nb_loads_;
+  std::ptrdiff_t mx_, my_, hx_, hy_;  // padded lengths, mx/2 + 1, my/2 + 1
+  // spectra_[plane][component][load]: the padded spectrum quarter (hx, hy) of the real
+  // coefficients, real: the spectrum is (-i)^(odd_x + odd_y) times it (parity_transform).
+  std::vector<std::array<std::array<Field, 3>, 6>> spectra_;
+  std::unique_ptr<Transforms> transforms_;
+  std::vector<StressKernelReport> reports_;
+  double setup_seconds_ = 0.0;
+};
+
+}  // namespace coatfft
