@@ -261,9 +261,17 @@ std::size_t npy_data_bytes(const fs::path& path, const NpyStart& npy, const Shap
 
 }  // namespace
 
-void write_npy(const std::filesystem::path& path, const Field& field) {
-  std::string header = "{'descr': '<f8', 'fortran_order': False, 'shape': (" +
-                       std::to_string(field.cols()) + ", " + std::to_string(field.rows()) + "), }";
+void write_npy_array(const std::filesystem::path& path, std::span<const std::size_t> shape,
+                     std::span<const double> data) {
+  std::size_t count = 1;
+  std::string dims;
+  for (std::size_t n : shape) {
+    count *= n;
+    dims += std::to_string(n) + ", ";
+  }
+  COATFFT_REQUIRE(count == data.size(), "write_npy_array: the shape does not match the data");
+  if (shape.size() > 1) dims.resize(dims.size() - 2);  // a 1-tuple keeps its comma: (n,)
+  std::string header = "{'descr': '<f8', 'fortran_order': False, 'shape': (" + dims + "), }";
   // NumPy format 1.0: magic(6) + version(2) + header length(2) + header, padded with blanks and
   // terminated by '\n' so that the data starts on a 64-byte boundary.
   const std::size_t unpadded = kMagicSize + 4 + header.size() + 1;
@@ -278,9 +286,15 @@ void write_npy(const std::filesystem::path& path, const Field& field) {
   out.put(static_cast<char>(header_size & 0xff));
   out.put(static_cast<char>(header_size >> 8));
   out << header;
-  out.write(reinterpret_cast<const char*>(field.data()),
-            static_cast<std::streamsize>(field.size() * sizeof(double)));
+  out.write(reinterpret_cast<const char*>(data.data()),
+            static_cast<std::streamsize>(data.size() * sizeof(double)));
   COATFFT_REQUIRE(out.good(), "failed writing ", path.string());
+}
+
+void write_npy(const std::filesystem::path& path, const Field& field) {
+  const std::size_t shape[2] = {static_cast<std::size_t>(field.cols()),
+                                static_cast<std::size_t>(field.rows())};
+  write_npy_array(path, shape, std::span<const double>(field.data(), std::size_t(field.size())));
 }
 
 Field read_npy(const fs::path& path, std::uintmax_t max_bytes) {

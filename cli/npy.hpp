@@ -10,11 +10,17 @@
 // quoted, its non-printable bytes escaped, and shortened to 80 characters.
 #include <cstdint>
 #include <filesystem>
+#include <span>
 
 #include "cli/input_file.hpp"
 #include "core/types.hpp"
 
 namespace coatfft::cli {
+
+/// Writes `data` as a C-order little-endian float64 .npy file of shape `shape` (whose product
+/// must be data.size()).
+void write_npy_array(const std::filesystem::path& path, std::span<const std::size_t> shape,
+                     std::span<const double> data);
 
 /// Writes `field` as a (ny, nx) little-endian float64 .npy file.
 void write_npy(const std::filesystem::path& path, const Field& field);

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <string>
 
+#include "cli/scene_stress.hpp"
 #include "convolution/dcfft_operator.hpp"
 #include "core/detail/shorten.hpp"
 #include "core/error.hpp"
@@ -61,6 +62,11 @@ MemoryEstimate estimate_memory(const Scene& scene) {
     const double alpha = scene.method.options.alpha;
     bytes += 16.0 * alpha * alpha * cells;  // the FRF sampled on the alpha-extended lattice
     drivers += detail::concat(", [method] alpha = ", alpha);
+  }
+  if (scene.stress && scene.body) {
+    bytes += stress_memory_bytes(*scene.stress, *scene.body, scene.grid);
+    drivers += detail::concat(", [stress] ", stress_plane_depths(*scene.stress, *scene.body).size(),
+                              " planes at alpha = ", scene.stress->alpha);
   }
   return {bytes, drivers};
 }

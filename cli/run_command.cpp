@@ -41,6 +41,9 @@ std::vector<std::string> output_names(const OutputSpec& spec) {
   if (spec.displacement_csv) names.push_back("displacement.csv");
   names.push_back("summary.json");
   if (spec.gap) names.push_back("gap.npy");
+  if (spec.stress) names.insert(names.end(), {"stress.npy", "von_mises.npy"});
+  if (spec.stress_section)
+    names.insert(names.end(), {"stress_section.npy", "von_mises_section.npy"});
   return names;
 }
 
@@ -48,6 +51,24 @@ std::string joined(const std::vector<std::string>& names) {
   std::string text;
   for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
   return text;
+}
+
+// stress.npy (n_depths, 6, ny, nx), von_mises.npy (n_depths, ny, nx), stress_section.npy
+// (nz, 6, nx), von_mises_section.npy (nz, nx): docs/stress.md.
+void write_stress_outputs(StagedOutput& out, const OutputSpec& spec, const Grid& grid,
+                          const StressRun& s) {
+  const auto nx = static_cast<std::size_t>(grid.nx()), ny = static_cast<std::size_t>(grid.ny());
+  if (spec.stress) {
+    const std::size_t n = s.von_mises.size() / (nx * ny);
+    write_npy_array(out.path("stress.npy"), std::vector<std::size_t>{n, 6, ny, nx}, s.stress);
+    write_npy_array(out.path("von_mises.npy"), std::vector<std::size_t>{n, ny, nx}, s.von_mises);
+  }
+  if (spec.stress_section) {
+    const std::size_t nz = s.section_von_mises.size() / nx;
+    write_npy_array(out.path("stress_section.npy"), std::vector<std::size_t>{nz, 6, nx}, s.section);
+    write_npy_array(out.path("von_mises_section.npy"), std::vector<std::size_t>{nz, nx},
+                    s.section_von_mises);
+  }
 }
 
 // Writes the requested outputs only: the CSV text, the costliest of them (a 2048^2 grid makes
@@ -58,6 +79,7 @@ void write_outputs(StagedOutput& out, const OutputSpec& spec, const SceneRun& ru
   if (spec.uz) write_npy(out.path("uz.npy"), run.uz);
   if (spec.pressure) write_npy(out.path("pressure.npy"), run.pressure);
   if (spec.gap && run.gap) write_npy(out.path("gap.npy"), *run.gap);
+  if (run.stress) write_stress_outputs(out, spec, run.grid, *run.stress);
   if (spec.displacement_csv)
     write_displacement_csv(out.path("displacement.csv"), run.grid, run.pressure, run.uz);
   {

@@ -67,6 +67,23 @@ class SectionReader {
   std::string string(std::string_view key, std::string fallback) {
     return has(key) ? string(key) : fallback;
   }
+  /// The list of finite numbers at `key` (possibly empty).
+  std::vector<double> numbers(std::string_view key) {
+    const toml::node& node = require(key);
+    const toml::array* array = node.as_array();
+    COATFFT_REQUIRE(array != nullptr, where(key), " must be a list of numbers, got ",
+                    describe(node));
+    std::vector<double> values;
+    for (const toml::node& e : *array) {
+      COATFFT_REQUIRE(e.is_number(), where(key),
+                      " must be a list of numbers, got an entry of type ", describe(e));
+      const double v = e.is_integer() ? static_cast<double>(e.as_integer()->get())
+                                      : e.as_floating_point()->get();
+      COATFFT_REQUIRE(std::isfinite(v), where(key), " holds ", v, ": every depth must be finite");
+      values.push_back(v);
+    }
+    return values;
+  }
   /// The list of strings at `key` (possibly empty).
   std::vector<std::string> strings(std::string_view key) {
     const toml::node& node = require(key);
@@ -531,7 +548,7 @@ OutputSpec read_output(const toml::table& root, bool contact) {
     COATFFT_REQUIRE(!names.empty(), reader.where("fields"),
                     " = []: name at least one output (summary.json is always written: "
                     "fields = [\"summary\"] writes only it)");
-    spec = OutputSpec{false, false, false, false};
+    spec = OutputSpec{false, false, false, false, false, false};
     std::set<std::string> seen;
     for (const std::string& name : names) {
       select_output(spec, name, reader, contact);  // a known name from here on
@@ -539,6 +556,51 @@ OutputSpec read_output(const toml::table& root, bool contact) {
                       "\" is listed twice");
     }
   }
+  reader.finish();
+  return spec;
+}
+
+// [stress]: planes at depth and the section y = 0. The stress kernels need the layers themselves
+// (docs/theory.md 2.7), which an [frf] table does not give.
+StressSpec read_stress(const toml::table& root, const Scene& scene) {
+  SectionReader reader(section(root, "stress", true), "stress");
+  COATFFT_REQUIRE(scene.body.has_value() && !scene.frf,
+                  "[stress] needs the body's layers, given "
+                  "by [substrate] and [[coating]]; an [frf] table does not describe the fields "
+                  "at depth");
+  StressSpec spec;
+  if (reader.has("depths")) spec.depths = reader.numbers("depths");
+  for (double z : spec.depths)
+    COATFFT_REQUIRE(z > 0.0, reader.where("depths"), " holds ", z,
+                    ": every depth must be > 0 [m] (z points into the body; the surface plane "
+                    "z = 0 is not computed)");
+  spec.side = reader.choice("at_interface", "below", {"below", "above"}) == "below"
+                  ? InterfaceSide::below
+                  : InterfaceSide::above;
+  spec.section = reader.has("section");
+  if (spec.section) {
+    reader.choice("section", "xz", {"xz"});
+    spec.depth_max = reader.number("depth_max");
+    COATFFT_REQUIRE(spec.depth_max > 0.0, reader.where("depth_max"), " = ", spec.depth_max,
+                    " must be > 0 [m]");
+    const std::int64_t nz = reader.integer("nz");
+    COATFFT_REQUIRE(nz >= 1 && nz <= std::int64_t(max_stress_planes), reader.where("nz"), " = ", nz,
+                    " must be in [1, ", max_stress_planes, "]");
+    spec.nz = static_cast<int>(nz);
+  }
+  const std::int64_t alpha = reader.integer("alpha", 16);
+  COATFFT_REQUIRE(alpha >= 2 && alpha <= 32, reader.where("alpha"), " = ", alpha,
+                  " must be an integer in [2, 32]");
+  COATFFT_REQUIRE(alpha * std::max(scene.grid.nx(), scene.grid.ny()) <= 16384,
+                  reader.where("alpha"), " = ", alpha, " times ",
+                  std::max(scene.grid.nx(), scene.grid.ny()),
+                  " cells exceeds the 16384-point sampling lattice; lower alpha");
+  spec.alpha = static_cast<int>(alpha);
+  COATFFT_REQUIRE(!spec.depths.empty() || spec.section,
+                  "[stress] give depths = [...] or section = \"xz\" (or both)");
+  COATFFT_REQUIRE(spec.depths.size() + std::size_t(spec.nz) <= max_stress_planes,
+                  "[stress] asks for ", spec.depths.size() + std::size_t(spec.nz),
+                  " planes; at most ", max_stress_planes);
   reader.finish();
   return spec;
 }
@@ -568,8 +630,8 @@ constexpr std::uintmax_t max_scene_bytes = 1 << 20;
 toml::table parse_scene_text(const std::string& text, const std::filesystem::path& path) {
   try {
     toml::table root = toml::parse(text, path.string());
-    const std::set<std::string> known{"grid",    "substrate", "coating", "pressure",
-                                      "contact", "method",    "output",  "frf"};
+    const std::set<std::string> known{"grid",   "substrate", "coating", "pressure", "contact",
+                                      "method", "output",    "frf",     "stress"};
     for (auto&& [key, node] : root) {
       COATFFT_REQUIRE(known.count(std::string(key.str())), "unknown section or key \"",
                       detail::shorten(key.str()), "\"");
@@ -627,6 +689,11 @@ Scene read_scene(const std::filesystem::path& path) {
                             scene.frf ? nullptr : &*scene.body, scene_dir);
       });
     scene.output = read_output(root, scene.contact.has_value());
+    if (root.contains("stress")) {
+      scene.stress = read_stress(root, scene);
+      scene.output.stress = !scene.stress->depths.empty();
+      scene.output.stress_section = scene.stress->section;
+    }
     // g(0) only shifts every displacement by one constant, which a load-controlled contact
     // absorbs in its approach; when that approach is not reported, g(0) is not computed at all.
     if (scene.contact && !scene.contact->report_approach)
@@ -644,6 +711,14 @@ Scene read_scene(const std::filesystem::path& path) {
 LayerStack read_scene_body(const std::filesystem::path& path) {
   const std::string text = read_input_file(path, "a scene file", max_scene_bytes);
   return with_file_name(path, [&] { return read_body(parse_scene_text(text, path)); });
+}
+
+std::vector<double> stress_plane_depths(const StressSpec& spec, const LayerStack& body) {
+  std::vector<double> depths = spec.depths;
+  for (int k = 1; k <= spec.nz; ++k) depths.push_back(spec.depth_max * k / spec.nz);
+  double interface = 0.0;
+  for (const Coating& c : body.coatings()) depths.push_back(interface += c.thickness);
+  return depths;
 }
 
 std::shared_ptr<const Frf> body_frf(const Scene& scene) {

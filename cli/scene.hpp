@@ -13,6 +13,7 @@
 #include "convolution/make_operator.hpp"
 #include "core/grid.hpp"
 #include "frf/frf.hpp"
+#include "frf/layer_modes.hpp"
 #include "layers/layer_stack.hpp"
 #include "loads/grid_refinement.hpp"
 #include "loads/sampling.hpp"
@@ -85,7 +86,25 @@ struct OutputSpec {
   bool pressure = true;          ///< pressure.npy
   bool gap = false;              ///< gap.npy: a [contact] scene only (its default there is true)
   bool displacement_csv = true;  ///< displacement.csv
+  /// stress.npy and von_mises.npy: set by [stress] depths (not an [output] field name)
+  bool stress = false;
+  /// stress_section.npy and von_mises_section.npy: set by [stress] section
+  bool stress_section = false;
 };
+
+/// [stress]: the stresses inside the body on planes z = const and on the section y = 0
+/// (docs/stress.md; stress/stress_operator.hpp), under the scene's pressure.
+struct StressSpec {
+  std::vector<double> depths;                 ///< depths [m] of the planes, each > 0
+  InterfaceSide side = InterfaceSide::below;  ///< at_interface: the medium of an interface depth
+  bool section = false;                       ///< section = "xz": the plane y = 0
+  double depth_max = 0.0;                     ///< the section's deepest row [m]
+  int nz = 0;                                 ///< the section's rows, at depth_max k/nz, k = 1..nz
+  int alpha = 16;  ///< period of the kernels' sampling lattice over the domain (docs/stress.md)
+};
+
+/// The most planes [stress] may ask for (depths and section rows together).
+inline constexpr std::size_t max_stress_planes = 512;
 
 /// The most cells along an axis that [grid] refine = "auto" chooses.
 inline constexpr std::ptrdiff_t max_refined_cells = 1024;
@@ -113,7 +132,12 @@ struct Scene {
   std::shared_ptr<const Frf> frf = nullptr;  ///< [frf]: the body as a table (TabulatedFrf)
   std::filesystem::path frf_file = {};       ///< [frf] path
   std::optional<GridRefinement> refinement = std::nullopt;  ///< set when [grid] refine = "auto"
+  std::optional<StressSpec> stress = std::nullopt;          ///< [stress]
 };
+
+/// The depths of every plane a [stress] scene computes: the depths, then the section's rows,
+/// then each interface of the body (for its largest shear stress).
+std::vector<double> stress_plane_depths(const StressSpec& spec, const LayerStack& body);
 
 /// The FRF of the scene's body: the [frf] table, or make_frf of [substrate] and [[coating]].
 std::shared_ptr<const Frf> body_frf(const Scene& scene);

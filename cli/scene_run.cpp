@@ -254,9 +254,22 @@ SceneRun compute_scene(PreparedScene prepared, const SceneRunOptions& options) {
   // the same.
   Progress silent(false, std::cerr);
   Progress& progress = options.progress ? *options.progress : silent;
-  if (prepared.scene.contact)
-    return compute_contact(std::move(prepared.scene), prepared.automatic, options.repeat, progress);
-  return compute_pressure(prepared.scene, prepared.automatic, options.repeat, progress);
+  // The stresses need the body as the scene gives it (an elastic indenter's composite modulus
+  // replaces it for the contact solve only).
+  const std::optional<StressSpec> stress = prepared.scene.stress;
+  const std::optional<LayerStack> body = prepared.scene.body;
+  const int threads = prepared.scene.method.options.threads;
+  SceneRun run =
+      prepared.scene.contact
+          ? compute_contact(std::move(prepared.scene), prepared.automatic, options.repeat, progress)
+          : compute_pressure(prepared.scene, prepared.automatic, options.repeat, progress);
+  if (stress) {
+    progress.stage("stresses on " + std::to_string(stress_plane_depths(*stress, *body).size()) +
+                   " planes");
+    run.stress = compute_stress(*stress, *body, run.grid, run.pressure, threads);
+    run.summary["stress"] = run.stress->summary;
+  }
+  return run;
 }
 
 SceneRun run_scene(const fs::path& scene_file, const SceneRunOptions& options) {

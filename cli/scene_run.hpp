@@ -12,6 +12,7 @@
 
 #include "cli/automatic_method.hpp"
 #include "cli/scene.hpp"
+#include "cli/scene_stress.hpp"
 #include "core/grid.hpp"
 #include "core/types.hpp"
 
@@ -33,6 +34,7 @@ struct SceneRun {
   nlohmann::json summary;
   /// ok, or not_converged for a contact that did not converge (summary["warning"] says why).
   RunStatus status = RunStatus::ok;
+  std::optional<StressRun> stress = std::nullopt;  ///< [stress] scenes only
 };
 
 struct SceneRunOptions {

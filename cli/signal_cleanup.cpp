@@ -13,7 +13,7 @@ namespace coatfft::cli {
 namespace {
 
 constexpr int kSlots = 4;
-constexpr int kPathsPerSlot = 16;
+constexpr int kPathsPerSlot = 32;
 constexpr std::size_t kPathBytes = 4096;
 constexpr std::array<int, 3> kSignals{SIGINT, SIGTERM, SIGHUP};
 

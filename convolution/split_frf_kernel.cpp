@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "convolution/cell_average_stencil.hpp"
+#include "convolution/ewald_window.hpp"
 #include "convolution/fftw_plan.hpp"
 #include "convolution/love_influence.hpp"
 #include "core/detail/gauss_legendre.hpp"
@@ -240,33 +241,12 @@ double remainder_cutoff(const Remainder& rem, double A, double beta, double tol_
   return k_cut;
 }
 
-// The window w = exp(-s) (1 + s + s^2/2), s = (sigma k)^2, of the Ewald-type split (Ewald 1921)
-// R = R w + R (1 - w); sigma = 0 puts all of R in the short-range part, sigma = inf all of it in
-// the long-range part. 1 - w = exp(-s) sum_{j>=3} s^j/j! = O(k^6): the short-range part then has
-// the far field (sigma^6/6) (-lap)^3 of R's r^-3 tail, 1837 (sigma/r)^6 of it, so its periodic
-// images (>= 32 sigma away) are negligible (a plain Gaussian, 1 - w = O(k^2), leaves
-// 9 (sigma/r)^2: 1e-2 at 32 sigma).
+// The window of the split R = R w + R (1 - w), convolution/ewald_window.hpp.
 double window(double sigma, double k) {
-  if (sigma == 0.0) return 0.0;
-  if (std::isinf(sigma)) return 1.0;
-  const double s = (sigma * k) * (sigma * k);
-  return std::exp(-s) * (1.0 + s * (1.0 + 0.5 * s));
+  return detail::ewald_window(sigma, k);
 }
-
-// 1 - window(sigma, k), without the cancellation at small s.
 double one_minus_window(double sigma, double k) {
-  if (sigma == 0.0) return 1.0;
-  if (std::isinf(sigma)) return 0.0;
-  const double s = (sigma * k) * (sigma * k);
-  if (s >= 1.0) return 1.0 - std::exp(-s) * (1.0 + s * (1.0 + 0.5 * s));
-  // exp(-s) s^3/6 (1 + s/4 + s^2/20 + ...), 12 terms: converged to rounding for s < 1.
-  double term = 1.0;
-  double sum = 1.0;
-  for (int j = 4; j < 16; ++j) {
-    term *= s / j;
-    sum += term;
-  }
-  return std::exp(-s) * s * s * s / 6.0 * sum;
+  return detail::ewald_window_complement(sigma, k);
 }
 
 // ---- Tables ------------------------------------------------------------------------------------

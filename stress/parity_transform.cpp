@@ -1,5 +1,7 @@
 #include "stress/parity_transform.hpp"
 
+#include <Eigen/Core>
+#include <cmath>
 #include <cstddef>
 
 #include "convolution/fftw_plan.hpp"
@@ -36,6 +38,40 @@ Field parity_transform(const Field& quarter, bool odd_x, bool odd_y) {
   for (std::ptrdiff_t j = 0; j < ny; ++j)
     for (std::ptrdiff_t i = 0; i < nx; ++i) out(first_x + i, first_y + j) = b[j * nx + i];
   return out;
+}
+
+}  // namespace coatfft
+
+namespace coatfft {
+
+namespace {
+
+// The matrix of one axis: phi(k, j) = w_j cos(2 pi j k/m) (even) or w_j sin(2 pi j k/m) (odd),
+// w_0 = 1 and w_j = 2 otherwise: the two-sided sum folded onto j >= 0, as DCT-I/DST-I do.
+Eigen::MatrixXd axis_matrix(std::ptrdiff_t outputs, std::ptrdiff_t band, std::ptrdiff_t m,
+                            bool odd) {
+  Eigen::MatrixXd phi(outputs, band);
+  for (std::ptrdiff_t j = 0; j < band; ++j)
+    for (std::ptrdiff_t k = 0; k < outputs; ++k) {
+      // The phase j k mod m keeps the argument below 2 pi, where sin and cos are exact.
+      const double angle =
+          2.0 * 3.14159265358979323846 * static_cast<double>((j * k) % m) / static_cast<double>(m);
+      const double w = j == 0 ? 1.0 : 2.0;
+      phi(k, j) = odd ? (j == 0 ? 0.0 : w * std::sin(angle)) : w * std::cos(angle);
+    }
+  return phi;
+}
+
+}  // namespace
+
+Field band_parity_transform(const Field& band, bool odd_x, bool odd_y, std::ptrdiff_t mx,
+                            std::ptrdiff_t my, std::ptrdiff_t nx, std::ptrdiff_t ny) {
+  if (band.rows() > mx / 2 || band.cols() > my / 2 || band.size() == 0)
+    throw InvalidArgument("band_parity_transform: the band must lie below the Nyquist entries");
+  const Eigen::MatrixXd phi_x = axis_matrix(nx, band.rows(), mx, odd_x);
+  const Eigen::MatrixXd phi_y = axis_matrix(ny, band.cols(), my, odd_y);
+  const Eigen::MatrixXd t = phi_x * band.matrix();  // (nx, band y)
+  return (t * phi_y.transpose()).array();
 }
 
 }  // namespace coatfft

@@ -16,3 +16,14 @@ namespace coatfft {
 Field parity_transform(const Field& quarter, bool odd_x, bool odd_y);
 
 }  // namespace coatfft
+
+namespace coatfft {
+
+/// parity_transform's g at 0 <= kx < nx, 0 <= ky < ny only, for an f that vanishes beyond the
+/// band 0 <= jx < band.rows(), 0 <= jy < band.cols() of its quarter (band.rows() <= mx/2,
+/// band.cols() <= my/2: the Nyquist entries are 0), by two matrix products: about
+/// band.rows() band.cols() nx + band.cols() nx ny operations and no (mx/2 + 1)(my/2 + 1) array.
+Field band_parity_transform(const Field& band, bool odd_x, bool odd_y, std::ptrdiff_t mx,
+                            std::ptrdiff_t my, std::ptrdiff_t nx, std::ptrdiff_t ny);
+
+}  // namespace coatfft

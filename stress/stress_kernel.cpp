@@ -8,6 +8,7 @@
 #include <limits>
 #include <vector>
 
+#include "convolution/ewald_window.hpp"
 #include "core/detail/parallel_for.hpp"
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
@@ -26,17 +27,40 @@ double sinc(double x) {
 }
 
 // The sampling lattice: (mx, my) = alpha (nx, ny) points of spacing (dx, dy), wavenumber steps
-// 2 pi / (mx dx); aliases p 2 pi / dx up to order (px, py); FRF terms beyond |k| > k_cut dropped.
+// 2 pi / (mx dx); aliases p 2 pi / dx up to order (px, py), those of the shallowest plane; the
+// FRF terms of plane d beyond |k| > k_cut[d] dropped.
+// Which part of the Ewald-type split a lattice samples (docs/stress.md): the whole spectrum, its
+// long-range part S w (band-limited: |k| < sqrt(45)/sigma, where w < 1e-16) or its short-range
+// part S (1 - w).
+enum class Part { whole, long_range, short_range };
+
 struct Lattice {
   std::ptrdiff_t mx, my;
   double dx, dy, dkx, dky;
-  double k_cut;
+  std::vector<double> k_cut;
   int px, py;
+  Part part;
+  double sigma;           // window length [m]
+  std::ptrdiff_t hx, hy;  // extent of the quarter sampled: (mx/2 + 1, my/2 + 1), or the band
+  bool band = false;      // the long-range part lies below Nyquist: no aliases, a band transform
 };
 
-void validate(const Grid& grid, double depth, const StressKernelOptions& o) {
-  if (!std::isfinite(depth) || depth < 0.0)
-    throw InvalidArgument("stress kernel: depth must be finite and >= 0 [m]");
+double part_weight(const Lattice& l, double k) {
+  switch (l.part) {
+    case Part::long_range:
+      return detail::ewald_window(l.sigma, k);
+    case Part::short_range:
+      return detail::ewald_window_complement(l.sigma, k);
+    default:
+      return 1.0;
+  }
+}
+
+void validate(const Grid& grid, std::span<const double> depths, const StressKernelOptions& o) {
+  if (depths.empty()) throw InvalidArgument("stress kernel: no depth given");
+  for (double depth : depths)
+    if (!std::isfinite(depth) || depth < 0.0)
+      throw InvalidArgument("stress kernel: depth must be finite and >= 0 [m]");
   if (o.alpha < 2) throw InvalidArgument("stress kernel: alpha must be an integer >= 2");
   if (!(o.tolerance > 0.0 && o.tolerance <= 1e-3))
     throw InvalidArgument("stress kernel: tolerance must be in (0, 1e-3]");
@@ -51,93 +75,145 @@ void validate(const Grid& grid, double depth, const StressKernelOptions& o) {
 // Every stress FRF at depth z is bounded by a polynomial of degree <= 2 in k z times exp(-k z)
 // (docs/theory.md 2.7: the fields of the top pair; reflected waves decay faster), so the terms
 // with k z > ln(1/tol) + 2 ln(1 + ln(1/tol)) + 3 are below tol.
-Lattice make_lattice(const Grid& grid, double depth, const StressKernelOptions& o,
-                     StressKernelReport& report) {
+Lattice make_lattice(const Grid& grid, std::span<const double> depths, const StressKernelOptions& o,
+                     int alpha, Part part, double sigma, std::vector<StressKernelReport>* reports) {
   Lattice l{};
-  l.mx = o.alpha * grid.nx();
-  l.my = o.alpha * grid.ny();
+  l.mx = alpha * grid.nx();
+  l.my = alpha * grid.ny();
   l.dx = grid.dx();
   l.dy = grid.dy();
   l.dkx = 2.0 * kPi / (static_cast<double>(l.mx) * l.dx);
   l.dky = 2.0 * kPi / (static_cast<double>(l.my) * l.dy);
+  l.part = part;
+  l.sigma = sigma;
   const double log_tol = std::log(1.0 / o.tolerance);
-  l.k_cut = depth > 0.0 ? (log_tol + 2.0 * std::log1p(log_tol) + 3.0) / depth
-                        : std::numeric_limits<double>::infinity();
-  const auto order = [&](double d) {
-    const double needed = std::ceil(l.k_cut * d / (2.0 * kPi)) + 1.0;
-    if (!(needed <= o.max_alias_order)) {
-      report.alias_capped = true;
-      return o.max_alias_order;
+  const double band =
+      part == Part::long_range ? std::sqrt(45.0) / sigma : std::numeric_limits<double>::infinity();
+  for (std::size_t d = 0; d < depths.size(); ++d) {
+    const double k_cut =
+        std::min(band, depths[d] > 0.0 ? (log_tol + 2.0 * std::log1p(log_tol) + 3.0) / depths[d]
+                                       : std::numeric_limits<double>::infinity());
+    l.k_cut.push_back(k_cut);
+    bool capped = false;
+    const auto order = [&](double h) {
+      const double needed = std::ceil(k_cut * h / (2.0 * kPi)) + 1.0;
+      if (!(needed <= o.max_alias_order)) {
+        capped = true;
+        return o.max_alias_order;
+      }
+      return static_cast<int>(needed);
+    };
+    const int px = order(l.dx), py = order(l.dy);
+    if (reports) {
+      (*reports)[d].alias_capped = capped;
+      (*reports)[d].alias_order = std::max(px, py);
     }
-    return static_cast<int>(needed);
-  };
-  l.px = order(l.dx);
-  l.py = order(l.dy);
-  report.alias_order = std::max(l.px, l.py);
+    l.px = std::max(l.px, px);
+    l.py = std::max(l.py, py);
+  }
+  l.hx = l.mx / 2 + 1;
+  l.hy = l.my / 2 + 1;
+  // Below Nyquist along both axes, every alias of a band wavevector is beyond the band.
+  if (part == Part::long_range && band * l.dx < kPi && band * l.dy < kPi) {
+    l.band = true;
+    l.px = l.py = 0;
+    l.hx = static_cast<std::ptrdiff_t>(band / l.dkx) + 1;
+    l.hy = static_cast<std::ptrdiff_t>(band / l.dky) + 1;
+  }
   return l;
 }
 
 // The mode fields at k -> 0+: a wavenumber whose k h, k z and k L are all below 1e-10, where the
 // fields differ from their limit by that relative amount (docs/theory.md 2.7).
-StressFrf limit_at_zero(const LayerModes& modes, const Grid& grid, double depth, double thickness,
-                        InterfaceSide side) {
-  const double scale = std::max({depth, thickness, grid.lx(), grid.ly()});
-  const double k0 = 1e-10 / scale;
-  const double z[1] = {depth};
-  return stress_frf_at_zero(modes.at(k0, z, side).front());
+std::vector<StressFrf> limit_at_zero(const LayerModes& modes, const Grid& grid,
+                                     std::span<const double> depths, double thickness,
+                                     InterfaceSide side) {
+  const double scale =
+      std::max({*std::max_element(depths.begin(), depths.end()), thickness, grid.lx(), grid.ly()});
+  std::vector<StressFrf> limits;
+  for (const ModeFields& m : modes.at(1e-10 / scale, depths, side))
+    limits.push_back(stress_frf_at_zero(m));
+  return limits;
 }
 
+using Sums = std::array<std::array<std::complex<double>, 3>, 6>;
 using Quarters = std::array<std::array<Field, 3>, 6>;
 
-// Adds the alias-folded FRF times the cell transform at lattice point (jx, jy) into `acc`.
-void fold_point(const LayerModes& modes, const Lattice& l, double depth, InterfaceSide side,
-                int nb_loads, const StressFrf& at_zero, std::ptrdiff_t jx, std::ptrdiff_t jy,
-                std::array<std::array<std::complex<double>, 3>, 6>& acc, long long& evaluations) {
-  const double z[1] = {depth};
-  for (int p = -l.px; p <= l.px; ++p) {
-    const double kx = static_cast<double>(jx) * l.dkx + 2.0 * kPi * p / l.dx;
-    const double wx = sinc(0.5 * kx * l.dx);
-    for (int q = -l.py; q <= l.py; ++q) {
-      const double ky = static_cast<double>(jy) * l.dky + 2.0 * kPi * q / l.dy;
-      const double k = std::hypot(kx, ky);
-      if (k > l.k_cut) continue;
-      const double w = wx * sinc(0.5 * ky * l.dy);
-      StressFrf f;
-      if (k == 0.0) {
-        f = at_zero;
-      } else {
-        f = stress_frf(modes.at(k, z, side).front(), kx / k, ky / k);
-        ++evaluations;
-      }
+// What the lattice loop reads: the body, the lattice, the planes and their k = 0 limits.
+struct Sampling {
+  const LayerModes& modes;
+  const Lattice& lattice;
+  std::span<const double> depths;
+  InterfaceSide side;
+  int nb_loads;
+  const std::vector<StressFrf>& at_zero;
+};
+
+// Adds the FRF times the cell transform at wavevector (kx, ky), weight w, into the sums of every
+// plane whose cut-off it is within: one LayerModes solve for all of them.
+void add_wavevector(const Sampling& s, double kx, double ky, double cell, std::vector<Sums>& acc,
+                    std::vector<double>& active, std::vector<std::size_t>& index,
+                    long long& evaluations) {
+  const double k = std::hypot(kx, ky);
+  const double w = cell * part_weight(s.lattice, k);
+  if (k == 0.0) {
+    for (std::size_t d = 0; d < acc.size(); ++d)
       for (int c = 0; c < 6; ++c)
-        for (int ld = 0; ld < nb_loads; ++ld) acc[c][ld] += w * f.stress[c][ld];
+        for (int ld = 0; ld < s.nb_loads; ++ld) acc[d][c][ld] += w * s.at_zero[d].stress[c][ld];
+    return;
+  }
+  active.clear();
+  index.clear();
+  for (std::size_t d = 0; d < acc.size(); ++d)
+    if (k <= s.lattice.k_cut[d]) {
+      active.push_back(s.depths[d]);
+      index.push_back(d);
     }
+  if (active.empty()) return;
+  const std::vector<ModeFields> fields = s.modes.at(k, active, s.side);
+  ++evaluations;
+  for (std::size_t a = 0; a < index.size(); ++a) {
+    const StressFrf f = stress_frf(fields[a], kx / k, ky / k);
+    for (int c = 0; c < 6; ++c)
+      for (int ld = 0; ld < s.nb_loads; ++ld) acc[index[a]][c][ld] += w * f.stress[c][ld];
   }
 }
 
-// The real lattice quarters G = i^(odd_x + odd_y) F of every (component, load), F the folded
-// spectrum: real because each entry of T4 is real or imaginary with the parity of stress_frf_odd.
-Quarters sample_quarters(const LayerModes& modes, const Lattice& l, double depth,
-                         InterfaceSide side, int nb_loads, const StressFrf& at_zero, int threads,
-                         long long& evaluations) {
-  const std::ptrdiff_t hx = l.mx / 2 + 1;
-  const std::ptrdiff_t hy = l.my / 2 + 1;
-  Quarters g;
-  for (int c = 0; c < 6; ++c)
-    for (int ld = 0; ld < nb_loads; ++ld) g[c][ld] = Field::Zero(hx, hy);
+// The real lattice quarters G = i^(odd_x + odd_y) F of every plane, component and load, F the
+// alias-folded spectrum: real because each entry of T4 is real or imaginary with the parity of
+// stress_frf_odd.
+std::vector<Quarters> sample_quarters(const Sampling& s, int threads, long long& evaluations) {
+  const Lattice& l = s.lattice;
+  const std::ptrdiff_t hx = l.hx;
+  const std::ptrdiff_t hy = l.hy;
+  std::vector<Quarters> g(s.depths.size());
+  for (Quarters& q : g)
+    for (int c = 0; c < 6; ++c)
+      for (int ld = 0; ld < s.nb_loads; ++ld) q[c][ld] = Field::Zero(hx, hy);
   std::atomic<long long> count{0};
   detail::parallel_for(0, hy, threads, [&](std::ptrdiff_t jy) {
     long long local = 0;
+    std::vector<Sums> acc(s.depths.size());
+    std::vector<double> active;
+    std::vector<std::size_t> index;
     for (std::ptrdiff_t jx = 0; jx < hx; ++jx) {
-      std::array<std::array<std::complex<double>, 3>, 6> acc{};
-      fold_point(modes, l, depth, side, nb_loads, at_zero, jx, jy, acc, local);
-      for (int c = 0; c < 6; ++c)
-        for (int ld = 0; ld < nb_loads; ++ld) {
-          const auto odd = stress_frf_odd(c, ld);
-          std::complex<double> v = acc[c][ld];
-          for (int n = 0; n < int(odd[0]) + int(odd[1]); ++n) v *= std::complex<double>(0.0, 1.0);
-          g[c][ld](jx, jy) = v.real();
+      std::fill(acc.begin(), acc.end(), Sums{});
+      for (int p = -l.px; p <= l.px; ++p) {
+        const double kx = static_cast<double>(jx) * l.dkx + 2.0 * kPi * p / l.dx;
+        const double wx = sinc(0.5 * kx * l.dx);
+        for (int q = -l.py; q <= l.py; ++q) {
+          const double ky = static_cast<double>(jy) * l.dky + 2.0 * kPi * q / l.dy;
+          add_wavevector(s, kx, ky, wx * sinc(0.5 * ky * l.dy), acc, active, index, local);
         }
+      }
+      for (std::size_t d = 0; d < acc.size(); ++d)
+        for (int c = 0; c < 6; ++c)
+          for (int ld = 0; ld < s.nb_loads; ++ld) {
+            const auto odd = stress_frf_odd(c, ld);
+            std::complex<double> v = acc[d][c][ld];
+            for (int n = 0; n < int(odd[0]) + int(odd[1]); ++n) v *= std::complex<double>(0, 1);
+            g[d][c][ld](jx, jy) = v.real();
+          }
     }
     count += local;
   });
@@ -147,34 +223,75 @@ Quarters sample_quarters(const LayerModes& modes, const Lattice& l, double depth
 
 }  // namespace
 
+std::vector<StressPlaneKernel> stress_plane_kernels(const Grid& grid, const LayerStack& stack,
+                                                    std::span<const double> depths,
+                                                    InterfaceSide side, bool tangential,
+                                                    const StressKernelOptions& options,
+                                                    std::vector<StressKernelReport>* reports) {
+  const auto start = std::chrono::steady_clock::now();
+  validate(grid, depths, options);
+  std::vector<StressKernelReport> r(depths.size());
+  const int nb_loads = tangential ? 3 : 1;
+  const LayerModes modes(stack);
+  const std::vector<StressFrf> at_zero =
+      limit_at_zero(modes, grid, depths, stack.total_thickness(), side);
+  std::vector<StressPlaneKernel> kernels(depths.size());
+  for (std::size_t d = 0; d < depths.size(); ++d) {
+    kernels[d].depth = depths[d];
+    for (int c = 0; c < 6; ++c)
+      for (int ld = 0; ld < nb_loads; ++ld)
+        kernels[d].coefficients[c][ld] = Field::Zero(grid.nx(), grid.ny());
+  }
+  long long evaluations = 0;
+  // K(x) = (1/(mx my)) sum_k F(k) exp(+i k.x) = (1/(mx my)) i^(ox + oy) T[F] = T[G]/(mx my),
+  // T the parity transform: the coefficients are real.
+  const auto add = [&](const Lattice& l) {
+    long long count = 0;
+    const std::vector<Quarters> g =
+        sample_quarters({modes, l, depths, side, nb_loads, at_zero}, options.threads, count);
+    evaluations += count;
+    const double scale = 1.0 / (static_cast<double>(l.mx) * static_cast<double>(l.my));
+    for (std::size_t d = 0; d < depths.size(); ++d)
+      for (int c = 0; c < 6; ++c)
+        for (int ld = 0; ld < nb_loads; ++ld) {
+          const auto odd = stress_frf_odd(c, ld);
+          if (l.band) {
+            kernels[d].coefficients[c][ld] +=
+                scale * band_parity_transform(g[d][c][ld], odd[0], odd[1], l.mx, l.my, grid.nx(),
+                                              grid.ny());
+          } else {
+            const Field t = parity_transform(g[d][c][ld], odd[0], odd[1]);
+            kernels[d].coefficients[c][ld] += scale * t.topLeftCorner(grid.nx(), grid.ny());
+          }
+        }
+  };
+  if (options.alpha == 2) {
+    add(make_lattice(grid, depths, options, 2, Part::whole, 0.0, &r));
+  } else {
+    // The short-range part on DC-FFT's own lattice (its images, >= L = 32 sigma away, are
+    // negligible), the band-limited long-range part on the alpha-extended one.
+    const double sigma = std::min(grid.lx(), grid.ly()) / 32.0;
+    add(make_lattice(grid, depths, options, 2, Part::short_range, sigma, &r));
+    add(make_lattice(grid, depths, options, options.alpha, Part::long_range, sigma, nullptr));
+  }
+  const double seconds = detail::seconds_since(start);
+  for (StressKernelReport& x : r) {
+    x.frf_evaluations = evaluations;
+    x.seconds = seconds;
+  }
+  if (reports) *reports = r;
+  return kernels;
+}
+
 StressPlaneKernel stress_plane_kernel(const Grid& grid, const LayerStack& stack, double depth,
                                       InterfaceSide side, bool tangential,
                                       const StressKernelOptions& options,
                                       StressKernelReport* report) {
-  const auto start = std::chrono::steady_clock::now();
-  validate(grid, depth, options);
-  StressKernelReport r;
-  const Lattice l = make_lattice(grid, depth, options, r);
-  const int nb_loads = tangential ? 3 : 1;
-  const LayerModes modes(stack);
-  const StressFrf at_zero = limit_at_zero(modes, grid, depth, stack.total_thickness(), side);
-  const Quarters g =
-      sample_quarters(modes, l, depth, side, nb_loads, at_zero, options.threads, r.frf_evaluations);
-
-  // K(x) = (1/(mx my)) sum_k F(k) exp(+i k.x) = (1/(mx my)) i^(ox + oy) T[F] = T[G]/(mx my),
-  // T the parity transform: the coefficients are real.
-  StressPlaneKernel kernel;
-  kernel.depth = depth;
-  const double scale = 1.0 / (static_cast<double>(l.mx) * static_cast<double>(l.my));
-  for (int c = 0; c < 6; ++c)
-    for (int ld = 0; ld < nb_loads; ++ld) {
-      const auto odd = stress_frf_odd(c, ld);
-      const Field t = parity_transform(g[c][ld], odd[0], odd[1]);
-      kernel.coefficients[c][ld] = scale * t.topLeftCorner(grid.nx(), grid.ny());
-    }
-  r.seconds = detail::seconds_since(start);
-  if (report) *report = r;
-  return kernel;
+  std::vector<StressKernelReport> r;
+  const double z[1] = {depth};
+  StressPlaneKernel k = stress_plane_kernels(grid, stack, z, side, tangential, options, &r).front();
+  if (report) *report = r.front();
+  return k;
 }
 
 }  // namespace coatfft

@@ -10,6 +10,7 @@
 // (alpha - 1) L, measured in docs/stress.md.
 #include <array>
 #include <span>
+#include <vector>
 
 #include "../core/grid.hpp"
 #include "../core/types.hpp"
@@ -35,7 +36,7 @@ struct StressKernelOptions {
 struct StressKernelReport {
   int alias_order = 0;            ///< largest alias order folded
   bool alias_capped = false;      ///< the series needed more than max_alias_order
-  long long frf_evaluations = 0;  ///< LayerModes solves
+  long long frf_evaluations = 0;  ///< LayerModes solves of the call (shared by its planes)
   double seconds = 0.0;           ///< wall-clock time [s]
 };
 
@@ -51,6 +52,14 @@ struct StressPlaneKernel {
 /// The kernel of the plane at `depth` [m] (finite, >= 0; on an interface in the medium `side`
 /// names) of the body `stack`, on `grid`, for the pressure and, if `tangential`, the tractions.
 /// Throws InvalidArgument on bad options or depth.
+/// The kernels of several planes at once: one LayerModes solve per wavevector serves every plane
+/// (the cost is about that of the shallowest plane; the memory grows with the planes). The same
+/// arguments and errors as stress_plane_kernel; `reports`, when given, gets one per plane.
+std::vector<StressPlaneKernel> stress_plane_kernels(
+    const Grid& grid, const LayerStack& stack, std::span<const double> depths, InterfaceSide side,
+    bool tangential, const StressKernelOptions& options = {},
+    std::vector<StressKernelReport>* reports = nullptr);
+
 StressPlaneKernel stress_plane_kernel(const Grid& grid, const LayerStack& stack, double depth,
                                       InterfaceSide side, bool tangential,
                                       const StressKernelOptions& options = {},

@@ -70,16 +70,23 @@ StressOperator::StressOperator(const Grid& grid, const LayerStack& stack,
   hx_ = mx_ / 2 + 1;
   hy_ = my_ / 2 + 1;
   const double scale = 1.0 / (static_cast<double>(mx_) * static_cast<double>(my_));
-  for (double z : depths_) {
-    StressKernelReport report;
-    const StressPlaneKernel kernel =
-        stress_plane_kernel(grid_, stack, z, options.side, tangential_, options.kernel, &report);
-    auto& plane = spectra_.emplace_back();
-    for (int c = 0; c < 6; ++c)
-      for (int l = 0; l < nb_loads_; ++l)
-        plane[c][l] =
-            padded_spectrum(kernel.coefficients[c][l], hx_, hy_, stress_frf_odd(c, l), scale);
-    reports_.push_back(report);
+  // The planes' kernels are made in groups: one FRF solve per wavevector serves a group, and
+  // a group's lattice quarters (six per plane) bound the memory.
+  constexpr std::size_t kGroup = 8;
+  for (std::size_t first = 0; first < depths_.size(); first += kGroup) {
+    const std::size_t count = std::min(kGroup, depths_.size() - first);
+    std::vector<StressKernelReport> reports;
+    const std::vector<StressPlaneKernel> kernels =
+        stress_plane_kernels(grid_, stack, std::span<const double>(depths_).subspan(first, count),
+                             options.side, tangential_, options.kernel, &reports);
+    for (const StressPlaneKernel& kernel : kernels) {
+      auto& plane = spectra_.emplace_back();
+      for (int c = 0; c < 6; ++c)
+        for (int l = 0; l < nb_loads_; ++l)
+          plane[c][l] =
+              padded_spectrum(kernel.coefficients[c][l], hx_, hy_, stress_frf_odd(c, l), scale);
+    }
+    reports_.insert(reports_.end(), reports.begin(), reports.end());
   }
   plan_transforms(options.planning);
   setup_seconds_ = detail::seconds_since(start);

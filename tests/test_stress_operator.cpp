@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "loads/hertz_pressure.hpp"
 #include "stress/stress_kernel.hpp"
+#include "stress/stress_invariants.hpp"
 #include "stress/stress_operator.hpp"
 
 using namespace coatfft;
@@ -150,4 +151,23 @@ TEST_CASE("stress operator refuses bad input", "[stress_operator]") {
   p(2, 3) = NAN;
   CHECK_THROWS_AS(op.apply(p, nullptr, nullptr, s), InvalidArgument);
   CHECK_THROWS_AS(op.apply(Field::Zero(8, 7), nullptr, nullptr, s), InvalidArgument);
+}
+
+TEST_CASE("stress invariants against hand-computed states", "[stress_operator]") {
+  // Uniaxial tension: von Mises = Tresca * 2 = s.
+  CHECK(von_mises({5.0, 0, 0, 0, 0, 0}) == Approx(5.0).epsilon(1e-15));
+  CHECK(tresca({5.0, 0, 0, 0, 0, 0}) == Approx(2.5).epsilon(1e-15));
+  // Pure shear tau in xy: principal (tau, 0, -tau), von Mises sqrt(3) tau.
+  const auto p = principal_stresses({0, 0, 0, 0, 0, 2.0});
+  CHECK(p[0] == Approx(2.0).epsilon(1e-14));
+  CHECK(p[1] == Approx(0.0).margin(1e-14));
+  CHECK(p[2] == Approx(-2.0).epsilon(1e-14));
+  CHECK(von_mises({0, 0, 0, 0, 0, 2.0}) == Approx(2.0 * std::sqrt(3.0)).epsilon(1e-15));
+  // Hydrostatic: no shear at all. A rotated state: invariants do not depend on the frame
+  // (the xz shear 3 on diag(1, 0, -1) rotated to principal axes by hand).
+  CHECK(von_mises({-4, -4, -4, 0, 0, 0}) == Approx(0.0).margin(1e-15));
+  const auto q = principal_stresses({1, 0, -1, 0, 3, 0});
+  CHECK(q[0] == Approx(std::sqrt(10.0)).epsilon(1e-14));
+  CHECK(q[2] == Approx(-std::sqrt(10.0)).epsilon(1e-14));
+  CHECK(tresca({1, 0, -1, 0, 3, 0}) == Approx(std::sqrt(10.0)).epsilon(1e-14));
 }

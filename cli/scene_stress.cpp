@@ -1,0 +1,129 @@
+#include "cli/scene_stress.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+
+#include "core/detail/timing.hpp"
+#include "core/error.hpp"
+#include "core/fft_size.hpp"
+#include "stress/stress_invariants.hpp"
+#include "stress/stress_operator.hpp"
+
+namespace coatfft::cli {
+
+namespace {
+
+StressVector at(const PlaneStress& s, std::ptrdiff_t i, std::ptrdiff_t j) {
+  return {s[0](i, j), s[1](i, j), s[2](i, j), s[3](i, j), s[4](i, j), s[5](i, j)};
+}
+
+// The largest value of f over the planes, with where it is.
+struct Peak {
+  double value = -INFINITY, x = 0, y = 0, z = 0;
+  void take(double v, double xv, double yv, double zv) {
+    if (v > value) *this = {v, xv, yv, zv};
+  }
+  nlohmann::json json(bool with_z = true) const {
+    nlohmann::json j{{"value", value}, {"x", x}, {"y", y}};
+    if (with_z) j["z"] = z;
+    return j;
+  }
+};
+
+// Appends plane s (6 components, then von Mises) in C order (ny, nx) rows, y slowest.
+void append_plane(const PlaneStress& s, std::vector<double>& stress, std::vector<double>& vm) {
+  for (const Field& c : s) stress.insert(stress.end(), c.data(), c.data() + c.size());
+  for (std::ptrdiff_t j = 0; j < s[0].cols(); ++j)
+    for (std::ptrdiff_t i = 0; i < s[0].rows(); ++i) vm.push_back(von_mises(at(s, i, j)));
+}
+
+// Appends the row j of plane s to the section arrays: (6, nx), then (nx).
+void append_row(const PlaneStress& s, std::ptrdiff_t j, std::vector<double>& section,
+                std::vector<double>& vm) {
+  for (const Field& c : s)
+    for (std::ptrdiff_t i = 0; i < c.rows(); ++i) section.push_back(c(i, j));
+  for (std::ptrdiff_t i = 0; i < s[0].rows(); ++i) vm.push_back(von_mises(at(s, i, j)));
+}
+
+void check_finite(const PlaneStress& s, double z) {
+  for (const Field& c : s)
+    COATFFT_REQUIRE(c.allFinite(), "[stress] the stresses at z = ", z,
+                    " m are not finite (an overflowing load?)");
+}
+
+}  // namespace
+
+StressRun compute_stress(const StressSpec& spec, const LayerStack& body, const Grid& grid,
+                         const Field& pressure, int threads) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<double> depths = stress_plane_depths(spec, body);
+  StressOperatorOptions options;
+  options.kernel.alpha = spec.alpha;
+  options.kernel.threads = threads;
+  options.side = spec.side;
+  StressOperator op(grid, body, depths, options);
+  const auto apply_start = std::chrono::steady_clock::now();
+  std::vector<PlaneStress> planes;
+  op.apply(pressure, nullptr, nullptr, planes);
+  const double apply_seconds = detail::seconds_since(apply_start);
+
+  StressRun run;
+  Peak mises, tensile;
+  const std::size_t n_requested = spec.depths.size() + std::size_t(spec.nz);
+  for (std::size_t p = 0; p < n_requested; ++p) {
+    check_finite(planes[p], depths[p]);
+    for (std::ptrdiff_t j = 0; j < grid.ny(); ++j)
+      for (std::ptrdiff_t i = 0; i < grid.nx(); ++i) {
+        const StressVector s = at(planes[p], i, j);
+        mises.take(von_mises(s), grid.x(i), grid.y(j), depths[p]);
+        tensile.take(principal_stresses(s)[0], grid.x(i), grid.y(j), depths[p]);
+      }
+    if (p < spec.depths.size())
+      append_plane(planes[p], run.stress, run.von_mises);
+    else
+      append_row(planes[p], grid.centre_j(), run.section, run.section_von_mises);
+  }
+  nlohmann::json interfaces = nlohmann::json::array();
+  for (std::size_t p = n_requested; p < depths.size(); ++p) {
+    check_finite(planes[p], depths[p]);
+    Peak shear;
+    const PlaneStress& s = planes[p];
+    for (std::ptrdiff_t j = 0; j < grid.ny(); ++j)
+      for (std::ptrdiff_t i = 0; i < grid.nx(); ++i)
+        shear.take(std::hypot(s[s_xz](i, j), s[s_yz](i, j)), grid.x(i), grid.y(j), depths[p]);
+    interfaces.push_back({{"depth", depths[p]}, {"max_shear", shear.json(false)}});
+  }
+  run.summary = {{"depths", spec.depths},
+                 {"at_interface", spec.side == InterfaceSide::below ? "below" : "above"},
+                 {"alpha", spec.alpha},
+                 {"max_von_mises", mises.json()},
+                 {"max_principal_tensile", tensile.json()},
+                 {"interfaces", interfaces},
+                 {"planes", depths.size()},
+                 {"setup_seconds", op.setup_seconds()},
+                 {"apply_seconds", apply_seconds},
+                 {"seconds", detail::seconds_since(start)}};
+  if (spec.section)
+    run.summary["section"] = {
+        {"y", grid.y(grid.centre_j())}, {"depth_max", spec.depth_max}, {"nz", spec.nz}};
+  return run;
+}
+
+double stress_memory_bytes(const StressSpec& spec, const LayerStack& body, const Grid& grid) {
+  const double planes = static_cast<double>(stress_plane_depths(spec, body).size());
+  const double hx = double(fast_even_fft_size(2 * grid.nx() - 1)) / 2 + 1;
+  const double hy = double(fast_even_fft_size(2 * grid.ny() - 1)) / 2 + 1;
+  const double cells = double(grid.nx()) * double(grid.ny());
+  // Per plane: six spectrum quarters and the six output fields (plus von Mises on output);
+  // while a group of up to 8 planes is built: six quarters of DC-FFT's lattice and six of the
+  // long-range band, about (34 alpha)^2 entries (sqrt(45) 32 alpha/(2 pi) per side).
+  const double group = std::min(planes, 8.0);
+  const double short_quarter = (grid.nx() + 1.0) * (grid.ny() + 1.0);
+  const double band = std::pow(34.0 * spec.alpha, 2);
+  return 8.0 *
+         (planes * (6 * hx * hy + 7 * cells) + group * 6 * (short_quarter + band) + 12 * hx * hy);
+}
+
+}  // namespace coatfft::cli
