@@ -34,7 +34,10 @@ void check_command(const CheckOptions& options) {
   const double applications = scene.contact ? contact_applications : 1.0;
   const std::optional<AutomaticChoice> automatic = resolve_automatic_method(scene, applications);
   check_memory(scene, options.max_memory);
-  if (scene.pressure) scene_pressure(scene);  // reads and checks the load as run does
+  if (scene.pressure) {  // reads and checks the loads as run does
+    const Field pressure = scene_pressure(scene);
+    scene_tractions(scene, pressure);
+  }
   OperatorReport report;
   report.method = scene.method.options.method;
   report.predicted_error = predicted_error(scene);

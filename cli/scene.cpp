@@ -421,6 +421,9 @@ ContactSpec read_contact(const toml::table& table, const Grid& grid, const Layer
   COATFFT_REQUIRE(max_iterations >= 1 && max_iterations <= 1000000, reader.where("max_iterations"),
                   " = ", max_iterations, " must be in 1..1000000");
   spec.max_iterations = static_cast<int>(max_iterations);
+  spec.friction = reader.number("friction", 0.0);
+  COATFFT_REQUIRE(spec.friction >= 0.0 && spec.friction <= 10.0, reader.where("friction"), " = ",
+                  spec.friction, " must be in [0, 10]");
   if (reader.has("indenter_material") || reader.has("indenter_E") || reader.has("indenter_nu")) {
     COATFFT_REQUIRE(stack_body != nullptr,
                     "[contact] an elastic indenter needs a homogeneous body given by [substrate] "
@@ -605,6 +608,42 @@ StressSpec read_stress(const toml::table& root, const Scene& scene) {
   return spec;
 }
 
+// [shear]: tangential tractions with a known pressure.
+ShearSpec read_shear(const toml::table& root, const std::filesystem::path& scene_dir) {
+  SectionReader reader(section(root, "shear", true), "shear");
+  ShearSpec spec;
+  spec.proportional = reader.choice("kind", "", {"proportional", "file"}) == "proportional";
+  if (spec.proportional) {
+    spec.friction = reader.number("mu");
+    COATFFT_REQUIRE(spec.friction >= 0.0 && spec.friction <= 10.0, reader.where("mu"), " = ",
+                    spec.friction, " must be in [0, 10]");
+    spec.along_x = reader.choice("direction", "x", {"x", "y"}) == "x";
+  } else {
+    for (auto [key, path] : {std::pair{"path_x", &spec.path_x}, {"path_y", &spec.path_y}})
+      if (reader.has(key)) {
+        *path = reader.string(key);
+        if (path->is_relative()) *path = scene_dir / *path;
+      }
+    COATFFT_REQUIRE(!spec.path_x.empty() || !spec.path_y.empty(),
+                    "[shear] kind = \"file\" needs path_x, path_y or both");
+  }
+  reader.finish();
+  return spec;
+}
+
+// Tangential tractions enter only the stresses, and on a body with a frictionless interface a
+// net tangential force has no equilibrium (the coating slides; docs/theory.md 2.3).
+void check_tangential(const Scene& scene, const char* key) {
+  COATFFT_REQUIRE(scene.stress.has_value(), key,
+                  " acts on the stresses only (the surface displacements do not include "
+                  "tangential tractions yet): add a [stress] section");
+  for (std::size_t i = 0; i < scene.body->coatings().size(); ++i)
+    COATFFT_REQUIRE(scene.body->coatings()[i].interface_below != Interface::frictionless, key,
+                    ": tangential tractions on a body with a frictionless interface (below "
+                    "coating ",
+                    i + 1, ") are not supported: a net tangential force has no equilibrium there");
+}
+
 // [frf]: the body as a table of its FRF. Love's coefficients (direct, dcfft) need a material,
 // which a table does not give, so those methods are refused here rather than when building.
 void read_frf(const toml::table& root, const std::filesystem::path& scene_dir, Scene& scene) {
@@ -631,7 +670,7 @@ toml::table parse_scene_text(const std::string& text, const std::filesystem::pat
   try {
     toml::table root = toml::parse(text, path.string());
     const std::set<std::string> known{"grid",   "substrate", "coating", "pressure", "contact",
-                                      "method", "output",    "frf",     "stress"};
+                                      "method", "output",    "frf",     "stress",   "shear"};
     for (auto&& [key, node] : root) {
       COATFFT_REQUIRE(known.count(std::string(key.str())), "unknown section or key \"",
                       detail::shorten(key.str()), "\"");
@@ -694,6 +733,17 @@ Scene read_scene(const std::filesystem::path& path) {
       scene.output.stress = !scene.stress->depths.empty();
       scene.output.stress_section = scene.stress->section;
     }
+    if (root.contains("shear")) {
+      COATFFT_REQUIRE(scene.pressure.has_value(),
+                      "[shear] goes with a known [pressure]; a "
+                      "[contact] scene gives its friction as [contact] friction = mu");
+      scene.shear = read_shear(root, scene_dir);
+      check_tangential(scene, "[shear]");
+      for (const auto& file : {scene.shear->path_x, scene.shear->path_y})
+        if (!file.empty()) scene.input_files.push_back(file);
+    }
+    if (scene.contact && scene.contact->friction > 0.0)
+      check_tangential(scene, "[contact] friction");
     // g(0) only shifts every displacement by one constant, which a load-controlled contact
     // absorbs in its approach; when that approach is not reported, g(0) is not computed at all.
     if (scene.contact && !scene.contact->report_approach)

@@ -76,6 +76,9 @@ struct ContactSpec {
   /// Elastic indenter (homogeneous bodies only): the body's modulus is replaced by the
   /// composite modulus 1/E* = 1/E*_body + 1/E*_indenter (Johnson section 4.2).
   std::optional<Material> indenter_material;
+  /// Coefficient of friction of a full sliding along +x: q_x = friction p on the body's surface,
+  /// for the stresses ([stress]); the normal contact is solved frictionless (docs/stress.md).
+  double friction = 0.0;
 };
 
 /// [output]: the files `coatfft run` writes (docs/scene_format.md, "[output]"). summary.json is
@@ -90,6 +93,17 @@ struct OutputSpec {
   bool stress = false;
   /// stress_section.npy and von_mises_section.npy: set by [stress] section
   bool stress_section = false;
+};
+
+/// [shear]: known tangential tractions that the surface receives, with a [pressure]: q = friction
+/// p along one axis (kind = "proportional"), or read from files (kind = "file"). They enter the
+/// stresses ([stress]); the surface displacements uz do not include them yet.
+struct ShearSpec {
+  bool proportional = true;      ///< kind = "proportional"; false: kind = "file"
+  double friction = 0.0;         ///< mu [-] of kind = "proportional"
+  bool along_x = true;           ///< direction = "x" (true) or "y"
+  std::filesystem::path path_x;  ///< kind = "file": q_x [Pa], .npy or .csv (ny, nx); may be empty
+  std::filesystem::path path_y;  ///< the same for q_y
 };
 
 /// [stress]: the stresses inside the body on planes z = const and on the section y = 0
@@ -133,6 +147,7 @@ struct Scene {
   std::filesystem::path frf_file = {};       ///< [frf] path
   std::optional<GridRefinement> refinement = std::nullopt;  ///< set when [grid] refine = "auto"
   std::optional<StressSpec> stress = std::nullopt;          ///< [stress]
+  std::optional<ShearSpec> shear = std::nullopt;            ///< [shear]
 };
 
 /// The depths of every plane a [stress] scene computes: the depths, then the section's rows,

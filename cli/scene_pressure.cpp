@@ -13,9 +13,9 @@ namespace coatfft::cli {
 
 namespace {
 
-Field read_pressure_file(const std::filesystem::path& file, const Grid& grid) {
+Field read_load_file(const std::filesystem::path& file, const Grid& grid, const char* key) {
   const std::string ext = file.extension().string();
-  COATFFT_REQUIRE(ext == ".npy" || ext == ".csv", "[pressure] path = ", file.string(),
+  COATFFT_REQUIRE(ext == ".npy" || ext == ".csv", key, " = ", file.string(),
                   ": must end in .npy or .csv");
   Field p = ext == ".npy" ? read_npy(file) : read_csv_matrix(file);
   COATFFT_REQUIRE(p.rows() == grid.nx() && p.cols() == grid.ny(), file.string(), ": shape (",
@@ -24,7 +24,7 @@ Field read_pressure_file(const std::filesystem::path& file, const Grid& grid) {
   for (Eigen::Index j = 0; j < p.cols(); ++j)
     for (Eigen::Index i = 0; i < p.rows(); ++i)
       COATFFT_REQUIRE(std::isfinite(p(i, j)), file.string(), ": row ", j, ", column ", i,
-                      ": pressure ", p(i, j), " is not finite");
+                      ": value ", p(i, j), " is not finite");
   return p;
 }
 
@@ -32,7 +32,7 @@ Field pressure_from_scene(const Scene& scene) {
   const PressureSpec& spec = *scene.pressure;
   switch (spec.kind) {
     case PressureKind::file:
-      return read_pressure_file(spec.file, scene.grid);
+      return read_load_file(spec.file, scene.grid, "[pressure] path");
     case PressureKind::hertz:
       return hertz_pressure(scene.grid, spec.amplitude, spec.radius, spec.sampling);
     case PressureKind::uniform_disk:
@@ -65,6 +65,20 @@ Field scene_pressure(const Scene& scene) {
   Field pressure = pressure_from_scene(scene);
   require_load(scene, pressure);
   return pressure;
+}
+
+Tractions scene_tractions(const Scene& scene, const Field& pressure) {
+  Tractions t;
+  if (scene.contact && scene.contact->friction > 0.0) t.qx = scene.contact->friction * pressure;
+  if (!scene.shear) return t;
+  const ShearSpec& spec = *scene.shear;
+  if (spec.proportional) {
+    (spec.along_x ? t.qx : t.qy) = spec.friction * pressure;
+    return t;
+  }
+  if (!spec.path_x.empty()) t.qx = read_load_file(spec.path_x, scene.grid, "[shear] path_x");
+  if (!spec.path_y.empty()) t.qy = read_load_file(spec.path_y, scene.grid, "[shear] path_y");
+  return t;
 }
 
 }  // namespace coatfft::cli

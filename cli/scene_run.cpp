@@ -257,6 +257,7 @@ SceneRun compute_scene(PreparedScene prepared, const SceneRunOptions& options) {
   // The stresses need the body as the scene gives it (an elastic indenter's composite modulus
   // replaces it for the contact solve only).
   const std::optional<StressSpec> stress = prepared.scene.stress;
+  const Scene scene_copy = prepared.scene;
   const std::optional<LayerStack> body = prepared.scene.body;
   const int threads = prepared.scene.method.options.threads;
   SceneRun run =
@@ -266,7 +267,8 @@ SceneRun compute_scene(PreparedScene prepared, const SceneRunOptions& options) {
   if (stress) {
     progress.stage("stresses on " + std::to_string(stress_plane_depths(*stress, *body).size()) +
                    " planes");
-    run.stress = compute_stress(*stress, *body, run.grid, run.pressure, threads);
+    const Tractions q = scene_tractions(scene_copy, run.pressure);
+    run.stress = compute_stress(*stress, *body, run.grid, run.pressure, q, threads);
     run.summary["stress"] = run.stress->summary;
   }
   return run;

@@ -56,17 +56,18 @@ void check_finite(const PlaneStress& s, double z) {
 }  // namespace
 
 StressRun compute_stress(const StressSpec& spec, const LayerStack& body, const Grid& grid,
-                         const Field& pressure, int threads) {
+                         const Field& pressure, const Tractions& q, int threads) {
   const auto start = std::chrono::steady_clock::now();
   const std::vector<double> depths = stress_plane_depths(spec, body);
   StressOperatorOptions options;
   options.kernel.alpha = spec.alpha;
   options.kernel.threads = threads;
   options.side = spec.side;
+  options.tangential = q.qx || q.qy;
   StressOperator op(grid, body, depths, options);
   const auto apply_start = std::chrono::steady_clock::now();
   std::vector<PlaneStress> planes;
-  op.apply(pressure, nullptr, nullptr, planes);
+  op.apply(pressure, q.qx ? &*q.qx : nullptr, q.qy ? &*q.qy : nullptr, planes);
   const double apply_seconds = detail::seconds_since(apply_start);
 
   StressRun run;
@@ -102,6 +103,7 @@ StressRun compute_stress(const StressSpec& spec, const LayerStack& body, const G
                  {"max_principal_tensile", tensile.json()},
                  {"interfaces", interfaces},
                  {"planes", depths.size()},
+                 {"tangential", options.tangential},
                  {"setup_seconds", op.setup_seconds()},
                  {"apply_seconds", apply_seconds},
                  {"seconds", detail::seconds_since(start)}};

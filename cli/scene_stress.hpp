@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cli/scene.hpp"
+#include "cli/scene_pressure.hpp"
 #include "core/types.hpp"
 
 namespace coatfft::cli {
@@ -19,11 +20,11 @@ struct StressRun {
   nlohmann::json summary;                 ///< summary.json's "stress"
 };
 
-/// The stresses of `spec` in the body `body` on `grid` under `pressure` (nx, ny) [Pa], with the
-/// library's StressOperator on `threads` threads. Throws InvalidArgument if a result is not
-/// finite.
+/// The stresses of `spec` in the body `body` on `grid` under `pressure` and the tractions `q`
+/// (each (nx, ny) [Pa]), with the library's StressOperator on `threads` threads. Throws
+/// InvalidArgument if a result is not finite.
 StressRun compute_stress(const StressSpec& spec, const LayerStack& body, const Grid& grid,
-                         const Field& pressure, int threads);
+                         const Field& pressure, const Tractions& q, int threads);
 
 /// Bytes compute_stress holds at its peak, for the scene's memory estimate.
 double stress_memory_bytes(const StressSpec& spec, const LayerStack& body, const Grid& grid);

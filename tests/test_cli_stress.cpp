@@ -1,0 +1,188 @@
+// [stress], [shear] and [contact] friction in scenes: the files and summary keys a run writes,
+// their shapes and their agreement with the library called directly, the tangential tractions
+// entering by linearity, and the refusals (one line, exit 2, no output).
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "cli/npy.hpp"
+#include "tests/cli_process.hpp"
+
+using namespace coatfft_test;
+
+namespace {
+
+const std::string kStress = std::string(kGoodScene) + R"([stress]
+depths = [2.5e-4, 5.0e-4]
+section = "xz"
+depth_max = 1.0e-3
+nz = 4
+alpha = 4
+)";
+
+const std::string kCoatedStress = R"([grid]
+nx = 24
+ny = 20
+lx = 3.0e-3
+ly = 2.5e-3
+[substrate]
+material = "steel"
+[[coating]]
+material = "titanium_nitride"
+thickness = 2e-4
+[pressure]
+kind = "hertz"
+p0 = 1.0e9
+a = 1.0e-3
+sampling = "cell_average"
+[method]
+name = "frf-split"
+[stress]
+depths = [1e-4, 2e-4]
+alpha = 4
+)";
+
+fs::path run_ok(const std::string& text, const std::string& name) {
+  const fs::path scene = write_scene(text, name, "", "");
+  const fs::path out = scratch(name + "_out");
+  fs::remove_all(out);
+  const ProcessResult r = run_coatfft("run " + scene.string() + " -o " + out.string());
+  INFO(r.stderr_text);
+  REQUIRE(r.status == 0);
+  return out;
+}
+
+nlohmann::json summary_of(const fs::path& out) {
+  nlohmann::json j;
+  std::ifstream(out / "summary.json") >> j;
+  return j;
+}
+
+// The raw shape tuple of a .npy header, e.g. "(2, 6, 33, 33)".
+std::string npy_shape(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::string header(256, '\0');
+  in.read(header.data(), 256);
+  const auto b = header.find("'shape': (");
+  const auto e = header.find(')', b);
+  return header.substr(b + 9, e - b - 8);
+}
+
+std::vector<double> npy_values(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::string all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t start = all.find('\n') + 1;
+  std::vector<double> v((all.size() - start) / 8);
+  std::memcpy(v.data(), all.data() + start, v.size() * 8);
+  return v;
+}
+
+}  // namespace
+
+TEST_CASE("[stress] writes the stress files with their shapes and summary keys", "[cli_stress]") {
+  const fs::path out = run_ok(kStress, "stress_files");
+  CHECK(npy_shape(out / "stress.npy") == "(2, 6, 33, 33)");
+  CHECK(npy_shape(out / "von_mises.npy") == "(2, 33, 33)");
+  CHECK(npy_shape(out / "stress_section.npy") == "(4, 6, 33)");
+  CHECK(npy_shape(out / "von_mises_section.npy") == "(4, 33)");
+  const nlohmann::json s = summary_of(out)["stress"];
+  for (const char* key : {"max_von_mises", "max_principal_tensile"})
+    for (const char* k : {"value", "x", "y", "z"}) CHECK(s[key].contains(k));
+  CHECK(s["interfaces"].empty());  // a homogeneous body
+  CHECK(s["planes"] == 6);
+
+  // The section row at z = 2.5e-4 (k = 1 of 4) is the row j = 16 (y = 0) of the first plane.
+  const std::vector<double> plane = npy_values(out / "stress.npy");
+  const std::vector<double> section = npy_values(out / "stress_section.npy");
+  for (int c = 0; c < 6; ++c)
+    for (int i = 0; i < 33; ++i) CHECK(section[c * 33 + i] == plane[(c * 33 + 16) * 33 + i]);
+  // sigma_zz on the axis: Johnson's (1985) eq. 3.45 within the coarse grid's error (dx = a/11).
+  const double szz = plane[(2 * 33 + 16) * 33 + 16];
+  CHECK(szz == Approx(-1e9 / (1 + 0.0625)).epsilon(5e-3));
+  // The largest von Mises stress is the largest entry of the von Mises files.
+  double vm = 0;
+  for (const auto* f : {"von_mises.npy", "von_mises_section.npy"})
+    for (double v : npy_values(out / f)) vm = std::max(vm, v);
+  CHECK(s["max_von_mises"]["value"].get<double>() == vm);
+}
+
+TEST_CASE("[stress] on a coated body reports the interface's largest shear", "[cli_stress]") {
+  const fs::path out = run_ok(kCoatedStress, "stress_coated");
+  const nlohmann::json s = summary_of(out)["stress"];
+  REQUIRE(s["interfaces"].size() == 1);
+  CHECK(s["interfaces"][0]["depth"].get<double>() == Approx(2e-4));
+  // The interface plane is the second requested plane; its largest |shear| is the same value.
+  const std::vector<double> plane = npy_values(out / "stress.npy");
+  double shear = 0;
+  const int n = 24 * 20;
+  for (int c = 0; c < n; ++c)
+    shear = std::max(shear, std::hypot(plane[(6 + 4) * n + c], plane[(6 + 3) * n + c]));
+  CHECK(s["interfaces"][0]["max_shear"]["value"].get<double>() == Approx(shear).epsilon(1e-12));
+}
+
+TEST_CASE("[shear] proportional adds mu times the unit-traction field", "[cli_stress]") {
+  // Linearity: the run with [shear] mu = 0.3 minus the run without equals 0.3 times (the run with
+  // mu = 1 minus the run without).
+  const std::string base = kStress;
+  const auto shear = [](const char* mu) {
+    return std::string("[shear]\nkind = \"proportional\"\nmu = ") + mu + "\ndirection = \"y\"\n";
+  };
+  const std::vector<double> s0 = npy_values(run_ok(base, "shear0") / "stress.npy");
+  const std::vector<double> s3 = npy_values(run_ok(base + shear("0.3"), "shear3") / "stress.npy");
+  const std::vector<double> s1 = npy_values(run_ok(base + shear("1.0"), "shear1") / "stress.npy");
+  double worst = 0, scale = 0;
+  for (std::size_t i = 0; i < s0.size(); ++i) {
+    worst = std::max(worst, std::abs((s3[i] - s0[i]) - 0.3 * (s1[i] - s0[i])));
+    scale = std::max(scale, std::abs(s1[i] - s0[i]));
+  }
+  CHECK(scale > 1e7);  // the traction does change the stresses
+  // Rounding of stresses of the size of p0 = 1e9 Pa in three runs.
+  CHECK(worst < 1e-12 * 1e9);
+  CHECK(summary_of(scratch("shear3_out"))["stress"]["tangential"] == true);
+}
+
+TEST_CASE("[shear] file equals proportional for the same tractions", "[cli_stress]") {
+  const fs::path prop =
+      run_ok(kStress + "[shear]\nkind = \"proportional\"\nmu = 0.25\n", "shear_p");
+  // q_x = 0.25 p written as a file.
+  const fs::path p_file = scratch("shear_qx.npy");
+  coatfft::cli::write_npy(p_file, 0.25 * coatfft::cli::read_npy(prop / "pressure.npy"));
+  const fs::path file = run_ok(
+      kStress + "[shear]\nkind = \"file\"\npath_x = \"" + p_file.string() + "\"\n", "shear_f");
+  CHECK(npy_values(prop / "stress.npy") == npy_values(file / "stress.npy"));
+}
+
+TEST_CASE("[stress], [shear] and friction refuse bad scenes with one line", "[cli_stress]") {
+  const std::string with_shear = kStress + "[shear]\nkind = \"proportional\"\nmu = 0.2\n";
+  const BadCase cases[] = {
+      {"stress_zero_depth", "depths = [2.5e-4, 5.0e-4]", "depths = [0.0]", "must be > 0"},
+      {"stress_nan", "depths = [2.5e-4, 5.0e-4]", "depths = [nan]", "finite"},
+      {"stress_alpha", "alpha = 4", "alpha = 1", "alpha"},
+      {"stress_alpha_big", "alpha = 4", "alpha = 33", "alpha"},
+      {"stress_section", "section = \"xz\"", "section = \"yz\"", "section"},
+      {"stress_nz", "nz = 4", "nz = 0", "nz"},
+      {"stress_depth_max", "depth_max = 1.0e-3", "depth_max = -1.0", "depth_max"},
+      {"stress_unknown", "alpha = 4", "alpha = 4\nplanes = 3", "unknown key"},
+      {"stress_at_interface", "alpha = 4", "alpha = 4\nat_interface = \"middle\"", "at_interface"},
+  };
+  for (const BadCase& c : cases) check_refused(kStress, c);
+  const BadCase shear_cases[] = {
+      {"shear_mu", "mu = 0.2", "mu = -1", "mu"},
+      {"shear_kind", "kind = \"proportional\"", "kind = \"random\"", "kind"},
+      {"shear_direction", "mu = 0.2", "mu = 0.2\ndirection = \"z\"", "direction"},
+      {"shear_no_path", "kind = \"proportional\"\nmu = 0.2", "kind = \"file\"", "path_x"},
+      {"shear_missing_file", "kind = \"proportional\"\nmu = 0.2",
+       "kind = \"file\"\npath_x = \"nothing_here.npy\"", "nothing_here.npy"},
+  };
+  for (const BadCase& c : shear_cases) check_refused(with_shear, c);
+  // [shear] without [stress]; with a frictionless interface; friction without [stress].
+  check_refused(std::string(kGoodScene) + "[shear]\nkind = \"proportional\"\nmu = 0.2\n",
+                {"shear_without_stress", "", "", "[stress]"});
+  check_refused(kCoatedStress + "[shear]\nkind = \"proportional\"\nmu = 0.2\n",
+                {"shear_frictionless", "thickness = 2e-4",
+                 "thickness = 2e-4\ninterface = \"frictionless\"", "frictionless"});
+  check_refused(std::string(kSmallContactScene) + "friction = 0.2\n",
+                {"friction_without_stress", "", "", "[stress]"});
+}
