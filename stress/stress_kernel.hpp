@@ -7,7 +7,7 @@
 // k + 2 pi (p/dx, q/dy) folded in up to the tolerance (no truncation at Nyquist), and brought to
 // space by a DCT/DST (docs/theory.md 2.8). The k = 0 sample is the FRF's mean over directions.
 // What remains is the periodisation of the kernel's far field by the images at distances >=
-// (alpha - 1) L, measured in docs/stress.md.
+// (alpha - 1) L, made small by a large alpha at little cost through an Ewald-type split.
 #include <array>
 #include <span>
 #include <vector>
@@ -21,8 +21,9 @@ namespace coatfft {
 
 struct StressKernelOptions {
   /// Period of the sampling lattice over the domain length, an integer >= 2 (2 is DC-FFT's own
-  /// padded lattice; the periodisation error falls like alpha^-3, docs/stress.md).
-  int alpha = 4;
+  /// padded lattice; the periodic images' error falls like alpha^-3, docs/theory.md 2.8). Above
+  /// 2 only the band-limited long-range part is sampled on it (about (34 alpha)^2 points).
+  int alpha = 16;
   /// Relative size [-] of the FRF terms left out of the alias series; in (0, 1e-3].
   double tolerance = 1e-12;
   /// Largest alias order |p|, |q| folded (>= 0). Planes much shallower than a cell need

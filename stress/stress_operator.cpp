@@ -15,13 +15,19 @@
 
 namespace coatfft {
 
+// The padded transforms pruned and blocked as in DcfftOperator: the x transforms run on the ny
+// data rows only (the padding rows are zero on input and not wanted on output), in place; the y
+// transforms on cache-sized blocks of columns gathered contiguous. The loads' spectra are kept
+// column-major, [kx][ky], so that each block of a component is formed in place from them. A
+// plane's six inverse transforms then cost about three surface applications.
 struct StressOperator::Transforms {
-  FftwRealBuffer real;                    // (my, mx) padded load, then one stress component
-  std::array<FftwComplexBuffer, 3> load;  // (my, hx) spectra of the loads
+  FftwComplexBuffer rows;                 // (ny, hx); its real view has row stride 2 hx
+  std::array<FftwComplexBuffer, 3> load;  // (hx, my) spectra of the loads, column-major
   std::array<bool, 3> present{};          // loads given to apply()
-  FftwComplexBuffer work;                 // (my, hx) spectrum of one stress component
-  std::array<FftwPlan, 3> forward;        // real -> load[l]
-  FftwPlan backward;                      // work -> real
+  FftwComplexBuffer block;                // (block_cols, my) columns
+  std::ptrdiff_t block_cols = 1;
+  FftwPlan forward_x, backward_x;  // in place on rows
+  FftwPlan forward_y, backward_y;  // in place on block
 };
 
 namespace {
@@ -49,7 +55,8 @@ Field padded_spectrum(const Field& coefficients, std::ptrdiff_t hx, std::ptrdiff
                       std::array<bool, 2> odd, double scale) {
   Field quarter = Field::Zero(hx, hy);
   quarter.topLeftCorner(coefficients.rows(), coefficients.cols()) = coefficients;
-  return scale * parity_transform(quarter, odd[0], odd[1]);
+  // Transposed to (hy, hx): apply() reads it along ky.
+  return scale * parity_transform(quarter, odd[0], odd[1]).transpose();
 }
 
 }  // namespace
@@ -99,17 +106,32 @@ StressOperator& StressOperator::operator=(StressOperator&&) noexcept = default;
 void StressOperator::plan_transforms(Planning planning) {
   transforms_ = std::make_unique<Transforms>();
   Transforms& t = *transforms_;
-  const auto complex_size = static_cast<std::size_t>(my_ * hx_);
-  t.real = FftwRealBuffer(static_cast<std::size_t>(my_ * mx_));
-  for (int l = 0; l < nb_loads_; ++l) t.load[l] = FftwComplexBuffer(complex_size);
-  t.work = FftwComplexBuffer(complex_size);
-  const unsigned flags = fftw_flags(planning);
-  const int my = static_cast<int>(my_), mx = static_cast<int>(mx_);
+  const std::ptrdiff_t ny = grid_.ny();
+  t.rows = FftwComplexBuffer(static_cast<std::size_t>(ny * hx_));
   for (int l = 0; l < nb_loads_; ++l)
-    t.forward[l] = FftwPlan::create(
-        1, [&] { return fftw_plan_dft_r2c_2d(my, mx, t.real.data(), t.load[l].data(), flags); });
-  t.backward = FftwPlan::create(
-      1, [&] { return fftw_plan_dft_c2r_2d(my, mx, t.work.data(), t.real.data(), flags); });
+    t.load[l] = FftwComplexBuffer(static_cast<std::size_t>(hx_ * my_));
+  // About 64 KiB of columns per block, as DcfftOperator.
+  t.block_cols = std::clamp<std::ptrdiff_t>(64 * 1024 / (my_ * 16), 1, hx_);
+  t.block = FftwComplexBuffer(static_cast<std::size_t>(t.block_cols * my_));
+  const unsigned flags = fftw_flags(planning);
+  const int mx = static_cast<int>(mx_), my = static_cast<int>(my_), hx = static_cast<int>(hx_);
+  const int n_x[1] = {mx}, n_y[1] = {my}, bw = static_cast<int>(t.block_cols);
+  double* real = reinterpret_cast<double*>(t.rows.data());
+  fftw_complex* rows = t.rows.data();
+  fftw_complex* block = t.block.data();
+  t.forward_x = FftwPlan::create(1, [&] {
+    return fftw_plan_many_dft_r2c(1, n_x, static_cast<int>(ny), real, nullptr, 1, 2 * hx, rows,
+                                  nullptr, 1, hx, flags);
+  });
+  t.backward_x = FftwPlan::create(1, [&] {
+    return fftw_plan_many_dft_c2r(1, n_x, static_cast<int>(ny), rows, nullptr, 1, hx, real, nullptr,
+                                  1, 2 * hx, flags);
+  });
+  for (auto [plan, sign] : {std::pair{&t.forward_y, FFTW_FORWARD}, {&t.backward_y, FFTW_BACKWARD}})
+    *plan = FftwPlan::create(1, [&, sign = sign] {
+      return fftw_plan_many_dft(1, n_y, bw, block, nullptr, 1, my, block, nullptr, 1, my, sign,
+                                flags);
+    });
 }
 
 void StressOperator::transform_load(int load, const Field* field) {
@@ -119,36 +141,109 @@ void StressOperator::transform_load(int load, const Field* field) {
   if (field->rows() != grid_.nx() || field->cols() != grid_.ny())
     throw InvalidArgument("stress operator: a load's shape is not the grid's (nx, ny)");
   if (!field->allFinite()) throw InvalidArgument("stress operator: a load holds NaN or Inf");
-  double* r = t.real.data();
-  std::fill(r, r + my_ * mx_, 0.0);
-  for (std::ptrdiff_t j = 0; j < grid_.ny(); ++j)
-    for (std::ptrdiff_t i = 0; i < grid_.nx(); ++i) r[j * mx_ + i] = (*field)(i, j);
-  t.forward[load].execute();
+  const std::ptrdiff_t nx = grid_.nx(), ny = grid_.ny();
+  double* real = reinterpret_cast<double*>(t.rows.data());
+  for (std::ptrdiff_t j = 0; j < ny; ++j) {
+    double* row = real + j * 2 * hx_;
+    for (std::ptrdiff_t i = 0; i < nx; ++i) row[i] = (*field)(i, j);
+    std::fill(row + nx, row + 2 * hx_, 0.0);
+  }
+  t.forward_x.execute();
+  const auto* rows = as_complex(t.rows.data());
+  auto* block = as_complex(t.block.data());
+  auto* spectrum = as_complex(t.load[load].data());
+  for (std::ptrdiff_t c0 = 0; c0 < hx_; c0 += t.block_cols) {
+    const std::ptrdiff_t width = std::min(t.block_cols, hx_ - c0);
+    std::fill(block, block + t.block_cols * my_, std::complex<double>{});
+    for (std::ptrdiff_t ky = 0; ky < ny; ++ky)
+      for (std::ptrdiff_t c = 0; c < width; ++c) block[c * my_ + ky] = rows[ky * hx_ + c0 + c];
+    t.forward_y.execute();
+    std::copy(block, block + width * my_, spectrum + c0 * my_);
+  }
 }
 
-// work = sum over the loads of the component's padded spectrum times the load's: the stored
-// quarter R gives (-i)^(odd_x + odd_y) R(kx, |ky|), with R's sign flipped for ky < 0 when odd in y.
-void StressOperator::multiply_spectra(int plane, int component) {
+namespace {
+
+// w[i] += (-i)^Q k[i] s[i] for complex w, s (as pairs of doubles) and real k, i in [0, n); and
+// the same with k read backwards from k_end (k_end[-i]): the mirrored rows ky > my/2. Plain real
+// arithmetic: a complex product would check for NaN at every element.
+template <int Q>
+void accumulate(double* w, const double* k, int step, const double* s, std::ptrdiff_t n) {
+  for (std::ptrdiff_t i = 0; i < n; ++i, k += step) {
+    const double a = *k * s[2 * i], b = *k * s[2 * i + 1];
+    if constexpr (Q == 0) {
+      w[2 * i] += a, w[2 * i + 1] += b;
+    } else if constexpr (Q == 1) {
+      w[2 * i] += b, w[2 * i + 1] -= a;
+    } else if constexpr (Q == 2) {
+      w[2 * i] -= a, w[2 * i + 1] -= b;
+    } else {
+      w[2 * i] -= b, w[2 * i + 1] += a;
+    }
+  }
+}
+
+void accumulate(int quarter_turns, double* w, const double* k, int step, const double* s,
+                std::ptrdiff_t n) {
+  switch (quarter_turns % 4) {
+    case 0:
+      return accumulate<0>(w, k, step, s, n);
+    case 1:
+      return accumulate<1>(w, k, step, s, n);
+    case 2:
+      return accumulate<2>(w, k, step, s, n);
+    default:
+      return accumulate<3>(w, k, step, s, n);
+  }
+}
+
+}  // namespace
+
+// The block of columns c0.. of one component: the sum over the loads of its padded spectrum times
+// the load's. The stored quarter R, (hy, hx), gives (-i)^(odd_x + odd_y) R(|ky|, kx), with R's
+// sign flipped (two more quarter turns) for ky < 0 when odd in y.
+void StressOperator::multiply_block(int plane, int component, std::ptrdiff_t c0,
+                                    std::ptrdiff_t width) {
   Transforms& t = *transforms_;
-  auto* work = as_complex(t.work.data());
-  std::fill(work, work + my_ * hx_, std::complex<double>{});
+  auto* block = reinterpret_cast<double*>(t.block.data());
+  std::fill(block, block + 2 * t.block_cols * my_, 0.0);
+  const std::ptrdiff_t half = my_ / 2;
   for (int l = 0; l < nb_loads_; ++l) {
     if (!t.present[l]) continue;
     const auto odd = stress_frf_odd(component, l);
-    const int n_odd = int(odd[0]) + int(odd[1]);
-    const std::complex<double> phase = n_odd == 0   ? 1.0
-                                       : n_odd == 1 ? std::complex<double>(0, -1)
-                                                    : -1.0;
+    const int turns = int(odd[0]) + int(odd[1]);
+    const int mirrored_turns = turns + (odd[1] ? 2 : 0);
     const Field& r = spectra_[plane][component][l];
-    const auto* in = as_complex(t.load[l].data());
-    for (std::ptrdiff_t jy = 0; jy < my_; ++jy) {
-      const bool negative = jy > my_ / 2;
-      const std::ptrdiff_t jq = negative ? my_ - jy : jy;
-      const std::complex<double> f = (negative && odd[1]) ? -phase : phase;
-      for (std::ptrdiff_t jx = 0; jx < hx_; ++jx)
-        work[jy * hx_ + jx] += f * r(jx, jq) * in[jy * hx_ + jx];
+    const auto* in = reinterpret_cast<const double*>(t.load[l].data());
+    for (std::ptrdiff_t c = 0; c < width; ++c) {
+      const double* k = &r(0, c0 + c);
+      const double* s = in + 2 * (c0 + c) * my_;
+      double* w = block + 2 * c * my_;
+      accumulate(turns, w, k, 1, s, half + 1);
+      accumulate(mirrored_turns, w + 2 * (half + 1), k + (my_ - half - 1), -1, s + 2 * (half + 1),
+                 my_ - half - 1);
     }
   }
+}
+
+void StressOperator::inverse_into(int plane, int component, Field& out) {
+  Transforms& t = *transforms_;
+  const std::ptrdiff_t nx = grid_.nx(), ny = grid_.ny();
+  auto* rows = as_complex(t.rows.data());
+  const auto* block = as_complex(t.block.data());
+  for (std::ptrdiff_t c0 = 0; c0 < hx_; c0 += t.block_cols) {
+    const std::ptrdiff_t width = std::min(t.block_cols, hx_ - c0);
+    multiply_block(plane, component, c0, width);
+    t.backward_y.execute();
+    // Only the rows ky < ny of the inverse are inside the crop.
+    for (std::ptrdiff_t ky = 0; ky < ny; ++ky)
+      for (std::ptrdiff_t c = 0; c < width; ++c) rows[ky * hx_ + c0 + c] = block[c * my_ + ky];
+  }
+  t.backward_x.execute();
+  const double* real = reinterpret_cast<const double*>(t.rows.data());
+  out.resize(nx, ny);
+  for (std::ptrdiff_t j = 0; j < ny; ++j)
+    for (std::ptrdiff_t i = 0; i < nx; ++i) out(i, j) = real[j * 2 * hx_ + i];
 }
 
 void StressOperator::apply(const Field& pressure, const Field* qx, const Field* qy,
@@ -162,24 +257,17 @@ void StressOperator::apply(const Field& pressure, const Field* qx, const Field* 
     transform_load(load_qy, qy);
   }
   stress.resize(depths_.size());
-  const double* r = transforms_->real.data();
   for (std::size_t plane = 0; plane < depths_.size(); ++plane)
-    for (int c = 0; c < 6; ++c) {
-      multiply_spectra(static_cast<int>(plane), c);
-      transforms_->backward.execute();
-      Field& out = stress[plane][c];
-      out.resize(grid_.nx(), grid_.ny());
-      for (std::ptrdiff_t j = 0; j < grid_.ny(); ++j)
-        for (std::ptrdiff_t i = 0; i < grid_.nx(); ++i) out(i, j) = r[j * mx_ + i];
-    }
+    for (int c = 0; c < 6; ++c) inverse_into(static_cast<int>(plane), c, stress[plane][c]);
 }
 
 std::size_t StressOperator::memory_bytes() const {
   const auto quarter = static_cast<std::size_t>(hx_ * hy_) * sizeof(double);
   const auto complex_size = static_cast<std::size_t>(my_ * hx_) * 16;
   return spectra_.size() * 6 * static_cast<std::size_t>(nb_loads_) * quarter +
-         static_cast<std::size_t>(my_ * mx_) * sizeof(double) +
-         static_cast<std::size_t>(nb_loads_ + 1) * complex_size;
+         static_cast<std::size_t>(grid_.ny() * hx_) * 16 +
+         static_cast<std::size_t>(nb_loads_) * complex_size +
+         static_cast<std::size_t>(transforms_->block_cols * my_) * 16;
 }
 
 }  // namespace coatfft

@@ -65,15 +65,17 @@ class StressOperator {
 
   void plan_transforms(Planning planning);
   void transform_load(int load, const Field* field);
-  void multiply_spectra(int plane, int component);
+  void multiply_block(int plane, int component, std::ptrdiff_t c0, std::ptrdiff_t width);
+  void inverse_into(int plane, int component, Field& out);
 
   Grid grid_;
   std::vector<double> depths_;
   bool tangential_;
   int nb_loads_;
   std::ptrdiff_t mx_, my_, hx_, hy_;  // padded lengths, mx/2 + 1, my/2 + 1
-  // spectra_[plane][component][load]: the padded spectrum quarter (hx, hy) of the real
-  // coefficients, real: the spectrum is (-i)^(odd_x + odd_y) times it (parity_transform).
+  // spectra_[plane][component][load]: the padded spectrum quarter of the real coefficients,
+  // transposed to (hy, hx), real: the spectrum is (-i)^(odd_x + odd_y) times it
+  // (parity_transform).
   std::vector<std::array<std::array<Field, 3>, 6>> spectra_;
   std::unique_ptr<Transforms> transforms_;
   std::vector<StressKernelReport> reports_;
