@@ -24,9 +24,11 @@ from ._coatfft import (
     material_names,
     run_scene,
     solve_contact,
+    stresses,
     uniform_disk_displacement,
     uniform_disk_pressure,
     validate_frf,
+    von_mises,
 )
 
 __all__ = [
@@ -49,7 +51,9 @@ __all__ = [
     "material_names",
     "run_scene",
     "solve_contact",
+    "stresses",
     "uniform_disk_displacement",
     "uniform_disk_pressure",
     "validate_frf",
+    "von_mises",
 ]

@@ -21,6 +21,27 @@ namespace coatfft::python {
 
 namespace {
 
+// The arrays of a [stress] scene, shaped as the program's stress.npy, von_mises.npy,
+// stress_section.npy and von_mises_section.npy.
+void add_stress_arrays(const Grid& grid, const cli::StressRun& s, py::dict& out) {
+  const auto as_array = [](const std::vector<double>& v, std::vector<py::ssize_t> shape) {
+    py::array_t<double> a(shape);
+    std::copy(v.begin(), v.end(), a.mutable_data());
+    return a;
+  };
+  const py::ssize_t nx = grid.nx(), ny = grid.ny();
+  if (!s.von_mises.empty()) {
+    const py::ssize_t n = static_cast<py::ssize_t>(s.von_mises.size()) / (nx * ny);
+    out["stress"] = as_array(s.stress, {n, 6, ny, nx});
+    out["von_mises"] = as_array(s.von_mises, {n, ny, nx});
+  }
+  if (!s.section_von_mises.empty()) {
+    const py::ssize_t nz = static_cast<py::ssize_t>(s.section_von_mises.size()) / nx;
+    out["stress_section"] = as_array(s.section, {nz, 6, nx});
+    out["von_mises_section"] = as_array(s.section_von_mises, {nz, nx});
+  }
+}
+
 // The path as a str or any os.PathLike (pathlib.Path), as Python's own file functions take it.
 py::dict run_scene(const std::filesystem::path& path) {
   std::optional<cli::SceneRun> computed;
@@ -33,6 +54,7 @@ py::dict run_scene(const std::filesystem::path& path) {
   out["uz"] = array_from_field(std::move(run.uz));
   out["pressure"] = array_from_field(std::move(run.pressure));
   if (run.gap) out["gap"] = array_from_field(std::move(*run.gap));
+  if (run.stress) add_stress_arrays(run.grid, *run.stress, out);
   out["summary"] = dict_from_json_text(run.summary.dump());
   return out;
 }

@@ -39,5 +39,6 @@ PYBIND11_MODULE(_coatfft, m) {
   coatfft::python::bind_operator(m);
   coatfft::python::bind_contact(m);
   coatfft::python::bind_scene(m);
+  coatfft::python::bind_stress(m);
   coatfft::python::bind_timing(m);
 }

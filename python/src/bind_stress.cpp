@@ -1,0 +1,100 @@
+// stresses and von_mises: the stresses on planes inside a body (stress/stress_operator.hpp) under
+// a pressure and tangential tractions, as arrays of the layout of the program's stress.npy.
+#include <pybind11/stl.h>
+
+#include <optional>
+#include <vector>
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "bodies.hpp"
+#include "core/error.hpp"
+#include "stress/stress_invariants.hpp"
+#include "stress/stress_operator.hpp"
+
+namespace py = pybind11;
+
+namespace coatfft::python {
+
+namespace {
+
+InterfaceSide parse_side(const std::string& name) {
+  if (name == "below") return InterfaceSide::below;
+  if (name == "above") return InterfaceSide::above;
+  throw InvalidArgument("stresses: at_interface = \"" + name +
+                        "\" is not one of \"below\", \"above\"");
+}
+
+// (n_depths, 6, ny, nx) [Pa], components xx, yy, zz, yz, xz, xy, as stress.npy.
+py::array_t<double> stresses(py::handle body_object, const Grid& grid, std::vector<double> depths,
+                             const DoubleArray& pressure, const std::optional<DoubleArray>& qx,
+                             const std::optional<DoubleArray>& qy, const std::string& at_interface,
+                             int alpha, int threads) {
+  const Body body = body_from_object(body_object, "body");
+  COATFFT_REQUIRE(body.stack,
+                  "stresses: body must be a LayerStack or a Material (the fields at "
+                  "depth need the layers), not an Frf");
+  const Field p = field_from_array(pressure, grid, "stresses: pressure");
+  std::optional<Field> fx, fy;
+  if (qx) fx = field_from_array(*qx, grid, "stresses: qx");
+  if (qy) fy = field_from_array(*qy, grid, "stresses: qy");
+  StressOperatorOptions options;
+  options.side = parse_side(at_interface);
+  options.kernel.alpha = alpha;
+  options.kernel.threads = threads;
+  options.tangential = fx || fy;
+  std::vector<double> values;
+  {
+    py::gil_scoped_release release;
+    StressOperator op(grid, *body.stack, depths, options);
+    std::vector<PlaneStress> planes;
+    op.apply(p, fx ? &*fx : nullptr, fy ? &*fy : nullptr, planes);
+    values.reserve(planes.size() * 6 * static_cast<std::size_t>(grid.nb_cells()));
+    for (const PlaneStress& plane : planes)
+      for (const Field& c : plane) values.insert(values.end(), c.data(), c.data() + c.size());
+  }
+  const std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(depths.size()), 6, grid.ny(),
+                                       grid.nx()};
+  py::array_t<double> out(shape);
+  std::copy(values.begin(), values.end(), out.mutable_data());
+  return out;
+}
+
+// von Mises of every tensor of an array whose third axis from the end holds the six components.
+py::array_t<double> von_mises_of(const DoubleArray& stress) {
+  const py::ssize_t nd = stress.ndim();
+  COATFFT_REQUIRE(nd >= 3 && stress.shape(nd - 3) == 6,
+                  "von_mises: the array needs the six components (xx, yy, zz, yz, xz, xy) on its "
+                  "third axis from the end, as stresses() returns them");
+  std::vector<py::ssize_t> shape(stress.shape(), stress.shape() + nd);
+  const py::ssize_t points = shape[nd - 2] * shape[nd - 1];
+  py::ssize_t outer = 1;
+  for (py::ssize_t a = 0; a < nd - 3; ++a) outer *= shape[a];
+  shape.erase(shape.begin() + (nd - 3));
+  py::array_t<double> out(shape);
+  const double* s = stress.data();
+  double* v = out.mutable_data();
+  for (py::ssize_t o = 0; o < outer; ++o)
+    for (py::ssize_t q = 0; q < points; ++q) {
+      StressVector t;
+      for (int c = 0; c < 6; ++c) t[c] = s[(o * 6 + c) * points + q];
+      v[o * points + q] = von_mises(t);
+    }
+  return out;
+}
+
+}  // namespace
+
+void bind_stress(py::module_& m) {
+  m.def("stresses", &stresses, py::arg("body"), py::arg("grid"), py::arg("depths"),
+        py::arg("pressure"), py::arg("qx") = py::none(), py::arg("qy") = py::none(), py::kw_only(),
+        py::arg("at_interface") = "below", py::arg("alpha") = 16, py::arg("threads") = 1,
+        "Stresses [Pa] on the planes z = depths [m] inside `body` (a LayerStack or Material) "
+        "under the pressure (compression positive) and the tractions qx, qy the surface "
+        "receives, each (ny, nx) [Pa] of `grid`: an array (n_depths, 6, ny, nx), components xx, "
+        "yy, zz, yz, xz, xy, tension positive, z into the body (docs/stress.md).");
+  m.def("von_mises", &von_mises_of, py::arg("stress"),
+        "von Mises stress [Pa] of an array of stresses(), the component axis removed.");
+}
+
+}  // namespace coatfft::python

@@ -1,0 +1,86 @@
+"""stresses and von_mises: against Johnson's (1985) eq. 3.45 on the axis of a Hertz pressure,
+against the program (`coatfft run` of the [stress] example scene: run_scene and stresses give
+its files exactly), linearity in the tractions, and the errors."""
+import subprocess
+
+import numpy as np
+import pytest
+
+import coatfft
+from conftest import SCENES
+
+
+def hertz_case(n=65):
+    grid = coatfft.Grid(n, n, 4e-3, 4e-3)
+    return grid, coatfft.hertz_pressure(grid, 1.0, 1e-3, "cell_average")
+
+
+def test_axis_against_johnson(steel):
+    grid, p = hertz_case()
+    z = np.array([0.25, 0.5, 1.0])
+    s = coatfft.stresses(steel, grid, list(z * 1e-3), p)
+    assert s.shape == (3, 6, 65, 65)
+    nu = steel.nu
+    szz = -1 / (1 + z**2)
+    srr = -((1 + nu) * (1 - z * np.arctan(1 / z)) - 0.5 / (1 + z**2))
+    # The load's discretisation at a/16 (7e-4 of p0 for sigma_zz, docs/stress.md).
+    assert np.abs(s[:, 2, 32, 32] - szz).max() < 1e-3
+    assert np.abs(s[:, 0, 32, 32] - srr).max() < 1e-3
+    assert np.abs(s[:, 1, 32, 32] - srr).max() < 1e-3
+    assert np.abs(s[:, 4, 32, 32]).max() < 1e-14  # no shear on the axis
+
+
+def test_von_mises_formula():
+    rng = np.random.default_rng(3)
+    s = rng.normal(size=(2, 6, 4, 5))
+    xx, yy, zz, yz, xz, xy = s[:, 0], s[:, 1], s[:, 2], s[:, 3], s[:, 4], s[:, 5]
+    expected = np.sqrt(0.5 * ((xx - yy)**2 + (yy - zz)**2 + (zz - xx)**2)
+                       + 3 * (yz**2 + xz**2 + xy**2))
+    np.testing.assert_allclose(coatfft.von_mises(s), expected, rtol=1e-15, atol=0)
+    assert coatfft.von_mises(s[0]).shape == (4, 5)
+
+
+def test_equals_the_program(coatfft_exe, tmp_path, steel, tin):
+    scene = SCENES / "coated_hertz_stress.toml"
+    done = subprocess.run([coatfft_exe, "run", str(scene), "-o", str(tmp_path), "--quiet"],
+                          capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    run = coatfft.run_scene(str(scene))
+    for name in ("stress", "von_mises", "stress_section", "von_mises_section"):
+        np.testing.assert_array_equal(run[name], np.load(tmp_path / f"{name}.npy"))
+    # The library call with the scene's body, load and depths gives the same planes.
+    grid = coatfft.Grid(97, 97, 4e-3, 4e-3)
+    body = coatfft.LayerStack(steel, [coatfft.Coating(tin, 1e-4)])
+    s = coatfft.stresses(body, grid, [5e-5, 1e-4, 4.8e-4], run["pressure"])
+    np.testing.assert_array_equal(s, run["stress"])
+    np.testing.assert_array_equal(coatfft.von_mises(s), run["von_mises"])
+
+
+def test_tractions_are_linear(steel):
+    grid, p = hertz_case(33)
+    base = coatfft.stresses(steel, grid, [3e-4], p, alpha=4)
+    qx = coatfft.stresses(steel, grid, [3e-4], p, qx=0.3 * p, alpha=4)
+    qy = coatfft.stresses(steel, grid, [3e-4], p, qy=0.3 * p, alpha=4)
+    both = coatfft.stresses(steel, grid, [3e-4], p, qx=0.3 * p, qy=0.3 * p, alpha=4)
+    np.testing.assert_allclose(both - base, (qx - base) + (qy - base), atol=1e-14, rtol=0)
+    # Symmetry: q_y is q_x turned by 90 degrees on a square grid: sigma_yz(x, y) under q_y is
+    # sigma_xz(y, x) under q_x.
+    np.testing.assert_allclose((qy - base)[0, 3], (qx - base)[0, 4].T, atol=1e-14, rtol=0)
+
+
+def test_errors(steel, tin):
+    grid, p = hertz_case(17)
+    table = coatfft.TabulatedFrf(np.logspace(0, 8, 50), 1 / np.logspace(0, 8, 50) / 1e11)
+    with pytest.raises(ValueError, match="not an Frf"):
+        coatfft.stresses(table, grid, [1e-4], p)
+    with pytest.raises(ValueError, match="at_interface"):
+        coatfft.stresses(steel, grid, [1e-4], p, at_interface="middle")
+    with pytest.raises(ValueError, match="depth"):
+        coatfft.stresses(steel, grid, [-1e-4], p)
+    with pytest.raises(ValueError, match="shape"):
+        coatfft.stresses(steel, grid, [1e-4], p[:-1])
+    sliding = coatfft.LayerStack(steel, [coatfft.Coating(tin, 1e-4, "frictionless")])
+    with pytest.raises(ValueError, match="frictionless"):
+        coatfft.stresses(sliding, grid, [1e-4], p, qx=p)
+    with pytest.raises(ValueError, match="third axis"):
+        coatfft.von_mises(np.zeros((5, 4, 3)))
