@@ -18,6 +18,7 @@
 #include "core/error.hpp"
 #include "core/threads.hpp"
 #include "materials/catalog.hpp"
+#include "stress/stress_kernel.hpp"
 
 namespace coatfft::cli {
 
@@ -599,6 +600,20 @@ StressSpec read_stress(const toml::table& root, const Scene& scene) {
                   std::max(scene.grid.nx(), scene.grid.ny()),
                   " cells exceeds the 16384-point sampling lattice; lower alpha");
   spec.alpha = static_cast<int>(alpha);
+  {
+    // The kernels' cost, estimated before any work (stress/stress_kernel.hpp).
+    const std::vector<double> planes = stress_plane_depths(spec, *scene.body);
+    StressKernelOptions kernel;
+    kernel.alpha = spec.alpha;
+    if (!planes.empty()) {
+      const double z = *std::min_element(planes.begin(), planes.end());
+      const double n = stress_kernel_evaluations(scene.grid, planes, kernel);
+      COATFFT_REQUIRE(n <= kernel.max_evaluations, "[stress] the plane at z = ", z,
+                      " m is too shallow for a ", scene.grid.lx(), " x ", scene.grid.ly(),
+                      " m domain: its kernel needs about ", n, " FRF evaluations (limit ",
+                      kernel.max_evaluations, "; the cost grows like (L/z)^2)");
+    }
+  }
   COATFFT_REQUIRE(!spec.depths.empty() || spec.section,
                   "[stress] give depths = [...] or section = \"xz\" (or both)");
   COATFFT_REQUIRE(spec.depths.size() + std::size_t(spec.nz) <= max_stress_planes,

@@ -96,7 +96,14 @@ StressRun compute_stress(const StressSpec& spec, const LayerStack& body, const G
         shear.take(std::hypot(s[s_xz](i, j), s[s_yz](i, j)), grid.x(i), grid.y(j), depths[p]);
     interfaces.push_back({{"depth", depths[p]}, {"max_shear", shear.json(false)}});
   }
-  run.summary = {{"depths", spec.depths},
+  nlohmann::json warnings = nlohmann::json::array();
+  for (std::size_t p = 0; p < depths.size(); ++p)
+    if (op.kernel_reports()[p].alias_capped)
+      warnings.push_back(detail::concat("the alias series of the plane at z = ", depths[p],
+                                        " m was cut at order ", op.kernel_reports()[p].alias_order,
+                                        ": its stresses near the loads' edges are approximate"));
+  run.summary = {{"warnings", warnings},
+                 {"depths", spec.depths},
                  {"at_interface", spec.side == InterfaceSide::below ? "below" : "above"},
                  {"alpha", spec.alpha},
                  {"max_von_mises", mises.json()},

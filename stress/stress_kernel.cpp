@@ -123,6 +123,17 @@ Lattice make_lattice(const Grid& grid, std::span<const double> depths, const Str
   return l;
 }
 
+// Refused beyond options.max_evaluations (or at z = 0), before any work.
+void refuse_costly(const Grid& grid, std::span<const double> depths, const StressKernelOptions& o) {
+  const double z = *std::min_element(depths.begin(), depths.end());
+  const double estimate = stress_kernel_evaluations(grid, depths, o);
+  if (z == 0.0 || estimate > o.max_evaluations)
+    throw InvalidArgument(detail::concat(
+        "stress kernel: the plane at z = ", z, " m is so shallow against the domain (", grid.lx(),
+        " x ", grid.ly(), " m) that its kernel needs about ", estimate, " FRF evaluations (limit ",
+        o.max_evaluations, "): ask for deeper planes (the cost grows like (L/z)^2)"));
+}
+
 // The mode fields at k -> 0+: a wavenumber whose k h, k z and k L are all below 1e-10, where the
 // fields differ from their limit by that relative amount (docs/theory.md 2.7).
 std::vector<StressFrf> limit_at_zero(const LayerModes& modes, const Grid& grid,
@@ -223,6 +234,22 @@ std::vector<Quarters> sample_quarters(const Sampling& s, int threads, long long&
 
 }  // namespace
 
+// The wavevectors |k| <= k_cut of the shallowest plane on DC-FFT's lattice with its aliases: a
+// quarter disk of pi k_cut^2/4 over the lattice cell (2 pi/(2 lx)) (2 pi/(2 ly)), at least the
+// lattice quarter; plus the long-range band, at most (34 alpha)^2.
+double stress_kernel_evaluations(const Grid& grid, std::span<const double> depths,
+                                 const StressKernelOptions& options) {
+  validate(grid, depths, options);
+  const double z = *std::min_element(depths.begin(), depths.end());
+  if (z == 0.0) return std::numeric_limits<double>::infinity();
+  const double log_tol = std::log(1.0 / options.tolerance);
+  const double k_cut = (log_tol + 2.0 * std::log1p(log_tol) + 3.0) / z;
+  const double cell = (kPi / grid.lx()) * (kPi / grid.ly());
+  const double lattice = (grid.nx() + 1.0) * (grid.ny() + 1.0);
+  return std::max(0.25 * kPi * k_cut * k_cut / cell, lattice) +
+         (options.alpha > 2 ? std::pow(34.0 * options.alpha, 2) : 0.0);
+}
+
 std::vector<StressPlaneKernel> stress_plane_kernels(const Grid& grid, const LayerStack& stack,
                                                     std::span<const double> depths,
                                                     InterfaceSide side, bool tangential,
@@ -265,6 +292,7 @@ std::vector<StressPlaneKernel> stress_plane_kernels(const Grid& grid, const Laye
           }
         }
   };
+  refuse_costly(grid, depths, options);
   if (options.alpha == 2) {
     add(make_lattice(grid, depths, options, 2, Part::whole, 0.0, &r));
   } else {

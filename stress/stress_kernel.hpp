@@ -29,6 +29,10 @@ struct StressKernelOptions {
   /// Largest alias order |p|, |q| folded (>= 0). Planes much shallower than a cell need
   /// about dx/z orders; at z = 0 the series is cut here (see report).
   int max_alias_order = 64;
+  /// Most FRF evaluations a call may make (estimated before any work from the shallowest plane,
+  /// about 111 (L/z)^2 at the default tolerance; InvalidArgument beyond). At 1 us each, the
+  /// default is a few minutes. z = 0 is always refused: its alias series does not decay.
+  double max_evaluations = 2e8;
   /// Threads of the lattice loop, in [1, max_threads]; the result does not depend on it.
   int threads = 1;
 };
@@ -50,9 +54,10 @@ struct StressPlaneKernel {
   std::array<std::array<Field, 3>, 6> coefficients;
 };
 
-/// The kernel of the plane at `depth` [m] (finite, >= 0; on an interface in the medium `side`
+/// The kernel of the plane at `depth` [m] (finite, > 0; on an interface in the medium `side`
 /// names) of the body `stack`, on `grid`, for the pressure and, if `tangential`, the tractions.
-/// Throws InvalidArgument on bad options or depth.
+/// Throws InvalidArgument on bad options or depth, and for a plane so shallow against the domain
+/// that it would need more than options.max_evaluations FRF evaluations (z = 0 always).
 /// The kernels of several planes at once: one LayerModes solve per wavevector serves every plane
 /// (the cost is about that of the shallowest plane; the memory grows with the planes). The same
 /// arguments and errors as stress_plane_kernel; `reports`, when given, gets one per plane.
@@ -60,6 +65,12 @@ std::vector<StressPlaneKernel> stress_plane_kernels(
     const Grid& grid, const LayerStack& stack, std::span<const double> depths, InterfaceSide side,
     bool tangential, const StressKernelOptions& options = {},
     std::vector<StressKernelReport>* reports = nullptr);
+
+/// About how many LayerModes solves stress_plane_kernels makes for `depths` (its cost: about a
+/// microsecond each for one coating), from the shallowest plane; +inf for z = 0. Throws
+/// InvalidArgument on bad options or depths, as stress_plane_kernels.
+double stress_kernel_evaluations(const Grid& grid, std::span<const double> depths,
+                                 const StressKernelOptions& options = {});
 
 StressPlaneKernel stress_plane_kernel(const Grid& grid, const LayerStack& stack, double depth,
                                       InterfaceSide side, bool tangential,

@@ -34,10 +34,11 @@ struct StressOperatorOptions {
 
 class StressOperator {
  public:
-  /// Plans the planes at `depths` [m] (each finite, >= 0) of the body `stack` on `grid`.
+  /// Plans the planes at `depths` [m] (each finite, > 0) of the body `stack` on `grid`.
   /// Throws InvalidArgument on bad options, an empty or non-finite depth list, or tangential
   /// loads on a stack with a frictionless interface (a net tangential force has no equilibrium
-  /// there: the coating slides, docs/theory.md 2.3).
+  /// there: the coating slides, docs/theory.md 2.3), or planes so shallow that their kernels
+  /// exceed options.kernel.max_evaluations (stress_kernel_evaluations).
   StressOperator(const Grid& grid, const LayerStack& stack, std::vector<double> depths,
                  const StressOperatorOptions& options = {});
   ~StressOperator();

@@ -158,6 +158,7 @@ TEST_CASE("[stress], [shear] and friction refuse bad scenes with one line", "[cl
   const std::string with_shear = kStress + "[shear]\nkind = \"proportional\"\nmu = 0.2\n";
   const BadCase cases[] = {
       {"stress_zero_depth", "depths = [2.5e-4, 5.0e-4]", "depths = [0.0]", "must be > 0"},
+      {"stress_shallow", "depths = [2.5e-4, 5.0e-4]", "depths = [1e-7]", "too shallow"},
       {"stress_nan", "depths = [2.5e-4, 5.0e-4]", "depths = [nan]", "finite"},
       {"stress_alpha", "alpha = 4", "alpha = 1", "alpha"},
       {"stress_alpha_big", "alpha = 4", "alpha = 33", "alpha"},

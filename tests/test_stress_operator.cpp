@@ -9,8 +9,8 @@
 
 #include "core/error.hpp"
 #include "loads/hertz_pressure.hpp"
-#include "stress/stress_kernel.hpp"
 #include "stress/stress_invariants.hpp"
+#include "stress/stress_kernel.hpp"
 #include "stress/stress_operator.hpp"
 
 using namespace coatfft;
@@ -141,6 +141,14 @@ TEST_CASE("stress operator refuses bad input", "[stress_operator]") {
   CHECK_THROWS_AS(StressOperator(g, sliding, {1e-4}, tangential), InvalidArgument);
   CHECK_THROWS_AS(StressOperator(g, LayerStack(steel), {}, {}), InvalidArgument);
   CHECK_THROWS_AS(StressOperator(g, LayerStack(steel), {-1e-4}, {}), InvalidArgument);
+  // z = 0 (the alias series does not decay) and a plane too shallow for the budget: the quarter
+  // disk |k| < k_cut = c/z, c = ln(1e12) + 2 ln(1 + ln(1e12)) + 3, over the lattice cell
+  // (pi/L)^2: c^2/(4 pi) (L/z)^2 = 1.11e10 at L/z = 1e4 (plus the band, 3e5).
+  CHECK_THROWS_AS(StressOperator(g, LayerStack(steel), {0.0}, {}), InvalidArgument);
+  CHECK_THROWS_AS(StressOperator(g, LayerStack(steel), {1e-7}, {}), InvalidArgument);
+  const double z[1] = {1e-7};
+  const double c = std::log(1e12) + 2 * std::log1p(std::log(1e12)) + 3;
+  CHECK(stress_kernel_evaluations(g, z) == Approx(c * c / (4 * M_PI) * 1e8).epsilon(1e-4));
   StressOperatorOptions bad_alpha;
   bad_alpha.kernel.alpha = 1;
   CHECK_THROWS_AS(StressOperator(g, LayerStack(steel), {1e-4}, bad_alpha), InvalidArgument);
