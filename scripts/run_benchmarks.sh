@@ -11,7 +11,7 @@
 #   section 5: the automatic method choice against hand-picked settings).
 # Programs (bench/, one per file; each takes --help): bench_sweep (with its child bench_sweep_row),
 # bench_reference_check, bench_figures, bench_peak_rss, and with --full bench_dcfft,
-# bench_fft_sizes, bench_setup, bench_frf, bench_contact, bench_auto_tolerance.
+# bench_fft_sizes, bench_setup, bench_frf, bench_contact, bench_auto_tolerance, bench_stress.
 #
 # Usage: scripts/run_benchmarks.sh [--full | --quick | --tiny]   (default --full, ~10 min on 2 cores;
 #        --quick and --tiny run the sweep only)
@@ -30,7 +30,7 @@ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCOATFFT_BUILD
   -DCOATFFT_BUILD_CLI=ON >/dev/null
 targets="bench_sweep bench_sweep_row bench_reference_check bench_figures bench_peak_rss coatfft_exe"
 [ "$mode" = "--full" ] && targets="$targets bench_dcfft bench_fft_sizes bench_setup bench_frf bench_contact"
-[ "$mode" = "--full" ] && targets="$targets bench_auto_tolerance"
+[ "$mode" = "--full" ] && targets="$targets bench_auto_tolerance bench_stress"
 # shellcheck disable=SC2086
 cmake --build "$build" -j "${JOBS:-2}" --target $targets
 bench=$build/bench
@@ -106,6 +106,8 @@ if [ "$mode" = "--full" ]; then
   "$bench/bench_contact" "$results/contact.csv"
   echo "== automatic method choice per tolerance, against hand-picked settings"
   "$bench/bench_auto_tolerance" "$results/auto_tolerance.csv"
+  echo "bench_stress:"
+  "$bench/bench_stress" "$results/stress.csv"
   doc=$root/docs/benchmarks.md
   "$python" "$blocks" "$doc" dcfft "$results/dcfft.csv"
   "$python" "$blocks" "$doc" dcfft_direct "$results/dcfft.csv" --view direct-speedup
