@@ -14,7 +14,7 @@
 #include "core/error.hpp"
 #include "core/threads.hpp"
 #include "frf/stress_frf.hpp"
-#include "stress/parity_transform.hpp"
+#include "convolution/parity_transform.hpp"
 
 namespace coatfft {
 

@@ -7,10 +7,10 @@
 // costs about three surface applications (docs/stress.md).
 #include <array>
 #include <cstddef>
-#include <memory>
 #include <span>
 #include <vector>
 
+#include "../convolution/parity_convolution.hpp"
 #include "../convolution/planning.hpp"
 #include "../core/grid.hpp"
 #include "../core/types.hpp"
@@ -41,11 +41,8 @@ class StressOperator {
   /// exceed options.kernel.max_evaluations (stress_kernel_evaluations).
   StressOperator(const Grid& grid, const LayerStack& stack, std::vector<double> depths,
                  const StressOperatorOptions& options = {});
-  ~StressOperator();
-  StressOperator(StressOperator&&) noexcept;
-  StressOperator& operator=(StressOperator&&) noexcept;
 
-  const Grid& grid() const { return grid_; }
+  const Grid& grid() const { return convolution_.grid(); }
   const std::vector<double>& depths() const { return depths_; }
   bool tangential() const { return tangential_; }
 
@@ -59,26 +56,13 @@ class StressOperator {
   double setup_seconds() const { return setup_seconds_; }
   const std::vector<StressKernelReport>& kernel_reports() const { return reports_; }
   /// Bytes the operator holds (kernel spectra and buffers).
-  std::size_t memory_bytes() const;
+  std::size_t memory_bytes() const { return convolution_.memory_bytes(); }
 
  private:
-  struct Transforms;  // FFTW plans and buffers: FFTW stays out of the public headers
-
-  void plan_transforms(Planning planning);
-  void transform_load(int load, const Field* field);
-  void multiply_block(int plane, int component, std::ptrdiff_t c0, std::ptrdiff_t width);
-  void inverse_into(int plane, int component, Field& out);
-
-  Grid grid_;
   std::vector<double> depths_;
   bool tangential_;
-  int nb_loads_;
-  std::ptrdiff_t mx_, my_, hx_, hy_;  // padded lengths, mx/2 + 1, my/2 + 1
-  // spectra_[plane][component][load]: the padded spectrum quarter of the real coefficients,
-  // transposed to (hy, hx), real: the spectrum is (-i)^(odd_x + odd_y) times it
-  // (parity_transform).
-  std::vector<std::array<std::array<Field, 3>, 6>> spectra_;
-  std::unique_ptr<Transforms> transforms_;
+  ParityConvolution convolution_;  // outputs 6 p + c: plane p, component c
+  std::vector<Field> fields_;      // apply()'s outputs before they are moved into planes
   std::vector<StressKernelReport> reports_;
   double setup_seconds_ = 0.0;
 };

@@ -1,4 +1,4 @@
-#include "stress/parity_transform.hpp"
+#include "convolution/parity_transform.hpp"
 
 #include <Eigen/Core>
 #include <cmath>
