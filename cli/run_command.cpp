@@ -41,6 +41,7 @@ std::vector<std::string> output_names(const OutputSpec& spec) {
   if (spec.displacement_csv) names.push_back("displacement.csv");
   names.push_back("summary.json");
   if (spec.gap) names.push_back("gap.npy");
+  if (spec.in_plane) names.insert(names.end(), {"ux.npy", "uy.npy"});
   if (spec.stress) names.insert(names.end(), {"stress.npy", "von_mises.npy"});
   if (spec.stress_section)
     names.insert(names.end(), {"stress_section.npy", "von_mises_section.npy"});
@@ -80,6 +81,10 @@ void write_outputs(StagedOutput& out, const OutputSpec& spec, const SceneRun& ru
   if (spec.pressure) write_npy(out.path("pressure.npy"), run.pressure);
   if (spec.gap && run.gap) write_npy(out.path("gap.npy"), *run.gap);
   if (run.stress) write_stress_outputs(out, spec, run.grid, *run.stress);
+  if (spec.in_plane && run.ux && run.uy) {
+    write_npy(out.path("ux.npy"), *run.ux);
+    write_npy(out.path("uy.npy"), *run.uy);
+  }
   if (spec.displacement_csv)
     write_displacement_csv(out.path("displacement.csv"), run.grid, run.pressure, run.uz);
   {

@@ -552,7 +552,7 @@ OutputSpec read_output(const toml::table& root, bool contact) {
     COATFFT_REQUIRE(!names.empty(), reader.where("fields"),
                     " = []: name at least one output (summary.json is always written: "
                     "fields = [\"summary\"] writes only it)");
-    spec = OutputSpec{false, false, false, false, false, false};
+    spec = OutputSpec{false, false, false, false, false, false, false};
     std::set<std::string> seen;
     for (const std::string& name : names) {
       select_output(spec, name, reader, contact);  // a known name from here on
@@ -759,6 +759,8 @@ Scene read_scene(const std::filesystem::path& path) {
     }
     if (scene.contact && scene.contact->friction > 0.0)
       check_tangential(scene, "[contact] friction");
+    // The in-plane surface displacements: Cerruti's closed forms, homogeneous bodies only.
+    scene.output.in_plane = scene.stress && scene.body && scene.body->is_homogeneous();
     // g(0) only shifts every displacement by one constant, which a load-controlled contact
     // absorbs in its approach; when that approach is not reported, g(0) is not computed at all.
     if (scene.contact && !scene.contact->report_approach)

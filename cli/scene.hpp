@@ -93,6 +93,8 @@ struct OutputSpec {
   bool stress = false;
   /// stress_section.npy and von_mises_section.npy: set by [stress] section
   bool stress_section = false;
+  /// ux.npy and uy.npy: set by [stress], [shear] or [contact] friction on a homogeneous body
+  bool in_plane = false;
 };
 
 /// [shear]: known tangential tractions that the surface receives, with a [pressure]: q = friction

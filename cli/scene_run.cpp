@@ -15,6 +15,7 @@
 #include "cli/scene_pressure.hpp"
 #include "contact/contact_solver.hpp"
 #include "contact/indenter.hpp"
+#include "convolution/cerruti_operator.hpp"
 #include "convolution/fftw_wisdom.hpp"
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
@@ -180,6 +181,30 @@ void add_contact_summary(nlohmann::json& summary, const Scene& scene, const Cont
   if (nlohmann::json hertz = hertz_json(scene); !hertz.is_null()) summary["hertz"] = hertz;
 }
 
+// The in-plane surface displacements of a homogeneous body (Cerruti's closed forms), and the
+// normal displacement of the tractions: added to uz in a known-load scene; in a contact, whose
+// normal problem is solved frictionless, only reported (summary "tangential_uz": its largest
+// value over the largest uz, the size of the neglected coupling).
+void add_in_plane(const LayerStack& body, const Tractions& q, SceneRun& run) {
+  CerrutiOperator op(run.grid, body.substrate());
+  std::array<Field, 3> u;
+  op.apply(run.pressure, q.qx ? &*q.qx : nullptr, q.qy ? &*q.qy : nullptr, u);
+  run.ux = std::move(u[0]);
+  run.uy = std::move(u[1]);
+  if (!q.qx && !q.qy) return;
+  const Field zero = Field::Zero(run.grid.nx(), run.grid.ny());
+  op.apply(zero, q.qx ? &*q.qx : nullptr, q.qy ? &*q.qy : nullptr, u);
+  const double ratio = u[2].abs().maxCoeff() / run.uz.abs().maxCoeff();
+  if (run.gap) {
+    run.summary["tangential_uz"] = ratio;
+  } else {
+    run.uz += u[2];
+    run.summary["uz_max"] = run.uz.maxCoeff();
+    run.summary["uz_center"] = run.uz(run.grid.centre_i(), run.grid.centre_j());
+    run.summary["tangential_uz"] = ratio;
+  }
+}
+
 SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat, Progress& progress) {
   const ContactSpec& spec = *scene.contact;
   if (spec.indenter_material) {
@@ -270,6 +295,7 @@ SceneRun compute_scene(PreparedScene prepared, const SceneRunOptions& options) {
     const Tractions q = scene_tractions(scene_copy, run.pressure);
     run.stress = compute_stress(*stress, *body, run.grid, run.pressure, q, threads);
     run.summary["stress"] = run.stress->summary;
+    if (body->is_homogeneous()) add_in_plane(*body, q, run);
   }
   return run;
 }

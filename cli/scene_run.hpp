@@ -35,6 +35,8 @@ struct SceneRun {
   /// ok, or not_converged for a contact that did not converge (summary["warning"] says why).
   RunStatus status = RunStatus::ok;
   std::optional<StressRun> stress = std::nullopt;  ///< [stress] scenes only
+  /// The in-plane surface displacements [m] of a [stress] scene on a homogeneous body.
+  std::optional<Field> ux = std::nullopt, uy = std::nullopt;
 };
 
 struct SceneRunOptions {

@@ -87,6 +87,13 @@ TEST_CASE("[stress] writes the stress files with their shapes and summary keys",
   CHECK(npy_shape(out / "von_mises.npy") == "(2, 33, 33)");
   CHECK(npy_shape(out / "stress_section.npy") == "(4, 6, 33)");
   CHECK(npy_shape(out / "von_mises_section.npy") == "(4, 33)");
+  // A homogeneous body: the in-plane surface displacements too (Cerruti's closed forms).
+  CHECK(npy_shape(out / "ux.npy") == "(33, 33)");
+  CHECK(npy_shape(out / "uy.npy") == "(33, 33)");
+  // u_x under the pressure points to the load's centre: negative at x > 0, zero on the axis.
+  const std::vector<double> ux = npy_values(out / "ux.npy");
+  CHECK(ux[16 * 33 + 24] < 0.0);
+  CHECK(std::abs(ux[16 * 33 + 16]) < 1e-6 * std::abs(ux[16 * 33 + 24]));
   const nlohmann::json s = summary_of(out)["stress"];
   for (const char* key : {"max_von_mises", "max_principal_tensile"})
     for (const char* k : {"value", "x", "y", "z"}) CHECK(s[key].contains(k));
@@ -110,6 +117,7 @@ TEST_CASE("[stress] writes the stress files with their shapes and summary keys",
 
 TEST_CASE("[stress] on a coated body reports the interface's largest shear", "[cli_stress]") {
   const fs::path out = run_ok(kCoatedStress, "stress_coated");
+  CHECK_FALSE(fs::exists(out / "ux.npy"));  // layered bodies: not computed yet
   const nlohmann::json s = summary_of(out)["stress"];
   REQUIRE(s["interfaces"].size() == 1);
   CHECK(s["interfaces"][0]["depth"].get<double>() == Approx(2e-4));
@@ -141,6 +149,16 @@ TEST_CASE("[shear] proportional adds mu times the unit-traction field", "[cli_st
   // Rounding of stresses of the size of p0 = 1e9 Pa in three runs.
   CHECK(worst < 1e-12 * 1e9);
   CHECK(summary_of(scratch("shear3_out"))["stress"]["tangential"] == true);
+  // uz holds the tractions' share too (homogeneous body), linear as well: 0.3 of mu = 1's.
+  const auto uz = [](const char* name) { return npy_values(scratch(name) / "uz.npy"); };
+  const std::vector<double> z0 = uz("shear0_out"), z3 = uz("shear3_out"), z1 = uz("shear1_out");
+  double dz = 0, zmax = 0;
+  for (std::size_t i = 0; i < z0.size(); ++i) {
+    dz = std::max(dz, std::abs((z3[i] - z0[i]) - 0.3 * (z1[i] - z0[i])));
+    zmax = std::max(zmax, std::abs(z0[i]));
+  }
+  CHECK(dz < 1e-12 * zmax);
+  CHECK(summary_of(scratch("shear1_out"))["tangential_uz"].get<double>() > 0.01);
 }
 
 TEST_CASE("[shear] file equals proportional for the same tractions", "[cli_stress]") {

@@ -55,6 +55,8 @@ py::dict run_scene(const std::filesystem::path& path) {
   out["pressure"] = array_from_field(std::move(run.pressure));
   if (run.gap) out["gap"] = array_from_field(std::move(*run.gap));
   if (run.stress) add_stress_arrays(run.grid, *run.stress, out);
+  if (run.ux) out["ux"] = array_from_field(std::move(*run.ux));
+  if (run.uy) out["uy"] = array_from_field(std::move(*run.uy));
   out["summary"] = dict_from_json_text(run.summary.dump());
   return out;
 }
