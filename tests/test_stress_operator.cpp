@@ -179,3 +179,43 @@ TEST_CASE("stress invariants against hand-computed states", "[stress_operator]")
   CHECK(q[2] == Approx(-std::sqrt(10.0)).epsilon(1e-14));
   CHECK(tresca({1, 0, -1, 0, 3, 0}) == Approx(std::sqrt(10.0)).epsilon(1e-14));
 }
+
+TEST_CASE("stress operator: interface conditions and a coating of the substrate's own material",
+          "[stress_operator]") {
+  const Grid g(24, 20, 3e-3, 2.5e-3);
+  const Field p = hertz_pressure(g, 1.0, 1e-3, Sampling::cell_average);
+  const Field qx = 0.3 * p;
+  const double h = 2e-4;
+  StressOperatorOptions o;
+  o.kernel.alpha = 4;
+  o.tangential = true;
+  std::vector<PlaneStress> above, below;
+  // Bonded: the tractions on the interface (sigma_zz, sigma_xz, sigma_yz) are continuous; the
+  // in-plane stresses jump with the moduli. Rounding: 1e-13 of p0.
+  const LayerStack bonded({{tin, h, Interface::bonded}}, steel);
+  o.side = InterfaceSide::above;
+  StressOperator(g, bonded, {h}, o).apply(p, &qx, nullptr, above);
+  o.side = InterfaceSide::below;
+  StressOperator(g, bonded, {h}, o).apply(p, &qx, nullptr, below);
+  for (int c : {s_zz, s_xz, s_yz}) CHECK((above[0][c] - below[0][c]).abs().maxCoeff() < 1e-13);
+  CHECK((above[0][s_xx] - below[0][s_xx]).abs().maxCoeff() > 1e-2);
+  // Frictionless, under the pressure alone: no shear on either face.
+  const LayerStack sliding({{tin, h, Interface::frictionless}}, steel);
+  StressOperatorOptions n;
+  n.kernel.alpha = 4;
+  for (InterfaceSide side : {InterfaceSide::above, InterfaceSide::below}) {
+    n.side = side;
+    std::vector<PlaneStress> s;
+    StressOperator(g, sliding, {h}, n).apply(p, nullptr, nullptr, s);
+    CHECK(s[0][s_xz].abs().maxCoeff() < 1e-13);
+    CHECK(s[0][s_yz].abs().maxCoeff() < 1e-13);
+    CHECK(s[0][s_zz].abs().maxCoeff() > 0.1);
+  }
+  // A coating of the substrate's own material is the half-space, to rounding.
+  std::vector<PlaneStress> same, half;
+  StressOperator(g, LayerStack({{steel, h, Interface::bonded}}, steel), {0.5 * h, 3 * h}, o)
+      .apply(p, &qx, nullptr, same);
+  StressOperator(g, LayerStack(steel), {0.5 * h, 3 * h}, o).apply(p, &qx, nullptr, half);
+  for (int d = 0; d < 2; ++d)
+    for (int c = 0; c < 6; ++c) CHECK((same[d][c] - half[d][c]).abs().maxCoeff() < 1e-13);
+}
