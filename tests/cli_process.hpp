@@ -14,6 +14,7 @@
 #include <functional>
 #include <iterator>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <string>
 
 namespace coatfft_test {
@@ -104,6 +105,26 @@ inline fs::path write_scene(const std::string& base, const std::string& name,
   const fs::path path = scratch(name + ".toml");
   std::ofstream(path) << text;
   return path;
+}
+
+// `base` with `from` replaced by `to` run by `coatfft run` into a fresh NAME_out, which is
+// returned; the run must succeed.
+inline fs::path run_scene_ok(const std::string& base, const std::string& name,
+                             const std::string& from = "", const std::string& to = "") {
+  const fs::path out = scratch(name + "_out");
+  fs::remove_all(out);
+  const auto result =
+      run_coatfft("run " + write_scene(base, name, from, to).string() + " -o " + out.string());
+  INFO(result.stderr_text);
+  REQUIRE(result.status == 0);
+  return out;
+}
+
+// The summary.json of an output folder.
+inline nlohmann::json read_summary(const fs::path& out) {
+  nlohmann::json summary;
+  std::ifstream(out / "summary.json") >> summary;
+  return summary;
 }
 
 inline fs::path scene_with(const std::string& name, const std::string& from,

@@ -44,22 +44,6 @@ depths = [1e-4, 2e-4]
 alpha = 4
 )";
 
-fs::path run_ok(const std::string& text, const std::string& name) {
-  const fs::path scene = write_scene(text, name, "", "");
-  const fs::path out = scratch(name + "_out");
-  fs::remove_all(out);
-  const ProcessResult r = run_coatfft("run " + scene.string() + " -o " + out.string());
-  INFO(r.stderr_text);
-  REQUIRE(r.status == 0);
-  return out;
-}
-
-nlohmann::json summary_of(const fs::path& out) {
-  nlohmann::json j;
-  std::ifstream(out / "summary.json") >> j;
-  return j;
-}
-
 // The raw shape tuple of a .npy header, e.g. "(2, 6, 33, 33)".
 std::string npy_shape(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -82,7 +66,7 @@ std::vector<double> npy_values(const fs::path& file) {
 }  // namespace
 
 TEST_CASE("[stress] writes the stress files with their shapes and summary keys", "[cli_stress]") {
-  const fs::path out = run_ok(kStress, "stress_files");
+  const fs::path out = run_scene_ok(kStress, "stress_files");
   CHECK(npy_shape(out / "stress.npy") == "(2, 6, 33, 33)");
   CHECK(npy_shape(out / "von_mises.npy") == "(2, 33, 33)");
   CHECK(npy_shape(out / "stress_section.npy") == "(4, 6, 33)");
@@ -94,7 +78,7 @@ TEST_CASE("[stress] writes the stress files with their shapes and summary keys",
   const std::vector<double> ux = npy_values(out / "ux.npy");
   CHECK(ux[16 * 33 + 24] < 0.0);
   CHECK(std::abs(ux[16 * 33 + 16]) < 1e-6 * std::abs(ux[16 * 33 + 24]));
-  const nlohmann::json s = summary_of(out)["stress"];
+  const nlohmann::json s = read_summary(out)["stress"];
   for (const char* key : {"max_von_mises", "max_principal_tensile"})
     for (const char* k : {"value", "x", "y", "z"}) CHECK(s[key].contains(k));
   CHECK(s["interfaces"].empty());  // a homogeneous body
@@ -116,9 +100,9 @@ TEST_CASE("[stress] writes the stress files with their shapes and summary keys",
 }
 
 TEST_CASE("[stress] on a coated body reports the interface's largest shear", "[cli_stress]") {
-  const fs::path out = run_ok(kCoatedStress, "stress_coated");
+  const fs::path out = run_scene_ok(kCoatedStress, "stress_coated");
   CHECK_FALSE(fs::exists(out / "ux.npy"));  // layered bodies: not computed yet
-  const nlohmann::json s = summary_of(out)["stress"];
+  const nlohmann::json s = read_summary(out)["stress"];
   REQUIRE(s["interfaces"].size() == 1);
   CHECK(s["interfaces"][0]["depth"].get<double>() == Approx(2e-4));
   // The interface plane is the second requested plane; its largest |shear| is the same value.
@@ -137,9 +121,11 @@ TEST_CASE("[shear] proportional adds mu times the unit-traction field", "[cli_st
   const auto shear = [](const char* mu) {
     return std::string("[shear]\nkind = \"proportional\"\nmu = ") + mu + "\ndirection = \"y\"\n";
   };
-  const std::vector<double> s0 = npy_values(run_ok(base, "shear0") / "stress.npy");
-  const std::vector<double> s3 = npy_values(run_ok(base + shear("0.3"), "shear3") / "stress.npy");
-  const std::vector<double> s1 = npy_values(run_ok(base + shear("1.0"), "shear1") / "stress.npy");
+  const std::vector<double> s0 = npy_values(run_scene_ok(base, "shear0") / "stress.npy");
+  const std::vector<double> s3 =
+      npy_values(run_scene_ok(base + shear("0.3"), "shear3") / "stress.npy");
+  const std::vector<double> s1 =
+      npy_values(run_scene_ok(base + shear("1.0"), "shear1") / "stress.npy");
   double worst = 0, scale = 0;
   for (std::size_t i = 0; i < s0.size(); ++i) {
     worst = std::max(worst, std::abs((s3[i] - s0[i]) - 0.3 * (s1[i] - s0[i])));
@@ -148,7 +134,7 @@ TEST_CASE("[shear] proportional adds mu times the unit-traction field", "[cli_st
   CHECK(scale > 1e7);  // the traction does change the stresses
   // Rounding of stresses of the size of p0 = 1e9 Pa in three runs.
   CHECK(worst < 1e-12 * 1e9);
-  CHECK(summary_of(scratch("shear3_out"))["stress"]["tangential"] == true);
+  CHECK(read_summary(scratch("shear3_out"))["stress"]["tangential"] == true);
   // uz holds the tractions' share too (homogeneous body), linear as well: 0.3 of mu = 1's.
   const auto uz = [](const char* name) { return npy_values(scratch(name) / "uz.npy"); };
   const std::vector<double> z0 = uz("shear0_out"), z3 = uz("shear3_out"), z1 = uz("shear1_out");
@@ -158,16 +144,16 @@ TEST_CASE("[shear] proportional adds mu times the unit-traction field", "[cli_st
     zmax = std::max(zmax, std::abs(z0[i]));
   }
   CHECK(dz < 1e-12 * zmax);
-  CHECK(summary_of(scratch("shear1_out"))["tangential_uz"].get<double>() > 0.01);
+  CHECK(read_summary(scratch("shear1_out"))["tangential_uz"].get<double>() > 0.01);
 }
 
 TEST_CASE("[shear] file equals proportional for the same tractions", "[cli_stress]") {
   const fs::path prop =
-      run_ok(kStress + "[shear]\nkind = \"proportional\"\nmu = 0.25\n", "shear_p");
+      run_scene_ok(kStress + "[shear]\nkind = \"proportional\"\nmu = 0.25\n", "shear_p");
   // q_x = 0.25 p written as a file.
   const fs::path p_file = scratch("shear_qx.npy");
   coatfft::cli::write_npy(p_file, 0.25 * coatfft::cli::read_npy(prop / "pressure.npy"));
-  const fs::path file = run_ok(
+  const fs::path file = run_scene_ok(
       kStress + "[shear]\nkind = \"file\"\npath_x = \"" + p_file.string() + "\"\n", "shear_f");
   CHECK(npy_values(prop / "stress.npy") == npy_values(file / "stress.npy"));
 }
