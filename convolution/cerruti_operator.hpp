@@ -1,15 +1,19 @@
 #pragma once
-// The surface displacements u_x, u_y, u_z of a homogeneous half-space under a pressure and the
-// tangential tractions q_x, q_y: the 3 x 3 surface response in space, by DC-FFT (Liu, Wang & Liu
-// 2000) of Love's (1929) coefficient of a uniformly pressed cell and Cerruti's (1882) of a
-// uniformly sheared one (docs/theory.md 1.3b), the in-plane displacements under pressure by
-// reciprocity. Exact (to rounding) for cell-wise constant loads.
+// The surface displacements u_x, u_y, u_z of a body under a pressure and the tangential tractions
+// q_x, q_y (Cerruti's problem): the 3 x 3 surface response in space, by DC-FFT (Liu, Wang & Liu
+// 2000) of the cell coefficients of convolution/surface_kernels.hpp -- for a homogeneous
+// half-space Love's (1929) coefficient of a uniformly pressed cell and Cerruti's (1882) of a
+// uniformly sheared one (docs/theory.md 1.3b), exact (to rounding) for cell-wise constant loads;
+// for a bonded layer stack the split of docs/theory.md 2.9. The in-plane displacements under
+// pressure follow by reciprocity.
 #include <array>
 
 #include "../core/grid.hpp"
 #include "../core/types.hpp"
+#include "../layers/layer_stack.hpp"
 #include "../materials/material.hpp"
 #include "parity_convolution.hpp"
+#include "surface_kernels.hpp"
 
 namespace coatfft {
 
@@ -18,6 +22,10 @@ class CerrutiOperator {
   /// Plans the nine kernels of `material` on `grid` (the coefficients in closed form).
   CerrutiOperator(const Grid& grid, const Material& material,
                   Planning planning = Planning::estimate);
+  /// Plans the nine kernels of any bonded `stack` (surface_kernels: its errors, InvalidArgument
+  /// for a frictionless interface among them); `report`, when given, receives their diagnostics.
+  CerrutiOperator(const Grid& grid, const LayerStack& stack, const SurfaceKernelOptions& options,
+                  Planning planning = Planning::estimate, SurfaceKernelReport* report = nullptr);
 
   const Grid& grid() const { return convolution_.grid(); }
 

@@ -111,10 +111,11 @@ std::complex<double> shape_amplitude(AxisymmetricLoad load, double s) {
   return std::sqrt(2.0 / (pi * s)) / s * hankel_pq(1, s) * std::polar(1.0, -0.75 * pi);
 }
 
-std::complex<double> j0_amplitude(double rho, double s) {
-  if (rho == 0.0) return 1.0;
+// J_n(rho s) = Re[G(s) e^{i rho s}] (J_n(0) = 0 for n >= 1).
+std::complex<double> bessel_amplitude(int n, double rho, double s) {
+  if (rho == 0.0) return n == 0 ? 1.0 : 0.0;
   const double x = rho * s;
-  return std::sqrt(2.0 / (pi * x)) * hankel_pq(0, x) * std::polar(1.0, -0.25 * pi);
+  return std::sqrt(2.0 / (pi * x)) * hankel_pq(n, x) * std::polar(1.0, -(0.5 * n + 0.25) * pi);
 }
 
 // \int_S^inf Re[g(s) e^{i omega s}] ds for a smooth, algebraically decaying g.
@@ -157,14 +158,14 @@ double oscillatory_tail(const std::function<std::complex<double>(double)>& g, do
   return total;
 }
 
-// \int_S^inf Phi(s) J0(rho s) ds by Phi J0 = (1/2) Re[F G e^{i(1+rho)s}] + (1/2) Re[F conj(G)
+// \int_S^inf Phi(s) J_n(rho s) ds by Phi J_n = (1/2) Re[F G e^{i(1+rho)s}] + (1/2) Re[F conj(G)
 // e^{i(1-rho)s}], valid once s and rho s are in the asymptotic range.
-double asymptotic_tail(AxisymmetricLoad load, double rho, double S, double epsabs) {
-  const auto sum_part = [load, rho](double s) {
-    return 0.5 * shape_amplitude(load, s) * j0_amplitude(rho, s);
+double asymptotic_tail(int n, AxisymmetricLoad load, double rho, double S, double epsabs) {
+  const auto sum_part = [n, load, rho](double s) {
+    return 0.5 * shape_amplitude(load, s) * bessel_amplitude(n, rho, s);
   };
-  const auto difference_part = [load, rho](double s) {
-    return 0.5 * shape_amplitude(load, s) * std::conj(j0_amplitude(rho, s));
+  const auto difference_part = [n, load, rho](double s) {
+    return 0.5 * shape_amplitude(load, s) * std::conj(bessel_amplitude(n, rho, s));
   };
   return oscillatory_tail(sum_part, 1.0 + rho, S, 0.5 * epsabs) +
          oscillatory_tail(difference_part, 1.0 - rho, S, 0.5 * epsabs);
@@ -209,17 +210,29 @@ double hankel_displacement(const Frf& frf, AxisymmetricLoad load, double amplitu
                                    : uniform_disk_displacement(r, amplitude, a, e_star_top);
     return homogeneous + amplitude * a * a * rest;
   }
-  // Direct: beyond K both k H = c_inf (to 1e-3 rel_tol) and the Hankel expansions hold
-  // (k a >= 500 and k r >= 500, where 8 terms are exact to double precision).
+  // Direct: beyond k_converged k H = c_inf (to 1e-3 rel_tol).
+  return hankel_load_integral([&frf](double k) { return k * frf(k); }, c_inf, k_converged, 0, load,
+                              amplitude, a, r, scale, rel_tol);
+}
+
+double hankel_load_integral(const std::function<double(double)>& g, double g_inf,
+                            double k_converged, int order, AxisymmetricLoad load, double amplitude,
+                            double a, double r, double scale, double rel_tol) {
+  COATFFT_REQUIRE(order >= 0 && order <= 2, "hankel_load_integral: order ", order,
+                  " is not 0, 1 or 2");
+  const GslHandlerOff handler_off;
+  const GslWorkspace ws = make_gsl_workspace(kLimit);
+  // Beyond K both g = g_inf and the Hankel expansions hold (k a >= 500 and k r >= 500, where 8
+  // terms are exact to double precision).
   const double rho = r / a;
   const double K = std::max(k_converged, 500.0 / a * (rho > 0 ? std::max(1.0, 1.0 / rho) : 1.0));
   const std::function<double(double)> full = [&](double k) {
-    return k * frf(k) * load_shape(load, k * a) * gsl_sf_bessel_J0(k * r);
+    return g(k) * load_shape(load, k * a) * gsl_sf_bessel_Jn(order, k * r);
   };
   const double head =
       integrate_panels(full, K, a, r, 1e-2 * rel_tol * scale, 1e-2 * rel_tol, ws.get());
-  // \int_K^inf Phi(ka) J0(kr) dk = (1/a) \int_{Ka}^inf Phi(s) J0(rho s) ds.
-  const double tail = c_inf / a * asymptotic_tail(load, rho, K * a, 1e-3 * rel_tol);
+  // \int_K^inf Phi(ka) J_n(kr) dk = (1/a) \int_{Ka}^inf Phi(s) J_n(rho s) ds.
+  const double tail = g_inf / a * asymptotic_tail(order, load, rho, K * a, 1e-3 * rel_tol);
   return amplitude * a * a * (head + tail);
 }
 

@@ -3,6 +3,8 @@
 // displacement as a Hankel integral (docs/theory.md §0, §1.4-1.5),
 //   u_z(r) = (1/2pi) \int_0^inf H(k) P^(k) J0(k r) k dk,   P^(k) = 2 pi \int_0^a p(s) J0(k s) s ds.
 // It checks FFT pipelines for coated and layered bodies, where no closed form exists.
+#include <functional>
+
 #include "../frf/frf.hpp"
 
 namespace coatfft {
@@ -34,5 +36,16 @@ double axisymmetric_load_transform(AxisymmetricLoad load, double amplitude, doub
 double hankel_displacement(const Frf& frf, AxisymmetricLoad load, double amplitude, double a,
                            double r, double rel_tol = 1e-10,
                            HankelRoute route = HankelRoute::split);
+
+/// amplitude a^2 \int_0^inf g(k) Phi(ka) J_n(kr) dk, n = `order` in {0, 1, 2}, Phi the load's shape
+/// (P^(k) = 2 pi amplitude a^2 Phi(ka)): hankel_displacement's direct route for any g that equals
+/// g_inf [m/Pa] beyond k_converged [rad/m] to 1e-3 rel_tol (g = k H for u_z; the other orders give
+/// the in-plane and coupling displacements of docs/theory.md 2.9). Panels up to K =
+/// max(k_converged, 500/min(a, r)), the tail beyond from the Hankel expansions (GSL QAWF). `scale`
+/// [m/Pa / m] sets the absolute tolerance rel_tol scale of the head. InvalidArgument for another
+/// order, Error when a quadrature fails.
+double hankel_load_integral(const std::function<double(double)>& g, double g_inf,
+                            double k_converged, int order, AxisymmetricLoad load, double amplitude,
+                            double a, double r, double scale, double rel_tol);
 
 }  // namespace coatfft

@@ -1,0 +1,138 @@
+#include "convolution/surface_kernels.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include "convolution/angular_influence.hpp"
+#include "convolution/cerruti_influence.hpp"
+#include "convolution/love_influence.hpp"
+#include "core/detail/parallel_for.hpp"
+#include "core/detail/timing.hpp"
+#include "core/error.hpp"
+#include "frf/frf.hpp"
+#include "frf/surface_response.hpp"
+
+namespace coatfft {
+
+namespace {
+
+// The homogeneous half-space: Love's u_z under p, Cerruti's (xx, yx, zx) under q_x and, with the
+// axes swapped, under q_y (docs/theory.md 1.3b), all in closed form.
+SurfaceKernels half_space(const Grid& g, const Material& m, int threads) {
+  const std::ptrdiff_t nx = g.nx(), ny = g.ny();
+  const double dx = g.dx(), dy = g.dy();
+  SurfaceKernels c{Field(nx, ny), Field(nx, ny), Field(nx, ny),
+                   Field(nx, ny), Field(nx, ny), Field(nx, ny)};
+  detail::parallel_for(0, ny, threads, [&](std::ptrdiff_t j) {
+    for (std::ptrdiff_t i = 0; i < nx; ++i) {
+      const double x = i * dx, y = j * dy;
+      c.zp(i, j) = love_influence(x, y, dx, dy) / m.plane_strain_modulus();
+      const CerrutiCoefficients q = cerruti_influence(x, y, dx, dy, m);
+      c.xx(i, j) = q.xx;
+      c.yx(i, j) = q.yx;
+      c.zx(i, j) = q.zx;
+      const CerrutiCoefficients swapped = cerruti_influence(y, x, dy, dx, m);
+      c.yy(i, j) = swapped.xx;
+      c.zy(i, j) = swapped.zx;
+    }
+  });
+  return c;
+}
+
+// The first two terms of the split of D and C (docs/theory.md (2.9.2)): the top medium's
+// half-space and the exp(-beta k) transition to the substrate's, in closed form. dc is the kernel
+// of D cos 2theta (u_x under q_x less that of S).
+struct AngularPart {
+  Field dc, yx, zx, zy;
+};
+
+AngularPart angular_part(const Grid& g, const SurfaceFrfs& f0, const SurfaceFrfs& fi, double beta,
+                         int threads) {
+  const std::ptrdiff_t nx = g.nx(), ny = g.ny();
+  const double dx = g.dx(), dy = g.dy();
+  AngularPart a{Field(nx, ny), Field(nx, ny), Field(nx, ny), Field(nx, ny)};
+  const double dd = f0.d - fi.d, dc = f0.c - fi.c;
+  detail::parallel_for(0, ny, threads, [&](std::ptrdiff_t j) {
+    for (std::ptrdiff_t i = 0; i < nx; ++i) {
+      const double x = i * dx, y = j * dy;
+      const AngularCoefficients top = angular_influence(x, y, dx, dy, 0.0);
+      const AngularCoefficients deep = angular_influence(x, y, dx, dy, beta);
+      a.dc(i, j) = fi.d * top.cos2 + dd * deep.cos2;
+      a.yx(i, j) = fi.d * top.sin2 + dd * deep.sin2;
+      a.zx(i, j) = fi.c * top.cos1 + dc * deep.cos1;
+      const double top_y = angular_influence(y, x, dy, dx, 0.0).cos1;
+      const double deep_y = angular_influence(y, x, dy, dx, beta).cos1;
+      a.zy(i, j) = fi.c * top_y + dc * deep_y;
+    }
+  });
+  return a;
+}
+
+// The remainders R_D, R_C of the split on the lattices, as the spectra of (dc, yx, zx, zy):
+// G = i^(odd_x + odd_y) F with F = R_D cos 2theta, R_D sin 2theta, -i R_C cos theta,
+// -i R_C sin theta.
+void add_remainders(const Grid& g, const SurfaceResponse& response, double beta,
+                    const SurfaceKernelOptions& o, AngularPart& a, LatticeReport& report) {
+  const SurfaceFrfs& f0 = response.at_zero();
+  const SurfaceFrfs& fi = response.at_infinity();
+  LatticeSpectra s;
+  s.parity = {{false, false}, {true, true}, {true, false}, {false, true}};
+  // |R| <= (a polynomial in k beta) exp(-k beta) of the half-space terms (docs/theory.md 2.9.4).
+  const double log_tol = std::log(1.0 / o.tolerance);
+  s.k_cut = (log_tol + 2.0 * std::log1p(log_tol) + 3.0) / beta;
+  s.sample = [&](double kx, double ky, double k, std::span<double> out) {
+    const SurfaceFrfs f = response(k);
+    const double e = std::exp(-beta * k);
+    const double rd = f.d - (fi.d + (f0.d - fi.d) * e) / k;
+    const double rc = f.c - (fi.c + (f0.c - fi.c) * e) / k;
+    const double c = kx / k, sn = ky / k;
+    out[0] = rd * (c * c - sn * sn);
+    out[1] = -rd * 2.0 * c * sn;
+    out[2] = rc * c;
+    out[3] = rc * sn;
+  };
+  const std::vector<Field> r =
+      lattice_coefficients(g, s, o.lattice, "surface kernels of a layered body", &report);
+  a.dc += r[0];
+  a.yx += r[1];
+  a.zx += r[2];
+  a.zy += r[3];
+}
+
+SurfaceKernels layered(const Grid& g, const LayerStack& stack, const SurfaceKernelOptions& o,
+                       SurfaceKernelReport& report) {
+  const SurfaceResponse response(stack);
+  COATFFT_REQUIRE(response.bonded(),
+                  "surface kernels: tangential tractions need every interface bonded (a coating "
+                  "over a frictionless interface has no equilibrium under a net tangential force)");
+  COATFFT_REQUIRE(o.tolerance > 0 && o.tolerance <= 1e-3,
+                  "surface kernels: tolerance must be in (0, 1e-3]");
+  const int threads = o.lattice.threads;
+  SplitKernelOptions split = o.split;
+  split.threads = threads;
+  const auto radial = [&](const Frf& f) {
+    return Field(split_frf_kernel(g, f, split).quarter().topLeftCorner(g.nx(), g.ny()));
+  };
+  const Field zp = radial(*make_frf(stack));
+  const Field s = radial(*in_plane_frf(stack));
+  report.beta = stack.coatings().front().thickness;
+  AngularPart a = angular_part(g, response.at_zero(), response.at_infinity(), report.beta, threads);
+  add_remainders(g, response, report.beta, o, a, report.lattice);
+  return {zp, s + a.dc, s - a.dc, std::move(a.yx), std::move(a.zx), std::move(a.zy)};
+}
+
+}  // namespace
+
+SurfaceKernels surface_kernels(const Grid& grid, const LayerStack& stack,
+                               const SurfaceKernelOptions& options, SurfaceKernelReport* report) {
+  const auto start = std::chrono::steady_clock::now();
+  SurfaceKernelReport r;
+  SurfaceKernels k = stack.is_homogeneous()
+                         ? half_space(grid, stack.substrate(), options.lattice.threads)
+                         : layered(grid, stack, options, r);
+  r.seconds = detail::seconds_since(start);
+  if (report) *report = r;
+  return k;
+}
+
+}  // namespace coatfft

@@ -1,0 +1,65 @@
+#include "frf/surface_response.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "core/error.hpp"
+
+namespace coatfft {
+
+namespace {
+
+SurfaceFrfs from_modes(const ModeFields& m) {
+  return {m.uz_p, 0.5 * (m.uL_q + m.uT_t), 0.5 * (m.uL_q - m.uT_t), m.uz_q};
+}
+
+bool all_bonded(const LayerStack& stack) {
+  for (const Coating& c : stack.coatings())
+    if (c.interface_below != Interface::bonded) return false;
+  return true;
+}
+
+// S(k) of a stack as an Frf, for split_frf_kernel.
+class InPlaneFrf final : public Frf {
+ public:
+  explicit InPlaneFrf(const LayerStack& stack) : response_(stack) {}
+  double operator()(double k) const override { return response_(k).s; }
+  double c0() const override { return response_.at_zero().s; }
+  double c_inf() const override { return response_.at_infinity().s; }
+  std::string name() const override { return "in_plane"; }
+
+ private:
+  SurfaceResponse response_;
+};
+
+}  // namespace
+
+SurfaceFrfs half_space_surface_frfs(const Material& material) {
+  const double mu = material.shear_modulus();
+  const double nu = material.poisson_ratio();
+  return {(1.0 - nu) / mu, (2.0 - nu) / (2.0 * mu), -nu / (2.0 * mu),
+          (1.0 - 2.0 * nu) / (2.0 * mu)};
+}
+
+SurfaceResponse::SurfaceResponse(const LayerStack& stack)
+    : modes_(stack),
+      at_zero_(half_space_surface_frfs(stack.substrate())),
+      at_infinity_(half_space_surface_frfs(
+          stack.is_homogeneous() ? stack.substrate() : stack.coatings().front().material)),
+      bonded_(all_bonded(stack)) {}
+
+SurfaceFrfs SurfaceResponse::operator()(double k) const {
+  COATFFT_REQUIRE(std::isfinite(k) && k > 0, "surface response: k = ", k,
+                  " rad/m, but it must be finite and > 0");
+  const double surface[1] = {0.0};
+  return from_modes(modes_.at(k, surface).front());
+}
+
+std::unique_ptr<Frf> in_plane_frf(const LayerStack& stack) {
+  COATFFT_REQUIRE(all_bonded(stack),
+                  "in-plane FRF: a stack with a frictionless interface has no finite in-plane "
+                  "compliance as k -> 0 (the coating above it slides)");
+  return std::make_unique<InPlaneFrf>(stack);
+}
+
+}  // namespace coatfft
