@@ -13,6 +13,7 @@
 #include "cli/frf_table_file.hpp"
 #include "cli/input_file.hpp"
 #include "cli/npy.hpp"
+#include "convolution/surface_kernels.hpp"
 #include "core/detail/parse_name.hpp"
 #include "core/detail/shorten.hpp"
 #include "core/error.hpp"
@@ -646,17 +647,29 @@ ShearSpec read_shear(const toml::table& root, const std::filesystem::path& scene
   return spec;
 }
 
-// Tangential tractions enter only the stresses, and on a body with a frictionless interface a
-// net tangential force has no equilibrium (the coating slides; docs/theory.md 2.3).
+bool surface_kernels_affordable(const Scene& scene) {
+  return surface_kernel_evaluations(scene.grid, *scene.body) <= LatticeOptions{}.max_evaluations;
+}
+
+// Tangential tractions act on the surface displacements of any bonded layer stack
+// (convolution/surface_kernels.hpp) and on the stresses. An [frf] table gives no tangential
+// response, and on a body with a frictionless interface a net tangential force has no equilibrium
+// (the coating slides; docs/theory.md 2.3). The layered kernels' cost is checked before any work.
 void check_tangential(const Scene& scene, const char* key) {
-  COATFFT_REQUIRE(scene.stress.has_value(), key,
-                  " acts on the stresses only (the surface displacements do not include "
-                  "tangential tractions yet): add a [stress] section");
+  COATFFT_REQUIRE(!scene.frf && scene.body, key,
+                  " needs a body of [substrate] and [[coating]]: an [frf] table gives no "
+                  "response to tangential tractions");
   for (std::size_t i = 0; i < scene.body->coatings().size(); ++i)
     COATFFT_REQUIRE(scene.body->coatings()[i].interface_below != Interface::frictionless, key,
                     ": tangential tractions on a body with a frictionless interface (below "
                     "coating ",
                     i + 1, ") are not supported: a net tangential force has no equilibrium there");
+  COATFFT_REQUIRE(surface_kernels_affordable(scene), key, ": the top coating (",
+                  scene.body->coatings().front().thickness, " m) is so thin against the ",
+                  scene.grid.lx(), " x ", scene.grid.ly(),
+                  " m domain that its surface kernels need about ",
+                  surface_kernel_evaluations(scene.grid, *scene.body), " FRF evaluations (limit ",
+                  LatticeOptions{}.max_evaluations, "; the cost grows like (L/h)^2)");
 }
 
 // [frf]: the body as a table of its FRF. Love's coefficients (direct, dcfft) need a material,
@@ -759,8 +772,11 @@ Scene read_scene(const std::filesystem::path& path) {
     }
     if (scene.contact && scene.contact->friction > 0.0)
       check_tangential(scene, "[contact] friction");
-    // The in-plane surface displacements: Cerruti's closed forms, homogeneous bodies only.
-    scene.output.in_plane = scene.stress && scene.body && scene.body->is_homogeneous();
+    // The in-plane surface displacements (ux.npy, uy.npy), with tangential tractions or stresses,
+    // of a bonded body whose surface kernels are affordable (checked above when tractions act).
+    scene.output.in_plane =
+        (scene.stress || scene.shear || (scene.contact && scene.contact->friction > 0.0)) &&
+        !scene.frf && scene.body && scene.body->all_bonded() && surface_kernels_affordable(scene);
     // g(0) only shifts every displacement by one constant, which a load-controlled contact
     // absorbs in its approach; when that approach is not reported, g(0) is not computed at all.
     if (scene.contact && !scene.contact->report_approach)

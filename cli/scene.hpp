@@ -93,7 +93,8 @@ struct OutputSpec {
   bool stress = false;
   /// stress_section.npy and von_mises_section.npy: set by [stress] section
   bool stress_section = false;
-  /// ux.npy and uy.npy: set by [stress], [shear] or [contact] friction on a homogeneous body
+  /// ux.npy and uy.npy: set by [stress], [shear] or [contact] friction on a bonded body (not an
+  /// [frf] table) whose surface kernels are affordable (convolution/surface_kernels.hpp)
   bool in_plane = false;
 };
 

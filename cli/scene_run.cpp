@@ -15,6 +15,7 @@
 #include "cli/scene_pressure.hpp"
 #include "contact/contact_solver.hpp"
 #include "contact/indenter.hpp"
+#include "contact/sliding_contact.hpp"
 #include "convolution/cerruti_operator.hpp"
 #include "convolution/fftw_wisdom.hpp"
 #include "core/detail/timing.hpp"
@@ -181,12 +182,14 @@ void add_contact_summary(nlohmann::json& summary, const Scene& scene, const Cont
   if (nlohmann::json hertz = hertz_json(scene); !hertz.is_null()) summary["hertz"] = hertz;
 }
 
-// The in-plane surface displacements of a homogeneous body (Cerruti's closed forms), and the
-// normal displacement of the tractions: added to uz in a known-load scene; in a contact, whose
-// normal problem is solved frictionless, only reported (summary "tangential_uz": its largest
-// value over the largest uz, the size of the neglected coupling).
-void add_in_plane(const LayerStack& body, const Tractions& q, SceneRun& run) {
-  CerrutiOperator op(run.grid, body.substrate());
+// The in-plane surface displacements of a bonded body (convolution/surface_kernels.hpp), and the
+// normal displacement of the tractions: added to uz in a known-load scene; in a contact, where the
+// sliding solve has included it already (contact/sliding_contact.hpp), only reported (summary
+// "tangential_uz": its largest value over the largest uz).
+void add_in_plane(const LayerStack& body, const Tractions& q, int threads, SceneRun& run) {
+  SurfaceKernelOptions options;
+  options.lattice.threads = threads;
+  CerrutiOperator op(run.grid, body, options);
   std::array<Field, 3> u;
   op.apply(run.pressure, q.qx ? &*q.qx : nullptr, q.qy ? &*q.qy : nullptr, u);
   run.ux = std::move(u[0]);
@@ -194,19 +197,73 @@ void add_in_plane(const LayerStack& body, const Tractions& q, SceneRun& run) {
   if (!q.qx && !q.qy) return;
   const Field zero = Field::Zero(run.grid.nx(), run.grid.ny());
   op.apply(zero, q.qx ? &*q.qx : nullptr, q.qy ? &*q.qy : nullptr, u);
-  const double ratio = u[2].abs().maxCoeff() / run.uz.abs().maxCoeff();
-  if (run.gap) {
-    run.summary["tangential_uz"] = ratio;
-  } else {
-    run.uz += u[2];
-    run.summary["uz_max"] = run.uz.maxCoeff();
-    run.summary["uz_center"] = run.uz(run.grid.centre_i(), run.grid.centre_j());
-    run.summary["tangential_uz"] = ratio;
+  run.summary["tangential_uz"] = u[2].abs().maxCoeff() / run.uz.abs().maxCoeff();
+  if (run.gap) return;
+  run.uz += u[2];
+  run.summary["uz_max"] = run.uz.maxCoeff();
+  run.summary["uz_center"] = run.uz(run.grid.centre_i(), run.grid.centre_j());
+}
+
+// The normal displacement of q_x relative to the indenter: the body's (any bonded stack,
+// convolution/surface_kernels.hpp) less an elastic indenter's, whose surface receives -q_x.
+TangentialCoupling tangential_coupling(const Grid& grid, const LayerStack& body,
+                                       const std::optional<Material>& indenter, int threads) {
+  SurfaceKernelOptions options;
+  options.lattice.threads = threads;
+  auto on_body = std::make_shared<CerrutiOperator>(grid, body, options);
+  std::shared_ptr<CerrutiOperator> on_indenter;
+  if (indenter)
+    on_indenter = std::make_shared<CerrutiOperator>(grid, LayerStack(*indenter), options);
+  return [on_body, on_indenter](const Field& qx) {
+    const Field zero = Field::Zero(qx.rows(), qx.cols());
+    std::array<Field, 3> u;
+    on_body->apply(zero, &qx, nullptr, u);
+    Field uz = std::move(u[2]);
+    if (on_indenter) {
+      on_indenter->apply(zero, &qx, nullptr, u);
+      uz -= u[2];
+    }
+    return uz;
+  };
+}
+
+// The contact solve: frictionless, or under full sliding with the coupling iterated
+// (contact/sliding_contact.hpp), reported in summary "friction_coupling".
+ContactResult solve_scene_contact(ContactSolver& solver, const Scene& scene,
+                                  const std::optional<LayerStack>& body, const Field& height_field,
+                                  nlohmann::json& report) {
+  const ContactSpec& spec = *scene.contact;
+  const ContactControl control = spec.load ? ContactControl::load : ContactControl::approach;
+  const double value = spec.load ? *spec.load : *spec.approach;
+  if (spec.friction == 0.0) return solver.solve(height_field, control, value);
+  SlidingOptions options;
+  options.friction = spec.friction;
+  // Each solve is converged to spec.tolerance: the change between two solves cannot be smaller.
+  options.tolerance = 10.0 * spec.tolerance;
+  SlidingReport r;
+  ContactResult result = solve_sliding(
+      solver,
+      // A scene with friction has a layered body (cli/scene.cpp, check_tangential).
+      tangential_coupling(scene.grid, *body, spec.indenter_material, scene.method.options.threads),
+      height_field, control, value, options, &r);
+  report = {{"solves", r.solves},
+            {"pressure_change", r.pressure_change},
+            {"pressure_shift", r.pressure_shift},
+            {"converged", r.converged}};
+  if (!r.converged && result.converged) {
+    result.converged = false;
+    result.status = ContactStatus::iteration_limit;
+    result.warning = detail::concat("the friction coupling did not converge in ", r.solves,
+                                    " normal solves (pressure change ", r.pressure_change, ")");
   }
+  return result;
 }
 
 SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat, Progress& progress) {
   const ContactSpec& spec = *scene.contact;
+  // The body as the scene gives it, for the friction coupling (before an elastic indenter's
+  // composite modulus replaces it for the normal compliance).
+  const std::optional<LayerStack> scene_body = scene.body;
   if (spec.indenter_material) {
     // Two homogeneous elastic bodies in frictionless normal contact deform as one half-space of
     // the composite modulus (Johnson section 4.2); only E* enters the normal compliance.
@@ -223,8 +280,8 @@ SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat, Pr
   progress.stage(spec.load ? "solving the contact (load control)"
                            : "solving the contact (approach control)");
   const auto start = Clock::now();
-  ContactResult result = spec.load ? solver.solve_load(height_field, *spec.load)
-                                   : solver.solve_approach(height_field, *spec.approach);
+  nlohmann::json coupling;
+  ContactResult result = solve_scene_contact(solver, scene, scene_body, height_field, coupling);
   const double solve_seconds = seconds_since(start);
   COATFFT_REQUIRE(!result.touches_boundary,
                   "[contact] the contact reaches the domain edge (pressure > 0 on a border cell): "
@@ -237,6 +294,7 @@ SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat, Pr
   nlohmann::json summary = common_summary(scene, automatic, built, apply_seconds, repeat,
                                           result.pressure, result.displacement);
   add_contact_summary(summary, scene, result, solve_seconds);
+  if (!coupling.is_null()) summary["friction_coupling"] = coupling;
   // The solver computes the gap in any case; the CLI saves it only when [output] asks for it.
   return {scene.grid,
           std::move(result.pressure),
@@ -289,13 +347,16 @@ SceneRun compute_scene(PreparedScene prepared, const SceneRunOptions& options) {
       prepared.scene.contact
           ? compute_contact(std::move(prepared.scene), prepared.automatic, options.repeat, progress)
           : compute_pressure(prepared.scene, prepared.automatic, options.repeat, progress);
+  const Tractions q = scene_tractions(scene_copy, run.pressure);
   if (stress) {
     progress.stage("stresses on " + std::to_string(stress_plane_depths(*stress, *body).size()) +
                    " planes");
-    const Tractions q = scene_tractions(scene_copy, run.pressure);
     run.stress = compute_stress(*stress, *body, run.grid, run.pressure, q, threads);
     run.summary["stress"] = run.stress->summary;
-    if (body->is_homogeneous()) add_in_plane(*body, q, run);
+  }
+  if (scene_copy.output.in_plane) {
+    progress.stage("in-plane surface displacements");
+    add_in_plane(*body, q, threads, run);
   }
   return run;
 }

@@ -9,6 +9,7 @@
 #include "core/detail/parallel_for.hpp"
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
+#include "core/threads.hpp"
 #include "frf/frf.hpp"
 #include "frf/surface_response.hpp"
 
@@ -68,6 +69,13 @@ AngularPart angular_part(const Grid& g, const SurfaceFrfs& f0, const SurfaceFrfs
   return a;
 }
 
+// |R| <= (a polynomial in k beta) exp(-k beta) of the half-space terms (docs/theory.md 2.9.4):
+// below the tolerance beyond this wavenumber [rad/m].
+double remainder_cut_off(double beta, double tolerance) {
+  const double log_tol = std::log(1.0 / tolerance);
+  return (log_tol + 2.0 * std::log1p(log_tol) + 3.0) / beta;
+}
+
 // The remainders R_D, R_C of the split on the lattices, as the spectra of (dc, yx, zx, zy):
 // G = i^(odd_x + odd_y) F with F = R_D cos 2theta, R_D sin 2theta, -i R_C cos theta,
 // -i R_C sin theta.
@@ -77,9 +85,7 @@ void add_remainders(const Grid& g, const SurfaceResponse& response, double beta,
   const SurfaceFrfs& fi = response.at_infinity();
   LatticeSpectra s;
   s.parity = {{false, false}, {true, true}, {true, false}, {false, true}};
-  // |R| <= (a polynomial in k beta) exp(-k beta) of the half-space terms (docs/theory.md 2.9.4).
-  const double log_tol = std::log(1.0 / o.tolerance);
-  s.k_cut = (log_tol + 2.0 * std::log1p(log_tol) + 3.0) / beta;
+  s.k_cut = remainder_cut_off(beta, o.tolerance);
   s.sample = [&](double kx, double ky, double k, std::span<double> out) {
     const SurfaceFrfs f = response(k);
     const double e = std::exp(-beta * k);
@@ -126,6 +132,8 @@ SurfaceKernels layered(const Grid& g, const LayerStack& stack, const SurfaceKern
 SurfaceKernels surface_kernels(const Grid& grid, const LayerStack& stack,
                                const SurfaceKernelOptions& options, SurfaceKernelReport* report) {
   const auto start = std::chrono::steady_clock::now();
+  COATFFT_REQUIRE(options.lattice.threads >= 1 && options.lattice.threads <= max_threads,
+                  "surface kernels: threads must be in [1, ", max_threads, "]");
   SurfaceKernelReport r;
   SurfaceKernels k = stack.is_homogeneous()
                          ? half_space(grid, stack.substrate(), options.lattice.threads)
@@ -133,6 +141,14 @@ SurfaceKernels surface_kernels(const Grid& grid, const LayerStack& stack,
   r.seconds = detail::seconds_since(start);
   if (report) *report = r;
   return k;
+}
+
+double surface_kernel_evaluations(const Grid& grid, const LayerStack& stack,
+                                  const SurfaceKernelOptions& options) {
+  if (stack.is_homogeneous()) return 0.0;
+  const double beta = stack.coatings().front().thickness;
+  return lattice_evaluations(grid, remainder_cut_off(beta, options.tolerance),
+                             options.lattice.alpha);
 }
 
 }  // namespace coatfft

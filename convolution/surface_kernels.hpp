@@ -47,4 +47,10 @@ SurfaceKernels surface_kernels(const Grid& grid, const LayerStack& stack,
                                const SurfaceKernelOptions& options = {},
                                SurfaceKernelReport* report = nullptr);
 
+/// About how many FRF evaluations the remainders' lattices of surface_kernels take for `stack` on
+/// `grid` (0 for a homogeneous body), to refuse before any work what would exceed
+/// options.lattice.max_evaluations.
+double surface_kernel_evaluations(const Grid& grid, const LayerStack& stack,
+                                  const SurfaceKernelOptions& options = {});
+
 }  // namespace coatfft

@@ -13,12 +13,6 @@ SurfaceFrfs from_modes(const ModeFields& m) {
   return {m.uz_p, 0.5 * (m.uL_q + m.uT_t), 0.5 * (m.uL_q - m.uT_t), m.uz_q};
 }
 
-bool all_bonded(const LayerStack& stack) {
-  for (const Coating& c : stack.coatings())
-    if (c.interface_below != Interface::bonded) return false;
-  return true;
-}
-
 // S(k) of a stack as an Frf, for split_frf_kernel.
 class InPlaneFrf final : public Frf {
  public:
@@ -46,7 +40,7 @@ SurfaceResponse::SurfaceResponse(const LayerStack& stack)
       at_zero_(half_space_surface_frfs(stack.substrate())),
       at_infinity_(half_space_surface_frfs(
           stack.is_homogeneous() ? stack.substrate() : stack.coatings().front().material)),
-      bonded_(all_bonded(stack)) {}
+      bonded_(stack.all_bonded()) {}
 
 SurfaceFrfs SurfaceResponse::operator()(double k) const {
   COATFFT_REQUIRE(std::isfinite(k) && k > 0, "surface response: k = ", k,
@@ -56,7 +50,7 @@ SurfaceFrfs SurfaceResponse::operator()(double k) const {
 }
 
 std::unique_ptr<Frf> in_plane_frf(const LayerStack& stack) {
-  COATFFT_REQUIRE(all_bonded(stack),
+  COATFFT_REQUIRE(stack.all_bonded(),
                   "in-plane FRF: a stack with a frictionless interface has no finite in-plane "
                   "compliance as k -> 0 (the coating above it slides)");
   return std::make_unique<InPlaneFrf>(stack);

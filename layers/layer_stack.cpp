@@ -33,6 +33,12 @@ LayerStack::LayerStack(std::vector<Coating> coatings, Material substrate)
   }
 }
 
+bool LayerStack::all_bonded() const {
+  for (const Coating& c : coatings_)
+    if (c.interface_below != Interface::bonded) return false;
+  return true;
+}
+
 double LayerStack::total_thickness() const {
   double sum = 0.0;
   for (const auto& coating : coatings_) sum += coating.thickness;

@@ -33,6 +33,8 @@ class LayerStack {
   const Material& substrate() const { return substrate_; }
   const std::vector<Coating>& coatings() const { return coatings_; }
   bool is_homogeneous() const { return coatings_.empty(); }
+  /// Whether every interface is bonded (true for a homogeneous body).
+  bool all_bonded() const;
   /// Sum of coating thicknesses [m] (0 for a homogeneous body).
   double total_thickness() const;
 

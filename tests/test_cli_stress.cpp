@@ -1,6 +1,7 @@
 // [stress], [shear] and [contact] friction in scenes: the files and summary keys a run writes,
 // their shapes and their agreement with the library called directly, the tangential tractions
 // entering by linearity, and the refusals (one line, exit 2, no output).
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
@@ -101,7 +102,9 @@ TEST_CASE("[stress] writes the stress files with their shapes and summary keys",
 
 TEST_CASE("[stress] on a coated body reports the interface's largest shear", "[cli_stress]") {
   const fs::path out = run_scene_ok(kCoatedStress, "stress_coated");
-  CHECK_FALSE(fs::exists(out / "ux.npy"));  // layered bodies: not computed yet
+  // The in-plane surface displacements of the layered body (convolution/surface_kernels.hpp).
+  CHECK(npy_shape(out / "ux.npy") == "(20, 24)");
+  CHECK(npy_shape(out / "uy.npy") == "(20, 24)");
   const nlohmann::json s = read_summary(out)["stress"];
   REQUIRE(s["interfaces"].size() == 1);
   CHECK(s["interfaces"][0]["depth"].get<double>() == Approx(2e-4));
@@ -182,12 +185,59 @@ TEST_CASE("[stress], [shear] and friction refuse bad scenes with one line", "[cl
        "kind = \"file\"\npath_x = \"nothing_here.npy\"", "nothing_here.npy"},
   };
   for (const BadCase& c : shear_cases) check_refused(with_shear, c);
-  // [shear] without [stress]; with a frictionless interface; friction without [stress].
-  check_refused(std::string(kGoodScene) + "[shear]\nkind = \"proportional\"\nmu = 0.2\n",
-                {"shear_without_stress", "", "", "[stress]"});
+  // [shear] with a frictionless interface; on a coating so thin against the domain that its
+  // surface kernels would need about 1e11 FRF evaluations; friction on a frictionless interface.
   check_refused(kCoatedStress + "[shear]\nkind = \"proportional\"\nmu = 0.2\n",
                 {"shear_frictionless", "thickness = 2e-4",
                  "thickness = 2e-4\ninterface = \"frictionless\"", "frictionless"});
-  check_refused(std::string(kSmallContactScene) + "friction = 0.2\n",
-                {"friction_without_stress", "", "", "[stress]"});
+  check_refused(kCoatedStress.substr(0, kCoatedStress.find("[stress]")) +
+                    "[shear]\nkind = \"proportional\"\nmu = 0.2\n",
+                {"shear_thin_coating", "thickness = 2e-4", "thickness = 1e-7", "so thin"});
+  check_refused(std::string(kSmallContactScene) +
+                    "friction = 0.2\n[[coating]]\nmaterial = \"titanium_nitride\"\nthickness = "
+                    "2e-4\ninterface = \"frictionless\"\n",
+                {"friction_frictionless", "", "", "frictionless"});
+}
+
+TEST_CASE("[shear] without [stress] writes the surface displacements of a coated body",
+          "[cli_stress]") {
+  // The coated scene without its [stress] section, with and without a traction q_y = 0.3 p.
+  std::string base = kCoatedStress;
+  base = base.substr(0, base.find("[stress]"));
+  const fs::path plain = run_scene_ok(base, "shear_coated0");
+  const fs::path sheared = run_scene_ok(
+      base + "[shear]\nkind = \"proportional\"\nmu = 0.3\ndirection = \"y\"\n", "shear_coated");
+  CHECK_FALSE(fs::exists(plain / "ux.npy"));  // neither tractions nor stresses
+  CHECK(npy_shape(sheared / "ux.npy") == "(20, 24)");
+  CHECK_FALSE(fs::exists(sheared / "stress.npy"));
+  // Along +y the surface is dragged along +y: u_y > 0 at the centre; u_z changes by the
+  // coupling, which is odd in y (zero on average over the grid's symmetric rows).
+  const std::vector<double> uy = npy_values(sheared / "uy.npy");
+  const std::vector<double> z0 = npy_values(plain / "uz.npy");
+  const std::vector<double> z1 = npy_values(sheared / "uz.npy");
+  CHECK(uy[10 * 24 + 12] > 0.0);
+  double change = 0, total = 0;
+  for (std::size_t i = 0; i < z0.size(); ++i) {
+    change = std::max(change, std::abs(z1[i] - z0[i]));
+    total += z1[i] - z0[i];
+  }
+  CHECK(change > 1e-3 * *std::max_element(z0.begin(), z0.end()));
+  CHECK(std::abs(total) < 1e-9 * change * z0.size());
+  CHECK(read_summary(sheared)["tangential_uz"].get<double>() > 0.0);
+}
+
+TEST_CASE("[contact] friction iterates the normal-tangential coupling", "[cli_stress]") {
+  const fs::path out =
+      run_scene_ok(std::string(kSmallContactScene) + "friction = 0.3\n", "sliding");
+  const nlohmann::json s = read_summary(out);
+  REQUIRE(s.contains("friction_coupling"));
+  const nlohmann::json& c = s["friction_coupling"];
+  CHECK(c["converged"] == true);
+  CHECK(c["solves"].get<int>() >= 3);
+  CHECK(c["pressure_change"].get<double>() <= 1e-9);
+  // Steel on a rigid sphere, mu = 0.3: the pressure moves by a few per cent of its peak (of the
+  // order of beta mu, beta = (1 - 2 nu)/(2 (1 - nu)) = 0.29; Johnson 1985, section 7.2).
+  CHECK(c["pressure_shift"].get<double>() > 1e-3);
+  CHECK(c["pressure_shift"].get<double>() < 0.2);
+  CHECK(npy_shape(out / "ux.npy") == "(32, 32)");
 }

@@ -1,0 +1,45 @@
+#include "contact/sliding_contact.hpp"
+
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace coatfft {
+
+ContactResult solve_sliding(ContactSolver& solver, const TangentialCoupling& coupling,
+                            const Field& height, ContactControl control, double value,
+                            const SlidingOptions& options, SlidingReport* report) {
+  COATFFT_REQUIRE(std::isfinite(options.friction) && options.friction >= 0,
+                  "sliding contact: friction = ", options.friction, " must be finite and >= 0");
+  COATFFT_REQUIRE(std::isfinite(options.tolerance) && options.tolerance > 0,
+                  "sliding contact: tolerance must be finite and > 0");
+  COATFFT_REQUIRE(options.max_iterations >= 1, "sliding contact: max_iterations must be >= 1");
+  SlidingReport r;
+  ContactResult result = solver.solve(height, control, value);
+  r.solves = 1;
+  bool all_converged = result.converged;
+  Field shift;
+  const double p_max = result.pressure.maxCoeff();
+  if (options.friction > 0.0 && p_max > 0.0) {
+    const Field frictionless = result.pressure;
+    while (r.solves < options.max_iterations) {
+      shift = coupling(options.friction * result.pressure);
+      ContactResult next = solver.solve(height + shift, control, value);
+      ++r.solves;
+      all_converged = all_converged && next.converged;
+      r.pressure_change = (next.pressure - result.pressure).abs().maxCoeff() / p_max;
+      result = std::move(next);
+      if (r.pressure_change <= options.tolerance) break;
+    }
+    r.pressure_shift = (result.pressure - frictionless).abs().maxCoeff() / p_max;
+    // The displacement of the tractions of the final pressure (the gap used the previous one's,
+    // within the tolerance).
+    result.displacement += coupling(options.friction * result.pressure);
+  }
+  r.converged =
+      all_converged && (options.friction == 0.0 || r.pressure_change <= options.tolerance);
+  if (report) *report = r;
+  return result;
+}
+
+}  // namespace coatfft

@@ -1,0 +1,40 @@
+#pragma once
+// A normal contact under full sliding friction: q_x = mu p on the body's surface (the indenter
+// moves along +x and drags the surface with it). On a body whose materials are not
+// incompressible, or on two dissimilar bodies, the tractions displace the surface normally too
+// (the coupling C of docs/theory.md 2.9; Johnson 1985, section 7.2: of order beta mu), which
+// changes the gap and so the pressure. The normal problem is then solved again with the
+// tractions' normal displacement of the last pressure in the gap, a fixed-point iteration that
+// contracts by about that factor per step, until the pressure changes by less than the tolerance.
+#include <functional>
+
+#include "contact_solver.hpp"
+
+namespace coatfft {
+
+/// The relative normal displacement [m] (into the body) that the traction field q_x [Pa] causes:
+/// u_z of the body's surface, less the indenter's when it is elastic.
+using TangentialCoupling = std::function<Field(const Field& qx)>;
+
+struct SlidingOptions {
+  double friction = 0.0;    ///< mu >= 0 (finite): q_x = mu p
+  double tolerance = 1e-9;  ///< largest change of p between two solves over max p, > 0
+  int max_iterations = 30;  ///< normal solves at most (>= 1)
+};
+
+struct SlidingReport {
+  int solves = 0;                ///< normal solves done (1: friction 0)
+  double pressure_change = 0.0;  ///< last change of p between two solves over max p
+  /// The coupling's effect: max |p - p_frictionless| over max p_frictionless.
+  double pressure_shift = 0.0;
+  bool converged = false;  ///< pressure_change <= tolerance (and every solve converged)
+};
+
+/// Solves the contact of `height` under `control` = `value` (as ContactSolver::solve) with the
+/// tractions' coupling iterated to its fixed point. The result's displacement and gap include
+/// the tractions' normal displacement. InvalidArgument on bad options.
+ContactResult solve_sliding(ContactSolver& solver, const TangentialCoupling& coupling,
+                            const Field& height, ContactControl control, double value,
+                            const SlidingOptions& options, SlidingReport* report = nullptr);
+
+}  // namespace coatfft
