@@ -18,6 +18,7 @@
 #include "frf/surface_response.hpp"
 #include "loads/hertz_pressure.hpp"
 #include "validation/axisymmetric_traction.hpp"
+#include "validation/hertz.hpp"
 
 using namespace coatfft;
 
@@ -214,4 +215,38 @@ TEST_CASE("surface kernels refuse frictionless interfaces and too thin coatings"
   CHECK(surface_kernel_evaluations(g, thin) > 1e9);
   CHECK_THROWS_AS(surface_kernels(g, thin), InvalidArgument);
   CHECK(surface_kernel_evaluations(g, LayerStack{substrate}) == 0.0);
+}
+
+TEST_CASE("the Hankel reference of the half-space equals Johnson's closed forms",
+          "[surface_kernels]") {
+  // Johnson (1985): the Hertz-type traction q0 sqrt(1 - r^2/a^2) along x gives, for r <= a,
+  // u_x = pi q0/(32 G a) [4 (2 - nu) a^2 - (4 - 3 nu) x^2 - (4 - nu) y^2], u_y = pi q0/(32 G a)
+  // 2 nu x y (section 3.6); the Hertz pressure the radial displacement
+  // u_r = -(1 - 2 nu)(1 + nu)/(3 E) (a^2/r) p0 [1 - (1 - r^2/a^2)^(3/2)] (eq. 3.41a) and u_z of
+  // validation/hertz.hpp. The reference is a different route (Hankel integrals of LayerModes).
+  const double a = 1e-3, q0 = 1e8, G = substrate.shear_modulus(), nu = 0.3;
+  const double E = substrate.youngs_modulus();
+  const LayerStack half{substrate};
+  const double scale = pi * q0 / (32 * G * a) * 4 * (2 - nu) * a * a;  // u_x(0)
+  for (const auto& p :
+       {std::array<double, 2>{0.0, 0.0}, {0.5e-3, 0.0}, {0.3e-3, 0.4e-3}, {-0.6e-3, 0.7e-3}}) {
+    const double x = p[0], y = p[1], r = std::hypot(x, y);
+    const SurfaceDisplacement q = axisymmetric_surface_displacement(
+        half, AxisymmetricLoad::hertz, LoadDirection::traction_x, q0, a, x, y, 1e-10);
+    const double ux =
+        pi * q0 / (32 * G * a) * (4 * (2 - nu) * a * a - (4 - 3 * nu) * x * x - (4 - nu) * y * y);
+    CHECK(std::abs(q.ux - ux) < 1e-9 * scale);
+    CHECK(std::abs(q.uy - pi * q0 / (32 * G * a) * 2 * nu * x * y) < 1e-9 * scale);
+    const SurfaceDisplacement v = axisymmetric_surface_displacement(
+        half, AxisymmetricLoad::hertz, LoadDirection::pressure, q0, a, x, y, 1e-10);
+    const double ur = r > 0 ? -(1 - 2 * nu) * (1 + nu) / (3 * E) * a * a / r * q0 *
+                                  (1 - std::pow(1 - r * r / (a * a), 1.5))
+                            : 0.0;
+    CHECK(std::abs(v.ux - (r > 0 ? ur * x / r : 0.0)) < 1e-9 * scale);
+    CHECK(std::abs(v.uy - (r > 0 ? ur * y / r : 0.0)) < 1e-9 * scale);
+    CHECK(v.uz ==
+          Approx(hertz_displacement(r, q0, a, substrate.plane_strain_modulus())).epsilon(1e-9));
+    // Betti: u_z under the traction is minus u_x under the pressure at the same point.
+    CHECK(std::abs(q.uz + v.ux) < 1e-9 * scale);
+  }
 }
