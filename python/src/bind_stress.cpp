@@ -1,5 +1,7 @@
 // stresses and von_mises: the stresses on planes inside a body (stress/stress_operator.hpp) under
-// a pressure and tangential tractions, as arrays of the layout of the program's stress.npy.
+// a pressure and tangential tractions, as arrays of the layout of the program's stress.npy; and
+// surface_displacements, the surface's (u_x, u_y, u_z) under the same loads
+// (convolution/cerruti_operator.hpp), as the program's ux.npy, uy.npy and uz.npy.
 #include <pybind11/stl.h>
 
 #include <optional>
@@ -8,6 +10,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "bodies.hpp"
+#include "convolution/cerruti_operator.hpp"
 #include "core/error.hpp"
 #include "stress/stress_invariants.hpp"
 #include "stress/stress_operator.hpp"
@@ -60,6 +63,30 @@ py::array_t<double> stresses(py::handle body_object, const Grid& grid, std::vect
   return out;
 }
 
+// (ux, uy, uz) [m], each (ny, nx), of any bonded body under p, q_x, q_y.
+py::tuple surface_displacements(py::handle body_object, const Grid& grid,
+                                const DoubleArray& pressure, const std::optional<DoubleArray>& qx,
+                                const std::optional<DoubleArray>& qy, int threads) {
+  const Body body = body_from_object(body_object, "body");
+  COATFFT_REQUIRE(body.stack,
+                  "surface_displacements: body must be a LayerStack or a Material (the "
+                  "tangential response needs the layers), not an Frf");
+  const Field p = field_from_array(pressure, grid, "surface_displacements: pressure");
+  std::optional<Field> fx, fy;
+  if (qx) fx = field_from_array(*qx, grid, "surface_displacements: qx");
+  if (qy) fy = field_from_array(*qy, grid, "surface_displacements: qy");
+  SurfaceKernelOptions options;
+  options.lattice.threads = threads;
+  std::array<Field, 3> u;
+  {
+    py::gil_scoped_release release;
+    CerrutiOperator op(grid, *body.stack, options);
+    op.apply(p, fx ? &*fx : nullptr, fy ? &*fy : nullptr, u);
+  }
+  return py::make_tuple(array_from_field(std::move(u[0])), array_from_field(std::move(u[1])),
+                        array_from_field(std::move(u[2])));
+}
+
 // von Mises of every tensor of an array whose third axis from the end holds the six components.
 py::array_t<double> von_mises_of(const DoubleArray& stress) {
   const py::ssize_t nd = stress.ndim();
@@ -93,6 +120,12 @@ void bind_stress(py::module_& m) {
         "under the pressure (compression positive) and the tractions qx, qy the surface "
         "receives, each (ny, nx) [Pa] of `grid`: an array (n_depths, 6, ny, nx), components xx, "
         "yy, zz, yz, xz, xy, tension positive, z into the body (docs/stress.md).");
+  m.def("surface_displacements", &surface_displacements, py::arg("body"), py::arg("grid"),
+        py::arg("pressure"), py::arg("qx") = py::none(), py::arg("qy") = py::none(),
+        py::kw_only(), py::arg("threads") = 1,
+        "Surface displacements (ux, uy, uz) [m], each (ny, nx), of `body` (a LayerStack with "
+        "bonded interfaces, or a Material) under the pressure and the tractions qx, qy [Pa] of "
+        "`grid`, uz into the body (docs/stress.md, 'Surface displacements').");
   m.def("von_mises", &von_mises_of, py::arg("stress"),
         "von Mises stress [Pa] of an array of stresses(), the component axis removed.");
 }

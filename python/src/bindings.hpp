@@ -11,7 +11,7 @@ void bind_loads(pybind11::module_& m);     // Grid, pressures, closed-form and H
 void bind_operator(pybind11::module_& m);  // make_operator, Operator
 void bind_contact(pybind11::module_& m);   // solve_contact, ContactResult
 void bind_scene(pybind11::module_& m);     // run_scene, validate_frf
-void bind_stress(pybind11::module_& m);    // stresses, von_mises
+void bind_stress(pybind11::module_& m);    // stresses, von_mises, surface_displacements
 void bind_timing(pybind11::module_& m);    // the C++ side of bench/bench_python.py
 
 /// A Python dict from JSON (the CLI's summary and reports), through the json module: numbers
