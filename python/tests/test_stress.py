@@ -84,3 +84,61 @@ def test_errors(steel, tin):
         coatfft.stresses(sliding, grid, [1e-4], p, qx=p)
     with pytest.raises(ValueError, match="third axis"):
         coatfft.von_mises(np.zeros((5, 4, 3)))
+
+
+def test_surface_displacements_against_johnson(steel):
+    # The Hertz-type traction q0 sqrt(1 - r^2/a^2) along x on a half-space (Johnson 1985, section
+    # 3.6): u_x = pi q0/(32 G a) [4 (2 - nu) a^2 - (4 - 3 nu) x^2 - (4 - nu) y^2] and
+    # u_y = pi q0/(32 G a) 2 nu x y for r <= a. The cell-averaged load at a/16 leaves 1.4e-3 of
+    # u_x(0) (docs/validation_traction.md); inside the contact less.
+    grid, q = hertz_case()
+    ux, uy, uz = coatfft.surface_displacements(steel, grid, np.zeros_like(q), qx=q)
+    assert ux.shape == uy.shape == uz.shape == (65, 65)
+    G, nu, a = steel.E / (2 * (1 + steel.nu)), steel.nu, 1e-3
+    x, y = np.meshgrid(grid.x, grid.y)
+    inside = x**2 + y**2 <= (0.9 * a)**2
+    c = np.pi / (32 * G * a)
+    ref_x = c * (4 * (2 - nu) * a**2 - (4 - 3 * nu) * x**2 - (4 - nu) * y**2)
+    ref_y = c * 2 * nu * x * y
+    scale = ref_x.max()
+    assert np.abs(ux - ref_x)[inside].max() < 1.5e-3 * scale
+    assert np.abs(uy - ref_y)[inside].max() < 1.5e-3 * scale
+    # u_z under the traction is odd in x and, by Betti, minus u_x under the same load as a
+    # pressure (the grid is symmetric about the origin).
+    np.testing.assert_allclose(uz, -uz[:, ::-1], atol=1e-12 * scale)
+    px, _, _ = coatfft.surface_displacements(steel, grid, q)
+    np.testing.assert_allclose(uz, -px, atol=1e-12 * scale)
+
+
+def test_surface_displacements_equal_the_program(coatfft_exe, tmp_path, steel, tin):
+    scene = SCENES / "coated_hertz_shear.toml"
+    done = subprocess.run([coatfft_exe, "run", str(scene), "-o", str(tmp_path), "--quiet"],
+                          capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    run = coatfft.run_scene(str(scene))
+    for name in ("ux", "uy", "uz"):
+        np.testing.assert_array_equal(run[name], np.load(tmp_path / f"{name}.npy"))
+    grid = coatfft.Grid(65, 65, 4.0625e-3, 4.0625e-3)
+    body = coatfft.LayerStack(steel, [coatfft.Coating(tin, 1e-4)])
+    ux, uy, uz = coatfft.surface_displacements(body, grid, run["pressure"],
+                                               qx=0.3 * run["pressure"])
+    np.testing.assert_array_equal(ux, run["ux"])
+    np.testing.assert_array_equal(uy, run["uy"])
+    # The program's uz is frf-split's under p plus the tractions' share: the same kernels, summed
+    # in another order.
+    np.testing.assert_allclose(uz, run["uz"], rtol=0, atol=1e-12 * np.abs(uz).max())
+
+
+def test_surface_displacements_errors(steel, tin):
+    grid, p = hertz_case(17)
+    table = coatfft.TabulatedFrf(np.logspace(0, 8, 50), 1 / np.logspace(0, 8, 50) / 1e11)
+    with pytest.raises(ValueError, match="not an Frf"):
+        coatfft.surface_displacements(table, grid, p)
+    sliding = coatfft.LayerStack(steel, [coatfft.Coating(tin, 1e-4, "frictionless")])
+    with pytest.raises(ValueError, match="frictionless"):
+        coatfft.surface_displacements(sliding, grid, p, qx=p)
+    with pytest.raises(ValueError, match="shape"):
+        coatfft.surface_displacements(steel, grid, p, qy=p[:-1])
+    thin = coatfft.LayerStack(steel, [coatfft.Coating(tin, 1e-8)])
+    with pytest.raises(ValueError, match="FRF evaluations"):
+        coatfft.surface_displacements(thin, grid, p)
