@@ -357,6 +357,14 @@ SceneRun compute_scene(PreparedScene prepared, const SceneRunOptions& options) {
   if (scene_copy.output.in_plane) {
     progress.stage("in-plane surface displacements");
     add_in_plane(*body, q, threads, run);
+  } else if (stress) {
+    // Only [stress] asked for them (tractions would have been refused): say why they are missing.
+    run.summary["warnings"].push_back(
+        body->all_bonded()
+            ? "ux.npy and uy.npy are not written: the top coating is too thin against the domain "
+              "for its surface kernels (convolution/surface_kernels.hpp)"
+            : "ux.npy and uy.npy are not written: a body with a frictionless interface has no "
+              "finite in-plane surface response (the coating slides)");
   }
   return run;
 }

@@ -117,6 +117,21 @@ TEST_CASE("[stress] on a coated body reports the interface's largest shear", "[c
   CHECK(s["interfaces"][0]["max_shear"]["value"].get<double>() == Approx(shear).epsilon(1e-12));
 }
 
+TEST_CASE("[stress] on a frictionless interface writes no ux.npy and says why", "[cli_stress]") {
+  std::string scene = kCoatedStress;
+  scene.replace(scene.find("thickness = 2e-4"), 16,
+                "thickness = 2e-4\ninterface = \"frictionless\"");
+  const fs::path out = run_scene_ok(scene, "stress_frictionless");
+  CHECK(fs::exists(out / "stress.npy"));
+  CHECK_FALSE(fs::exists(out / "ux.npy"));
+  CHECK_FALSE(fs::exists(out / "uy.npy"));
+  bool said = false;
+  const nlohmann::json summary = read_summary(out);
+  for (const auto& w : summary["warnings"])
+    said = said || w.get<std::string>().find("frictionless") != std::string::npos;
+  CHECK(said);
+}
+
 TEST_CASE("[shear] proportional adds mu times the unit-traction field", "[cli_stress]") {
   // Linearity: the run with [shear] mu = 0.3 minus the run without equals 0.3 times (the run with
   // mu = 1 minus the run without).
