@@ -1,8 +1,10 @@
 // Cost of the stresses on a plane against one surface-displacement application, side by side in
 // one run: DC-FFT (Love's coefficients, the pruned padded transforms of DcfftOperator) and
 // StressOperator with 1 and 8 planes under a pressure, and 1 plane under a pressure and two
-// tractions, on N x N grids of a TiN-coated steel body. Also each operator's setup time and
-// StressOperator::memory_bytes, and this process's peak RSS after the largest 8-plane operator.
+// tractions, on N x N grids of a TiN-coated steel body; and the whole surface response of that
+// body, (u_x, u_y, u_z) under (p, q_x, q_y) by CerrutiOperator (convolution/surface_kernels.hpp).
+// Also each operator's setup time and memory_bytes, and this process's peak RSS after the largest
+// 8-plane operator.
 // Prints "# key = value" headers and CSV rows, and writes them to bench/results/stress.csv.
 //   bench_stress [OUTPUT] [--max-n N]
 #include <CLI/CLI.hpp>
@@ -15,6 +17,7 @@
 #include <vector>
 
 #include "bench/bench_report.hpp"
+#include "convolution/cerruti_operator.hpp"
 #include "convolution/influence_kernel.hpp"
 #include "convolution/make_operator.hpp"
 #include "core/detail/timing.hpp"
@@ -69,6 +72,16 @@ std::vector<Row> measure(std::ptrdiff_t n) {
   const double surface_ms = median_ms([&] { surface.op->apply(p, u); });
   std::vector<Row> rows{{n, "surface dcfft", 0, surface_setup, surface_ms, 1.0, 0.0}};
 
+  SurfaceKernelOptions kernel_options;
+  t0 = Clock::now();
+  CerrutiOperator response(grid, body, kernel_options, Planning::measure);
+  const double response_setup = detail::seconds_since(t0);
+  std::array<Field, 3> displacements;
+  const double response_ms = median_ms([&] { response.apply(p, &qx, &qy, displacements); });
+  rows.push_back({n, "surface 3x3 p qx qy", 0, response_setup, response_ms,
+                  response_ms / surface_ms,
+                  static_cast<double>(response.memory_bytes()) / (1 << 20)});
+
   const std::vector<double> eight{1e-4, 2e-4, 3e-4, 4e-4, 5e-4, 6e-4, 7e-4, 8e-4};
   for (auto [what, planes, tangential] :
        {std::tuple{"stress p", 1, false}, {"stress p", 8, false}, {"stress p qx qy", 1, true}}) {
@@ -100,7 +113,8 @@ int main(int argc, char** argv) {
   std::ostringstream out;
   bench::write_machine_header(out);
   out << "# body = TiN 0.1 mm on steel, 4 mm domain; planes at 0.1 .. 0.8 mm; alpha = 16\n"
-      << "# per_plane_over_surface = apply_ms / planes / (the surface apply_ms of the same N)\n"
+      << "# per_plane_over_surface = apply_ms / planes / (the surface apply_ms of the same N); "
+         "for the 3 x 3 surface response (planes 0) apply_ms over the surface apply_ms\n"
       << "n,what,planes,setup_s,apply_ms,per_plane_over_surface,memory_mib\n";
   std::cout << out.str() << std::flush;
   for (std::ptrdiff_t n = 128; n <= max_n; n *= 2)

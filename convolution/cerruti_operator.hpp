@@ -35,6 +35,9 @@ class CerrutiOperator {
   /// not finite.
   void apply(const Field& pressure, const Field* qx, const Field* qy, std::array<Field, 3>& u);
 
+  /// Bytes held: the kernels' spectra and the transform buffers.
+  std::size_t memory_bytes() const { return convolution_.memory_bytes(); }
+
  private:
   ParityConvolution convolution_;  // outputs u_x, u_y, u_z; loads p, q_x, q_y
   std::vector<Field> fields_;
