@@ -28,30 +28,50 @@ InterfaceSide parse_side(const std::string& name) {
                         "\" is not one of \"below\", \"above\"");
 }
 
+// The surface loads of a call: the pressure and the optional tractions, as fields of `grid`.
+struct SurfaceLoads {
+  Field p;
+  std::optional<Field> qx, qy;
+  const Field* x() const { return qx ? &*qx : nullptr; }
+  const Field* y() const { return qy ? &*qy : nullptr; }
+};
+
+SurfaceLoads surface_loads(const std::string& who, const Grid& grid, const DoubleArray& pressure,
+                           const std::optional<DoubleArray>& qx,
+                           const std::optional<DoubleArray>& qy) {
+  SurfaceLoads loads{field_from_array(pressure, grid, who + ": pressure"), {}, {}};
+  if (qx) loads.qx = field_from_array(*qx, grid, who + ": qx");
+  if (qy) loads.qy = field_from_array(*qy, grid, who + ": qy");
+  return loads;
+}
+
+// The layers of `body_object` (a LayerStack or a Material), which `who` needs: an Frf is refused.
+LayerStack layers_of(py::handle body_object, const std::string& who, const char* why) {
+  const Body body = body_from_object(body_object, "body");
+  COATFFT_REQUIRE(body.stack, who, ": body must be a LayerStack or a Material (", why,
+                  "), not an Frf");
+  return *body.stack;
+}
+
 // (n_depths, 6, ny, nx) [Pa], components xx, yy, zz, yz, xz, xy, as stress.npy.
 py::array_t<double> stresses(py::handle body_object, const Grid& grid, std::vector<double> depths,
                              const DoubleArray& pressure, const std::optional<DoubleArray>& qx,
                              const std::optional<DoubleArray>& qy, const std::string& at_interface,
                              int alpha, int threads) {
-  const Body body = body_from_object(body_object, "body");
-  COATFFT_REQUIRE(body.stack,
-                  "stresses: body must be a LayerStack or a Material (the fields at "
-                  "depth need the layers), not an Frf");
-  const Field p = field_from_array(pressure, grid, "stresses: pressure");
-  std::optional<Field> fx, fy;
-  if (qx) fx = field_from_array(*qx, grid, "stresses: qx");
-  if (qy) fy = field_from_array(*qy, grid, "stresses: qy");
+  const LayerStack stack =
+      layers_of(body_object, "stresses", "the fields at depth need the layers");
+  const SurfaceLoads loads = surface_loads("stresses", grid, pressure, qx, qy);
   StressOperatorOptions options;
   options.side = parse_side(at_interface);
   options.kernel.alpha = alpha;
   options.kernel.threads = threads;
-  options.tangential = fx || fy;
+  options.tangential = loads.qx || loads.qy;
   std::vector<double> values;
   {
     py::gil_scoped_release release;
-    StressOperator op(grid, *body.stack, depths, options);
+    StressOperator op(grid, stack, depths, options);
     std::vector<PlaneStress> planes;
-    op.apply(p, fx ? &*fx : nullptr, fy ? &*fy : nullptr, planes);
+    op.apply(loads.p, loads.x(), loads.y(), planes);
     values.reserve(planes.size() * 6 * static_cast<std::size_t>(grid.nb_cells()));
     for (const PlaneStress& plane : planes)
       for (const Field& c : plane) values.insert(values.end(), c.data(), c.data() + c.size());
@@ -67,21 +87,16 @@ py::array_t<double> stresses(py::handle body_object, const Grid& grid, std::vect
 py::tuple surface_displacements(py::handle body_object, const Grid& grid,
                                 const DoubleArray& pressure, const std::optional<DoubleArray>& qx,
                                 const std::optional<DoubleArray>& qy, int threads) {
-  const Body body = body_from_object(body_object, "body");
-  COATFFT_REQUIRE(body.stack,
-                  "surface_displacements: body must be a LayerStack or a Material (the "
-                  "tangential response needs the layers), not an Frf");
-  const Field p = field_from_array(pressure, grid, "surface_displacements: pressure");
-  std::optional<Field> fx, fy;
-  if (qx) fx = field_from_array(*qx, grid, "surface_displacements: qx");
-  if (qy) fy = field_from_array(*qy, grid, "surface_displacements: qy");
+  const LayerStack stack =
+      layers_of(body_object, "surface_displacements", "the tangential response needs the layers");
+  const SurfaceLoads loads = surface_loads("surface_displacements", grid, pressure, qx, qy);
   SurfaceKernelOptions options;
   options.lattice.threads = threads;
   std::array<Field, 3> u;
   {
     py::gil_scoped_release release;
-    CerrutiOperator op(grid, *body.stack, options);
-    op.apply(p, fx ? &*fx : nullptr, fy ? &*fy : nullptr, u);
+    CerrutiOperator op(grid, stack, options);
+    op.apply(loads.p, loads.x(), loads.y(), u);
   }
   return py::make_tuple(array_from_field(std::move(u[0])), array_from_field(std::move(u[1])),
                         array_from_field(std::move(u[2])));
@@ -121,8 +136,8 @@ void bind_stress(py::module_& m) {
         "receives, each (ny, nx) [Pa] of `grid`: an array (n_depths, 6, ny, nx), components xx, "
         "yy, zz, yz, xz, xy, tension positive, z into the body (docs/stress.md).");
   m.def("surface_displacements", &surface_displacements, py::arg("body"), py::arg("grid"),
-        py::arg("pressure"), py::arg("qx") = py::none(), py::arg("qy") = py::none(),
-        py::kw_only(), py::arg("threads") = 1,
+        py::arg("pressure"), py::arg("qx") = py::none(), py::arg("qy") = py::none(), py::kw_only(),
+        py::arg("threads") = 1,
         "Surface displacements (ux, uy, uz) [m], each (ny, nx), of `body` (a LayerStack with "
         "bonded interfaces, or a Material) under the pressure and the tractions qx, qy [Pa] of "
         "`grid`, uz into the body (docs/stress.md, 'Surface displacements').");
