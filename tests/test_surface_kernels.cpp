@@ -149,6 +149,24 @@ TEST_CASE("a coating of the substrate's material gives the half-space's closed f
   CHECK(difference(hs.zy, same.zy) < 1e-13);
 }
 
+TEST_CASE("layered kernels on a square grid are symmetric under the swap of x and y",
+          "[surface_kernels]") {
+  // u_y under q_y is u_x under q_x turned by 90 degrees, likewise u_z under q_y, and u_y under
+  // q_x = u_x under q_y is symmetric: the y kernels are built by other formulas (the swapped
+  // closed forms, S - D cos 2theta, sin theta R_C on the lattice), so this checks them.
+  const Grid g(33, 33, 3e-3, 3e-3);
+  const SurfaceKernels k = surface_kernels(g, coated(10.0, 2e-4));
+  const double scale = k.xx.abs().maxCoeff();
+  CHECK((k.yy - k.xx.transpose()).abs().maxCoeff() < 1e-13 * scale);
+  CHECK((k.zy - k.zx.transpose()).abs().maxCoeff() < 1e-13 * scale);
+  CHECK((k.yx - k.yx.transpose()).abs().maxCoeff() < 1e-13 * scale);
+  // Parities: odd kernels vanish on their axis of oddness (cell centres on it), to the rounding
+  // of the far-field quadrature's sums over symmetric nodes.
+  CHECK(k.zx.row(0).abs().maxCoeff() < 1e-15 * scale);
+  CHECK(k.yx.row(0).abs().maxCoeff() < 1e-15 * scale);
+  CHECK(k.yx.col(0).abs().maxCoeff() < 1e-15 * scale);
+}
+
 TEST_CASE("coated bodies under a Hertz traction and pressure converge to the Hankel reference",
           "[surface_kernels]") {
   // Grids of cell a/m over [-2a, 2a]^2 + a cell (N = 4m + 1, the origin a cell centre), the
