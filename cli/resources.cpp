@@ -10,6 +10,7 @@
 #include "convolution/dcfft_operator.hpp"
 #include "core/detail/shorten.hpp"
 #include "core/error.hpp"
+#include "core/fft_size.hpp"
 
 namespace coatfft::cli {
 
@@ -67,6 +68,17 @@ MemoryEstimate estimate_memory(const Scene& scene) {
     bytes += stress_memory_bytes(*scene.stress, *scene.body, scene.grid);
     drivers += detail::concat(", [stress] ", stress_plane_depths(*scene.stress, *scene.body).size(),
                               " planes at alpha = ", scene.stress->alpha);
+  }
+  if (scene.output.in_plane) {
+    // CerrutiOperator (convolution/parity_convolution.hpp): nine spectrum quarters, three load
+    // spectra of the padded lattice and the three outputs; while it is built, six coefficient
+    // fields and four lattice quarters of the layered remainders plus their long-range band.
+    const double hx = double(fast_even_fft_size(2 * scene.grid.nx() - 1)) / 2 + 1;
+    const double my = double(fast_even_fft_size(2 * scene.grid.ny() - 1));
+    bytes +=
+        8.0 * (9 * hx * (my / 2 + 1) + 3 * 2 * hx * my + 9 * cells +
+               4 * (scene.grid.nx() + 1.0) * (scene.grid.ny() + 1.0) + 4 * std::pow(34.0 * 16, 2));
+    drivers += ", ux.npy and uy.npy";
   }
   return {bytes, drivers};
 }
