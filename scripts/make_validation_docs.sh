@@ -9,6 +9,7 @@
 #   hard_cases      docs/validation_hard_cases.md       hard_cases_table     (every FRF method on the hard bodies)
 #   pipeline_error  docs/validation_pipeline_error.md   pipeline_error_table (error model of the FRF pipelines)
 #   stress          docs/validation_stress.md           stress_table         (stresses at depth vs Johnson, Hamilton, Hankel)
+#   traction        docs/validation_traction.md         traction_table       (surface displacements under tangential tractions; sliding)
 #   coated          docs/validation.md's generated block coated_convergence, from the existing
 #                   bench/results/sweep.csv (no program is run: scripts/run_benchmarks.sh runs the
 #                   sweep and regenerates this block too)
@@ -20,13 +21,13 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build=${BUILD_DIR:-$root/build-release}
 python=/usr/bin/python3
 tables=("$@")
-[ ${#tables[@]} -eq 0 ] && tables=(hertz_dcfft contact frf_pipelines split_kernel hard_cases pipeline_error stress coated)
+[ ${#tables[@]} -eq 0 ] && tables=(hertz_dcfft contact frf_pipelines split_kernel hard_cases pipeline_error stress traction coated)
 programs=()
 for t in "${tables[@]}"; do
   case "$t" in
-    hertz_dcfft | contact | frf_pipelines | split_kernel | hard_cases | pipeline_error | stress) programs+=("${t}_table") ;;
+    hertz_dcfft | contact | frf_pipelines | split_kernel | hard_cases | pipeline_error | stress | traction) programs+=("${t}_table") ;;
     coated) ;;
-    *) echo "usage: $0 [hertz_dcfft|contact|frf_pipelines|split_kernel|hard_cases|pipeline_error|stress|coated ...]" >&2; exit 2 ;;
+    *) echo "usage: $0 [hertz_dcfft|contact|frf_pipelines|split_kernel|hard_cases|pipeline_error|stress|traction|coated ...]" >&2; exit 2 ;;
   esac
 done
 if [ ${#programs[@]} -gt 0 ]; then
