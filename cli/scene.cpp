@@ -14,6 +14,7 @@
 #include "cli/input_file.hpp"
 #include "cli/npy.hpp"
 #include "convolution/surface_kernels.hpp"
+#include "core/detail/brief.hpp"
 #include "core/detail/parse_name.hpp"
 #include "core/detail/shorten.hpp"
 #include "core/error.hpp"
@@ -665,11 +666,12 @@ void check_tangential(const Scene& scene, const char* key) {
                     "coating ",
                     i + 1, ") are not supported: a net tangential force has no equilibrium there");
   COATFFT_REQUIRE(surface_kernels_affordable(scene), key, ": the top coating (",
-                  scene.body->coatings().front().thickness, " m) is so thin against the ",
-                  scene.grid.lx(), " x ", scene.grid.ly(),
-                  " m domain that its surface kernels need about ",
-                  surface_kernel_evaluations(scene.grid, *scene.body), " FRF evaluations (limit ",
-                  LatticeOptions{}.max_evaluations, "; the cost grows like (L/h)^2)");
+                  detail::brief(scene.body->coatings().front().thickness),
+                  " m) is so thin against the ", detail::brief(scene.grid.lx()), " x ",
+                  detail::brief(scene.grid.ly()), " m domain that its surface kernels need about ",
+                  detail::brief(surface_kernel_evaluations(scene.grid, *scene.body)),
+                  " FRF evaluations (limit ", detail::brief(LatticeOptions{}.max_evaluations),
+                  "; the cost grows like (L/h)^2)");
 }
 
 // [frf]: the body as a table of its FRF. Love's coefficients (direct, dcfft) need a material,

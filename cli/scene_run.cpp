@@ -249,6 +249,7 @@ ContactResult solve_scene_contact(ContactSolver& solver, const Scene& scene,
   report = {{"solves", r.solves},
             {"pressure_change", r.pressure_change},
             {"pressure_shift", r.pressure_shift},
+            {"centroid_shift", r.centroid_shift},
             {"converged", r.converged}};
   if (!r.converged && result.converged) {
     result.converged = false;

@@ -128,6 +128,8 @@ class ContactSolver {
   ContactResult solve(const Field& height, ContactControl control, double value);
 
   const ContactOptions& options() const { return options_; }
+  /// The grid of the operator the solver is bound to.
+  const Grid& grid() const { return op_.grid(); }
 
  private:
   ContactResult run(const Field& height, ContactControl control, double value);

@@ -6,6 +6,17 @@
 
 namespace coatfft {
 
+namespace {
+
+// The x coordinate of the centroid of p [m] (p >= 0, not all zero).
+double centroid_x(const Grid& g, const Field& p) {
+  double moment = 0.0;
+  for (std::ptrdiff_t i = 0; i < g.nx(); ++i) moment += g.x(i) * p.row(i).sum();
+  return moment / p.sum();
+}
+
+}  // namespace
+
 ContactResult solve_sliding(ContactSolver& solver, const TangentialCoupling& coupling,
                             const Field& height, ContactControl control, double value,
                             const SlidingOptions& options, SlidingReport* report) {
@@ -32,6 +43,8 @@ ContactResult solve_sliding(ContactSolver& solver, const TangentialCoupling& cou
       if (r.pressure_change <= options.tolerance) break;
     }
     r.pressure_shift = (result.pressure - frictionless).abs().maxCoeff() / p_max;
+    r.centroid_shift =
+        centroid_x(solver.grid(), result.pressure) - centroid_x(solver.grid(), frictionless);
     // The displacement of the tractions of the final pressure (the gap used the previous one's,
     // within the tolerance).
     result.displacement += coupling(options.friction * result.pressure);

@@ -25,8 +25,12 @@ struct SlidingOptions {
 struct SlidingReport {
   int solves = 0;                ///< normal solves done (1: friction 0)
   double pressure_change = 0.0;  ///< last change of p between two solves over max p
-  /// The coupling's effect: max |p - p_frictionless| over max p_frictionless.
+  /// The coupling's effect: max |p - p_frictionless| over max p_frictionless. It depends on the
+  /// grid: the largest change sits at the moving rim of the contact, where p ~ sqrt(a - r).
   double pressure_shift = 0.0;
+  /// The shift of the pressure's centroid along x [m] against the frictionless solve (negative:
+  /// towards the trailing side). An integral of p: independent of the grid to its accuracy.
+  double centroid_shift = 0.0;
   bool converged = false;  ///< pressure_change <= tolerance (and every solve converged)
 };
 

@@ -8,6 +8,7 @@
 
 #include "convolution/ewald_window.hpp"
 #include "convolution/parity_transform.hpp"
+#include "core/detail/brief.hpp"
 #include "core/detail/parallel_for.hpp"
 #include "core/error.hpp"
 #include "core/threads.hpp"
@@ -133,10 +134,11 @@ std::vector<Field> lattice_coefficients(const Grid& grid, const LatticeSpectra& 
   COATFFT_REQUIRE(std::isfinite(spectra.k_cut) && spectra.k_cut > 0, what,
                   ": k_cut = ", spectra.k_cut, " rad/m must be finite and > 0");
   const double estimate = lattice_evaluations(grid, spectra.k_cut, o.alpha);
-  COATFFT_REQUIRE(estimate <= o.max_evaluations, what, ": the spectra reach k = ", spectra.k_cut,
-                  " rad/m, so far against the domain (", grid.lx(), " x ", grid.ly(),
-                  " m) that about ", estimate, " FRF evaluations are needed (limit ",
-                  o.max_evaluations, ")");
+  COATFFT_REQUIRE(estimate <= o.max_evaluations, what,
+                  ": the spectra reach k = ", detail::brief(spectra.k_cut),
+                  " rad/m, so far against the domain (", detail::brief(grid.lx()), " x ",
+                  detail::brief(grid.ly()), " m) that about ", detail::brief(estimate),
+                  " FRF evaluations are needed (limit ", detail::brief(o.max_evaluations), ")");
   LatticeReport r;
   std::vector<Field> out(spectra.parity.size(), Field::Zero(grid.nx(), grid.ny()));
   const int threads = o.threads;

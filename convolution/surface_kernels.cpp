@@ -1,5 +1,6 @@
 #include "convolution/surface_kernels.hpp"
 
+#include <array>
 #include <chrono>
 #include <cmath>
 
@@ -40,30 +41,59 @@ SurfaceKernels half_space(const Grid& g, const Material& m, int threads) {
   return c;
 }
 
-// The first two terms of the split of D and C (docs/theory.md (2.9.2)): the top medium's
-// half-space and the exp(-beta k) transition to the substrate's, in closed form. dc is the kernel
-// of D cos 2theta (u_x under q_x less that of S).
+// The split of D and C (docs/theory.md (2.9.4)-(2.9.5)): f_inf/k + (f_0 - f_inf) exp(-beta k)/k +
+// r_0 exp(-beta k) + R(k). rd0, rc0 are r_0 of D and C: the limit of the bounded remainder as
+// k -> 0, which the lattice, taking 0 at k = 0, must not see (a cos(n theta)/r^2 tail whose
+// periodic images would grow across the domain).
+struct Split {
+  SurfaceFrfs f0, fi;
+  double beta;
+  double rd0 = 0.0, rc0 = 0.0;
+  /// R_D and R_C at k > 0 (less r_0 exp(-beta k) when `flat` is set).
+  std::array<double, 2> remainder(const SurfaceFrfs& f, double k, bool flat = true) const {
+    const double e = std::exp(-beta * k);
+    return {f.d - (fi.d + (f0.d - fi.d) * e) / k - (flat ? rd0 * e : 0.0),
+            f.c - (fi.c + (f0.c - fi.c) * e) / k - (flat ? rc0 * e : 0.0)};
+  }
+};
+
+// r_0 of D and C: the remainders are analytic in k (functions of exp(-2 k h_i) and k h_i over
+// k), so the extrapolation 3 R(k) - 3 R(2k) + R(4k) from k beta = 1e-3 is exact to O((k beta)^3)
+// ~ 1e-9 relative; the 1/k terms cancel there to ~1e-13.
+Split make_split(const SurfaceResponse& response, double beta) {
+  Split s{response.at_zero(), response.at_infinity(), beta};
+  const double k = 1e-3 / beta;
+  const auto r = [&](double m) { return s.remainder(response(m * k), m * k, false); };
+  const auto r1 = r(1.0), r2 = r(2.0), r4 = r(4.0);
+  s.rd0 = 3.0 * r1[0] - 3.0 * r2[0] + r4[0];
+  s.rc0 = 3.0 * r1[1] - 3.0 * r2[1] + r4[1];
+  return s;
+}
+
+// The closed-form terms of the split of D and C. dc is the kernel of D cos 2theta (u_x under q_x
+// less that of S).
 struct AngularPart {
   Field dc, yx, zx, zy;
 };
 
-AngularPart angular_part(const Grid& g, const SurfaceFrfs& f0, const SurfaceFrfs& fi, double beta,
-                         int threads) {
+AngularPart angular_part(const Grid& g, const Split& sp, int threads) {
   const std::ptrdiff_t nx = g.nx(), ny = g.ny();
-  const double dx = g.dx(), dy = g.dy();
+  const double dx = g.dx(), dy = g.dy(), beta = sp.beta;
   AngularPart a{Field(nx, ny), Field(nx, ny), Field(nx, ny), Field(nx, ny)};
-  const double dd = f0.d - fi.d, dc = f0.c - fi.c;
+  const double dd = sp.f0.d - sp.fi.d, dc = sp.f0.c - sp.fi.c;
   detail::parallel_for(0, ny, threads, [&](std::ptrdiff_t j) {
     for (std::ptrdiff_t i = 0; i < nx; ++i) {
       const double x = i * dx, y = j * dy;
       const AngularCoefficients top = angular_influence(x, y, dx, dy, 0.0);
       const AngularCoefficients deep = angular_influence(x, y, dx, dy, beta);
-      a.dc(i, j) = fi.d * top.cos2 + dd * deep.cos2;
-      a.yx(i, j) = fi.d * top.sin2 + dd * deep.sin2;
-      a.zx(i, j) = fi.c * top.cos1 + dc * deep.cos1;
+      const AngularCoefficients flat = angular_flat_influence(x, y, dx, dy, beta);
+      a.dc(i, j) = sp.fi.d * top.cos2 + dd * deep.cos2 + sp.rd0 * flat.cos2;
+      a.yx(i, j) = sp.fi.d * top.sin2 + dd * deep.sin2 + sp.rd0 * flat.sin2;
+      a.zx(i, j) = sp.fi.c * top.cos1 + dc * deep.cos1 + sp.rc0 * flat.cos1;
       const double top_y = angular_influence(y, x, dy, dx, 0.0).cos1;
       const double deep_y = angular_influence(y, x, dy, dx, beta).cos1;
-      a.zy(i, j) = fi.c * top_y + dc * deep_y;
+      const double flat_y = angular_flat_influence(y, x, dy, dx, beta).cos1;
+      a.zy(i, j) = sp.fi.c * top_y + dc * deep_y + sp.rc0 * flat_y;
     }
   });
   return a;
@@ -76,21 +106,16 @@ double remainder_cut_off(double beta, double tolerance) {
   return (log_tol + 2.0 * std::log1p(log_tol) + 3.0) / beta;
 }
 
-// The remainders R_D, R_C of the split on the lattices, as the spectra of (dc, yx, zx, zy):
+// The remainders R'_D, R'_C of the split on the lattices, as the spectra of (dc, yx, zx, zy):
 // G = i^(odd_x + odd_y) F with F = R_D cos 2theta, R_D sin 2theta, -i R_C cos theta,
 // -i R_C sin theta.
-void add_remainders(const Grid& g, const SurfaceResponse& response, double beta,
+void add_remainders(const Grid& g, const SurfaceResponse& response, const Split& sp,
                     const SurfaceKernelOptions& o, AngularPart& a, LatticeReport& report) {
-  const SurfaceFrfs& f0 = response.at_zero();
-  const SurfaceFrfs& fi = response.at_infinity();
   LatticeSpectra s;
   s.parity = {{false, false}, {true, true}, {true, false}, {false, true}};
-  s.k_cut = remainder_cut_off(beta, o.tolerance);
+  s.k_cut = remainder_cut_off(sp.beta, o.tolerance);
   s.sample = [&](double kx, double ky, double k, std::span<double> out) {
-    const SurfaceFrfs f = response(k);
-    const double e = std::exp(-beta * k);
-    const double rd = f.d - (fi.d + (f0.d - fi.d) * e) / k;
-    const double rc = f.c - (fi.c + (f0.c - fi.c) * e) / k;
+    const auto [rd, rc] = sp.remainder(response(k), k);
     const double c = kx / k, sn = ky / k;
     out[0] = rd * (c * c - sn * sn);
     out[1] = -rd * 2.0 * c * sn;
@@ -122,8 +147,9 @@ SurfaceKernels layered(const Grid& g, const LayerStack& stack, const SurfaceKern
   const Field zp = radial(*make_frf(stack));
   const Field s = radial(*in_plane_frf(stack));
   report.beta = stack.coatings().front().thickness;
-  AngularPart a = angular_part(g, response.at_zero(), response.at_infinity(), report.beta, threads);
-  add_remainders(g, response, report.beta, o, a, report.lattice);
+  const Split sp = make_split(response, report.beta);
+  AngularPart a = angular_part(g, sp, threads);
+  add_remainders(g, response, sp, o, a, report.lattice);
   return {zp, s + a.dc, s - a.dc, std::move(a.yx), std::move(a.zx), std::move(a.zy)};
 }
 

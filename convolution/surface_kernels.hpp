@@ -7,9 +7,10 @@
 //   f(k) = f_inf/k + (f_0 - f_inf) exp(-beta k)/k + R_f(k),
 // f_inf the top medium's half-space, f_0 the substrate's, beta the top coating's thickness.
 // The radial ones, H_zz and S, go through frf-split itself (convolution/split_frf_kernel.hpp); the
-// angular ones, D cos 2theta, D sin 2theta and C cos theta, take their first two terms in closed
-// form (convolution/angular_influence.hpp) and R, bounded and decaying like exp(-k h_top), on the
-// lattices of convolution/lattice_coefficients.hpp.
+// angular ones, D cos 2theta, D sin 2theta and C cos theta, take their first two terms and R's
+// limit at k = 0 (times exp(-beta k)) in closed form (convolution/angular_influence.hpp), and the
+// rest of R, which vanishes at k = 0 and decays like exp(-k h_top), on the lattices of
+// convolution/lattice_coefficients.hpp.
 #include "../core/grid.hpp"
 #include "../core/types.hpp"
 #include "../layers/layer_stack.hpp"

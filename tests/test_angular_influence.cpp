@@ -22,11 +22,19 @@ namespace {
 
 constexpr double pi = std::numbers::pi;
 
-// The point kernels of docs/theory.md (2.9.2), R = sqrt(X^2 + Y^2 + beta^2).
-AngularCoefficients point_kernels(double X, double Y, double beta) {
-  const double R = std::sqrt(X * X + Y * Y + beta * beta);
-  return {(Y * Y - X * X) / (2.0 * pi * R * (R + beta) * (R + beta)),
-          -X * Y / (pi * R * (R + beta) * (R + beta)), X / (2.0 * pi * R * (R + beta))};
+// The point kernels of docs/theory.md (2.9.2) and, flat, (2.9.6), R = sqrt(X^2 + Y^2 + beta^2),
+// written from the Hankel transforms \int exp(-beta k) J_n(kr) k^m dk (m = 0, 1) directly.
+AngularCoefficients point_kernels(double X, double Y, double beta, bool flat = false) {
+  const double r2 = X * X + Y * Y, R = std::sqrt(r2 + beta * beta);
+  if (r2 == 0.0) return {0.0, 0.0, 0.0};  // every kernel vanishes at r = 0 for beta > 0
+  // (R - beta)^n/(r^n R) and (R - beta)^n (n R + beta)/(r^n R^3), as functions of r^2 > 0.
+  const double q = (R - beta) * (R - beta) / r2;  // ((R - beta)/r)^2
+  if (flat)
+    return {-(X * X - Y * Y) / r2 * q * (2 * R + beta) / (2 * pi * R * R * R),
+            -2 * X * Y / r2 * q * (2 * R + beta) / (2 * pi * R * R * R),
+            X / r2 * (R - beta) * (R + beta) / (2 * pi * R * R * R)};
+  return {-(X * X - Y * Y) / r2 * q / (2 * pi * R), -2 * X * Y / r2 * q / (2 * pi * R),
+          X / r2 * (R - beta) / (2 * pi * R)};
 }
 
 // Nested GSL QAG (61-point Gauss-Kronrod) over the cell: for beta > 0 the kernels are analytic on
@@ -45,14 +53,14 @@ double cell_quadrature(const std::function<double(double, double)>& f, double dx
   return r.value;
 }
 
-AngularCoefficients reference(double x, double y, double dx, double dy, double beta) {
+AngularCoefficients reference(double x, double y, double dx, double dy, double beta, bool flat) {
   AngularCoefficients c;
   c.cos2 = cell_quadrature(
-      [&](double xp, double yp) { return point_kernels(x - xp, y - yp, beta).cos2; }, dx, dy);
+      [&](double xp, double yp) { return point_kernels(x - xp, y - yp, beta, flat).cos2; }, dx, dy);
   c.sin2 = cell_quadrature(
-      [&](double xp, double yp) { return point_kernels(x - xp, y - yp, beta).sin2; }, dx, dy);
+      [&](double xp, double yp) { return point_kernels(x - xp, y - yp, beta, flat).sin2; }, dx, dy);
   c.cos1 = cell_quadrature(
-      [&](double xp, double yp) { return point_kernels(x - xp, y - yp, beta).cos1; }, dx, dy);
+      [&](double xp, double yp) { return point_kernels(x - xp, y - yp, beta, flat).cos1; }, dx, dy);
   return c;
 }
 
@@ -71,16 +79,40 @@ TEST_CASE("angular kernels with beta > 0 equal the quadrature of their point for
     for (double beta : betas)
       for (const auto& p : points) {
         const AngularCoefficients got = angular_influence(p[0], p[1], cell[0], cell[1], beta);
-        const AngularCoefficients ref = reference(p[0], p[1], cell[0], cell[1], beta);
+        const AngularCoefficients ref = reference(p[0], p[1], cell[0], cell[1], beta, false);
         // Scale: the size of the coefficients near the cell, area / (2 pi max(rho, d)).
         const double scale =
             cell[0] * cell[1] / (2.0 * pi * std::max(std::hypot(p[0], p[1], beta), 1.0));
-        worst = std::max({worst, std::abs(got.cos2 - ref.cos2) / scale,
-                          std::abs(got.sin2 - ref.sin2) / scale,
-                          std::abs(got.cos1 - ref.cos1) / scale});
+        for (double e : {got.cos2 - ref.cos2, got.sin2 - ref.sin2, got.cos1 - ref.cos1})
+          worst = std::isnan(e) || std::abs(e) / scale > worst ? std::abs(e) / scale : worst;
       }
   // The corner sums lose about log10((rho/d)^2) digits near the switch at 8 cells.
+  CHECK(std::isfinite(worst));
   CHECK(worst < 1e-11);
+}
+
+TEST_CASE("flat angular kernels equal the quadrature of their point forms", "[angular_influence]") {
+  // The k^0 family (2.9.6): kernels of size area/(2 pi rho^2) near the cell; the same cells,
+  // betas and points as above.
+  const double cells[][2] = {{1.0, 1.0}, {1.0, 0.3}, {0.4, 1.0}};
+  const double points[][2] = {{0.0, 0.0},  {0.5, 0.15}, {0.3, 0.7}, {1.7, -2.2},
+                              {-5.0, 3.0}, {7.9, 0.4},  {8.2, 1.0}, {-20.0, 13.0}};
+  double worst = 0.0;
+  for (const auto& cell : cells)
+    for (double beta : {0.2, 1.0, 3.0})
+      for (const auto& p : points) {
+        const AngularCoefficients got =
+            coatfft::angular_flat_influence(p[0], p[1], cell[0], cell[1], beta);
+        const AngularCoefficients ref = reference(p[0], p[1], cell[0], cell[1], beta, true);
+        const double rho2 = p[0] * p[0] + p[1] * p[1] + beta * beta;
+        const double scale = cell[0] * cell[1] / (2.0 * pi * std::max(rho2, 1.0));
+        for (double e : {got.cos2 - ref.cos2, got.sin2 - ref.sin2, got.cos1 - ref.cos1})
+          worst = std::isnan(e) || std::abs(e) / scale > worst ? std::abs(e) / scale : worst;
+      }
+  CHECK(std::isfinite(worst));
+  CHECK(worst < 1e-11);
+  CHECK_THROWS_AS(coatfft::angular_flat_influence(0.0, 0.0, 1.0, 1.0, 0.0),
+                  coatfft::InvalidArgument);
 }
 
 TEST_CASE("angular kernels at beta = 0 combine into Cerruti's coefficients",

@@ -254,6 +254,7 @@ TEST_CASE("[contact] friction iterates the normal-tangential coupling", "[cli_st
   // order of beta mu, beta = (1 - 2 nu)/(2 (1 - nu)) = 0.29; Johnson 1985, section 7.2).
   CHECK(c["pressure_shift"].get<double>() > 1e-3);
   CHECK(c["pressure_shift"].get<double>() < 0.2);
+  CHECK(c["centroid_shift"].get<double>() < 0.0);  // towards the trailing side
   CHECK(npy_shape(out / "ux.npy") == "(32, 32)");
   // Two bodies of one material: the tractions displace both surfaces alike, no coupling (the
   // body's K_zx less the indenter's is exactly 0): one more solve, the same pressure.

@@ -238,7 +238,7 @@ TEST_CASE(
                             uz = npy_data(run.out / "uz.npy");
   REQUIRE(ux.size() == static_cast<std::size_t>(g.nb_cells()));
   // The loads are p and 0.3 p along x: the reference is the pressure's field plus 0.3 times the
-  // traction's (docs/theory.md (2.9.5)), at cells on and off the axes (the grid's cell is
+  // traction's (docs/theory.md (2.9.7)), at cells on and off the axes (the grid's cell is
   // a/16 and the origin a cell centre).
   using coatfft::AxisymmetricLoad;
   using coatfft::LoadDirection;
