@@ -107,8 +107,8 @@ double remainder_cut_off(double beta, double tolerance) {
 }
 
 // The remainders R'_D, R'_C of the split on the lattices, as the spectra of (dc, yx, zx, zy):
-// G = i^(odd_x + odd_y) F with F = R_D cos 2theta, R_D sin 2theta, -i R_C cos theta,
-// -i R_C sin theta.
+// G = i^(odd_x + odd_y) F with F = R'_D cos 2theta, R'_D sin 2theta, -i R'_C cos theta,
+// -i R'_C sin theta.
 void add_remainders(const Grid& g, const SurfaceResponse& response, const Split& sp,
                     const SurfaceKernelOptions& o, AngularPart& a, LatticeReport& report) {
   LatticeSpectra s;
