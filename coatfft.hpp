@@ -37,6 +37,7 @@
 #include "model/auto_method.hpp"
 #include "model/body_reduction.hpp"
 #include "model/cost_model.hpp"
+#include "surfaces/self_affine_surface.hpp"
 #include "validation/hankel_displacement.hpp"
 #include "validation/hertz.hpp"
 #include "validation/hertz_contact.hpp"

@@ -10,6 +10,7 @@
 #include "cli/frf_command.hpp"
 #include "cli/resources.hpp"
 #include "cli/run_command.hpp"
+#include "cli/surface_command.hpp"
 #include "cli/validate_frf_command.hpp"
 #include "core/detail/shorten.hpp"
 #include "core/error.hpp"
@@ -20,9 +21,11 @@ namespace {
 bool refuse_unknown_command(int argc, char** argv) {
   if (argc < 2 || argv[1][0] == '-') return false;
   const std::string_view word = argv[1];
-  if (word == "run" || word == "frf" || word == "check" || word == "validate-frf") return false;
+  if (word == "run" || word == "frf" || word == "check" || word == "validate-frf" ||
+      word == "surface")
+    return false;
   std::cerr << "coatfft: error: unknown command \"" << coatfft::detail::shorten(word)
-            << "\" (commands: run, check, validate-frf, frf; see coatfft --help)\n";
+            << "\" (commands: run, check, validate-frf, frf, surface; see coatfft --help)\n";
   return true;
 }
 
@@ -76,6 +79,23 @@ int main(int argc, char** argv) {
   frf_cmd->add_option("--points", frf.points, "Number of log-spaced wavenumbers")
       ->check(CLI::Range(2L, coatfft::cli::max_frf_points));
 
+  coatfft::cli::SurfaceOptions surface;
+  CLI::App* surface_cmd = app.add_subcommand(
+      "surface", "Write a periodic self-affine random surface (heights [m]) as a .npy file");
+  surface_cmd->add_option("-o,--output", surface.output, "Output .npy file")->required();
+  surface_cmd->add_option("--nx", surface.nx, "Cells along x (even)")->required();
+  surface_cmd->add_option("--ny", surface.ny, "Cells along y (even)")->required();
+  surface_cmd->add_option("--lx", surface.lx, "Domain length along x [m]")->required();
+  surface_cmd->add_option("--ly", surface.ly, "Domain length along y [m]")->required();
+  surface_cmd->add_option("--hurst", surface.hurst, "Hurst exponent H in (0, 1]")->required();
+  surface_cmd->add_option("--rms-height", surface.rms_height, "rms height [m]");
+  surface_cmd->add_option("--rms-slope", surface.rms_slope, "rms slope [-]");
+  surface_cmd->add_option("--short-cutoff", surface.short_cutoff,
+                          "Shortest wavelength [m] (default 2 max(dx, dy))");
+  surface_cmd->add_option("--long-cutoff", surface.long_cutoff,
+                          "Roll-off wavelength [m] (default max(lx, ly): no roll-off)");
+  surface_cmd->add_option("--seed", surface.seed, "Seed of the random phases (default 0)");
+
   if (refuse_unknown_command(argc, argv)) return 2;
   try {
     app.parse(argc, argv);
@@ -95,6 +115,7 @@ int main(int argc, char** argv) {
       return 3;
     }
     if (*frf_cmd) coatfft::cli::frf_command(frf);
+    if (*surface_cmd) coatfft::cli::surface_command(surface);
     if (*check_cmd) {
       if (!check_max_memory.empty())
         check.max_memory = coatfft::cli::parse_memory_size(check_max_memory, "--max-memory");

@@ -1,0 +1,42 @@
+#include "cli/surface_command.hpp"
+
+#include <cmath>
+#include <iostream>
+#include <vector>
+
+#include "cli/npy.hpp"
+#include "cli/staged_output.hpp"
+#include "core/error.hpp"
+#include "surfaces/self_affine_surface.hpp"
+
+namespace coatfft::cli {
+
+void surface_command(const SurfaceOptions& o) {
+  COATFFT_REQUIRE(o.output.extension() == ".npy", "-o ", o.output.string(),
+                  ": the surface is written as a .npy file (name it *.npy)");
+  for (const auto& [name, n] : {std::pair{"--nx", o.nx}, std::pair{"--ny", o.ny}})
+    COATFFT_REQUIRE(n >= 2 && n <= max_surface_cells && n % 2 == 0, name, " = ", n,
+                    " must be even and in [2, ", max_surface_cells, "]");
+  for (const auto& [name, l] : {std::pair{"--lx", o.lx}, std::pair{"--ly", o.ly}})
+    COATFFT_REQUIRE(std::isfinite(l) && l > 0, name, " = ", l, " m must be finite and > 0");
+  COATFFT_REQUIRE(o.rms_height.has_value() != o.rms_slope.has_value(),
+                  "give exactly one of --rms-height and --rms-slope");
+  const Grid grid(o.nx, o.ny, o.lx, o.ly);
+  SelfAffineSpec spec;
+  spec.hurst = o.hurst;
+  spec.rms_height = o.rms_height;
+  spec.rms_slope = o.rms_slope;
+  spec.short_cutoff = o.short_cutoff;
+  spec.long_cutoff = o.long_cutoff;
+  spec.seed = o.seed;
+  // The output is checked before any work: a file that cannot be written is refused at once.
+  StagedFile file(o.output, "output file", {});
+  const Field h = self_affine_surface(grid, spec);
+  write_npy(file.path(), h);
+  file.commit();
+  std::cout << "wrote " << o.output.string() << ": " << o.ny << " x " << o.nx
+            << " heights [m], rms height " << std::sqrt(h.square().mean()) << " m, rms slope "
+            << spectral_rms_slope(grid, h) << "\n";
+}
+
+}  // namespace coatfft::cli

@@ -1,0 +1,147 @@
+#include "surfaces/self_affine_surface.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <random>
+
+#include "convolution/fftw_plan.hpp"
+#include "core/error.hpp"
+
+namespace coatfft {
+
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+// The half spectrum of FFTW's r2c layout for a (nx, ny) Field (x fastest): (nx/2 + 1) x ny
+// complex entries, entry (i, j) at j (nx/2 + 1) + i, wavevector 2 pi (i/lx, s(j)/ly) with s(j)
+// the signed frequency of j.
+struct HalfSpectrum {
+  std::ptrdiff_t hx, ny;
+  FftwComplexBuffer data;
+  HalfSpectrum(std::ptrdiff_t nx, std::ptrdiff_t ny_)
+      : hx(nx / 2 + 1), ny(ny_), data(static_cast<std::size_t>(hx * ny_)) {}
+  std::complex<double>& at(std::ptrdiff_t i, std::ptrdiff_t j) {
+    return as_complex(data.data())[j * hx + i];
+  }
+};
+
+std::ptrdiff_t signed_frequency(std::ptrdiff_t j, std::ptrdiff_t n) {
+  return j <= n / 2 ? j : j - n;
+}
+
+double wavenumber(const Grid& g, std::ptrdiff_t i, std::ptrdiff_t j) {
+  return std::hypot(kTwoPi * static_cast<double>(i) / g.lx(),
+                    kTwoPi * static_cast<double>(signed_frequency(j, g.ny())) / g.ly());
+}
+
+// A uniform number in [0, 1) from the top 53 bits: the same sequence with every standard
+// library (std::uniform_real_distribution is implementation-defined).
+double uniform(std::mt19937_64& rng) {
+  return static_cast<double>(rng() >> 11) * 0x1.0p-53;
+}
+
+struct Cutoffs {
+  double q_r, q_s;
+};
+
+Cutoffs validate(const Grid& g, const SelfAffineSpec& s) {
+  COATFFT_REQUIRE(g.nx() >= 2 && g.ny() >= 2 && g.nx() % 2 == 0 && g.ny() % 2 == 0,
+                  "self-affine surface: nx = ", g.nx(), " and ny = ", g.ny(),
+                  " must be even and >= 2");
+  COATFFT_REQUIRE(std::isfinite(s.hurst) && s.hurst > 0 && s.hurst <= 1,
+                  "self-affine surface: the Hurst exponent ", s.hurst, " must be in (0, 1]");
+  COATFFT_REQUIRE(s.rms_height.has_value() != s.rms_slope.has_value(),
+                  "self-affine surface: give exactly one of the rms height and the rms slope");
+  const double rms = s.rms_height ? *s.rms_height : *s.rms_slope;
+  COATFFT_REQUIRE(std::isfinite(rms) && rms > 0, "self-affine surface: the rms ",
+                  s.rms_height ? "height" : "slope", " ", rms, " must be finite and > 0");
+  const double nyquist_wavelength = 2.0 * std::max(g.dx(), g.dy());
+  const double lambda_s = s.short_cutoff.value_or(nyquist_wavelength);
+  const double lambda_r = s.long_cutoff.value_or(std::max(g.lx(), g.ly()));
+  COATFFT_REQUIRE(std::isfinite(lambda_s) && lambda_s >= nyquist_wavelength * (1 - 1e-12),
+                  "self-affine surface: the short cut-off ", lambda_s,
+                  " m is below the grid's shortest wavelength 2 max(dx, dy) = ", nyquist_wavelength,
+                  " m");
+  COATFFT_REQUIRE(std::isfinite(lambda_r) && lambda_r > lambda_s,
+                  "self-affine surface: the long cut-off ", lambda_r,
+                  " m must be finite and above the short cut-off ", lambda_s, " m");
+  return {kTwoPi / lambda_r, kTwoPi / lambda_s};
+}
+
+// C(q)^(1/2) for C0 = 1.
+double amplitude(double q, double hurst, const Cutoffs& c) {
+  if (q == 0.0 || q > c.q_s * (1 + 1e-12)) return 0.0;
+  return std::pow(std::max(q, c.q_r) / c.q_r, -(1.0 + hurst));
+}
+
+// Random phases, in a fixed order, with the symmetry that makes the field real: on the columns
+// i = 0 and i = nx/2 (their own conjugates' column) the entry of -j is the conjugate of that of
+// j, and the four self-conjugate entries are real (a random sign).
+void fill(const Grid& g, const SelfAffineSpec& s, const Cutoffs& c, HalfSpectrum& spec) {
+  std::mt19937_64 rng(s.seed);
+  const std::ptrdiff_t nx = g.nx(), ny = g.ny();
+  for (std::ptrdiff_t j = 0; j < ny; ++j)
+    for (std::ptrdiff_t i = 0; i < spec.hx; ++i) {
+      const double phase = kTwoPi * uniform(rng);
+      const double a = amplitude(wavenumber(g, i, j), s.hurst, c);
+      const bool own_column = i == 0 || i == nx / 2;
+      if (own_column && (j == 0 || j == ny / 2)) {
+        spec.at(i, j) = phase < std::numbers::pi ? a : -a;
+      } else if (own_column && j > ny / 2) {
+        spec.at(i, j) = std::conj(spec.at(i, ny - j));
+      } else {
+        spec.at(i, j) = std::polar(a, phase);
+      }
+    }
+}
+
+Field inverse(const Grid& g, HalfSpectrum& spec) {
+  FftwRealBuffer out(static_cast<std::size_t>(g.nx() * g.ny()));
+  const FftwPlan plan = FftwPlan::create(1, [&] {
+    return fftw_plan_dft_c2r_2d(static_cast<int>(g.ny()), static_cast<int>(g.nx()),
+                                spec.data.data(), out.data(), FFTW_ESTIMATE | FFTW_DESTROY_INPUT);
+  });
+  plan.execute();
+  return Eigen::Map<const Field>(out.data(), g.nx(), g.ny());
+}
+
+}  // namespace
+
+double spectral_rms_slope(const Grid& g, const Field& h) {
+  COATFFT_REQUIRE(h.rows() == g.nx() && h.cols() == g.ny(),
+                  "spectral_rms_slope: the field is not of the grid's shape");
+  FftwRealBuffer in(static_cast<std::size_t>(h.size()));
+  std::copy(h.data(), h.data() + h.size(), in.data());
+  HalfSpectrum spec(g.nx(), g.ny());
+  const FftwPlan plan = FftwPlan::create(1, [&] {
+    return fftw_plan_dft_r2c_2d(static_cast<int>(g.ny()), static_cast<int>(g.nx()), in.data(),
+                                spec.data.data(), FFTW_ESTIMATE);
+  });
+  plan.execute();
+  // Parseval on the grid: mean |grad h|^2 = sum over every mode of |k|^2 |h_k|^2, h_k the FFT over
+  // the cell count; the half spectrum holds the modes i and -i once for 0 < i < nx/2.
+  const double cells = static_cast<double>(h.size());
+  double sum = 0.0;
+  for (std::ptrdiff_t j = 0; j < g.ny(); ++j)
+    for (std::ptrdiff_t i = 0; i < spec.hx; ++i) {
+      const double weight = (i == 0 || i == g.nx() / 2) ? 1.0 : 2.0;
+      const double k = wavenumber(g, i, j);
+      sum += weight * k * k * std::norm(spec.at(i, j)) / (cells * cells);
+    }
+  return std::sqrt(sum);
+}
+
+Field self_affine_surface(const Grid& grid, const SelfAffineSpec& spec) {
+  const Cutoffs cutoffs = validate(grid, spec);
+  HalfSpectrum half(grid.nx(), grid.ny());
+  fill(grid, spec, cutoffs, half);
+  Field h = inverse(grid, half);
+  const double rms = spec.rms_height ? std::sqrt(h.square().mean()) : spectral_rms_slope(grid, h);
+  COATFFT_REQUIRE(rms > 0, "self-affine surface: no Fourier mode lies between the cut-offs");
+  return h * ((spec.rms_height ? *spec.rms_height : *spec.rms_slope) / rms);
+}
+
+}  // namespace coatfft

@@ -1,0 +1,42 @@
+#pragma once
+// Periodic, self-affine random surfaces (the topographies of rough-contact studies: Persson 2001,
+// Hyun et al. 2004, Jacobs et al. 2017): a height field on the grid whose isotropic power spectrum
+// is
+//   C(q) = C0 (q / q_r)^(-2 (1 + H))   for q_r <= q <= q_s,   C0 for q < q_r (the roll-off),
+//   0 for q > q_s,
+// H the Hurst exponent, q_r = 2 pi / lambda_r and q_s = 2 pi / lambda_s the long and short cut-off
+// wavevectors, and C0 set so that the rms height (or the rms slope) is the requested one exactly.
+// Each Fourier mode has the amplitude sqrt(C(q)) exactly and a uniformly random phase from the
+// seed (a random-phase surface: its spectrum is the requested one mode by mode, not only on
+// average), zero mean, and is periodic over the domain. docs/surfaces.md.
+#include <cstdint>
+#include <optional>
+
+#include "../core/grid.hpp"
+#include "../core/types.hpp"
+
+namespace coatfft {
+
+struct SelfAffineSpec {
+  double hurst = 0.8;  ///< H in (0, 1]
+  /// Exactly one of the two: the rms height [m] or the rms slope [-] of the result (the slope of
+  /// the trigonometric interpolant, sqrt(mean |grad h|^2), computed from the spectrum).
+  std::optional<double> rms_height, rms_slope;
+  /// lambda_s [m]: the shortest wavelength; default 2 max(dx, dy) (the grid's Nyquist).
+  std::optional<double> short_cutoff;
+  /// lambda_r [m]: the roll-off wavelength, beyond which the spectrum is flat; default
+  /// max(lx, ly) (no roll-off: the longest wavelength of the domain).
+  std::optional<double> long_cutoff;
+  std::uint64_t seed = 0;  ///< the same seed gives the same surface (bit for bit)
+};
+
+/// The surface h(x_i, y_j) [m], shape (nx, ny) of `grid` (both even, >= 2). InvalidArgument for
+/// a bad spec (H outside (0, 1], not exactly one rms, cut-offs not with
+/// 2 max(dx, dy) <= lambda_s < lambda_r, or a spectrum with no mode between the cut-offs).
+Field self_affine_surface(const Grid& grid, const SelfAffineSpec& spec);
+
+/// The spectral rms slope sqrt(mean |grad h|^2) of a periodic field on `grid` [-]: the slope of its
+/// trigonometric interpolant (what self_affine_surface matches for rms_slope).
+double spectral_rms_slope(const Grid& grid, const Field& h);
+
+}  // namespace coatfft

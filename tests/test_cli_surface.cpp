@@ -1,0 +1,73 @@
+// `coatfft surface`: the file it writes (shape, rms as asked, the same bytes for the same seed)
+// and its refusals (one line, exit 2, no file).
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "cli/npy.hpp"
+#include "tests/cli_process.hpp"
+
+using namespace coatfft_test;
+
+namespace {
+
+const std::string kSurface = " --nx 64 --ny 48 --lx 1e-3 --ly 0.75e-3 --hurst 0.8";
+
+std::string bytes_of(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+}  // namespace
+
+TEST_CASE("coatfft surface writes a reproducible self-affine surface", "[cli_surface]") {
+  const fs::path a = scratch("surface_a.npy"), b = scratch("surface_b.npy");
+  fs::remove(a);
+  fs::remove(b);
+  const auto r = run_coatfft("surface -o " + a.string() + kSurface + " --rms-height 0.5e-6");
+  INFO(r.stderr_text);
+  REQUIRE(r.status == 0);
+  const coatfft::Field h = coatfft::cli::read_npy(a);
+  CHECK(h.rows() == 64);  // (ny, nx) on disk, (nx, ny) in memory
+  CHECK(h.cols() == 48);
+  CHECK(std::sqrt(h.square().mean()) == Approx(0.5e-6).epsilon(1e-12));
+  REQUIRE(run_coatfft("surface -o " + b.string() + kSurface + " --rms-height 0.5e-6").status == 0);
+  CHECK(bytes_of(a) == bytes_of(b));
+  REQUIRE(
+      run_coatfft("surface -o " + b.string() + kSurface + " --rms-height 0.5e-6 --seed 3").status ==
+      0);
+  CHECK(bytes_of(a) != bytes_of(b));
+}
+
+TEST_CASE("coatfft surface refuses bad options with one line and writes nothing", "[cli_surface]") {
+  const struct {
+    const char* name;
+    std::string args;
+    const char* must_mention;
+  } cases[] = {
+      {"odd", " --nx 63 --ny 48 --lx 1e-3 --ly 1e-3 --hurst 0.8 --rms-height 1e-6", "--nx"},
+      {"both_rms", kSurface + " --rms-height 1e-6 --rms-slope 0.1", "exactly one"},
+      {"no_rms", kSurface, "exactly one"},
+      {"hurst", " --nx 64 --ny 48 --lx 1e-3 --ly 1e-3 --hurst 0 --rms-height 1e-6", "Hurst"},
+      {"cutoff", kSurface + " --rms-height 1e-6 --short-cutoff 1e-6", "short cut-off"},
+      {"length", " --nx 64 --ny 48 --lx -1 --ly 1e-3 --hurst 0.8 --rms-height 1e-6", "--lx"},
+  };
+  for (const auto& c : cases) {
+    INFO(c.name);
+    const fs::path out = scratch(std::string("surface_bad_") + c.name + ".npy");
+    fs::remove(out);
+    const auto r = run_coatfft("surface -o " + out.string() + c.args);
+    INFO(r.stderr_text);
+    CHECK(r.status == 2);
+    CHECK(std::count(r.stderr_text.begin(), r.stderr_text.end(), '\n') == 1);
+    CHECK(r.stderr_text.find(c.must_mention) != std::string::npos);
+    CHECK_FALSE(fs::exists(out));
+  }
+  const fs::path txt = scratch("surface_bad.txt");
+  const auto r = run_coatfft("surface -o " + txt.string() + kSurface + " --rms-height 1e-6");
+  CHECK(r.status == 2);
+  CHECK(r.stderr_text.find(".npy") != std::string::npos);
+  CHECK_FALSE(fs::exists(txt));
+}
