@@ -1,0 +1,37 @@
+#pragma once
+// The surface displacement of a periodic surface: the circular convolution of the pressure with
+// the periodic influence coefficients (convolution/periodic_kernel.hpp) by FFTs of the grid's own
+// size (no padding), exact for a cell-wise constant pressure repeated over the periods. The
+// displacement has zero mean over the period (docs/theory.md 4.8).
+#include <memory>
+#include <vector>
+
+#include "../core/types.hpp"
+#include "planning.hpp"
+#include "surface_operator.hpp"
+
+namespace coatfft {
+
+class PeriodicOperator final : public SurfaceOperator {
+ public:
+  /// `kernel`: the (nx, ny) periodic coefficients of `grid` (even, zero mean); `method` what
+  /// built them (reported by method()). InvalidArgument for a kernel of another shape or with a
+  /// value that is not finite.
+  PeriodicOperator(const Grid& grid, const Field& kernel, Method method,
+                   Planning planning = Planning::estimate);
+  ~PeriodicOperator() override;
+
+  const Grid& grid() const override { return grid_; }
+  void apply(const Field& pressure, Field& displacement) override;
+  Method method() const override { return method_; }
+  using SurfaceOperator::apply;
+
+ private:
+  Grid grid_;
+  Method method_;
+  std::vector<double> multiplier_;  // the kernel's spectrum (real: the kernel is even)
+  struct Transforms;                // FFTW plans and buffers: FFTW stays out of the public headers
+  std::unique_ptr<Transforms> t_;
+};
+
+}  // namespace coatfft

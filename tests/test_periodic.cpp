@@ -1,0 +1,134 @@
+// Periodic surfaces (convolution/periodic_kernel.hpp, periodic_operator.hpp) against independent
+// references: the exact eigenvalues of the periodic operator (the FRF times the cell's transform
+// summed over 400^2 aliases, by brute force instead of Ewald's split), Westergaard's wavy contact
+// (Johnson 1985, section 13.2), a coating of the substrate's material, and a Hertz contact in a
+// large period against the free (DC-FFT) solution.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <numbers>
+
+#include "contact/contact_solver.hpp"
+#include "contact/indenter.hpp"
+#include "convolution/dcfft_operator.hpp"
+#include "convolution/influence_kernel.hpp"
+#include "convolution/periodic_kernel.hpp"
+#include "convolution/periodic_operator.hpp"
+#include "convolution/split_frf_kernel.hpp"
+#include "core/error.hpp"
+#include "frf/frf.hpp"
+#include "frf/half_space_frf.hpp"
+#include "layers/layer_stack.hpp"
+#include "validation/hertz_contact.hpp"
+
+using namespace coatfft;
+
+namespace {
+
+constexpr double pi = std::numbers::pi;
+const Material steel(210e9, 0.3);
+
+double sinc(double x) {
+  return x == 0.0 ? 1.0 : std::sin(x) / x;
+}
+
+// The displacement at the cell centres of the pressure mode cos(k . x) is lambda times it, with
+// lambda = sum over the aliases G of H(|k + G|) S(k + G): here by brute force over |p|, |q| <= 200
+// (the neglected aliases add about (k dx)^2/(4 pi^2 200) of H(k)).
+double eigenvalue(const Grid& g, const Frf& frf, int mx, int my) {
+  double sum = 0.0;
+  for (int p = -200; p <= 200; ++p)
+    for (int q = -200; q <= 200; ++q) {
+      const double kx = 2 * pi * (mx / g.lx() + p / g.dx());
+      const double ky = 2 * pi * (my / g.ly() + q / g.dy());
+      sum += frf(std::hypot(kx, ky)) * sinc(0.5 * kx * g.dx()) * sinc(0.5 * ky * g.dy());
+    }
+  return sum;
+}
+
+double measured_eigenvalue(const Grid& g, PeriodicOperator& op, int mx, int my) {
+  Field p(g.nx(), g.ny());
+  for (std::ptrdiff_t j = 0; j < g.ny(); ++j)
+    for (std::ptrdiff_t i = 0; i < g.nx(); ++i)
+      p(i, j) = std::cos(2 * pi * (mx * double(i) / g.nx() + my * double(j) / g.ny()));
+  const Field u = op.apply(p);
+  return (u * p).sum() / p.square().sum();
+}
+
+}  // namespace
+
+TEST_CASE("the periodic operator's eigenvalues are the aliased FRF", "[periodic]") {
+  const Grid g(32, 24, 4e-3, 3e-3);
+  const HalfSpaceFrf frf(steel);
+  PeriodicOperator op(g, periodic_influence_kernel(g, frf), Method::dcfft);
+  // Measured 1e-12 (1, 0) to 5e-9 (16, 12) against 800^2 aliases: the brute force's truncation.
+  for (auto [mx, my] : {std::pair{1, 0}, {0, 1}, {3, 2}, {7, -5}, {16, 12}}) {
+    INFO(mx << ", " << my);
+    CHECK(measured_eigenvalue(g, op, mx, my) == Approx(eigenvalue(g, frf, mx, my)).epsilon(1e-7));
+  }
+  // The mean displacement is left out: a uniform pressure displaces nothing.
+  CHECK(op.apply(Field::Constant(32, 24, 1e6)).abs().maxCoeff() < 1e-20);
+}
+
+TEST_CASE("a coating of the substrate's material gives the half-space's periodic kernel",
+          "[periodic]") {
+  const Grid g(48, 40, 2e-3, 1.5e-3);
+  const Field hs = periodic_influence_kernel(g, HalfSpaceFrf(steel));
+  const auto same = make_frf(LayerStack({Coating{steel, 1e-4, Interface::bonded}}, steel));
+  const Field layered = periodic_influence_kernel(g, *same);
+  CHECK((hs - layered).abs().maxCoeff() < 1e-12 * hs.abs().maxCoeff());
+}
+
+TEST_CASE("Westergaard's wavy contact on a periodic surface", "[periodic][contact]") {
+  // h = Delta (1 - cos(2 pi x/lambda)) against a flat, one period, uniform in y (two rows).
+  // Johnson (1985), section 13.2: p* = pi E* Delta/lambda; at the mean pressure p_m the contact
+  // half-width a has sin^2(pi a/lambda) = p_m/p*, and the peak pressure is 2 sqrt(p_m p*).
+  const std::ptrdiff_t n = 1024;
+  const double lambda = 1e-3, delta = 1e-6;
+  const Grid g(n, 2, lambda, 2 * lambda / n);
+  PeriodicOperator op(g, periodic_influence_kernel(g, HalfSpaceFrf(steel)), Method::dcfft);
+  Field h(n, 2);
+  for (std::ptrdiff_t i = 0; i < n; ++i)
+    h.row(i).setConstant(delta * (1 - std::cos(2 * pi * (double(i) + 0.5 - n / 2) / n)));
+  const double p_star = pi * steel.plane_strain_modulus() * delta / lambda;
+  ContactSolver solver(op);
+  // Measured at 1024 cells: the widths within a cell (9.9e-4 at 0.95), the peaks within 1.8e-5.
+  for (double ratio : {0.05, 0.5, 0.95}) {
+    const ContactResult r = solver.solve_load(h, ratio * p_star * g.lx() * g.ly());
+    REQUIRE(r.converged);
+    const double width = r.contact_area / g.ly() / lambda;  // 2a/lambda
+    const double a = std::asin(std::sqrt(ratio)) * lambda / pi;
+    INFO("p_m/p* = " << ratio << ": 2a/lambda " << width << " vs " << 2 * a / lambda);
+    // The contact's edges are resolved to a cell each side: the width to about dx/lambda.
+    CHECK(std::abs(width - 2 * a / lambda) <= 1.5 / n);
+    // The peak: the cell at the crest (centre at dx/2) averages a smooth pressure.
+    CHECK(r.max_pressure == Approx(2 * std::sqrt(ratio) * p_star).epsilon(1e-4));
+  }
+}
+
+TEST_CASE("a contact far from the edges of a large period is the free one", "[periodic][contact]") {
+  // A sphere (5 N, contact radius about 55 um) on TiN-coated steel; periods of 0.8 and 1.6 mm
+  // (15 and 30 contact radii), 128^2 and 256^2 cells of 6.25 um. The periodic images press the
+  // surface by a smooth field whose curvature over the contact falls like L^-3: the pressures
+  // converge to the free solution (DC-FFT of frf-split's coefficients). Measured 1.2e-3 and
+  // 1.5e-4 of the peak.
+  const Material tin(400e9, 0.25);
+  const LayerStack body({Coating{tin, 20e-6, Interface::bonded}}, steel);
+  const auto frf = make_frf(body);
+  const double radius = 0.01, load = 5.0, cell = 6.25e-6;
+  double previous = 0.0;
+  for (std::ptrdiff_t n : {128, 256}) {
+    const Grid g(n, n, n * cell, n * cell);
+    const Field h = height(g, Sphere{radius});
+    PeriodicOperator periodic(g, periodic_influence_kernel(g, *frf), Method::frf_split);
+    DcfftOperator free(split_frf_kernel(g, *frf));
+    const ContactResult p = ContactSolver(periodic).solve_load(h, load);
+    const ContactResult f = ContactSolver(free).solve_load(h, load);
+    REQUIRE(p.converged);
+    REQUIRE(f.converged);
+    const double difference = (p.pressure - f.pressure).abs().maxCoeff() / f.max_pressure;
+    INFO(n << " cells: " << difference);
+    CHECK(difference < (n == 128 ? 3e-3 : 4e-4));
+    if (n == 256) CHECK(difference < previous / 4);
+    previous = difference;
+  }
+}
