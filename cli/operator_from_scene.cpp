@@ -1,10 +1,15 @@
 #include "cli/operator_from_scene.hpp"
 
+#include <chrono>
 #include <iostream>
+#include <memory>
 #include <string>
 
 #include "cli/input_file.hpp"
 #include "convolution/fftw_wisdom.hpp"
+#include "convolution/periodic_kernel.hpp"
+#include "convolution/periodic_operator.hpp"
+#include "core/detail/timing.hpp"
 #include "core/error.hpp"
 
 namespace coatfft::cli {
@@ -52,12 +57,33 @@ void load_wisdom(const Scene& scene, const StagedOutput& out) {
               << " could not be imported (another FFTW version?); it will be replaced\n";
 }
 
+// [grid] boundary = "periodic": the periodic coefficients of the body's FRF (for dcfft and
+// frf-split alike, exact for the periodic problem) and their circular convolution.
+BuiltOperator periodic_operator(const Scene& scene) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::shared_ptr<const Frf> frf = body_frf(scene);
+  PeriodicKernelOptions kernel;
+  kernel.threads = scene.method.options.threads;
+  const Field coefficients = periodic_influence_kernel(scene.grid, *frf, kernel);
+  BuiltOperator built;
+  built.report.method = scene.method.options.method;
+  built.report.frf = frf->name();
+  built.report.kernel_seconds = detail::seconds_since(start);
+  built.op = std::make_unique<PeriodicOperator>(scene.grid, coefficients, built.report.method,
+                                                scene.method.options.planning);
+  built.report.setup_seconds = detail::seconds_since(start);
+  built.report.fft_nx = scene.grid.nx();
+  built.report.fft_ny = scene.grid.ny();
+  return built;
+}
+
 BuiltOperator operator_from_scene(const Scene& scene) {
   const MethodSpec& method = scene.method;
   // name = "auto" may have reduced the body (cli/automatic_method.hpp).
   const LayerStack& body = method.reduced_body ? *method.reduced_body : *scene.body;
-  BuiltOperator built = scene.frf ? make_operator(scene.grid, *scene.frf, method.options)
-                                  : make_operator(scene.grid, body, method.options);
+  BuiltOperator built = scene.periodic ? periodic_operator(scene)
+                        : scene.frf    ? make_operator(scene.grid, *scene.frf, method.options)
+                                       : make_operator(scene.grid, body, method.options);
   refuse_untrustworthy(built.report);
   if (!method.wisdom.empty())
     write_file_atomically(method.wisdom, "[method] wisdom", export_fftw_wisdom(),

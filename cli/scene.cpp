@@ -204,13 +204,18 @@ struct GridSection {
   double ly = 0.0;
   std::optional<Grid> grid;               // nx and ny given
   std::optional<double> tolerance_total;  // refine = "auto"
+  bool periodic = false;                  // boundary = "periodic"
 };
 
 GridSection read_grid(const toml::table& root) {
   SectionReader reader(section(root, "grid", true), "grid");
   return in_section("grid", [&] {
-    GridSection g{reader.number("lx"), reader.number("ly"), std::nullopt, std::nullopt};
+    GridSection g{reader.number("lx"), reader.number("ly"), std::nullopt, std::nullopt, false};
+    g.periodic = reader.choice("boundary", "free", {"free", "periodic"}) == "periodic";
     if (reader.choice("refine", "none", {"none", "auto"}) == "auto") {
+      COATFFT_REQUIRE(!g.periodic,
+                      "refine = \"auto\" chooses grids for free boundaries: give nx "
+                      "and ny with boundary = \"periodic\"");
       COATFFT_REQUIRE(!reader.has("nx") && !reader.has("ny"),
                       "refine = \"auto\" chooses nx and ny: remove them");
       const double t = reader.number("tolerance_total");
@@ -226,6 +231,10 @@ GridSection read_grid(const toml::table& root) {
       // Guard against input that would exhaust memory before FFTW does (padded arrays).
       COATFFT_REQUIRE(nx <= 65536 && ny <= 65536, "nx = ", nx, ", ny = ", ny,
                       ": at most 65536 cells per direction");
+      COATFFT_REQUIRE(!g.periodic || (nx % 2 == 0 && ny % 2 == 0),
+                      "boundary = \"periodic\" needs "
+                      "even nx and ny (nx = ",
+                      nx, ", ny = ", ny, ")");
       g.grid = Grid(nx, ny, g.lx, g.ly);
     }
     reader.finish();
@@ -674,6 +683,31 @@ void check_tangential(const Scene& scene, const char* key) {
                   "; the cost grows like (L/h)^2)");
 }
 
+// [grid] boundary = "periodic": the periodic operator of convolution/periodic_kernel.hpp, built
+// from the body's FRF (docs/theory.md 4.8). It replaces dcfft (homogeneous) and frf-split (any
+// body); "auto" takes the one of them the body allows. The other methods compute free surfaces,
+// and so do the stresses and the tangential tractions so far: refused.
+void check_periodic(Scene& scene) {
+  MethodSpec& m = scene.method;
+  if (m.automatic) {
+    m.automatic = false;
+    m.options.method =
+        !scene.frf && scene.body->is_homogeneous() ? Method::dcfft : Method::frf_split;
+  }
+  const Method method = m.options.method;
+  COATFFT_REQUIRE(
+      method == Method::dcfft || method == Method::frf_split, "[method] name = \"",
+      to_string(method),
+      "\" computes free (non-periodic) surfaces: with [grid] boundary "
+      "= \"periodic\" use \"frf-split\" (any body), \"dcfft\" (homogeneous) or \"auto\"");
+  COATFFT_REQUIRE(!scene.stress,
+                  "[stress] computes free (non-periodic) bodies only so far: "
+                  "remove it or use [grid] boundary = \"free\"");
+  COATFFT_REQUIRE(!scene.shear && !(scene.contact && scene.contact->friction > 0.0),
+                  "tangential tractions ([shear], [contact] friction) act on free (non-periodic) "
+                  "surfaces only so far: use [grid] boundary = \"free\"");
+}
+
 // [frf]: the body as a table of its FRF. Love's coefficients (direct, dcfft) need a material,
 // which a table does not give, so those methods are refused here rather than when building.
 void read_frf(const toml::table& root, const std::filesystem::path& scene_dir, Scene& scene) {
@@ -774,6 +808,8 @@ Scene read_scene(const std::filesystem::path& path) {
     }
     if (scene.contact && scene.contact->friction > 0.0)
       check_tangential(scene, "[contact] friction");
+    scene.periodic = grid.periodic;
+    if (scene.periodic) check_periodic(scene);
     // The in-plane surface displacements (ux.npy, uy.npy), with tangential tractions or stresses,
     // of a bonded body whose surface kernels are affordable (checked above when tractions act).
     scene.output.in_plane =

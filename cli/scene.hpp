@@ -151,6 +151,8 @@ struct Scene {
   std::optional<GridRefinement> refinement = std::nullopt;  ///< set when [grid] refine = "auto"
   std::optional<StressSpec> stress = std::nullopt;          ///< [stress]
   std::optional<ShearSpec> shear = std::nullopt;            ///< [shear]
+  /// [grid] boundary = "periodic": the surface repeats over the domain (docs/scene_format.md).
+  bool periodic = false;
 };
 
 /// The depths of every plane a [stress] scene computes: the depths, then the section's rows,

@@ -1,0 +1,98 @@
+// [grid] boundary = "periodic" in scenes: a rough periodic contact made with `coatfft surface`,
+// Westergaard's wavy contact through the command line, and the refusals of what periodic
+// surfaces do not support (one line, exit 2, no output).
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <iomanip>
+#include <numbers>
+#include <sstream>
+#include <string>
+
+#include "cli/npy.hpp"
+#include "tests/cli_process.hpp"
+
+using namespace coatfft_test;
+
+namespace {
+
+const std::string kPeriodicHertz = R"([grid]
+nx = 64
+ny = 64
+lx = 3.0e-3
+ly = 3.0e-3
+boundary = "periodic"
+[substrate]
+material = "steel"
+[pressure]
+kind = "hertz"
+p0 = 1.0e9
+a = 1.0e-3
+)";
+
+}  // namespace
+
+TEST_CASE("a periodic wavy contact from the command line is Westergaard's", "[cli_periodic]") {
+  // h = Delta (1 - cos(2 pi x/lambda)) as a height map, one period over 1024 x 2 cells; at
+  // p_m = p*/2 (p* = pi E* Delta/lambda) Johnson's (1985, section 13.2) contact covers half the
+  // period and the peak pressure is 2 sqrt(p_m p*) = sqrt(2) p*.
+  const int n = 1024;
+  const double lambda = 1e-3, delta = 1e-6, e_star = 210e9 / (1 - 0.09);
+  coatfft::Field h(n, 2);
+  for (int i = 0; i < n; ++i)
+    h.row(i).setConstant(delta * (1 - std::cos(2 * std::numbers::pi * (i + 0.5 - n / 2) / n)));
+  const fs::path gap = scratch("wavy_gap.npy");
+  coatfft::cli::write_npy(gap, h);
+  const double p_star = std::numbers::pi * e_star * delta / lambda;
+  const double load = 0.5 * p_star * lambda * (2 * lambda / n);
+  std::ostringstream scene;
+  scene << std::setprecision(17) << "[grid]\nnx = 1024\nny = 2\nlx = 1e-3\nly = " << 2 * lambda / n
+        << "\nboundary = \"periodic\"\n[substrate]\nmaterial = \"steel\"\n"
+        << "[contact]\nindenter = \"height_map\"\npath = \"" << gap.string()
+        << "\"\nload = " << load << "\n";
+  const nlohmann::json s = read_summary(run_scene_ok(scene.str(), "wavy"));
+  CHECK(s["boundary"] == "periodic");
+  CHECK(s["converged"] == true);
+  const double width = s["contact_area"].get<double>() / (2 * lambda / n) / lambda;
+  CHECK(std::abs(width - 0.5) <= 1.5 / n);
+  CHECK(s["max_pressure"].get<double>() == Approx(std::sqrt(2.0) * p_star).epsilon(1e-4));
+}
+
+TEST_CASE("a rough periodic contact made with coatfft surface", "[cli_periodic]") {
+  const fs::path z = scratch("rough_z.npy");
+  fs::remove(z);
+  REQUIRE(run_coatfft("surface -o " + z.string() +
+                      " --nx 128 --ny 128 --lx 1e-3 --ly 1e-3 --hurst 0.8 --rms-height 0.5e-6 "
+                      "--short-cutoff 3.2e-5 --seed 5")
+              .status == 0);
+  const coatfft::Field topography = coatfft::cli::read_npy(z);
+  const fs::path gap = scratch("rough_gap.npy");
+  coatfft::cli::write_npy(gap, topography.maxCoeff() - topography);
+  const std::string scene =
+      "[grid]\nnx = 128\nny = 128\nlx = 1e-3\nly = 1e-3\nboundary = \"periodic\"\n"
+      "[substrate]\nmaterial = \"steel\"\n[[coating]]\nmaterial = \"titanium_nitride\"\n"
+      "thickness = 5e-5\n[contact]\nindenter = \"height_map\"\npath = \"" +
+      gap.string() + "\"\nload = 20.0\n";
+  const fs::path out = run_scene_ok(scene, "rough_periodic");
+  const nlohmann::json s = read_summary(out);
+  CHECK(s["method"] == "frf-split");  // auto on a coated periodic body
+  CHECK(s["converged"] == true);
+  // A few per cent of the area in contact at 20 MPa mean pressure; the load is carried.
+  CHECK(s["contact_area"].get<double>() > 0.0);
+  CHECK(s["contact_area"].get<double>() < 0.2e-6);
+  CHECK(s["total_load"].get<double>() == Approx(20.0).epsilon(1e-9));
+}
+
+TEST_CASE("periodic scenes refuse what they do not support", "[cli_periodic]") {
+  const BadCase cases[] = {
+      {"periodic_spectral", "material = \"steel\"",
+       "material = \"steel\"\n[method]\nname = \"frf-spectral\"", "free (non-periodic)"},
+      {"periodic_odd", "nx = 64", "nx = 63", "even"},
+      {"periodic_refine", "nx = 64\nny = 64", "refine = \"auto\"\ntolerance_total = 0.01",
+       "refine"},
+      {"periodic_stress", "a = 1.0e-3", "a = 1.0e-3\n[stress]\ndepths = [5e-4]", "[stress]"},
+      {"periodic_shear", "a = 1.0e-3", "a = 1.0e-3\n[shear]\nkind = \"proportional\"\nmu = 0.2",
+       "tangential"},
+      {"periodic_boundary", "boundary = \"periodic\"", "boundary = \"open\"", "boundary"},
+  };
+  for (const BadCase& c : cases) check_refused(kPeriodicHertz, c);
+}
