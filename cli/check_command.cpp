@@ -57,7 +57,9 @@ void check_command(const CheckOptions& options) {
   out["ly"] = grid.ly();
   out["dx"] = grid.dx();
   out["dy"] = grid.dy();
-  out["method_requested"] = automatic ? "auto" : std::string(to_string(report.method));
+  out["method_requested"] =
+      automatic || scene.method.auto_periodic ? "auto" : std::string(to_string(report.method));
+  out["boundary"] = scene.periodic ? "periodic" : "free";
   if (automatic) out["auto"] = automatic_choice_json(*automatic, scene.method.tolerance);
   const MethodCandidate cost =
       automatic ? automatic->method.chosen : predicted_scene_cost(scene, applications);

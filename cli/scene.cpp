@@ -691,6 +691,7 @@ void check_periodic(Scene& scene) {
   MethodSpec& m = scene.method;
   if (m.automatic) {
     m.automatic = false;
+    m.auto_periodic = true;
     m.options.method =
         !scene.frf && scene.body->is_homogeneous() ? Method::dcfft : Method::frf_split;
   }

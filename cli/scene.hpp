@@ -54,6 +54,9 @@ struct MethodSpec {
   /// (model/body_reduction.hpp): the body the operator is built for.
   std::optional<LayerStack> reduced_body;
   std::filesystem::path wisdom;  ///< FFTW wisdom file to load and save (optional)
+  /// name = "auto" on a periodic boundary, resolved to dcfft or frf-split by the body alone
+  /// (automatic is then false): reported as requested "auto".
+  bool auto_periodic = false;
 };
 
 /// The most cells `direct` is run on: its cost grows as (nx ny)^2, hours beyond this size (and

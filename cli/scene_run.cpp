@@ -67,8 +67,9 @@ nlohmann::json common_summary(const Scene& scene, const Automatic& automatic,
   // nothing, and the CLI prints the operator's warnings itself (cli/run_command.cpp).
   summary["warnings"] = operator_warnings(built.report);
   summary.update(operator_report_json(built.report));
-  summary["method_requested"] =
-      automatic ? "auto" : std::string(to_string(scene.method.options.method));
+  summary["method_requested"] = automatic || scene.method.auto_periodic
+                                    ? "auto"
+                                    : std::string(to_string(scene.method.options.method));
   if (automatic) {
     summary["auto"] = automatic_choice_json(*automatic, scene.method.tolerance);
     // The operator's predicted error with the reduction's: a pipeline's own proxy prediction

@@ -75,6 +75,7 @@ TEST_CASE("a rough periodic contact made with coatfft surface", "[cli_periodic]"
   const fs::path out = run_scene_ok(scene, "rough_periodic");
   const nlohmann::json s = read_summary(out);
   CHECK(s["method"] == "frf-split");  // auto on a coated periodic body
+  CHECK(s["method_requested"] == "auto");
   CHECK(s["converged"] == true);
   // A few per cent of the area in contact at 20 MPa mean pressure; the load is carried.
   CHECK(s["contact_area"].get<double>() > 0.0);
