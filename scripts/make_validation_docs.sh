@@ -10,6 +10,7 @@
 #   pipeline_error  docs/validation_pipeline_error.md   pipeline_error_table (error model of the FRF pipelines)
 #   stress          docs/validation_stress.md           stress_table         (stresses at depth vs Johnson, Hamilton, Hankel)
 #   traction        docs/validation_traction.md         traction_table       (surface displacements under tangential tractions; sliding)
+#   rough_contact   docs/validation_rough_contact.md    rough_contact_table  (rough periodic contact: area against load, kappa)
 #   coated          docs/validation.md's generated block coated_convergence, from the existing
 #                   bench/results/sweep.csv (no program is run: scripts/run_benchmarks.sh runs the
 #                   sweep and regenerates this block too)
@@ -21,13 +22,13 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build=${BUILD_DIR:-$root/build-release}
 python=/usr/bin/python3
 tables=("$@")
-[ ${#tables[@]} -eq 0 ] && tables=(hertz_dcfft contact frf_pipelines split_kernel hard_cases pipeline_error stress traction coated)
+[ ${#tables[@]} -eq 0 ] && tables=(hertz_dcfft contact frf_pipelines split_kernel hard_cases pipeline_error stress traction rough_contact coated)
 programs=()
 for t in "${tables[@]}"; do
   case "$t" in
-    hertz_dcfft | contact | frf_pipelines | split_kernel | hard_cases | pipeline_error | stress | traction) programs+=("${t}_table") ;;
+    hertz_dcfft | contact | frf_pipelines | split_kernel | hard_cases | pipeline_error | stress | traction | rough_contact) programs+=("${t}_table") ;;
     coated) ;;
-    *) echo "usage: $0 [hertz_dcfft|contact|frf_pipelines|split_kernel|hard_cases|pipeline_error|stress|traction|coated ...]" >&2; exit 2 ;;
+    *) echo "usage: $0 [hertz_dcfft|contact|frf_pipelines|split_kernel|hard_cases|pipeline_error|stress|traction|rough_contact|coated ...]" >&2; exit 2 ;;
   esac
 done
 if [ ${#programs[@]} -gt 0 ]; then
