@@ -21,7 +21,7 @@
 // within 1e-12 (6e-16); against the Hankel reference at a/16 under q_x and under p, the coating
 // E1/E2 = 10, h = a within 1.5e-3 (7.7e-4), E1/E2 = 0.1, h = 0.1a within 8e-3 (6.2e-3), the
 // nu = 0.4999 coating within 1e-2 (7.2e-3), every value finite; the stiff thick coating's lattice
-// images at (2a, 0) at alpha = 16 (u_z under q_x there against alpha = 64) within 1.5e-4 u_x(0)
+// images at (2a, 0) at alpha = 16 (u_z under q_x there against alpha = 32) within 1.5e-4 u_x(0)
 // (7e-5; 2.5e-4 before the remainders' k -> 0 limit was taken in closed form); the thin stiff
 // coating refused with InvalidArgument; the sliding steel contact at mu = 0.25 converged with a
 // pressure shift between 0.3 and 3 times beta mu (2.1 times on these 65^2 cells; it grows as
@@ -629,11 +629,14 @@ void check_half_space(tables::Checks& checks) {
     checks.expect(d < 1e-12, "coating = substrate", sci(d));
 }
 
-// The coated rows at a/16 against their tolerances, and the stiff thick coating's lattice images
-// at the far point (2a, 0) at the default alpha = 16: u_z under q_x there against alpha = 64,
-// whose images are 250 times smaller (the table's alpha study).
+// The coated rows at a/16 against their tolerances, on every other point of the table's (a/2
+// apart: the largest errors, near r = a, are among them), and the stiff thick coating's lattice
+// images at the far point (2a, 0) at the default alpha = 16: u_z under q_x there against
+// alpha = 32, whose images are 15 times smaller (the table's alpha study).
 void check_coated(tables::Checks& checks) {
-  const std::vector<Point> points = sample_points();
+  std::vector<Point> points;
+  for (const Point& q : sample_points())
+    if (q.k % 2 == 0 && q.l % 2 == 0) points.push_back(q);
   const std::vector<Body> bodies = coated_bodies(), hard = hard_bodies();
   struct Case {
     const Body& body;
@@ -652,7 +655,7 @@ void check_coated(tables::Checks& checks) {
   const auto far_uz = [&](int alpha) {
     return response_of(g, stiff, alpha).under_qx[2](g.centre_i() + 32, g.centre_j());
   };
-  const double images = std::abs(far_uz(16) - far_uz(64)) / std::abs(ref[0].ux);
+  const double images = std::abs(far_uz(16) - far_uz(32)) / std::abs(ref[0].ux);
   checks.expect(images < 1.5e-4, bodies[kStiffThick].label + " images at alpha = 16", sci(images));
 }
 
