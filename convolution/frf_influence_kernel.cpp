@@ -9,6 +9,7 @@
 
 #include "convolution/fftw_plan.hpp"
 #include "convolution/frf_spectral_operator.hpp"
+#include "core/detail/sinc.hpp"
 #include "core/error.hpp"
 
 namespace coatfft {
@@ -16,9 +17,7 @@ namespace {
 
 constexpr const char* who = "frf_influence_kernel";
 
-double sinc(double x) {
-  return x == 0.0 ? 1.0 : std::sin(x) / x;
-}
+using detail::sinc;
 
 }  // namespace
 

@@ -10,6 +10,7 @@
 #include "convolution/parity_transform.hpp"
 #include "core/detail/brief.hpp"
 #include "core/detail/parallel_for.hpp"
+#include "core/detail/sinc.hpp"
 #include "core/error.hpp"
 #include "core/threads.hpp"
 
@@ -19,9 +20,7 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-double sinc(double x) {
-  return std::abs(x) < 1e-8 ? 1.0 - x * x / 6.0 : std::sin(x) / x;
-}
+using detail::sinc;
 
 // One lattice of the split: (mx, my) = alpha (nx, ny) points of spacing (dx, dy); the part of
 // the spectrum it samples (weight w, 1 - w or 1), its alias orders and the quarter it fills.

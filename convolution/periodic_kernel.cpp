@@ -10,6 +10,7 @@
 #include "core/detail/brief.hpp"
 #include "core/detail/gauss_legendre.hpp"
 #include "core/detail/parallel_for.hpp"
+#include "core/detail/sinc.hpp"
 #include "core/error.hpp"
 #include "core/threads.hpp"
 
@@ -21,9 +22,7 @@ constexpr double kPi = std::numbers::pi;
 // erfc(6.5) = 3.8e-20: the Ewald sums' terms beyond are below any tolerance of the options.
 constexpr double kErfcCut = 6.5;
 
-double sinc(double x) {
-  return std::abs(x) < 1e-8 ? 1.0 - x * x / 6.0 : std::sin(x) / x;
-}
+using detail::sinc;
 
 // erf(alpha r)/r, smooth at r = 0 (its limit 2 alpha/sqrt(pi)).
 double erf_over_r(double alpha, double r) {

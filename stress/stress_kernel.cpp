@@ -9,12 +9,13 @@
 #include <vector>
 
 #include "convolution/ewald_window.hpp"
+#include "convolution/parity_transform.hpp"
 #include "core/detail/parallel_for.hpp"
+#include "core/detail/sinc.hpp"
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
 #include "core/threads.hpp"
 #include "frf/stress_frf.hpp"
-#include "convolution/parity_transform.hpp"
 
 namespace coatfft {
 
@@ -22,9 +23,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-double sinc(double x) {
-  return std::abs(x) < 1e-8 ? 1.0 - x * x / 6.0 : std::sin(x) / x;
-}
+using detail::sinc;
 
 // The sampling lattice: (mx, my) = alpha (nx, ny) points of spacing (dx, dy), wavenumber steps
 // 2 pi / (mx dx); aliases p 2 pi / dx up to order (px, py), those of the shallowest plane; the
