@@ -114,6 +114,11 @@ void add_lattice(const Grid& grid, const LatticeSpectra& s, const Lattice& l, in
 
 }  // namespace
 
+double exponential_cut_off(double z, double tolerance) {
+  const double log_tol = std::log(1.0 / tolerance);
+  return (log_tol + 2.0 * std::log1p(log_tol) + 3.0) / z;
+}
+
 double lattice_evaluations(const Grid& grid, double k_cut, int alpha) {
   const double cell = (kPi / grid.lx()) * (kPi / grid.ly());
   const double lattice = (grid.nx() + 1.0) * (grid.ny() + 1.0);

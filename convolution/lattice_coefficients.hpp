@@ -43,6 +43,11 @@ struct LatticeReport {
   long long evaluations = 0;  ///< calls of sample
 };
 
+/// The wavenumber [rad/m] beyond which a spectrum bounded by a polynomial of degree <= 2 in k z
+/// times exp(-k z) is below `tolerance` of its size: (ln(1/tol) + 2 ln(1 + ln(1/tol)) + 3)/z,
+/// z > 0 [m] the decay length (the depth of a stress plane, a coating's thickness).
+double exponential_cut_off(double z, double tolerance);
+
 /// About how many calls of sample lattice_coefficients makes: the quarter disk |k| <= k_cut over
 /// DC-FFT's lattice cell, at least the lattice quarter, plus the long-range band.
 double lattice_evaluations(const Grid& grid, double k_cut, int alpha);

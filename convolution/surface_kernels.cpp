@@ -99,13 +99,6 @@ AngularPart angular_part(const Grid& g, const Split& sp, int threads) {
   return a;
 }
 
-// |R| <= (a polynomial in k beta) exp(-k beta) of the half-space terms (docs/theory.md 2.9.4):
-// below the tolerance beyond this wavenumber [rad/m].
-double remainder_cut_off(double beta, double tolerance) {
-  const double log_tol = std::log(1.0 / tolerance);
-  return (log_tol + 2.0 * std::log1p(log_tol) + 3.0) / beta;
-}
-
 // The remainders R'_D, R'_C of the split on the lattices, as the spectra of (dc, yx, zx, zy):
 // G = i^(odd_x + odd_y) F with F = R'_D cos 2theta, R'_D sin 2theta, -i R'_C cos theta,
 // -i R'_C sin theta.
@@ -113,7 +106,8 @@ void add_remainders(const Grid& g, const SurfaceResponse& response, const Split&
                     const SurfaceKernelOptions& o, AngularPart& a, LatticeReport& report) {
   LatticeSpectra s;
   s.parity = {{false, false}, {true, true}, {true, false}, {false, true}};
-  s.k_cut = remainder_cut_off(sp.beta, o.tolerance);
+  // |R'| <= (a polynomial in k beta) exp(-k beta) of the half-space terms (docs/theory.md 2.9.4).
+  s.k_cut = exponential_cut_off(sp.beta, o.tolerance);
   s.sample = [&](double kx, double ky, double k, std::span<double> out) {
     const auto [rd, rc] = sp.remainder(response(k), k);
     const double c = kx / k, sn = ky / k;
@@ -173,7 +167,7 @@ double surface_kernel_evaluations(const Grid& grid, const LayerStack& stack,
                                   const SurfaceKernelOptions& options) {
   if (stack.is_homogeneous()) return 0.0;
   const double beta = stack.coatings().front().thickness;
-  return lattice_evaluations(grid, remainder_cut_off(beta, options.tolerance),
+  return lattice_evaluations(grid, exponential_cut_off(beta, options.tolerance),
                              options.lattice.alpha);
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "convolution/ewald_window.hpp"
+#include "convolution/lattice_coefficients.hpp"
 #include "convolution/parity_transform.hpp"
 #include "core/detail/parallel_for.hpp"
 #include "core/detail/sinc.hpp"
@@ -85,12 +86,11 @@ Lattice make_lattice(const Grid& grid, std::span<const double> depths, const Str
   l.dky = 2.0 * kPi / (static_cast<double>(l.my) * l.dy);
   l.part = part;
   l.sigma = sigma;
-  const double log_tol = std::log(1.0 / o.tolerance);
   const double band =
       part == Part::long_range ? std::sqrt(45.0) / sigma : std::numeric_limits<double>::infinity();
   for (std::size_t d = 0; d < depths.size(); ++d) {
     const double k_cut =
-        std::min(band, depths[d] > 0.0 ? (log_tol + 2.0 * std::log1p(log_tol) + 3.0) / depths[d]
+        std::min(band, depths[d] > 0.0 ? exponential_cut_off(depths[d], o.tolerance)
                                        : std::numeric_limits<double>::infinity());
     l.k_cut.push_back(k_cut);
     bool capped = false;
@@ -241,12 +241,7 @@ double stress_kernel_evaluations(const Grid& grid, std::span<const double> depth
   validate(grid, depths, options);
   const double z = *std::min_element(depths.begin(), depths.end());
   if (z == 0.0) return std::numeric_limits<double>::infinity();
-  const double log_tol = std::log(1.0 / options.tolerance);
-  const double k_cut = (log_tol + 2.0 * std::log1p(log_tol) + 3.0) / z;
-  const double cell = (kPi / grid.lx()) * (kPi / grid.ly());
-  const double lattice = (grid.nx() + 1.0) * (grid.ny() + 1.0);
-  return std::max(0.25 * kPi * k_cut * k_cut / cell, lattice) +
-         (options.alpha > 2 ? std::pow(34.0 * options.alpha, 2) : 0.0);
+  return lattice_evaluations(grid, exponential_cut_off(z, options.tolerance), options.alpha);
 }
 
 std::vector<StressPlaneKernel> stress_plane_kernels(const Grid& grid, const LayerStack& stack,
