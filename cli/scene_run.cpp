@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <utility>
 #include <variant>
@@ -186,14 +187,20 @@ void add_contact_summary(nlohmann::json& summary, const Scene& scene, const Cont
   if (nlohmann::json hertz = hertz_json(scene); !hertz.is_null()) summary["hertz"] = hertz;
 }
 
-// The in-plane surface displacements of a bonded body (convolution/surface_kernels.hpp), and the
-// normal displacement of the tractions: added to uz in a known-load scene; in a contact, where the
-// sliding solve has included it already (contact/sliding_contact.hpp), only reported (summary
-// "tangential_uz": its largest value over the largest uz).
-void add_in_plane(const LayerStack& body, const Tractions& q, int threads, SceneRun& run) {
+// The surface response of the scene's body (convolution/surface_kernels.hpp), built once for the
+// sliding contact's coupling and the in-plane displacements.
+std::shared_ptr<CerrutiOperator> surface_response(const Grid& grid, const LayerStack& body,
+                                                  int threads) {
   SurfaceKernelOptions options;
   options.lattice.threads = threads;
-  CerrutiOperator op(run.grid, body, options);
+  return std::make_shared<CerrutiOperator>(grid, body, options);
+}
+
+// The in-plane surface displacements of a bonded body (the operator `op` of surface_response), and
+// the normal displacement of the tractions: added to uz in a known-load scene; in a contact, where
+// the sliding solve has included it already (contact/sliding_contact.hpp), only reported (summary
+// "tangential_uz": its largest value over the largest uz).
+void add_in_plane(CerrutiOperator& op, const Tractions& q, SceneRun& run) {
   std::array<Field, 3> u;
   op.apply(run.pressure, q.qx ? &*q.qx : nullptr, q.qy ? &*q.qy : nullptr, u);
   run.ux = std::move(u[0]);
@@ -210,14 +217,10 @@ void add_in_plane(const LayerStack& body, const Tractions& q, int threads, Scene
 
 // The normal displacement of q_x relative to the indenter: the body's (any bonded stack,
 // convolution/surface_kernels.hpp) less an elastic indenter's, whose surface receives -q_x.
-TangentialCoupling tangential_coupling(const Grid& grid, const LayerStack& body,
+TangentialCoupling tangential_coupling(std::shared_ptr<CerrutiOperator> on_body,
                                        const std::optional<Material>& indenter, int threads) {
-  SurfaceKernelOptions options;
-  options.lattice.threads = threads;
-  auto on_body = std::make_shared<CerrutiOperator>(grid, body, options);
   std::shared_ptr<CerrutiOperator> on_indenter;
-  if (indenter)
-    on_indenter = std::make_shared<CerrutiOperator>(grid, LayerStack(*indenter), options);
+  if (indenter) on_indenter = surface_response(on_body->grid(), LayerStack(*indenter), threads);
   return [on_body, on_indenter](const Field& qx) {
     const Field zero = Field::Zero(qx.rows(), qx.cols());
     std::array<Field, 3> u;
@@ -234,8 +237,8 @@ TangentialCoupling tangential_coupling(const Grid& grid, const LayerStack& body,
 // The contact solve: frictionless, or under full sliding with the coupling iterated
 // (contact/sliding_contact.hpp), reported in summary "friction_coupling".
 ContactResult solve_scene_contact(ContactSolver& solver, const Scene& scene,
-                                  const std::optional<LayerStack>& body, const Field& height_field,
-                                  nlohmann::json& report) {
+                                  const std::shared_ptr<CerrutiOperator>& surface,
+                                  const Field& height_field, nlohmann::json& report) {
   const ContactSpec& spec = *scene.contact;
   const ContactControl control = spec.load ? ContactControl::load : ContactControl::approach;
   const double value = spec.load ? *spec.load : *spec.approach;
@@ -247,8 +250,9 @@ ContactResult solve_scene_contact(ContactSolver& solver, const Scene& scene,
   SlidingReport r;
   ContactResult result = solve_sliding(
       solver,
-      // A scene with friction has a layered body (cli/scene.cpp, check_tangential).
-      tangential_coupling(scene.grid, *body, spec.indenter_material, scene.method.options.threads),
+      // A scene with friction writes ux.npy and uy.npy (cli/scene.cpp): its surface response is
+      // built.
+      tangential_coupling(surface, spec.indenter_material, scene.method.options.threads),
       height_field, control, value, options, &r);
   report = {{"solves", r.solves},
             {"pressure_change", r.pressure_change},
@@ -264,11 +268,12 @@ ContactResult solve_scene_contact(ContactSolver& solver, const Scene& scene,
   return result;
 }
 
-SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat, Progress& progress) {
+// `surface`: the body's surface response (surface_response) when the scene writes ux.npy, for
+// the friction coupling; built before an elastic indenter's composite modulus replaces the body
+// for the normal compliance.
+SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat, Progress& progress,
+                         const std::shared_ptr<CerrutiOperator>& surface) {
   const ContactSpec& spec = *scene.contact;
-  // The body as the scene gives it, for the friction coupling (before an elastic indenter's
-  // composite modulus replaces it for the normal compliance).
-  const std::optional<LayerStack> scene_body = scene.body;
   if (spec.indenter_material) {
     // Two homogeneous elastic bodies in frictionless normal contact deform as one half-space of
     // the composite modulus (Johnson section 4.2); only E* enters the normal compliance.
@@ -286,7 +291,7 @@ SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat, Pr
                            : "solving the contact (approach control)");
   const auto start = Clock::now();
   nlohmann::json coupling;
-  ContactResult result = solve_scene_contact(solver, scene, scene_body, height_field, coupling);
+  ContactResult result = solve_scene_contact(solver, scene, surface, height_field, coupling);
   const double solve_seconds = seconds_since(start);
   // A periodic surface has no edge: a contact across the period's border is a contact.
   COATFFT_REQUIRE(scene.periodic || !result.touches_boundary,
@@ -349,9 +354,15 @@ SceneRun compute_scene(PreparedScene prepared, const SceneRunOptions& options) {
   const Scene scene_copy = prepared.scene;
   const std::optional<LayerStack> body = prepared.scene.body;
   const int threads = prepared.scene.method.options.threads;
+  std::shared_ptr<CerrutiOperator> surface;
+  if (scene_copy.output.in_plane) {
+    progress.stage("setting up the surface response to tractions");
+    surface = surface_response(scene_copy.grid, *body, threads);
+  }
   SceneRun run =
       prepared.scene.contact
-          ? compute_contact(std::move(prepared.scene), prepared.automatic, options.repeat, progress)
+          ? compute_contact(std::move(prepared.scene), prepared.automatic, options.repeat, progress,
+                            surface)
           : compute_pressure(prepared.scene, prepared.automatic, options.repeat, progress);
   const Tractions q = scene_tractions(scene_copy, run.pressure);
   if (stress) {
@@ -362,7 +373,7 @@ SceneRun compute_scene(PreparedScene prepared, const SceneRunOptions& options) {
   }
   if (scene_copy.output.in_plane) {
     progress.stage("in-plane surface displacements");
-    add_in_plane(*body, q, threads, run);
+    add_in_plane(*surface, q, run);
   } else if (stress) {
     // Only [stress] asked for them (tractions would have been refused): say why they are missing.
     run.summary["warnings"].push_back(
