@@ -1,9 +1,10 @@
 // Contact solver cost on the Hertz problem (DC-FFT operator): Polonsky-Keer iterations to a
-// relative pressure change of 1e-10 at N = 128 ... 1024, classic and preconditioned, under load and
-// approach control, and the wall time of a solve as a multiple of one operator application timed
-// in the same run. Prints `# key = value` headers and CSV rows, and writes the same to
-// bench/results/contact.csv (or OUTPUT).
-//   bench_contact [OUTPUT] [--planning estimate|measure]
+// relative pressure change of 1e-10 at N = 256 ... 2048, classic and preconditioned, with the
+// displacement moved by linearity (one application per iteration) and recomputed at every
+// iteration (the original form), under load and approach control, and the wall time of a solve
+// as a multiple of one operator application timed in the same run. Prints `# key = value` headers
+// and CSV rows, and writes the same to bench/results/contact.csv (or OUTPUT).
+//   bench_contact [OUTPUT] [--planning estimate|measure] [--sizes N ...]
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -12,6 +13,7 @@
 #include <exception>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -20,6 +22,7 @@
 #include "contact/indenter.hpp"
 #include "convolution/influence_kernel.hpp"
 #include "convolution/make_operator.hpp"
+#include "core/error.hpp"
 #include "core/detail/timing.hpp"
 #include "validation/hertz_contact.hpp"
 
@@ -64,6 +67,7 @@ struct Row {
   std::ptrdiff_t n;
   std::string control;
   bool preconditioned;
+  bool update_by_linearity;
   int iterations;
   double residual;
   bool converged;
@@ -78,7 +82,8 @@ struct Row {
   double load_or_approach_error;
 };
 
-Row run(std::ptrdiff_t n, ContactControl control, bool preconditioned, Planning planning) {
+Row run(std::ptrdiff_t n, ContactControl control, bool preconditioned, bool update_by_linearity,
+        Planning planning) {
   const HertzSphere ref = hertz_sphere_for_load(kLoad, kRadius, kModulus);
   const double width = 2 * kHalfWidth * ref.contact_radius;
   const Grid grid(n, n, width, width);
@@ -107,6 +112,7 @@ Row run(std::ptrdiff_t n, ContactControl control, bool preconditioned, Planning 
   ContactOptions opts;
   opts.compute_approach = true;
   opts.preconditioned = preconditioned;
+  opts.update_by_linearity = update_by_linearity;
   TimedOperator timed(op);
   ContactSolver solver(timed, opts);  // plans the preconditioner: outside the timed solve
   const auto start = Clock::now();
@@ -114,12 +120,17 @@ Row run(std::ptrdiff_t n, ContactControl control, bool preconditioned, Planning 
                                 ? solver.solve_load(h, kLoad)
                                 : solver.solve_approach(h, ref.approach);
   const double solve_ms = ms_since(start);
+  if (res.operator_applications != timed.count()) {
+    throw std::runtime_error(detail::concat("the solver reported ", res.operator_applications,
+                                            " applications, but made ", timed.count()));
+  }
   const double third_error = control == ContactControl::load
                                  ? res.approach.value_or(0.0) / ref.approach - 1
                                  : res.load / ref.load - 1;
   return {n,
           control == ContactControl::load ? "load" : "approach",
           preconditioned,
+          update_by_linearity,
           res.iterations,
           res.residual,
           res.converged && !res.touches_boundary,
@@ -127,7 +138,7 @@ Row run(std::ptrdiff_t n, ContactControl control, bool preconditioned, Planning 
           *std::min_element(times.begin(), times.end()),
           detail::median(times),
           solve_ms,
-          timed.count(),
+          res.operator_applications,
           timed.ms(),
           res.contact_radius.value_or(0.0) / ref.contact_radius - 1,
           res.max_pressure / ref.max_pressure - 1,
@@ -143,6 +154,8 @@ int main(int argc, char** argv) {
   std::string planning_name = "estimate";
   app.add_option("--planning", planning_name, "FFTW planner effort: estimate or measure")
       ->capture_default_str();
+  std::vector<std::ptrdiff_t> sizes = {256, 512, 1024, 2048};
+  app.add_option("--sizes", sizes, "grid sizes N (N x N cells)")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   try {
     const Planning planning = parse_planning(planning_name);
@@ -155,32 +168,39 @@ int main(int argc, char** argv) {
         << "# problem = R " << kRadius << " m, E* " << kModulus << " Pa, W " << kLoad
         << " N, domain [-" << kHalfWidth << " a, " << kHalfWidth << " a]^2, exact sphere\n"
         << "# tolerance = 1e-10 (relative pressure change per iteration)\n"
-        << "# applies_per_solve = 2 iterations + 1 (load) or + 2 (approach); preconditioned = 1\n"
-        << "#   adds one periodic N x N FFT pair per iteration (the |k| multiplier)\n"
+        << "# variants: linearity = 1 moves u by linearity and recomputes it now and then (about\n"
+        << "#   one application per iteration); 0 recomputes u = K p at every iteration (Polonsky &\n"
+        << "#   Keer's original, 2 per iteration: the solver before); preconditioned = 1 adds one\n"
+        << "#   periodic N x N FFT pair per iteration (the |k| multiplier); the unpreconditioned\n"
+        << "#   iteration runs up to N = 512 only\n"
         << "# columns: apply_ms_* = one application timed alone (warm, repeated); applies and\n"
         << "#   in_solve_apply_ms = count and mean time of the applications inside the solve;\n"
         << "#   solve_over_apply = solve_ms / in_solve_apply_ms (robust to machine load, which\n"
         << "#   slows both alike); errors are relative to Hertz (a from sqrt(A/pi)); third_error "
            "is the\n"
         << "#   approach error under load control and the load error under approach control\n"
-        << "control,preconditioned,N,iterations,residual,converged,plan_ms,apply_ms_min,apply_ms_"
-           "median,"
-           "solve_ms,applies,in_solve_apply_ms,solve_over_apply,a_error,p0_error,third_error\n";
+        << "control,preconditioned,linearity,N,iterations,residual,converged,plan_ms,apply_ms_min,"
+           "apply_ms_median,solve_ms,applies,in_solve_apply_ms,solve_over_apply,a_error,p0_error,"
+           "third_error\n";
     std::cout << out.str() << std::flush;
-    for (const std::ptrdiff_t n : {128, 256, 512, 1024}) {
+    for (const std::ptrdiff_t n : sizes) {
       for (const ContactControl control : {ContactControl::load, ContactControl::approach}) {
         for (const bool preconditioned : {true, false}) {
-          const Row r = run(n, control, preconditioned, planning);
-          std::ostringstream row;
-          row.precision(4);
-          row << r.control << "," << (r.preconditioned ? 1 : 0) << "," << r.n << "," << r.iterations
-              << "," << r.residual << "," << (r.converged ? 1 : 0) << "," << r.plan_ms << ","
-              << r.apply_ms_min << "," << r.apply_ms_median << "," << r.solve_ms << "," << r.applies
-              << "," << r.in_solve_ms / r.applies << "," << r.solve_ms / (r.in_solve_ms / r.applies)
-              << "," << r.radius_error << "," << r.pressure_error << "," << r.load_or_approach_error
-              << "\n";
-          std::cout << row.str() << std::flush;
-          out << row.str();
+          if (!preconditioned && n > 512) continue;  // hundreds of iterations: minutes each
+          for (const bool linearity : {true, false}) {
+            const Row r = run(n, control, preconditioned, linearity, planning);
+            std::ostringstream row;
+            row.precision(4);
+            row << r.control << "," << (r.preconditioned ? 1 : 0) << ","
+                << (r.update_by_linearity ? 1 : 0) << "," << r.n << "," << r.iterations << ","
+                << r.residual << "," << (r.converged ? 1 : 0) << "," << r.plan_ms << ","
+                << r.apply_ms_min << "," << r.apply_ms_median << "," << r.solve_ms << ","
+                << r.applies << "," << r.in_solve_ms / r.applies << ","
+                << r.solve_ms / (r.in_solve_ms / r.applies) << "," << r.radius_error << ","
+                << r.pressure_error << "," << r.load_or_approach_error << "\n";
+            std::cout << row.str() << std::flush;
+            out << row.str();
+          }
         }
       }
     }

@@ -69,8 +69,9 @@ BuiltOperator periodic_operator(const Scene& scene) {
   built.report.method = scene.method.options.method;
   built.report.frf = frf->name();
   built.report.kernel_seconds = detail::seconds_since(start);
-  built.op = std::make_unique<PeriodicOperator>(scene.grid, coefficients, built.report.method,
-                                                scene.method.options.planning);
+  built.op = std::make_unique<PeriodicOperator>(
+      scene.grid, coefficients, built.report.method, scene.method.options.planning,
+      Precision::double_precision, scene.method.options.threads);
   built.report.setup_seconds = detail::seconds_since(start);
   built.report.fft_nx = scene.grid.nx();
   built.report.fft_ny = scene.grid.ny();

@@ -126,8 +126,9 @@ SceneRun compute_pressure(const Scene& scene, const Automatic& automatic, int re
           std::nullopt, std::move(summary),  RunStatus::ok};
 }
 
-ContactOptions solver_options(const ContactSpec& spec, Progress& progress) {
+ContactOptions solver_options(const ContactSpec& spec, int threads, Progress& progress) {
   ContactOptions options;
+  options.threads = threads;
   options.tolerance = spec.tolerance;
   options.max_iterations = spec.max_iterations;
   // Under load control the approach is the only output that depends on g(0) (docs/contact.md).
@@ -176,6 +177,7 @@ void add_contact_summary(nlohmann::json& summary, const Scene& scene, const Cont
       is_axisymmetric(spec.indenter) ? or_null(result.contact_radius) : nlohmann::json();
   summary["max_pressure"] = result.max_pressure;
   summary["iterations"] = result.iterations;
+  summary["operator_applications"] = result.operator_applications;
   summary["residual"] = result.residual;
   summary["converged"] = result.converged;
   summary["status"] = to_string(result.status);
@@ -286,7 +288,8 @@ SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat, Pr
   progress.stage(setup_stage(scene));
   BuiltOperator built = operator_from_scene(scene);
 
-  ContactSolver solver(*built.op, solver_options(spec, progress));
+  ContactSolver solver(*built.op,
+                       solver_options(spec, scene.method.options.threads, progress));
   progress.stage(spec.load ? "solving the contact (load control)"
                            : "solving the contact (approach control)");
   const auto start = Clock::now();

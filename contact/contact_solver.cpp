@@ -9,6 +9,7 @@
 #include <string>
 
 #include "contact/fourier_preconditioner.hpp"
+#include "contact/initial_pressure.hpp"
 #include "core/error.hpp"
 
 namespace coatfft {
@@ -36,12 +37,22 @@ void append(std::string& text, const std::string& more) {
 
 // The constrained conjugate gradient of Polonsky & Keer (1999) on one problem: the iterate, its
 // work fields, and one function per step of their iteration. The steps are fused loops over the
-// cells (no temporaries): at large N the element-wise work would otherwise rival the two FFT-based
-// operator applications per iteration.
+// cells (no temporaries): at large N the element-wise work would otherwise rival the FFT-based
+// operator application of each iteration.
+//
+// One application per iteration (docs/contact.md, "Operator applications"): the step
+// p <- p - tau t needs r = K t for its length, and by linearity the same r moves the displacement,
+// u <- u - tau r, exactly, unless the projection changed a cell (pressure cut to zero, or added
+// on an overlap); only then is u = K p recomputed, a second application. The iterates are Polonsky
+// & Keer's, who recompute u at every iteration. A stale u (the correction K d deferred) was tried
+// and steers the conjugate gradient badly: 1.8 times the iterations at 1024^2, none converging
+// once the deferred share reaches the step's size. What keeps the recomputations few is the start
+// (initial_pressure.hpp): close to the solution, the contact set settles in a few iterations.
 class PolonskyKeerIteration {
  public:
   PolonskyKeerIteration(SurfaceOperator& op, detail::FourierPreconditioner* preconditioner,
-                        const Field& h, ContactControl control, double value);
+                        const Field& h, ContactControl control, double value,
+                        bool update_by_linearity);
 
   // One iteration; the status once the iteration has ended, nothing while it goes on.
   std::optional<ContactStatus> iterate(double tolerance);
@@ -49,8 +60,12 @@ class PolonskyKeerIteration {
   // The relative pressure change of the last step (infinity before the first).
   double residual() const { return residual_; }
 
-  // The result for the current iterate (one more operator application, for its displacement).
+  // The result for the current iterate (one more operator application when its displacement is
+  // not exact).
   ContactResult result(ContactStatus status, int iterations, bool compute_approach);
+
+  // Operator applications made so far.
+  int applications() const { return applications_; }
 
  private:
   struct Gap {
@@ -58,7 +73,12 @@ class PolonskyKeerIteration {
     double norm;               // sum of g^2 over I_c
   };
 
+
   void start();
+  void start_uniform();
+  void start_hertzian();
+  void scale_to_approach();
+  void recompute_displacement();
   Gap update_gap();
   void update_direction(std::ptrdiff_t n_contact, double g_norm);
   std::optional<double> step_length(std::ptrdiff_t n_contact);
@@ -80,11 +100,16 @@ class PolonskyKeerIteration {
   // Polonsky & Keer's delta: keep the previous direction (the last step added no contact cells).
   bool conjugate_ = false;
   double residual_ = std::numeric_limits<double>::infinity();
+  // false: Polonsky & Keer's original (uniform start, u = K p recomputed at every iteration).
+  bool update_by_linearity_;
+  bool exact_ = false;  // u = K p (to rounding); false once the projection changed a cell
+  int applications_ = 0;
 };
 
 PolonskyKeerIteration::PolonskyKeerIteration(SurfaceOperator& op,
                                              detail::FourierPreconditioner* preconditioner,
-                                             const Field& h, ContactControl control, double value)
+                                             const Field& h, ContactControl control, double value,
+                                             bool update_by_linearity)
     : op_(op),
       preconditioner_(preconditioner),
       h_(h),
@@ -100,31 +125,72 @@ PolonskyKeerIteration::PolonskyKeerIteration(SurfaceOperator& op,
       t_(Field::Zero(h.rows(), h.cols())),  // read (times beta = 0) by the first iteration
       r_(h.rows(), h.cols()),
       p_old_(h.rows(), h.cols()),
-      z_(h.rows(), h.cols()) {
+      z_(h.rows(), h.cols()),
+      update_by_linearity_(update_by_linearity) {
   start();
 }
 
 // The initial pressure.
 void PolonskyKeerIteration::start() {
+  if (update_by_linearity_) {
+    start_hertzian();
+  } else {
+    start_uniform();
+  }
+}
+
+// Polonsky & Keer's start: under load control the load spread uniformly over the whole domain;
+// under approach control a uniform pressure on the geometric overlap {h < delta}, scaled to the
+// approach (one application).
+void PolonskyKeerIteration::start_uniform() {
   if (load_control_) {
-    // Polonsky & Keer's start: the load spread uniformly over the whole domain.
     p_.setConstant(value_ / (static_cast<double>(n_cells_) * cell_area_));
     return;
   }
-  // A uniform pressure on the geometric overlap {h < delta}, scaled so that the mean gap over
-  // it vanishes: one extra application, and a start of the right magnitude.
-  const Mask overlap = h_ < delta_;
-  const auto n_overlap = overlap.count();
-  p_ = overlap.cast<double>();
-  op_.apply(p_, u_);
+  p_ = (h_ < delta_).cast<double>();
+  scale_to_approach();
+}
+
+// A Hertzian start (initial_pressure.hpp): sqrt(level - h) on {h < level}. Under approach control
+// the level is half the overlap, Hertz's; under load control it is fitted by one application.
+void PolonskyKeerIteration::start_hertzian() {
+  const double h_min = h_.minCoeff();
+  if (!load_control_) {
+    p_ = detail::hertzian_profile(h_, h_min + 0.5 * (delta_ - h_min));
+    scale_to_approach();
+    return;
+  }
+  double level = detail::level_below(h_, detail::kTrialContactShare) - h_min;
+  p_ = detail::hertzian_profile(h_, h_min + level);
+  p_ *= value_ / (p_.sum() * cell_area_);
+  recompute_displacement();
+  level *= detail::level_correction(h_, p_, u_);
+  p_ = detail::hertzian_profile(h_, h_min + level);
+  p_ *= value_ / (p_.sum() * cell_area_);
+  exact_ = false;
+}
+
+// Approach control: p scaled so that the mean gap over its support vanishes (one application).
+void PolonskyKeerIteration::scale_to_approach() {
+  const Mask support = p_ > 0;
+  const auto n_support = support.count();
+  recompute_displacement();
   const double scale =
-      masked_mean(delta_ - h_, overlap, n_overlap) / masked_mean(u_, overlap, n_overlap);
+      masked_mean(delta_ - h_, support, n_support) / masked_mean(u_, support, n_support);
   COATFFT_REQUIRE(std::isfinite(scale) && scale > 0, "ContactSolver: operator '", op_.name(),
                   "' returned a non-positive mean displacement under a positive pressure");
   p_ *= scale;
+  u_ *= scale;
+}
+
+void PolonskyKeerIteration::recompute_displacement() {
+  op_.apply(p_, u_);
+  ++applications_;
+  exact_ = true;
 }
 
 std::optional<ContactStatus> PolonskyKeerIteration::iterate(double tolerance) {
+  if (!exact_ || !update_by_linearity_) recompute_displacement();
   const Gap gap = update_gap();
   if (gap.n_contact == 0) return ContactStatus::pressure_vanished;
   if (gap.norm == 0.0) {  // exact solution on I_c already
@@ -136,7 +202,8 @@ std::optional<ContactStatus> PolonskyKeerIteration::iterate(double tolerance) {
   if (!tau) return ContactStatus::non_positive_curvature;
   const double p_sum = project(*tau);
   if (!(p_sum > 0) || !std::isfinite(p_sum)) {
-    p_ = p_old_;  // the last iterate that carried pressure
+    p_ = p_old_;  // the last iterate that carried pressure; u is not its displacement
+    exact_ = false;
     return ContactStatus::pressure_vanished;
   }
   residual_ = enforce_load(p_sum);
@@ -147,10 +214,9 @@ std::optional<ContactStatus> PolonskyKeerIteration::iterate(double tolerance) {
 // Step 1: gap of the current pressure; on the contact set I_c it should be constant (load
 // control: its mean is the unknown approach, and is removed) or zero (approach control).
 PolonskyKeerIteration::Gap PolonskyKeerIteration::update_gap() {
-  op_.apply(p_, u_);
   const double* hd = h_.data();
   const double* pd = p_.data();
-  const double* ud = u_.data();  // fetched after apply: an operator may reallocate its output
+  const double* ud = u_.data();
   double* gd = g_.data();
   std::ptrdiff_t n_contact = 0;
   double g_sum = 0.0;
@@ -214,6 +280,7 @@ void PolonskyKeerIteration::update_direction(std::ptrdiff_t n_contact, double g_
 // the operator's g(0).
 std::optional<double> PolonskyKeerIteration::step_length(std::ptrdiff_t n_contact) {
   op_.apply(t_, r_);
+  ++applications_;
   const double* pd = p_.data();
   const double* gd = g_.data();
   const double* td = t_.data();
@@ -238,36 +305,50 @@ std::optional<double> PolonskyKeerIteration::step_length(std::ptrdiff_t n_contac
 }
 
 // Step 4: p <- max(p - tau t, 0), keeping the previous iterate in p_old; cells that overlap
-// (p = 0, g < 0) get pressure -tau g and restart the conjugation. Returns sum p.
+// (p = 0, g < 0) get pressure -tau g and restart the conjugation. The displacement follows by
+// linearity, u <- u - tau r, which stays exact unless the projection changed a cell. Returns
+// sum p.
 double PolonskyKeerIteration::project(double tau) {
   const double* gd = g_.data();
   const double* td = t_.data();
+  const double* rd = r_.data();
   double* pd = p_.data();
   double* qd = p_old_.data();
+  double* ud = u_.data();
   conjugate_ = true;
+  bool projected = false;
   double p_sum = 0.0;
   for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
     qd[k] = pd[k];
-    double pk = std::max(pd[k] - tau * td[k], 0.0);
+    double pk = pd[k] - tau * td[k];
+    if (pk < 0.0) {
+      pk = 0.0;
+      projected = true;
+    }
     if (pk == 0.0 && gd[k] < 0.0) {
       pk = -tau * gd[k];
       conjugate_ = false;
+      projected = true;
     }
     pd[k] = pk;
+    ud[k] -= tau * rd[k];
     p_sum += pk;
   }
+  exact_ = exact_ && !projected;
   return p_sum;
 }
 
-// Step 5: under load control scale p to the total load exactly; returns Polonsky & Keer's
-// convergence measure, the relative pressure change sum |p - p_old| / sum p.
+// Step 5: under load control scale p (and with it u) to the total load exactly; returns Polonsky &
+// Keer's convergence measure, the relative pressure change sum |p - p_old| / sum p.
 double PolonskyKeerIteration::enforce_load(double p_sum) {
   const double scale = load_control_ ? value_ / (p_sum * cell_area_) : 1.0;
   double* pd = p_.data();
+  double* ud = u_.data();
   const double* qd = p_old_.data();
   double change = 0.0;
   for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
     pd[k] *= scale;
+    ud[k] *= scale;
     change += std::abs(pd[k] - qd[k]);
   }
   return change / (scale * p_sum);
@@ -275,7 +356,7 @@ double PolonskyKeerIteration::enforce_load(double p_sum) {
 
 ContactResult PolonskyKeerIteration::result(ContactStatus status, int iterations,
                                             bool compute_approach) {
-  op_.apply(p_, u_);
+  if (!exact_) recompute_displacement();
   const Mask contact = p_ > 0;
   const auto n_contact = contact.count();
   double approach = delta_;
@@ -293,6 +374,7 @@ ContactResult PolonskyKeerIteration::result(ContactStatus status, int iterations
   if (n_contact > 0) result.contact_radius = std::sqrt(result.contact_area / std::numbers::pi);
   result.max_pressure = result.pressure.maxCoeff();
   result.iterations = iterations;
+  result.operator_applications = applications_;
   result.residual = residual_;
   result.status = status;
   result.converged = status == ContactStatus::converged;
@@ -338,11 +420,13 @@ ContactSolver::ContactSolver(SurfaceOperator& op, ContactOptions options)
   COATFFT_REQUIRE(std::isfinite(options_.tolerance) && options_.tolerance > 0,
                   "ContactSolver: tolerance = ", options_.tolerance,
                   ", but it must be finite and > 0");
+  COATFFT_REQUIRE(options_.threads >= 1, "ContactSolver: threads = ", options_.threads,
+                  ", but it must be >= 1");
   COATFFT_REQUIRE(options_.max_iterations >= 1,
                   "ContactSolver: max_iterations = ", options_.max_iterations,
                   ", but it must be >= 1");
   if (options_.preconditioned) {
-    preconditioner_ = std::make_unique<detail::FourierPreconditioner>(op_.grid());
+    preconditioner_ = std::make_unique<detail::FourierPreconditioner>(op_.grid(), options_.threads);
   }
 }
 
@@ -377,7 +461,8 @@ ContactResult ContactSolver::run(const Field& h, ContactControl control, double 
                     " m, but it must exceed min(height) = ", h_min,
                     " m, or the indenter does not touch the surface");
   }
-  PolonskyKeerIteration iteration(op_, preconditioner_.get(), h, control, value);
+  PolonskyKeerIteration iteration(op_, preconditioner_.get(), h, control, value,
+                                  options_.update_by_linearity);
   ContactStatus status = ContactStatus::iteration_limit;
   int iterations = 0;
   while (iterations < options_.max_iterations) {

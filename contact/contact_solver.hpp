@@ -33,6 +33,14 @@ struct ContactOptions {
   /// independent of N (24-33 for Hertz from 64^2 to 1024^2, against 46-137 without). Off gives
   /// the classic Polonsky-Keer iteration.
   bool preconditioned = true;
+  /// FFTW threads of the preconditioner's transforms (>= 1).
+  int threads = 1;
+  /// Move the displacement by linearity (u <- u - tau K t) and recompute u = K p only when the
+  /// projection's pending corrections grow large and before convergence is declared: about one
+  /// operator application per iteration (docs/contact.md). Off gives Polonsky & Keer's original,
+  /// which recomputes u at every iteration (two applications per iteration); the iterates agree
+  /// to the tolerance, and the converged solution satisfies the same test on an exact gap.
+  bool update_by_linearity = true;
   /// Called, when set, after every iteration that took a step (all but a breakdown), with the
   /// iteration's number (1, 2, ...) and the residual it left (the relative pressure change, as
   /// ContactResult::residual): a caller can show progress, since the solver itself never prints.
@@ -82,6 +90,9 @@ struct ContactResult {
   std::optional<double> contact_radius;
   double max_pressure = 0;  ///< max p [Pa]
   int iterations = 0;       ///< conjugate-gradient iterations done
+  /// Operator applications the solve made (the dominant cost): one per iteration, plus the
+  /// displacement's recomputations (ContactOptions::update_by_linearity).
+  int operator_applications = 0;
   double residual = 0;      ///< last relative pressure change (see ContactOptions::tolerance)
   /// How the iteration ended; a result that no solve filled counts as not converged.
   ContactStatus status = ContactStatus::iteration_limit;
@@ -99,9 +110,10 @@ struct ContactResult {
 /// iteration limit, joined by "; ". Empty for a converged solve inside the domain.
 std::string describe(const ContactResult& result, double tolerance);
 
-/// Polonsky-Keer solver bound to one operator (the operator must outlive the solver). Each solve
-/// costs 2 operator applications per iteration (plus one periodic FFT pair of the grid's size when
-/// preconditioned), 1 more at the end and, under approach control, 1 at the start.
+/// Polonsky-Keer solver bound to one operator (the operator must outlive the solver). Each
+/// iteration costs one operator application (plus one periodic FFT pair of the grid's size when
+/// preconditioned) and, now and then, one more to recompute the displacement exactly
+/// (ContactResult::operator_applications counts them all).
 namespace detail {
 class FourierPreconditioner;
 }

@@ -8,7 +8,7 @@
 
 namespace coatfft::detail {
 
-FourierPreconditioner::FourierPreconditioner(const Grid& grid)
+FourierPreconditioner::FourierPreconditioner(const Grid& grid, int threads)
     : nx_(grid.nx()), ny_(grid.ny()), hx_(grid.nx() / 2 + 1) {
   const auto n_real = static_cast<std::size_t>(nx_ * ny_);
   const auto n_complex = static_cast<std::size_t>(hx_ * ny_);
@@ -19,9 +19,9 @@ FourierPreconditioner::FourierPreconditioner(const Grid& grid)
   const int nxi = static_cast<int>(nx_);
   const unsigned flags = fftw_flags(Planning::estimate);
   forward_ = FftwPlan::create(
-      1, [&] { return fftw_plan_dft_r2c_2d(nyi, nxi, real_.data(), spectrum_.data(), flags); });
+      threads, [&] { return fftw_plan_dft_r2c_2d(nyi, nxi, real_.data(), spectrum_.data(), flags); });
   backward_ = FftwPlan::create(
-      1, [&] { return fftw_plan_dft_c2r_2d(nyi, nxi, spectrum_.data(), real_.data(), flags); });
+      threads, [&] { return fftw_plan_dft_c2r_2d(nyi, nxi, spectrum_.data(), real_.data(), flags); });
   const double dkx = 2.0 * std::numbers::pi / grid.lx();
   const double dky = 2.0 * std::numbers::pi / grid.ly();
   const double norm = 1.0 / static_cast<double>(nx_ * ny_);

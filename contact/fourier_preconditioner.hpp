@@ -12,8 +12,8 @@ namespace coatfft::detail {
 
 class FourierPreconditioner {
  public:
-  /// Plans the periodic r2c/c2r pair on `grid` (FFTW_ESTIMATE, one thread).
-  explicit FourierPreconditioner(const Grid& grid);
+  /// Plans the periodic r2c/c2r pair on `grid` (FFTW_ESTIMATE, `threads` FFTW threads).
+  explicit FourierPreconditioner(const Grid& grid, int threads = 1);
 
   /// field <- F^-1 [sigma F[field]] in place; `field` has the grid's shape (nx, ny).
   /// sigma(k) = |k| [rad/m]; at k = 0, where |k| vanishes, sigma is the inverse of the mean of

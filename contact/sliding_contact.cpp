@@ -28,6 +28,7 @@ ContactResult solve_sliding(ContactSolver& solver, const TangentialCoupling& cou
   SlidingReport r;
   ContactResult result = solver.solve(height, control, value);
   r.solves = 1;
+  int applications = result.operator_applications;
   bool all_converged = result.converged;
   Field shift;
   const double p_max = result.pressure.maxCoeff();
@@ -37,6 +38,7 @@ ContactResult solve_sliding(ContactSolver& solver, const TangentialCoupling& cou
       shift = coupling(options.friction * result.pressure);
       ContactResult next = solver.solve(height + shift, control, value);
       ++r.solves;
+      applications += next.operator_applications;
       all_converged = all_converged && next.converged;
       r.pressure_change = (next.pressure - result.pressure).abs().maxCoeff() / p_max;
       result = std::move(next);
@@ -49,6 +51,7 @@ ContactResult solve_sliding(ContactSolver& solver, const TangentialCoupling& cou
     // within the tolerance).
     result.displacement += coupling(options.friction * result.pressure);
   }
+  result.operator_applications = applications;  // the cost of all the solves
   r.converged =
       all_converged && (options.friction == 0.0 || r.pressure_change <= options.tolerance);
   if (report) *report = r;

@@ -36,7 +36,8 @@ struct SlidingReport {
 
 /// Solves the contact of `height` under `control` = `value` (as ContactSolver::solve) with the
 /// tractions' coupling iterated to its fixed point. The result's displacement and gap include
-/// the tractions' normal displacement. InvalidArgument on bad options.
+/// the tractions' normal displacement; its operator_applications counts those of all the solves
+/// (its iterations, the last solve's). InvalidArgument on bad options.
 ContactResult solve_sliding(ContactSolver& solver, const TangentialCoupling& coupling,
                             const Field& height, ContactControl control, double value,
                             const SlidingOptions& options, SlidingReport* report = nullptr);

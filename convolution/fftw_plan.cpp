@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstring>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -23,6 +24,14 @@ std::string_view to_string(Planning planning) {
 
 Planning parse_planning(std::string_view name) {
   return detail::parse_name(name, std::array{Planning::estimate, Planning::measure});
+}
+
+std::string_view to_string(Precision precision) {
+  return precision == Precision::single ? "single" : "double";
+}
+
+Precision parse_precision(std::string_view name) {
+  return detail::parse_name(name, std::array{Precision::double_precision, Precision::single});
 }
 
 unsigned fftw_flags(Planning planning) {
@@ -90,6 +99,16 @@ void set_planner_threads_locked(int threads) {
   }
   fftw_plan_with_nthreads(threads);
 }
+
+void set_single_planner_threads_locked(int threads) {
+  COATFFT_REQUIRE(threads >= 1, "FFTW plan: threads = ", threads, ", but threads must be >= 1");
+  static bool initialised = false;  // as above, for FFTW's single-precision library
+  if (!initialised) {
+    if (fftwf_init_threads() == 0) throw Error("FFTW: fftwf_init_threads failed");
+    initialised = true;
+  }
+  fftwf_plan_with_nthreads(threads);
+}
 }  // namespace detail
 
 template <typename T>
@@ -97,8 +116,12 @@ FftwBuffer<T>::FftwBuffer(std::size_t size) : size_(size) {
   if (size == 0) return;
   if constexpr (std::is_same_v<T, double>) {
     data_ = fftw_alloc_real(size);
-  } else {
+  } else if constexpr (std::is_same_v<T, fftw_complex>) {
     data_ = fftw_alloc_complex(size);
+  } else if constexpr (std::is_same_v<T, float>) {
+    data_ = fftwf_alloc_real(size);
+  } else {
+    data_ = fftwf_alloc_complex(size);
   }
   if (data_ == nullptr) throw std::bad_alloc();
   const std::size_t bytes = size * sizeof(T);
@@ -113,22 +136,43 @@ FftwBuffer<T>::FftwBuffer(std::size_t size) : size_(size) {
     if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
   }
   // Zero-filled so that a buffer is never read uninitialised (and padding starts as zeros).
-  std::fill_n(reinterpret_cast<double*>(data_), size * (sizeof(T) / sizeof(double)), 0.0);
+  std::memset(static_cast<void*>(data_), 0, bytes);
+}
+
+template <typename T>
+FftwBuffer<T>::~FftwBuffer() {
+  if constexpr (std::is_same_v<T, double> || std::is_same_v<T, fftw_complex>) {
+    fftw_free(data_);
+  } else {
+    fftwf_free(data_);
+  }
 }
 
 template class FftwBuffer<double>;
 template class FftwBuffer<fftw_complex>;
+template class FftwBuffer<float>;
+template class FftwBuffer<fftwf_complex>;
 
-FftwPlan::FftwPlan(fftw_plan plan) : plan_(plan) {
+template <typename Plan>
+BasicFftwPlan<Plan>::BasicFftwPlan(Plan plan) : plan_(plan) {
   if (plan_ == nullptr)
     throw Error("FFTW: the planner returned no plan for the requested transform");
 }
 
-void FftwPlan::reset() {
+template <typename Plan>
+void BasicFftwPlan<Plan>::reset() {
   if (plan_ == nullptr) return;
   std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-  fftw_destroy_plan(plan_);
+  if constexpr (std::is_same_v<Plan, fftw_plan>) {
+    fftw_destroy_plan(plan_);
+  } else {
+    fftwf_destroy_plan(plan_);
+  }
   plan_ = nullptr;
 }
+
+template class BasicFftwPlan<fftw_plan>;
+template class BasicFftwPlan<fftwf_plan>;
+
 
 }  // namespace coatfft

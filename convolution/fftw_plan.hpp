@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <mutex>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #include "convolution/fftw_wisdom.hpp"
@@ -27,16 +28,18 @@ namespace detail {
 /// Calls fftw_init_threads once, then fftw_plan_with_nthreads(threads). The caller must hold
 /// fftw_planner_mutex().
 void set_planner_threads_locked(int threads);
+/// The same for FFTW's single-precision library (fftwf_init_threads, fftwf_plan_with_nthreads).
+void set_single_planner_threads_locked(int threads);
 }  // namespace detail
 
-/// An owned, SIMD-aligned FFTW array of `size` elements of T (double or fftw_complex),
-/// zero-initialised. Move-only.
+/// An owned, SIMD-aligned FFTW array of `size` elements of T (double or fftw_complex, or float or
+/// fftwf_complex for FFTW's single-precision library), zero-initialised. Move-only.
 template <typename T>
 class FftwBuffer {
  public:
   FftwBuffer() = default;
   explicit FftwBuffer(std::size_t size);
-  ~FftwBuffer() { fftw_free(data_); }
+  ~FftwBuffer();
   FftwBuffer(const FftwBuffer&) = delete;
   FftwBuffer& operator=(const FftwBuffer&) = delete;
   FftwBuffer(FftwBuffer&& other) noexcept
@@ -58,6 +61,8 @@ class FftwBuffer {
 
 using FftwRealBuffer = FftwBuffer<double>;
 using FftwComplexBuffer = FftwBuffer<fftw_complex>;
+using FftwfRealBuffer = FftwBuffer<float>;
+using FftwfComplexBuffer = FftwBuffer<fftwf_complex>;
 
 /// View of an fftw_complex array as std::complex<double> (layout-compatible, FFTW manual 4.1.1).
 inline std::complex<double>* as_complex(fftw_complex* p) {
@@ -67,39 +72,54 @@ inline const std::complex<double>* as_complex(const fftw_complex* p) {
   return reinterpret_cast<const std::complex<double>*>(p);
 }
 
-/// An owned fftw_plan. Made by create(), which runs the planner call under the planner mutex with
-/// the requested number of FFTW threads; destroyed under the same mutex. Move-only.
-class FftwPlan {
+/// An owned fftw_plan (or fftwf_plan, FFTW's single precision). Made by create(), which runs the
+/// planner call under the planner mutex with the requested number of FFTW threads; destroyed under
+/// the same mutex. Move-only.
+template <typename Plan>
+class BasicFftwPlan {
  public:
-  FftwPlan() = default;
-  ~FftwPlan() { reset(); }
-  FftwPlan(const FftwPlan&) = delete;
-  FftwPlan& operator=(const FftwPlan&) = delete;
-  FftwPlan(FftwPlan&& other) noexcept : plan_(std::exchange(other.plan_, nullptr)) {}
-  FftwPlan& operator=(FftwPlan&& other) noexcept {
+  BasicFftwPlan() = default;
+  ~BasicFftwPlan() { reset(); }
+  BasicFftwPlan(const BasicFftwPlan&) = delete;
+  BasicFftwPlan& operator=(const BasicFftwPlan&) = delete;
+  BasicFftwPlan(BasicFftwPlan&& other) noexcept : plan_(std::exchange(other.plan_, nullptr)) {}
+  BasicFftwPlan& operator=(BasicFftwPlan&& other) noexcept {
     std::swap(plan_, other.plan_);
     return *this;
   }
 
-  /// Calls `make()` (an fftw_plan_* call returning fftw_plan) under the planner mutex after
+  /// Calls `make()` (an fftw_plan_* call returning the plan) under the planner mutex after
   /// setting `threads` (>= 1) planner threads. Throws Error when FFTW returns no plan.
   template <typename Make>
-  static FftwPlan create(int threads, Make&& make) {
+  static BasicFftwPlan create(int threads, Make&& make) {
     std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-    detail::set_planner_threads_locked(threads);
-    return FftwPlan(std::forward<Make>(make)());
+    if constexpr (std::is_same_v<Plan, fftw_plan>) {
+      detail::set_planner_threads_locked(threads);
+    } else {
+      detail::set_single_planner_threads_locked(threads);
+    }
+    return BasicFftwPlan(std::forward<Make>(make)());
   }
 
   /// Executes the plan on the buffers it was made on.
-  void execute() const { fftw_execute(plan_); }
+  void execute() const {
+    if constexpr (std::is_same_v<Plan, fftw_plan>) {
+      fftw_execute(plan_);
+    } else {
+      fftwf_execute(plan_);
+    }
+  }
   bool valid() const { return plan_ != nullptr; }
-  fftw_plan get() const { return plan_; }
+  Plan get() const { return plan_; }
 
  private:
-  explicit FftwPlan(fftw_plan plan);
+  explicit BasicFftwPlan(Plan plan);
   void reset();
 
-  fftw_plan plan_ = nullptr;
+  Plan plan_ = nullptr;
 };
+
+using FftwPlan = BasicFftwPlan<fftw_plan>;
+using FftwfPlan = BasicFftwPlan<fftwf_plan>;
 
 }  // namespace coatfft

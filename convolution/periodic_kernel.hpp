@@ -24,7 +24,9 @@ struct PeriodicKernelOptions {
   /// sums' tails), against Cinf; in (0, 1e-6].
   double tolerance = 1e-12;
   /// Most FRF evaluations of the remainder's lattice (estimated first; InvalidArgument beyond):
-  /// a coating much thinner than a cell needs about (6 dx/h)^2 aliases per lattice point.
+  /// the aliased lattice points within the remainder's reach k_max (about 6/h for a top coating
+  /// h thick), pi/2 (k_max L/(2 pi))^2 for a period L: a coating much thinner than a cell needs
+  /// about (6 dx/h)^2 aliases per lattice point.
   double max_evaluations = 2e8;
   int threads = 1;  ///< in [1, max_threads]
 };

@@ -1,48 +1,115 @@
 #include "convolution/periodic_operator.hpp"
 
 #include <algorithm>
+#include <complex>
+#include <type_traits>
 
 #include "convolution/fftw_plan.hpp"
 #include "core/error.hpp"
 
 namespace coatfft {
 
+// The circular convolution in one precision: the field's r2c transform, the kernel's spectrum as
+// a real multiplier, the c2r transform. Fields enter and leave as double; with Real = float only
+// the transforms and the product run in single precision.
 struct PeriodicOperator::Transforms {
-  FftwRealBuffer field;
-  FftwComplexBuffer spectrum;
-  FftwPlan forward, inverse;
+  virtual ~Transforms() = default;
+  virtual void apply(const double* in, double* out) = 0;
 };
+
+namespace {
+
+template <typename Real>
+class SpectralFilter final : public PeriodicOperator::Transforms {
+ public:
+  static constexpr bool is_double = std::is_same_v<Real, double>;
+  using Complex = std::conditional_t<is_double, fftw_complex, fftwf_complex>;
+  using Plan = BasicFftwPlan<std::conditional_t<is_double, fftw_plan, fftwf_plan>>;
+
+  SpectralFilter(const Grid& grid, Planning planning, int threads)
+      : n_real_(static_cast<std::size_t>(grid.nx() * grid.ny())),
+        n_complex_(static_cast<std::size_t>((grid.nx() / 2 + 1) * grid.ny())),
+        field_(n_real_),
+        spectrum_(n_complex_),
+        multiplier_(n_complex_, Real(1)) {
+    // Row-major dimensions {ny, nx}: a Field (x fastest) is a C-order (ny, nx) array.
+    const int nx = static_cast<int>(grid.nx()), ny = static_cast<int>(grid.ny());
+    const unsigned flags = fftw_flags(planning);
+    forward_ = Plan::create(threads, [&] {
+      if constexpr (is_double) {
+        return fftw_plan_dft_r2c_2d(ny, nx, field_.data(), spectrum_.data(), flags);
+      } else {
+        return fftwf_plan_dft_r2c_2d(ny, nx, field_.data(), spectrum_.data(), flags);
+      }
+    });
+    inverse_ = Plan::create(threads, [&] {
+      if constexpr (is_double) {
+        return fftw_plan_dft_c2r_2d(ny, nx, spectrum_.data(), field_.data(), flags);
+      } else {
+        return fftwf_plan_dft_c2r_2d(ny, nx, spectrum_.data(), field_.data(), flags);
+      }
+    });
+  }
+
+  // The real part of the spectrum of `in` times `scale` (the even kernel's real spectrum).
+  std::vector<double> real_spectrum(const double* in, double scale) {
+    std::copy_n(in, n_real_, field_.data());
+    forward_.execute();
+    std::vector<double> out(n_complex_);
+    const auto* s = reinterpret_cast<const std::complex<Real>*>(spectrum_.data());
+    for (std::size_t n = 0; n < n_complex_; ++n) out[n] = scale * static_cast<double>(s[n].real());
+    return out;
+  }
+
+  void set_multiplier(const std::vector<double>& multiplier) {
+    std::transform(multiplier.begin(), multiplier.end(), multiplier_.begin(),
+                   [](double m) { return static_cast<Real>(m); });
+  }
+
+  void apply(const double* in, double* out) override {
+    std::copy_n(in, n_real_, field_.data());
+    forward_.execute();
+    auto* s = reinterpret_cast<std::complex<Real>*>(spectrum_.data());
+    for (std::size_t n = 0; n < n_complex_; ++n) s[n] *= multiplier_[n];
+    inverse_.execute();
+    std::copy_n(field_.data(), n_real_, out);
+  }
+
+ private:
+  std::size_t n_real_;
+  std::size_t n_complex_;
+  FftwBuffer<Real> field_;
+  FftwBuffer<Complex> spectrum_;
+  Plan forward_, inverse_;
+  std::vector<Real> multiplier_;
+};
+
+}  // namespace
 
 PeriodicOperator::~PeriodicOperator() = default;
 
 PeriodicOperator::PeriodicOperator(const Grid& grid, const Field& kernel, Method method,
-                                   Planning planning)
-    : grid_(grid),
-      method_(method),
-      t_(std::make_unique<Transforms>(
-          Transforms{FftwRealBuffer(static_cast<std::size_t>(grid.nx() * grid.ny())),
-                     FftwComplexBuffer(static_cast<std::size_t>((grid.nx() / 2 + 1) * grid.ny())),
-                     {},
-                     {}})) {
+                                   Planning planning, Precision precision, int threads)
+    : grid_(grid), method_(method), precision_(precision) {
   COATFFT_REQUIRE(kernel.rows() == grid.nx() && kernel.cols() == grid.ny(),
                   "PeriodicOperator: the kernel is not of the grid's shape");
   COATFFT_REQUIRE(kernel.allFinite(),
                   "PeriodicOperator: the kernel has a value that is not finite");
-  const int nx = static_cast<int>(grid.nx()), ny = static_cast<int>(grid.ny());
-  const unsigned flags = fftw_flags(planning);
-  t_->forward = FftwPlan::create(1, [&] {
-    return fftw_plan_dft_r2c_2d(ny, nx, t_->field.data(), t_->spectrum.data(), flags);
-  });
-  t_->inverse = FftwPlan::create(1, [&] {
-    return fftw_plan_dft_c2r_2d(ny, nx, t_->spectrum.data(), t_->field.data(), flags);
-  });
-  // The kernel's spectrum, normalised by the cell count for the round trip.
-  std::copy(kernel.data(), kernel.data() + kernel.size(), t_->field.data());
-  t_->forward.execute();
-  const double scale = 1.0 / static_cast<double>(kernel.size());
-  multiplier_.resize((grid.nx() / 2 + 1) * grid.ny());
-  for (std::size_t n = 0; n < multiplier_.size(); ++n)
-    multiplier_[n] = scale * as_complex(t_->spectrum.data())[n].real();
+  // The kernel's spectrum in double precision, normalised by the cell count for the round trip.
+  COATFFT_REQUIRE(threads >= 1, "PeriodicOperator: threads = ", threads, " must be >= 1");
+  // (Only planned with care when it is the one apply() runs.)
+  const Planning exact_planning = precision == Precision::single ? Planning::estimate : planning;
+  auto exact = std::make_unique<SpectralFilter<double>>(grid, exact_planning, threads);
+  const std::vector<double> multiplier =
+      exact->real_spectrum(kernel.data(), 1.0 / static_cast<double>(kernel.size()));
+  if (precision == Precision::single) {
+    auto single = std::make_unique<SpectralFilter<float>>(grid, planning, threads);
+    single->set_multiplier(multiplier);
+    t_ = std::move(single);
+  } else {
+    exact->set_multiplier(multiplier);
+    t_ = std::move(exact);
+  }
 }
 
 void PeriodicOperator::apply(const Field& pressure, Field& displacement) {
@@ -52,13 +119,8 @@ void PeriodicOperator::apply(const Field& pressure, Field& displacement) {
                   "PeriodicOperator::apply: the displacement must not alias the pressure");
   COATFFT_REQUIRE(pressure.allFinite(),
                   "PeriodicOperator::apply: the pressure has a value that is not finite");
-  std::copy(pressure.data(), pressure.data() + pressure.size(), t_->field.data());
-  t_->forward.execute();
-  std::complex<double>* s = as_complex(t_->spectrum.data());
-  for (std::size_t n = 0; n < multiplier_.size(); ++n) s[n] *= multiplier_[n];
-  t_->inverse.execute();
   displacement.resize(grid_.nx(), grid_.ny());
-  std::copy(t_->field.data(), t_->field.data() + displacement.size(), displacement.data());
+  t_->apply(pressure.data(), displacement.data());
 }
 
 }  // namespace coatfft

@@ -69,6 +69,45 @@ TEST_CASE("the periodic operator's eigenvalues are the aliased FRF", "[periodic]
   CHECK(op.apply(Field::Constant(32, 24, 1e6)).abs().maxCoeff() < 1e-20);
 }
 
+TEST_CASE("single-precision FFTs: the aliased FRF to float rounding", "[periodic]") {
+  const Grid g(256, 192, 4e-3, 3e-3);
+  const HalfSpaceFrf frf(steel);
+  const Field kernel = periodic_influence_kernel(g, frf);
+  PeriodicOperator exact(g, kernel, Method::dcfft);
+  PeriodicOperator single(g, kernel, Method::dcfft, Planning::estimate, Precision::single);
+  CHECK(single.precision() == Precision::single);
+  for (auto [mx, my] : {std::pair{1, 0}, {7, -5}, {60, 40}}) {
+    INFO(mx << ", " << my);
+    Field p(g.nx(), g.ny());
+    for (std::ptrdiff_t j = 0; j < g.ny(); ++j)
+      for (std::ptrdiff_t i = 0; i < g.nx(); ++i)
+        p(i, j) = std::cos(2 * pi * (mx * double(i) / g.nx() + my * double(j) / g.ny()));
+    const Field reference = eigenvalue(g, frf, mx, my) * p;
+    const double scale = reference.abs().maxCoeff();
+    // float rounds to 6e-8; its FFTs err by about that times log2(nx ny) = 15.6 at worst (the
+    // error of the mode measured 1e-7 to 3e-7). The double operator stays 1e-7 from the brute
+    // force's 800^2 aliases (the eigenvalue test above).
+    const double single_error = (single.apply(p) - reference).abs().maxCoeff() / scale;
+    const double exact_error = (exact.apply(p) - reference).abs().maxCoeff() / scale;
+    CHECK(single_error < 1.6e-6);
+    CHECK(exact_error < 1e-7);
+    // And the transforms did run in float: it differs from double by more than double's rounding.
+    CHECK((single.apply(p) - exact.apply(p)).abs().maxCoeff() > 1e-10 * scale);
+  }
+}
+
+TEST_CASE("the Ewald real-space part's cell rule on a fine grid (4 points a side)", "[periodic]") {
+  // alpha dx = 6/384 = 0.016: the real-space cell integrals take the 4 x 4 rule (at 2 x 2 beyond
+  // 60000 cells a side). Eigenvalues against the brute-force alias sum as above.
+  const Grid g(384, 384, 2e-3, 2e-3);
+  const HalfSpaceFrf frf(steel);
+  PeriodicOperator op(g, periodic_influence_kernel(g, frf), Method::dcfft);
+  for (auto [mx, my] : {std::pair{1, 0}, {5, 3}, {150, -120}}) {
+    INFO(mx << ", " << my);
+    CHECK(measured_eigenvalue(g, op, mx, my) == Approx(eigenvalue(g, frf, mx, my)).epsilon(1e-7));
+  }
+}
+
 TEST_CASE("a coating of the substrate's material gives the half-space's periodic kernel",
           "[periodic]") {
   const Grid g(48, 40, 2e-3, 1.5e-3);
@@ -102,6 +141,37 @@ TEST_CASE("Westergaard's wavy contact on a periodic surface", "[periodic][contac
     CHECK(std::abs(width - 2 * a / lambda) <= 1.5 / n);
     // The peak: the cell at the crest (centre at dx/2) averages a smooth pressure.
     CHECK(r.max_pressure == Approx(2 * std::sqrt(ratio) * p_star).epsilon(1e-4));
+  }
+}
+
+TEST_CASE("Westergaard's wavy contact under approach control", "[periodic][contact]") {
+  // The periodic displacement has zero mean, so the approach is measured from the mean plane of
+  // the deformed surface: the approach that load control reports (the mean of h + u over the
+  // contact) pressed under approach control carries the same load, and the contact has
+  // Westergaard's width (Johnson 1985, section 13.2).
+  const std::ptrdiff_t n = 512;
+  const double lambda = 1e-3, delta = 1e-6;
+  const Grid g(n, 2, lambda, 2 * lambda / n);
+  PeriodicOperator op(g, periodic_influence_kernel(g, HalfSpaceFrf(steel)), Method::dcfft);
+  Field h(n, 2);
+  for (std::ptrdiff_t i = 0; i < n; ++i)
+    h.row(i).setConstant(delta * (1 - std::cos(2 * pi * (double(i) + 0.5 - n / 2) / n)));
+  const double p_star = pi * steel.plane_strain_modulus() * delta / lambda;
+  ContactOptions opts;
+  opts.compute_approach = true;
+  ContactSolver solver(op, opts);
+  for (double ratio : {0.1, 0.6}) {
+    const double load = ratio * p_star * g.lx() * g.ly();
+    const ContactResult by_load = solver.solve_load(h, load);
+    REQUIRE(by_load.converged);
+    const ContactResult r = solver.solve_approach(h, *by_load.approach);
+    REQUIRE(r.converged);
+    INFO("p_m/p* = " << ratio << ": load " << r.load << " vs " << load);
+    // The two solves meet to the solver tier.
+    CHECK(r.load == Approx(load).epsilon(1e-8));
+    CHECK(r.contact_area == by_load.contact_area);
+    const double a = std::asin(std::sqrt(ratio)) * lambda / pi;
+    CHECK(std::abs(r.contact_area / g.ly() / lambda - 2 * a / lambda) <= 1.5 / n);
   }
 }
 

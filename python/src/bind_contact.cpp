@@ -25,6 +25,7 @@ struct PyContactResult {
   std::optional<double> contact_radius;
   double max_pressure = 0.0;
   int iterations = 0;
+  int operator_applications = 0;
   double residual = 0.0;
   bool converged = false;
   std::string status;
@@ -43,6 +44,7 @@ PyContactResult to_python(ContactResult&& r) {
   out.contact_radius = r.contact_radius;
   out.max_pressure = r.max_pressure;
   out.iterations = r.iterations;
+  out.operator_applications = r.operator_applications;
   out.residual = r.residual;
   out.converged = r.converged;
   out.status = std::string(to_string(r.status));
@@ -94,6 +96,7 @@ void bind_contact(py::module_& m) {
                     "sqrt(area / pi) [m]; None without contact")
       .def_readonly("max_pressure", &PyContactResult::max_pressure, "[Pa]")
       .def_readonly("iterations", &PyContactResult::iterations)
+      .def_readonly("operator_applications", &PyContactResult::operator_applications)
       .def_readonly("residual", &PyContactResult::residual, "last relative pressure change")
       .def_readonly("converged", &PyContactResult::converged)
       .def_readonly("status", &PyContactResult::status,
