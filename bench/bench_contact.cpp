@@ -22,8 +22,8 @@
 #include "contact/indenter.hpp"
 #include "convolution/influence_kernel.hpp"
 #include "convolution/make_operator.hpp"
-#include "core/error.hpp"
 #include "core/detail/timing.hpp"
+#include "core/error.hpp"
 #include "validation/hertz_contact.hpp"
 
 namespace {
@@ -169,7 +169,8 @@ int main(int argc, char** argv) {
         << " N, domain [-" << kHalfWidth << " a, " << kHalfWidth << " a]^2, exact sphere\n"
         << "# tolerance = 1e-10 (relative pressure change per iteration)\n"
         << "# variants: linearity = 1 moves u by linearity and recomputes it now and then (about\n"
-        << "#   one application per iteration); 0 recomputes u = K p at every iteration (Polonsky &\n"
+        << "#   one application per iteration); 0 recomputes u = K p at every iteration (Polonsky "
+           "&\n"
         << "#   Keer's original, 2 per iteration: the solver before); preconditioned = 1 adds one\n"
         << "#   periodic N x N FFT pair per iteration (the |k| multiplier); the unpreconditioned\n"
         << "#   iteration runs up to N = 512 only\n"

@@ -76,8 +76,7 @@ int main(int argc, char** argv) {
         Field u_exact, u_single;
         const double exact_ms = median_apply_ms(exact, p, u_exact);
         const double single_ms = median_apply_ms(single, p, u_single);
-        const double error =
-            (u_single - u_exact).abs().maxCoeff() / u_exact.abs().maxCoeff();
+        const double error = (u_single - u_exact).abs().maxCoeff() / u_exact.abs().maxCoeff();
         std::ostringstream row;
         row.precision(4);
         row << n << "," << to_string(planning) << "," << exact_ms << "," << single_ms << ","

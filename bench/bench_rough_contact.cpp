@@ -32,10 +32,10 @@ using namespace coatfft;
 using Clock = std::chrono::steady_clock;
 
 const Material kSteel(210e9, 0.3);
-constexpr double kSlope = 0.05;         // rms slope
-constexpr double kLength = 1e-3;        // period [m]
-constexpr double kLoad = 0.1 / 2.2;     // p_m / (E* g): about 10 % contact area on steel
-constexpr int kShortCutoffCells = 16;   // shortest wavelength [cells]
+constexpr double kSlope = 0.05;        // rms slope
+constexpr double kLength = 1e-3;       // period [m]
+constexpr double kLoad = 0.1 / 2.2;    // p_m / (E* g): about 10 % contact area on steel
+constexpr int kShortCutoffCells = 16;  // shortest wavelength [cells]
 
 struct Body {
   std::string label;
@@ -59,7 +59,9 @@ Field rough_gap(const Grid& g) {
   return z.maxCoeff() - z;
 }
 
-double ms_since(Clock::time_point start) { return 1e3 * detail::seconds_since(start); }
+double ms_since(Clock::time_point start) {
+  return 1e3 * detail::seconds_since(start);
+}
 
 struct Variant {
   bool linearity;
@@ -80,16 +82,15 @@ ContactResult solve_row(std::ptrdiff_t n, const Body& body, PeriodicOperator& op
   const auto start = Clock::now();
   ContactResult r = solver.solve_load(gap, load);
   const double solve_ms = ms_since(start);
-  const double error = reference ? (r.pressure - *reference).abs().maxCoeff() / reference->maxCoeff()
-                                 : 0.0;
+  const double error =
+      reference ? (r.pressure - *reference).abs().maxCoeff() / reference->maxCoeff() : 0.0;
   std::ostringstream row;
   row.precision(4);
-  row << n << ",\"" << body.label << "\"," << (v.linearity ? 1 : 0) << ","
-      << to_string(v.precision) << "," << v.tolerance << "," << r.iterations << ","
-      << r.operator_applications << "," << (r.converged ? 1 : 0) << "," << r.residual << ","
-      << r.contact_area / (kLength * kLength) << "," << r.max_pressure << "," << error << ","
-      << apply_ms << "," << solve_ms << "," << solve_ms / apply_ms << "," << bench::peak_rss_mb()
-      << "\n";
+  row << n << ",\"" << body.label << "\"," << (v.linearity ? 1 : 0) << "," << to_string(v.precision)
+      << "," << v.tolerance << "," << r.iterations << "," << r.operator_applications << ","
+      << (r.converged ? 1 : 0) << "," << r.residual << "," << r.contact_area / (kLength * kLength)
+      << "," << r.max_pressure << "," << error << "," << apply_ms << "," << solve_ms << ","
+      << solve_ms / apply_ms << "," << bench::peak_rss_mb() << "\n";
   std::cout << row.str() << std::flush;
   out << row.str();
   return r;
@@ -97,7 +98,8 @@ ContactResult solve_row(std::ptrdiff_t n, const Body& body, PeriodicOperator& op
 
 PeriodicOperator make_operator(const Grid& g, const Body& body, const Field& kernel,
                                Precision precision) {
-  return PeriodicOperator(g, kernel, body.stack.is_homogeneous() ? Method::dcfft : Method::frf_split,
+  return PeriodicOperator(g, kernel,
+                          body.stack.is_homogeneous() ? Method::dcfft : Method::frf_split,
                           Planning::estimate, precision);
 }
 

@@ -288,8 +288,7 @@ SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat, Pr
   progress.stage(setup_stage(scene));
   BuiltOperator built = operator_from_scene(scene);
 
-  ContactSolver solver(*built.op,
-                       solver_options(spec, scene.method.options.threads, progress));
+  ContactSolver solver(*built.op, solver_options(spec, scene.method.options.threads, progress));
   progress.stage(spec.load ? "solving the contact (load control)"
                            : "solving the contact (approach control)");
   const auto start = Clock::now();

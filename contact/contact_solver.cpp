@@ -73,7 +73,6 @@ class PolonskyKeerIteration {
     double norm;               // sum of g^2 over I_c
   };
 
-
   void start();
   void start_uniform();
   void start_hertzian();

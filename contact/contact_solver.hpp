@@ -93,7 +93,7 @@ struct ContactResult {
   /// Operator applications the solve made (the dominant cost): one per iteration, plus the
   /// displacement's recomputations (ContactOptions::update_by_linearity).
   int operator_applications = 0;
-  double residual = 0;      ///< last relative pressure change (see ContactOptions::tolerance)
+  double residual = 0;  ///< last relative pressure change (see ContactOptions::tolerance)
   /// How the iteration ended; a result that no solve filled counts as not converged.
   ContactStatus status = ContactStatus::iteration_limit;
   bool converged = false;  ///< status == ContactStatus::converged

@@ -18,10 +18,12 @@ FourierPreconditioner::FourierPreconditioner(const Grid& grid, int threads)
   const int nyi = static_cast<int>(ny_);
   const int nxi = static_cast<int>(nx_);
   const unsigned flags = fftw_flags(Planning::estimate);
-  forward_ = FftwPlan::create(
-      threads, [&] { return fftw_plan_dft_r2c_2d(nyi, nxi, real_.data(), spectrum_.data(), flags); });
-  backward_ = FftwPlan::create(
-      threads, [&] { return fftw_plan_dft_c2r_2d(nyi, nxi, spectrum_.data(), real_.data(), flags); });
+  forward_ = FftwPlan::create(threads, [&] {
+    return fftw_plan_dft_r2c_2d(nyi, nxi, real_.data(), spectrum_.data(), flags);
+  });
+  backward_ = FftwPlan::create(threads, [&] {
+    return fftw_plan_dft_c2r_2d(nyi, nxi, spectrum_.data(), real_.data(), flags);
+  });
   const double dkx = 2.0 * std::numbers::pi / grid.lx();
   const double dky = 2.0 * std::numbers::pi / grid.ly();
   const double norm = 1.0 / static_cast<double>(nx_ * ny_);

@@ -5,8 +5,8 @@
 
 #include <algorithm>
 #include <array>
-#include <cstring>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <new>
@@ -173,6 +173,5 @@ void BasicFftwPlan<Plan>::reset() {
 
 template class BasicFftwPlan<fftw_plan>;
 template class BasicFftwPlan<fftwf_plan>;
-
 
 }  // namespace coatfft

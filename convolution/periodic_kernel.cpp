@@ -164,8 +164,7 @@ Lattice make_lattice(const Grid& g, const Frf& frf, double alpha, const Periodic
   l.py = static_cast<int>(std::ceil(k_max * g.dy() / (2.0 * kPi))) + 1;
   // The points of the aliased half lattice within k_max: the aliases tile the plane, so about half
   // a disk of lattice cells (the loop visits every alias too, but a visit outside costs a compare).
-  const double evaluations =
-      0.5 * kPi * (k_max / l.dkx + 2.0) * (k_max / l.dky + 2.0);
+  const double evaluations = 0.5 * kPi * (k_max / l.dkx + 2.0) * (k_max / l.dky + 2.0);
   COATFFT_REQUIRE(evaluations <= o.max_evaluations,
                   "periodic kernel: the FRF's remainder reaches k = ", detail::brief(k_max),
                   " rad/m, so far against the cells that about ", detail::brief(evaluations),

@@ -294,8 +294,7 @@ class CountingOperator final : public SurfaceOperator {
 
 }  // namespace
 
-TEST_CASE("One application per iteration: the original's solution at half the cost",
-          "[contact]") {
+TEST_CASE("One application per iteration: the original's solution at half the cost", "[contact]") {
   const HertzProblem hp(256);
   DcfftOperator op(love_kernel(hp.grid, kModulus));
   const ContactControl control = GENERATE(ContactControl::load, ContactControl::approach);
