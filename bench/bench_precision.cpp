@@ -1,6 +1,7 @@
 // Single against double precision for the periodic operator (convolution/periodic_operator.hpp):
 // the time of one application (median of repeats, warm) in each precision and the ratio, under
-// FFTW_ESTIMATE and FFTW_MEASURE plans, and the single-precision error: the largest difference
+// FFTW_ESTIMATE and FFTW_MEASURE plans (the latter on one and two threads), and the
+// single-precision error: the largest difference
 // from the double application relative to the largest displacement, on the displacement of a
 // random (uniform [0, 1]) pressure, steel, N = 512 ... 4096. Prints `# key = value` headers and
 // CSV rows, and writes the same to bench/results/precision.csv (or OUTPUT).
@@ -58,10 +59,10 @@ int main(int argc, char** argv) {
     std::ostringstream out;
     out << "# benchmark = bench_precision (periodic operator, one application, steel)\n";
     bench::write_machine_header(out);
-    out << "# fftw_threads = 1; fields are double outside the transforms in both precisions\n"
+    out << "# fields are double outside the transforms in both precisions\n"
         << "# error = max |u_single - u_double| / max |u_double| for a uniform [0, 1] random "
            "pressure\n"
-        << "N,planning,double_ms,single_ms,speedup,error\n";
+        << "N,planning,threads,double_ms,single_ms,speedup,error\n";
     std::cout << out.str() << std::flush;
     const HalfSpaceFrf frf(Material(210e9, 0.3));
     for (const std::ptrdiff_t n : sizes) {
@@ -70,16 +71,18 @@ int main(int argc, char** argv) {
       o.threads = 2;
       const Field kernel = periodic_influence_kernel(g, frf, o);
       const Field p = random_pressure(n);
-      for (const Planning planning : {Planning::estimate, Planning::measure}) {
-        PeriodicOperator exact(g, kernel, Method::dcfft, planning);
-        PeriodicOperator single(g, kernel, Method::dcfft, planning, Precision::single);
+      for (const auto& [planning, threads] :
+           {std::pair{Planning::estimate, 1}, {Planning::measure, 1}, {Planning::measure, 2}}) {
+        PeriodicOperator exact(g, kernel, Method::dcfft, planning, Precision::double_precision,
+                               threads);
+        PeriodicOperator single(g, kernel, Method::dcfft, planning, Precision::single, threads);
         Field u_exact, u_single;
         const double exact_ms = median_apply_ms(exact, p, u_exact);
         const double single_ms = median_apply_ms(single, p, u_single);
         const double error = (u_single - u_exact).abs().maxCoeff() / u_exact.abs().maxCoeff();
         std::ostringstream row;
         row.precision(4);
-        row << n << "," << to_string(planning) << "," << exact_ms << "," << single_ms << ","
+        row << n << "," << to_string(planning) << "," << threads << "," << exact_ms << "," << single_ms << ","
             << exact_ms / single_ms << "," << error << "\n";
         std::cout << row.str() << std::flush;
         out << row.str();

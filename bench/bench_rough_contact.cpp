@@ -3,10 +3,12 @@
 // into steel and into TiN-coated steel (5 um), periodic boundaries, load control at a mean
 // pressure that gives about 10 % contact area (A/A0 = kappa p_m/(E* g), kappa about 2.2 here),
 // tolerance 1e-10. For each grid: the solver of one application per iteration and Polonsky &
-// Keer's original (two), their applications and wall times, and one application timed alone.
+// Keer's original (two), their applications and wall times, and one application timed alone;
+// and (up to --single-up-to) the solver on single-precision FFTs at tolerances 1e-6, 1e-8 and
+// 1e-10, with its pressure's error against the double solve.
 // Prints `# key = value` headers and CSV rows, and writes the same to
 // bench/results/rough_contact.csv (or OUTPUT).
-//   bench_rough_contact [OUTPUT] [--sizes N ...] [--original-up-to N]
+//   bench_rough_contact [OUTPUT] [--sizes N ...] [--original-up-to N] [--single-up-to N]
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
@@ -123,9 +125,13 @@ int main(int argc, char** argv) {
   app.add_option("output", path, "CSV file")->capture_default_str();
   std::vector<std::ptrdiff_t> sizes = {1024, 2048, 4096};
   app.add_option("--sizes", sizes, "grid sizes N (N x N cells)")->capture_default_str();
-  std::ptrdiff_t original_up_to = 2048;
+  std::ptrdiff_t original_up_to = 4096;
   app.add_option("--original-up-to", original_up_to,
                  "largest N on which the original iteration runs too")
+      ->capture_default_str();
+  std::ptrdiff_t single_up_to = 2048;
+  app.add_option("--single-up-to", single_up_to,
+                 "largest N on which the single-precision solves run")
       ->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   try {
@@ -166,6 +172,7 @@ int main(int argc, char** argv) {
                     &reference, out);
         }
         for (const double tolerance : {1e-6, 1e-8, 1e-10}) {
+          if (n > single_up_to) break;
           solve_row(n, body, single, gap, {true, Precision::single, tolerance}, single_ms,
                     &reference, out);
         }

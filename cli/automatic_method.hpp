@@ -12,9 +12,9 @@
 
 namespace coatfft::cli {
 
-/// Applications a contact solve is expected to make, for the cost model: the preconditioned
-/// solver's solves took 72-94 applications' time at 128^2-512^2 (bench/results/contact.csv).
-inline constexpr double contact_applications = 100.0;
+/// Applications a contact solve is expected to make, for the cost model: the solver's Hertz
+/// solves took 35-58 applications' time at 512^2-2048^2 (bench/results/contact.csv).
+inline constexpr double contact_applications = 50.0;
 
 /// Share of the tolerance a reduced body may use; the operator gets the rest.
 /// The operator's own predicted error is at most a tenth of the tolerance (frf-split's kernel

@@ -64,9 +64,6 @@ class PolonskyKeerIteration {
   // not exact).
   ContactResult result(ContactStatus status, int iterations, bool compute_approach);
 
-  // Operator applications made so far.
-  int applications() const { return applications_; }
-
  private:
   struct Gap {
     std::ptrdiff_t n_contact;  // cells of the contact set I_c = {p > 0}
@@ -160,6 +157,10 @@ void PolonskyKeerIteration::start_hertzian() {
     return;
   }
   double level = detail::level_below(h_, detail::kTrialContactShare) - h_min;
+  if (!(level > 0)) {  // a flat face holds a quarter of the cells: a level just above it
+    const double h_max = h_.maxCoeff();
+    level = h_max > h_min ? detail::kTrialContactShare * (h_max - h_min) : 1.0;
+  }
   p_ = detail::hertzian_profile(h_, h_min + level);
   p_ *= value_ / (p_.sum() * cell_area_);
   recompute_displacement();

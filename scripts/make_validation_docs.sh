@@ -10,7 +10,8 @@
 #   pipeline_error  docs/validation_pipeline_error.md   pipeline_error_table (error model of the FRF pipelines)
 #   stress          docs/validation_stress.md           stress_table         (stresses at depth vs Johnson, Hamilton, Hankel)
 #   traction        docs/validation_traction.md         traction_table       (surface displacements under tangential tractions; sliding)
-#   rough_contact   docs/validation_rough_contact.md    rough_contact_table  (rough periodic contact: area against load, kappa)
+#   rough_contact   docs/validation_rough_contact.md    rough_contact_table  (rough periodic contact: area against load, kappa;
+#                   and its plot docs/figures/rough_contact_area.png, scripts/plot_rough_contact.py)
 #   coated          docs/validation.md's generated block coated_convergence, from the existing
 #                   bench/results/sweep.csv (no program is run: scripts/run_benchmarks.sh runs the
 #                   sweep and regenerates this block too)
@@ -46,6 +47,10 @@ for t in "${tables[@]}"; do
     coated)
       "$python" scripts/markdown_blocks.py docs/validation.md coated_convergence \
         bench/results/sweep.csv --view coated-convergence ;;
+    rough_contact)
+      "$build/tables/rough_contact_table" docs/validation_rough_contact.md
+      "$python" scripts/plot_rough_contact.py docs/validation_rough_contact.md \
+        docs/figures/rough_contact_area.png ;;
     *) "$build/tables/${t}_table" "docs/validation_$t.md" ;;
   esac
 done

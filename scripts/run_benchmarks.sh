@@ -6,12 +6,15 @@
 #   bench/results/coatfft_run_rss.txt, docs/figures/spinu_fig{2,3}_*.png, and (not with --tiny,
 #   whose sweep has no coated case) docs/validation.md's block coated_convergence;
 #   with --full also bench/results/dcfft.csv, fft_sizes.csv, setup.csv, setup_2048.csv,
-#   setup_alpha4.csv, frf_eval.csv, contact.csv and their blocks in docs/benchmarks.md
+#   setup_alpha4.csv, frf_eval.csv, contact.csv, rough_contact.csv, precision.csv and their blocks
+#   in docs/benchmarks.md
 #   (dcfft_direct: direct summation against DC-FFT), and auto_tolerance.csv (docs/auto.md,
 #   section 5: the automatic method choice against hand-picked settings).
 # Programs (bench/, one per file; each takes --help): bench_sweep (with its child bench_sweep_row),
 # bench_reference_check, bench_figures, bench_peak_rss, and with --full bench_dcfft,
-# bench_fft_sizes, bench_setup, bench_frf, bench_contact, bench_auto_tolerance, bench_stress.
+# bench_fft_sizes, bench_setup, bench_frf, bench_contact, bench_rough_contact, bench_precision,
+# bench_auto_tolerance, bench_stress. The rough contact at 4096^2 and 8192^2 (tens of minutes) is
+# scripts/rough_scale_run.sh, run on its own.
 #
 # Usage: scripts/run_benchmarks.sh [--full | --quick | --tiny]   (default --full, ~10 min on 2 cores;
 #        --quick and --tiny run the sweep only)
@@ -30,7 +33,8 @@ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCOATFFT_BUILD
   -DCOATFFT_BUILD_CLI=ON >/dev/null
 targets="bench_sweep bench_sweep_row bench_reference_check bench_figures bench_peak_rss coatfft_exe"
 [ "$mode" = "--full" ] && targets="$targets bench_dcfft bench_fft_sizes bench_setup bench_frf bench_contact"
-[ "$mode" = "--full" ] && targets="$targets bench_auto_tolerance bench_stress"
+[ "$mode" = "--full" ] && targets="$targets bench_auto_tolerance bench_stress bench_rough_contact"
+[ "$mode" = "--full" ] && targets="$targets bench_precision"
 # shellcheck disable=SC2086
 cmake --build "$build" -j "${JOBS:-2}" --target $targets
 bench=$build/bench
@@ -104,6 +108,10 @@ if [ "$mode" = "--full" ]; then
   "$bench/bench_frf" "$results/frf_eval.csv"
   echo "== contact solver"
   "$bench/bench_contact" "$results/contact.csv"
+  echo "== contact solver on periodic rough surfaces"
+  "$bench/bench_rough_contact" "$results/rough_contact.csv"
+  echo "== single against double precision"
+  "$bench/bench_precision" "$results/precision.csv"
   echo "== automatic method choice per tolerance, against hand-picked settings"
   "$bench/bench_auto_tolerance" "$results/auto_tolerance.csv"
   echo "bench_stress:"
@@ -116,6 +124,9 @@ if [ "$mode" = "--full" ]; then
   "$python" "$blocks" "$doc" setup_2048 "$results/setup_2048.csv"
   "$python" "$blocks" "$doc" frf_eval "$results/frf_eval.csv"
   "$python" "$blocks" "$doc" contact "$results/contact.csv" \
-    --columns control,preconditioned,N,iterations,converged,solve_ms,applies,solve_over_apply,a_error,p0_error
+    --columns control,preconditioned,linearity,N,iterations,converged,solve_ms,applies,solve_over_apply,a_error,p0_error
+  "$python" "$blocks" "$doc" rough_contact "$results/rough_contact.csv" \
+    --columns N,body,linearity,precision,tolerance,iterations,applications,converged,area_fraction,pressure_error,apply_ms,solve_ms,solve_over_apply
+  "$python" "$blocks" "$doc" precision "$results/precision.csv"
 fi
 echo "done"

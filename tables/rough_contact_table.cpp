@@ -128,7 +128,10 @@ std::string write_body_table() {
   int most = 0;
   for (const auto& c : curves)
     for (const Point& p : c) most = std::max(most, p.iterations);
-  md << "\nEvery solve converged to 1e-10 (at most " << most << " iterations).\n";
+  md << "\nEvery solve converged to 1e-10 (at most " << most << " iterations).\n\n"
+     << "![A/A0 against p_m/(E* g) for the three bodies](figures/rough_contact_area.png)\n\n"
+     << "(docs/figures/rough_contact_area.png, drawn from this table by "
+        "scripts/plot_rough_contact.py.)\n";
   return md.str();
 }
 

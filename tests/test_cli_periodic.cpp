@@ -81,6 +81,12 @@ TEST_CASE("a rough periodic contact made with coatfft surface", "[cli_periodic]"
   CHECK(s["contact_area"].get<double>() > 0.0);
   CHECK(s["contact_area"].get<double>() < 0.2e-6);
   CHECK(s["total_load"].get<double>() == Approx(20.0).epsilon(1e-9));
+  // The solve's applications: one per iteration, two in those that changed the contact set, and
+  // the start's trial.
+  const int iterations = s["iterations"].get<int>();
+  const int applications = s["operator_applications"].get<int>();
+  CHECK(applications > iterations);
+  CHECK(applications <= 2 * iterations + 1);
 }
 
 TEST_CASE("periodic scenes refuse what they do not support", "[cli_periodic]") {

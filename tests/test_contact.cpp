@@ -165,6 +165,27 @@ TEST_CASE("Flat punch: load at a given approach is 2 a E* delta", "[contact][pun
   CHECK((h >= delta).select(!contact, true).all());
 }
 
+TEST_CASE("Flat punch under load control: a flat face over a third of the cells", "[contact][punch]") {
+  // The face (h = 0) holds pi/9 = 35 % of the cells, more than the quarter under which the
+  // load-controlled start sets its trial level: the start must still carry the load (not a
+  // zero profile). Its approach is the delta of W = 2 a E* delta, to the O(dx/a) of the test
+  // above.
+  const std::ptrdiff_t n = 96;
+  const double a = 1e-3, delta = 1e-6;
+  const Grid grid(n, n, 3 * a, 3 * a);
+  const Field h = height(grid, FlatPunch{a, 0.01 * grid.dx() * grid.dx() / delta});
+  DcfftOperator op(love_kernel(grid, kModulus));
+  ContactOptions opts;
+  opts.compute_approach = true;
+  const ContactResult res =
+      ContactSolver(op, opts).solve_load(h, flat_punch_load(a, delta, kModulus));
+  INFO("iterations = " << res.iterations);
+  REQUIRE(res.converged);
+  CHECK(res.pressure.allFinite());
+  CHECK(std::abs(*res.approach / delta - 1) <= 0.25 * grid.dx() / a);
+  CHECK((h == 0.0).select(res.pressure > 0, true).all());
+}
+
 TEST_CASE("Approach control and load control give the same solution", "[contact]") {
   const HertzProblem hp(64);
   DcfftOperator op(love_kernel(hp.grid, kModulus));

@@ -45,6 +45,18 @@ double eigenvalue(const Grid& g, const Frf& frf, int mx, int my) {
   return sum;
 }
 
+// Westergaard's wavy surface h = Delta (1 - cos(2 pi x/lambda)) on one period of n cells,
+// uniform in y (two rows): its grid and its gap against a flat.
+struct WavySurface {
+  Grid grid;
+  Field h;
+  WavySurface(std::ptrdiff_t n, double lambda, double delta)
+      : grid(n, 2, lambda, 2 * lambda / n), h(n, 2) {
+    for (std::ptrdiff_t i = 0; i < n; ++i)
+      h.row(i).setConstant(delta * (1 - std::cos(2 * pi * (double(i) + 0.5 - n / 2) / n)));
+  }
+};
+
 double measured_eigenvalue(const Grid& g, PeriodicOperator& op, int mx, int my) {
   Field p(g.nx(), g.ny());
   for (std::ptrdiff_t j = 0; j < g.ny(); ++j)
@@ -123,11 +135,10 @@ TEST_CASE("Westergaard's wavy contact on a periodic surface", "[periodic][contac
   // half-width a has sin^2(pi a/lambda) = p_m/p*, and the peak pressure is 2 sqrt(p_m p*).
   const std::ptrdiff_t n = 1024;
   const double lambda = 1e-3, delta = 1e-6;
-  const Grid g(n, 2, lambda, 2 * lambda / n);
+  const WavySurface wavy(n, lambda, delta);
+  const Grid& g = wavy.grid;
+  const Field& h = wavy.h;
   PeriodicOperator op(g, periodic_influence_kernel(g, HalfSpaceFrf(steel)), Method::dcfft);
-  Field h(n, 2);
-  for (std::ptrdiff_t i = 0; i < n; ++i)
-    h.row(i).setConstant(delta * (1 - std::cos(2 * pi * (double(i) + 0.5 - n / 2) / n)));
   const double p_star = pi * steel.plane_strain_modulus() * delta / lambda;
   ContactSolver solver(op);
   // Measured at 1024 cells: the widths within a cell (9.9e-4 at 0.95), the peaks within 1.8e-5.
@@ -151,11 +162,10 @@ TEST_CASE("Westergaard's wavy contact under approach control", "[periodic][conta
   // Westergaard's width (Johnson 1985, section 13.2).
   const std::ptrdiff_t n = 512;
   const double lambda = 1e-3, delta = 1e-6;
-  const Grid g(n, 2, lambda, 2 * lambda / n);
+  const WavySurface wavy(n, lambda, delta);
+  const Grid& g = wavy.grid;
+  const Field& h = wavy.h;
   PeriodicOperator op(g, periodic_influence_kernel(g, HalfSpaceFrf(steel)), Method::dcfft);
-  Field h(n, 2);
-  for (std::ptrdiff_t i = 0; i < n; ++i)
-    h.row(i).setConstant(delta * (1 - std::cos(2 * pi * (double(i) + 0.5 - n / 2) / n)));
   const double p_star = pi * steel.plane_strain_modulus() * delta / lambda;
   ContactOptions opts;
   opts.compute_approach = true;

@@ -35,6 +35,8 @@ def check_consistent(result, op, height):
     """What every converged result satisfies, whatever the body."""
     assert result.status == "converged" and result.converged and result.warning == ""
     assert result.residual <= 1e-10 and result.iterations >= 1
+    # One application per iteration, two in those that changed the contact set, one for a start.
+    assert result.iterations <= result.operator_applications <= 2 * result.iterations + 1
     assert not result.touches_boundary
     for field in (result.pressure, result.displacement, result.gap):
         assert field.shape == GRID.shape and field.dtype == np.float64
