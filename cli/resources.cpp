@@ -27,6 +27,8 @@ std::pair<double, std::string> transform_lattice(const Scene& scene) {
   const double nx = static_cast<double>(grid.nx());
   const double ny = static_cast<double>(grid.ny());
   const std::string sizes = detail::concat("[grid] nx = ", grid.nx(), ", ny = ", grid.ny());
+  // A periodic operator transforms the grid itself (convolution/periodic_operator.hpp).
+  if (scene.periodic) return {nx * ny, detail::concat(sizes, " (periodic: no padding)")};
   switch (o.method) {
     case Method::direct:
       return {0.0, sizes};
@@ -59,6 +61,8 @@ MemoryEstimate estimate_memory(const Scene& scene) {
   const Method method = scene.method.options.method;
   if (method == Method::frf_split || method == Method::frf_dcfft) per_lattice_cell += 8.0;
   double bytes = program_bytes + 8.0 * fields * cells + per_lattice_cell * lattice;
+  // A contact's preconditioner: a real field, its half spectrum and the multiplier on the grid.
+  if (scene.contact) bytes += 20.0 * cells;
   if (method == Method::frf_dcfft) {
     const double alpha = scene.method.options.alpha;
     bytes += 16.0 * alpha * alpha * cells;  // the FRF sampled on the alpha-extended lattice
