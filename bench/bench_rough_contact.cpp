@@ -88,7 +88,7 @@ ContactResult solve_row(std::ptrdiff_t n, const Body& body, PeriodicOperator& op
       reference ? (r.pressure - *reference).abs().maxCoeff() / reference->maxCoeff() : 0.0;
   std::ostringstream row;
   row.precision(4);
-  row << n << ",\"" << body.label << "\"," << (v.linearity ? 1 : 0) << "," << to_string(v.precision)
+  row << n << "," << body.label << "," << (v.linearity ? 1 : 0) << "," << to_string(v.precision)
       << "," << v.tolerance << "," << r.iterations << "," << r.operator_applications << ","
       << (r.converged ? 1 : 0) << "," << r.residual << "," << r.contact_area / (kLength * kLength)
       << "," << r.max_pressure << "," << error << "," << apply_ms << "," << solve_ms << ","

@@ -13,7 +13,7 @@
 namespace coatfft::cli {
 
 /// Applications a contact solve is expected to make, for the cost model: the solver's Hertz
-/// solves took 35-58 applications' time at 512^2-2048^2 (bench/results/contact.csv).
+/// solves took 37-55 applications' time at 512^2-2048^2 (bench/results/contact.csv).
 inline constexpr double contact_applications = 50.0;
 
 /// Share of the tolerance a reduced body may use; the operator gets the rest.
