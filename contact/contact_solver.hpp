@@ -30,16 +30,17 @@ struct ContactOptions {
   bool compute_approach = false;
   /// Precondition the conjugate gradient with the inverse half-space symbol |k| (an FFT pair on
   /// the nx x ny grid per iteration; docs/contact.md). Keeps the iteration count nearly
-  /// independent of N (24-33 for Hertz from 64^2 to 1024^2, against 46-137 without). Off gives
-  /// the classic Polonsky-Keer iteration.
+  /// independent of N (24-33 for Hertz from 64^2 to 1024^2 from the uniform start, against
+  /// 46-137 without). Off gives the classic Polonsky-Keer iteration.
   bool preconditioned = true;
   /// FFTW threads of the preconditioner's transforms (>= 1).
   int threads = 1;
-  /// Move the displacement by linearity (u <- u - tau K t) and recompute u = K p only when the
-  /// projection's pending corrections grow large and before convergence is declared: about one
-  /// operator application per iteration (docs/contact.md). Off gives Polonsky & Keer's original,
-  /// which recomputes u at every iteration (two applications per iteration); the iterates agree
-  /// to the tolerance, and the converged solution satisfies the same test on an exact gap.
+  /// Move the displacement by linearity (u <- u - tau K t), recomputing u = K p only after a step
+  /// that changed the contact set, from a Hertzian start (contact/initial_pressure.hpp): one
+  /// operator application per iteration, two in those that changed the set (docs/contact.md,
+  /// "Operator applications"). Off gives Polonsky & Keer's original: their uniform start and
+  /// u = K p recomputed at every iteration (two applications per iteration). Both solve the same
+  /// problem to the same stopping rule.
   bool update_by_linearity = true;
   /// Called, when set, after every iteration that took a step (all but a breakdown), with the
   /// iteration's number (1, 2, ...) and the residual it left (the relative pressure change, as
