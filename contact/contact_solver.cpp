@@ -161,12 +161,14 @@ void PolonskyKeerIteration::start_hertzian() {
     const double h_max = h_.maxCoeff();
     level = h_max > h_min ? detail::kTrialContactShare * (h_max - h_min) : 1.0;
   }
-  p_ = detail::hertzian_profile(h_, h_min + level);
-  p_ *= value_ / (p_.sum() * cell_area_);
+  const auto carry_load = [&] {
+    p_ = detail::hertzian_profile(h_, h_min + level);
+    p_ *= value_ / (p_.sum() * cell_area_);
+  };
+  carry_load();
   recompute_displacement();
   level *= detail::level_correction(h_, p_, u_);
-  p_ = detail::hertzian_profile(h_, h_min + level);
-  p_ *= value_ / (p_.sum() * cell_area_);
+  carry_load();
   exact_ = false;
 }
 

@@ -30,10 +30,6 @@ std::string_view to_string(Precision precision) {
   return precision == Precision::single ? "single" : "double";
 }
 
-Precision parse_precision(std::string_view name) {
-  return detail::parse_name(name, std::array{Precision::double_precision, Precision::single});
-}
-
 unsigned fftw_flags(Planning planning) {
   return planning == Planning::measure ? FFTW_MEASURE : FFTW_ESTIMATE;
 }

@@ -21,7 +21,5 @@ enum class Precision { double_precision, single };
 
 /// "double" or "single".
 std::string_view to_string(Precision precision);
-/// The Precision named `name`; throws InvalidArgument naming the valid names otherwise.
-Precision parse_precision(std::string_view name);
 
 }  // namespace coatfft

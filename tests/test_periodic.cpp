@@ -45,13 +45,19 @@ double eigenvalue(const Grid& g, const Frf& frf, int mx, int my) {
   return sum;
 }
 
-// Westergaard's wavy surface h = Delta (1 - cos(2 pi x/lambda)) on one period of n cells,
-// uniform in y (two rows): its grid and its gap against a flat.
+// Westergaard's wavy surface h = Delta (1 - cos(2 pi x/lambda)) on steel, one period of n
+// cells, uniform in y (two rows): its grid, its gap against a flat, the periodic operator, and
+// p* = pi E* Delta/lambda (Johnson 1985, section 13.2).
 struct WavySurface {
+  static constexpr double lambda = 1e-3, delta = 1e-6;
   Grid grid;
   Field h;
-  WavySurface(std::ptrdiff_t n, double lambda, double delta)
-      : grid(n, 2, lambda, 2 * lambda / n), h(n, 2) {
+  PeriodicOperator op;
+  double p_star = pi * steel.plane_strain_modulus() * delta / lambda;
+  explicit WavySurface(std::ptrdiff_t n)
+      : grid(n, 2, lambda, 2 * lambda / n),
+        h(n, 2),
+        op(grid, periodic_influence_kernel(grid, HalfSpaceFrf(steel)), Method::dcfft) {
     for (std::ptrdiff_t i = 0; i < n; ++i)
       h.row(i).setConstant(delta * (1 - std::cos(2 * pi * (double(i) + 0.5 - n / 2) / n)));
   }
@@ -134,13 +140,11 @@ TEST_CASE("Westergaard's wavy contact on a periodic surface", "[periodic][contac
   // Johnson (1985), section 13.2: p* = pi E* Delta/lambda; at the mean pressure p_m the contact
   // half-width a has sin^2(pi a/lambda) = p_m/p*, and the peak pressure is 2 sqrt(p_m p*).
   const std::ptrdiff_t n = 1024;
-  const double lambda = 1e-3, delta = 1e-6;
-  const WavySurface wavy(n, lambda, delta);
+  WavySurface wavy(n);
   const Grid& g = wavy.grid;
   const Field& h = wavy.h;
-  PeriodicOperator op(g, periodic_influence_kernel(g, HalfSpaceFrf(steel)), Method::dcfft);
-  const double p_star = pi * steel.plane_strain_modulus() * delta / lambda;
-  ContactSolver solver(op);
+  const double lambda = WavySurface::lambda, p_star = wavy.p_star;
+  ContactSolver solver(wavy.op);
   // Measured at 1024 cells: the widths within a cell (9.9e-4 at 0.95), the peaks within 1.8e-5.
   for (double ratio : {0.05, 0.5, 0.95}) {
     const ContactResult r = solver.solve_load(h, ratio * p_star * g.lx() * g.ly());
@@ -161,15 +165,13 @@ TEST_CASE("Westergaard's wavy contact under approach control", "[periodic][conta
   // contact) pressed under approach control carries the same load, and the contact has
   // Westergaard's width (Johnson 1985, section 13.2).
   const std::ptrdiff_t n = 512;
-  const double lambda = 1e-3, delta = 1e-6;
-  const WavySurface wavy(n, lambda, delta);
+  WavySurface wavy(n);
   const Grid& g = wavy.grid;
   const Field& h = wavy.h;
-  PeriodicOperator op(g, periodic_influence_kernel(g, HalfSpaceFrf(steel)), Method::dcfft);
-  const double p_star = pi * steel.plane_strain_modulus() * delta / lambda;
+  const double lambda = WavySurface::lambda, p_star = wavy.p_star;
   ContactOptions opts;
   opts.compute_approach = true;
-  ContactSolver solver(op, opts);
+  ContactSolver solver(wavy.op, opts);
   for (double ratio : {0.1, 0.6}) {
     const double load = ratio * p_star * g.lx() * g.ly();
     const ContactResult by_load = solver.solve_load(h, load);
