@@ -1,5 +1,6 @@
 #pragma once
 // Every public header of coatfft: #include <coatfft/coatfft.hpp>.
+#include "contact/complementarity.hpp"
 #include "contact/contact_solver.hpp"
 #include "contact/indenter.hpp"
 #include "convolution/cerruti_influence.hpp"

@@ -68,6 +68,8 @@ std::string quoted_excerpt(std::string_view text) {
 
 const char* describe_file_type(fs::file_type type) {
   switch (type) {
+    case fs::file_type::regular:
+      return "a regular file";
     case fs::file_type::directory:
       return "a directory";
     case fs::file_type::character:

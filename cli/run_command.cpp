@@ -95,12 +95,11 @@ void write_outputs(StagedOutput& out, const OutputSpec& spec, const SceneRun& ru
   out.commit();
 }
 
-// The warnings of summary.json that the run prints on stderr: the operator's. The contact
-// solver's note (summary "warning", last in the list) is not printed: it reaches the shell
-// through the exit status (main.cpp prints that the solver did not converge).
+// Every warning of summary.json, printed on stderr as README promises: the operator's, the
+// stress planes', and the contact solver's note (why it did not converge; main.cpp adds the
+// exit status's line).
 void print_warnings(const nlohmann::json& summary) {
   for (const auto& warning : summary["warnings"]) {
-    if (summary.contains("warning") && warning == summary["warning"]) continue;
     std::cerr << "coatfft: warning: " << warning.get<std::string>() << '\n';
   }
 }

@@ -194,7 +194,11 @@ Material read_material(SectionReader& reader) {
   }
   const double E = reader.number("E");
   const double nu = reader.number("nu");
-  return Material(E, nu);
+  try {
+    return Material(E, nu);
+  } catch (const InvalidArgument& e) {  // the library's limits, named by the scene's keys
+    throw InvalidArgument(detail::concat(reader.where("E"), ", nu: ", e.what()));
+  }
 }
 
 // [grid]: nx and ny, or refine = "auto" with tolerance_total (the grid is then chosen once the

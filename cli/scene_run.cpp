@@ -181,6 +181,7 @@ void add_contact_summary(nlohmann::json& summary, const Scene& scene, const Cont
   summary["residual"] = result.residual;
   summary["converged"] = result.converged;
   summary["status"] = to_string(result.status);
+  summary["max_penetration"] = result.max_penetration;
   if (!result.warning.empty()) {
     summary["warning"] = result.warning;
     summary["warnings"].push_back(result.warning);
@@ -261,12 +262,6 @@ ContactResult solve_scene_contact(ContactSolver& solver, const Scene& scene,
             {"pressure_shift", r.pressure_shift},
             {"centroid_shift", r.centroid_shift},
             {"converged", r.converged}};
-  if (!r.converged && result.converged) {
-    result.converged = false;
-    result.status = ContactStatus::iteration_limit;
-    result.warning = detail::concat("the friction coupling did not converge in ", r.solves,
-                                    " normal solves (pressure change ", r.pressure_change, ")");
-  }
   return result;
 }
 

@@ -84,7 +84,7 @@ StagedOutput::StagedOutput(fs::path outdir, std::vector<std::string> names,
   const fs::file_status status = fs::status(outdir_, ec);
   if (!fs::exists(status)) return;
   COATFFT_REQUIRE(fs::is_directory(status), "output folder ", quoted(outdir), " exists and is ",
-                  describe_file_type(status.type()));
+                  describe_file_type(status.type()), ": -o names the folder the run writes into");
   for (const std::string& name : names_) check_output_target(outdir_ / name, "output", inputs_);
 }
 

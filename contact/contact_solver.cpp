@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "contact/complementarity.hpp"
 #include "contact/fourier_preconditioner.hpp"
 #include "contact/initial_pressure.hpp"
 #include "core/error.hpp"
@@ -67,7 +68,8 @@ class PolonskyKeerIteration {
  private:
   struct Gap {
     std::ptrdiff_t n_contact;  // cells of the contact set I_c = {p > 0}
-    double norm;               // sum of g^2 over I_c
+    std::ptrdiff_t n_working;  // cells of the working set: I_c, widened by the overlaps
+    double norm;               // sum of g^2 over the working set
   };
 
   void start();
@@ -76,8 +78,10 @@ class PolonskyKeerIteration {
   void scale_to_approach();
   void recompute_displacement();
   Gap update_gap();
-  void update_direction(std::ptrdiff_t n_contact, double g_norm);
-  std::optional<double> step_length(std::ptrdiff_t n_contact);
+  bool in_working_set(std::ptrdiff_t k) const;
+  bool complementary(double tolerance);
+  void update_direction(std::ptrdiff_t n_working, double g_norm);
+  std::optional<double> step_length(std::ptrdiff_t n_working);
   double project(double tau);
   double enforce_load(double p_sum);
 
@@ -88,6 +92,7 @@ class PolonskyKeerIteration {
   bool load_control_;
   double value_;  // the prescribed load [N] or approach [m]
   double delta_;  // approach control: the fixed approach; load control: 0 (g's mean is removed)
+  double g_mean_ = 0.0;  // load control: the approach, mean of h + u over I_c (update_gap)
   double cell_area_;
   std::ptrdiff_t n_cells_;
   Field p_, u_, g_, t_, r_, p_old_;
@@ -99,6 +104,9 @@ class PolonskyKeerIteration {
   // false: Polonsky & Keer's original (uniform start, u = K p recomputed at every iteration).
   bool update_by_linearity_;
   bool exact_ = false;  // u = K p (to rounding); false once the projection changed a cell
+  // The next step works on I_c and the overlapping cells {p = 0, g < 0} (a steepest-descent
+  // restart): set when the iteration stopped on I_c while cells outside it overlap.
+  bool widen_ = false;
   int applications_ = 0;
 };
 
@@ -163,6 +171,9 @@ void PolonskyKeerIteration::start_hertzian() {
   }
   const auto carry_load = [&] {
     p_ = detail::hertzian_profile(h_, h_min + level);
+    // A load whose displacements lie below the rounding of min(h) fits a level that h_min + level
+    // cannot resolve: no cell is left, and the load rests on the lowest cells.
+    if (!(p_.sum() > 0)) p_ = (h_ == h_min).cast<double>();
     p_ *= value_ / (p_.sum() * cell_area_);
   };
   carry_load();
@@ -193,14 +204,19 @@ void PolonskyKeerIteration::recompute_displacement() {
 
 std::optional<ContactStatus> PolonskyKeerIteration::iterate(double tolerance) {
   if (!exact_ || !update_by_linearity_) recompute_displacement();
-  const Gap gap = update_gap();
+  Gap gap = update_gap();
   if (gap.n_contact == 0) return ContactStatus::pressure_vanished;
-  if (gap.norm == 0.0) {  // exact solution on I_c already
-    residual_ = 0.0;
-    return ContactStatus::converged;
+  if (gap.norm == 0.0) {  // the gap is uniform on I_c: a solution if nothing overlaps elsewhere
+    if (complementary(tolerance)) {
+      residual_ = 0.0;
+      return ContactStatus::converged;
+    }
+    widen_ = true;
+    gap = update_gap();
   }
-  update_direction(gap.n_contact, gap.norm);
-  const std::optional<double> tau = step_length(gap.n_contact);
+  update_direction(gap.n_working, gap.norm);
+  const std::optional<double> tau = step_length(gap.n_working);
+  widen_ = false;
   if (!tau) return ContactStatus::non_positive_curvature;
   const double p_sum = project(*tau);
   if (!(p_sum > 0) || !std::isfinite(p_sum)) {
@@ -209,7 +225,14 @@ std::optional<ContactStatus> PolonskyKeerIteration::iterate(double tolerance) {
     return ContactStatus::pressure_vanished;
   }
   residual_ = enforce_load(p_sum);
-  if (residual_ < tolerance) return ContactStatus::converged;
+  if (residual_ >= tolerance) return std::nullopt;
+  // Polonsky & Keer's criterion says the iterate stopped moving; it is a solution only if the
+  // complementarity conditions hold on every cell (docs/contact.md, "Convergence"). If they do
+  // not, the next step takes the overlapping cells into its working set.
+  if (!exact_) recompute_displacement();
+  update_gap();
+  if (complementary(tolerance)) return ContactStatus::converged;
+  widen_ = true;
   return std::nullopt;
 }
 
@@ -229,49 +252,79 @@ PolonskyKeerIteration::Gap PolonskyKeerIteration::update_gap() {
       g_sum += gd[k];
     }
   }
-  if (n_contact == 0) return {0, 0.0};
-  const double g_mean = load_control_ ? g_sum / static_cast<double>(n_contact) : 0.0;
+  if (n_contact == 0) return {0, 0, 0.0};
+  g_mean_ = load_control_ ? g_sum / static_cast<double>(n_contact) : 0.0;
+  std::ptrdiff_t n_working = 0;
   double g_norm = 0.0;
   for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
-    gd[k] -= g_mean;
-    if (pd[k] > 0) g_norm += gd[k] * gd[k];
+    gd[k] -= g_mean_;
+    if (in_working_set(k)) {
+      ++n_working;
+      g_norm += gd[k] * gd[k];
+    }
   }
-  return {n_contact, g_norm};
+  return {n_contact, n_working, g_norm};
 }
 
-// Step 2: search direction t on I_c. Preconditioned: z = P M P g with M ~ K^-1 (the |k|
+// The cells a step moves: I_c, and after a stop with overlaps also the overlapping cells (g as
+// update_gap left it).
+bool PolonskyKeerIteration::in_working_set(std::ptrdiff_t k) const {
+  return p_.data()[k] > 0 || (widen_ && g_.data()[k] < 0.0);
+}
+
+// The discrete complementarity conditions on every cell, for the gap update_gap left (u exact):
+// p >= 0 holds by the projection; g >= -eps where p = 0 and |g| <= eps where p > 0 (p g = 0).
+// eps is detail::gap_tolerance (docs/contact.md, "Convergence").
+bool PolonskyKeerIteration::complementary(double tolerance) {
+  const double* hd = h_.data();
+  const double* pd = p_.data();
+  const double* ud = u_.data();
+  const double* gd = g_.data();
+  double u_max = 0.0;
+  double h_max = 0.0;
+  double violation = 0.0;
+  for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
+    u_max = std::max(u_max, std::abs(ud[k]));
+    h_max = std::max(h_max, std::abs(hd[k]));
+    violation = std::max(violation, pd[k] > 0 ? std::abs(gd[k]) : -gd[k]);
+  }
+  const double largest_term = h_max + u_max + std::abs(delta_ + g_mean_);
+  return violation <= detail::gap_tolerance(tolerance, u_max, largest_term);
+}
+
+// Step 2: search direction t on the working set (I_c, or I_c and the overlapping cells after a
+// stop that left overlaps; in_working_set). Preconditioned: z = P M P g with M ~ K^-1 (the |k|
 // multiplier) and P the restriction to I_c (and, under load control, to zero mean on I_c, the
 // tangent space of the load constraint); P M P is symmetric positive definite there, so this is
 // preconditioned CG on the contact block, and a constant in g still cancels. Unpreconditioned:
 // z = g. Then t = z + beta t, Polonsky & Keer's conjugate direction, restarted (beta = 0) after
-// an iteration that added contact cells.
-void PolonskyKeerIteration::update_direction(std::ptrdiff_t n_contact, double g_norm) {
-  const double* pd = p_.data();
+// an iteration that added contact cells and on a widened working set.
+void PolonskyKeerIteration::update_direction(std::ptrdiff_t n_working, double g_norm) {
   const double* gd = g_.data();
   double* zd = z_.data();
   double* td = t_.data();
   double g_dot_z = g_norm;
   const double* direction = gd;
   if (preconditioner_) {
-    for (std::ptrdiff_t k = 0; k < n_cells_; ++k) zd[k] = pd[k] > 0 ? gd[k] : 0.0;
+    for (std::ptrdiff_t k = 0; k < n_cells_; ++k) zd[k] = in_working_set(k) ? gd[k] : 0.0;
     preconditioner_->apply(z_);
     double z_mean = 0.0;
     if (load_control_) {
       for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
-        if (pd[k] > 0) z_mean += zd[k];
+        if (in_working_set(k)) z_mean += zd[k];
       }
-      z_mean /= static_cast<double>(n_contact);
+      z_mean /= static_cast<double>(n_working);
     }
     g_dot_z = 0.0;
     for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
-      zd[k] = pd[k] > 0 ? zd[k] - z_mean : 0.0;
+      zd[k] = in_working_set(k) ? zd[k] - z_mean : 0.0;
       g_dot_z += gd[k] * zd[k];
     }
     direction = zd;
   }
-  const double beta = conjugate_ ? g_dot_z / g_dot_z_old_ : 0.0;
+  const double beta = conjugate_ && !widen_ ? g_dot_z / g_dot_z_old_ : 0.0;
   for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
-    td[k] = pd[k] > 0 ? direction[k] + beta * td[k] : 0.0;
+    td[k] = in_working_set(k) ? direction[k] + beta * td[k] : 0.0;
   }
   g_dot_z_old_ = g_dot_z;
 }
@@ -280,24 +333,23 @@ void PolonskyKeerIteration::update_direction(std::ptrdiff_t n_contact, double g_
 // control the mean of r = K t over I_c is removed: a constant displacement is absorbed by the
 // approach, so it must not steer the step. This is also what makes the iterates independent of
 // the operator's g(0).
-std::optional<double> PolonskyKeerIteration::step_length(std::ptrdiff_t n_contact) {
+std::optional<double> PolonskyKeerIteration::step_length(std::ptrdiff_t n_working) {
   op_.apply(t_, r_);
   ++applications_;
-  const double* pd = p_.data();
   const double* gd = g_.data();
   const double* td = t_.data();
   const double* rd = r_.data();
   double r_mean = 0.0;
   if (load_control_) {
     for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
-      if (pd[k] > 0) r_mean += rd[k];
+      if (in_working_set(k)) r_mean += rd[k];
     }
-    r_mean /= static_cast<double>(n_contact);
+    r_mean /= static_cast<double>(n_working);
   }
   double numerator = 0.0;
   double denominator = 0.0;
   for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
-    if (pd[k] > 0) {
+    if (in_working_set(k)) {
       numerator += gd[k] * td[k];
       denominator += (rd[k] - r_mean) * td[k];
     }
@@ -380,7 +432,9 @@ ContactResult PolonskyKeerIteration::result(ContactStatus status, int iterations
   result.residual = residual_;
   result.status = status;
   result.converged = status == ContactStatus::converged;
-  result.touches_boundary = pressure_on_border(result.pressure);
+  // A periodic surface has no edge: a contact crossing the period's border is just a contact.
+  result.touches_boundary = !op_.periodic() && pressure_on_border(result.pressure);
+  result.max_penetration = max_penetration(result.gap);
   return result;
 }
 
@@ -391,12 +445,72 @@ std::string breakdown_message(ContactStatus status) {
              : "non-positive curvature along the search direction (breakdown)";
 }
 
+// log2 of the displacement [m] a pressure of 1 Pa over the whole domain gives, estimated from
+// one application: a unit pressure on one cell displaces by about dx / E*, a uniform one by the
+// domain's width over E*, about that times the cells per side (an order of magnitude is enough).
+double log2_compliance(SurfaceOperator& op) {
+  const Grid& grid = op.grid();
+  Field unit = Field::Zero(grid.nx(), grid.ny());
+  unit(0, 0) = 1.0;
+  const double cells_per_side = std::sqrt(static_cast<double>(grid.nb_cells()));
+  return std::log2(op.apply(unit).abs().maxCoeff()) + std::log2(cells_per_side);
+}
+
+// Load control solves (h / s, W / s) and returns s times its solution: K is linear, so that is
+// the solution of (h, W). With P = W / A the mean pressure, H the heights' span, U = P C the
+// displacement scale (C the compliance) and t ~ H / C the search direction, the iteration's inner
+// products are of order P U, H t and P H; s^2 = P H divides them to U / H, H / U and 1 (docs/
+// contact.md, "Scaling"), so a load of 1e150 N or 1e-150 N neither overflows nor underflows. s is
+// a power of two (scaling is exact) and 1 while P H lies within 2^+-128 (about 1e+-38: every
+// physical problem), so ordinary solves are untouched and cost no extra application; otherwise
+// the compliance costs one (`applications`). U / H itself cannot be scaled away: beyond 2^+-600
+// (1e+-180) the problem is refused.
+double load_scale(SurfaceOperator& op, const Field& h, double load, int& applications) {
+  const double span = h.maxCoeff() - h.minCoeff();
+  // In logarithms: W / A itself may overflow or underflow.
+  const double log2_p = std::log2(load) - std::log2(op.grid().lx() * op.grid().ly());
+  if (span > 0 && std::abs(log2_p + std::log2(span)) <= 128) return 1.0;
+  ++applications;
+  const double log2_u = log2_p + log2_compliance(op);
+  const double log2_h = span > 0 ? std::log2(span) : log2_u;  // flat: only U matters
+  COATFFT_REQUIRE(std::abs(log2_u - log2_h) <= 600, "ContactSolver: load = ", load,
+                  " N displaces the surface by about ", std::exp2(log2_u),
+                  " m against heights "
+                  "spanning ",
+                  span,
+                  " m: a ratio beyond 1e+-180, which double precision cannot "
+                  "solve; choose a load nearer the heights' scale");
+  return std::ldexp(1.0, static_cast<int>(std::lround(0.5 * (log2_p + log2_h))));
+}
+
+// The solution of the unscaled problem (load or approach `value`) from that of the scaled one
+// (load_scale); refused, never returned as NaN or Inf, when it is not representable in double
+// precision.
+void unscale(ContactResult& result, double s, double value) {
+  if (s != 1.0) {
+    result.pressure *= s;
+    result.displacement *= s;
+    result.gap *= s;
+    result.load *= s;
+    if (result.approach) *result.approach *= s;
+    result.max_pressure *= s;
+    result.max_penetration *= s;
+  }
+  COATFFT_REQUIRE(std::isfinite(result.load) && std::isfinite(result.max_pressure) &&
+                      result.displacement.allFinite() && result.gap.allFinite(),
+                  "ContactSolver: ", result.control == ContactControl::load ? "load" : "approach",
+                  " = ", value,
+                  ": the contact's pressure, displacement or gap leaves double precision; "
+                  "rescale the units of the load, the heights and the moduli");
+}
+
 }  // namespace
 
 std::string_view to_string(ContactStatus status) {
   // In the order of the enumerators (tests/test_contact.cpp checks each name).
-  static constexpr std::array<std::string_view, 4> names = {
-      "converged", "iteration_limit", "pressure_vanished", "non_positive_curvature"};
+  static constexpr std::array<std::string_view, 5> names = {
+      "converged", "iteration_limit", "pressure_vanished", "non_positive_curvature",
+      "coupling_limit"};
   return names.at(static_cast<std::size_t>(status));
 }
 
@@ -409,6 +523,9 @@ std::string describe(const ContactResult& result, double tolerance) {
     append(text,
            "contact reaches the domain edge (pressure > 0 on a border cell): the domain is too "
            "small for this load");
+  }
+  if (result.status == ContactStatus::coupling_limit) {
+    append(text, "the friction coupling did not converge within its normal solves");
   }
   if (result.status == ContactStatus::iteration_limit) {
     append(text, detail::concat("not converged after ", result.iterations, " iterations (residual ",
@@ -462,9 +579,24 @@ ContactResult ContactSolver::run(const Field& h, ContactControl control, double 
     COATFFT_REQUIRE(value > h_min, "ContactSolver: approach = ", value,
                     " m, but it must exceed min(height) = ", h_min,
                     " m, or the indenter does not touch the surface");
+    // A periodic displacement has zero mean (docs/theory.md 4.8), so the mean gap is
+    // mean(h) - delta whatever the pressure: an approach at or beyond mean(h) has no solution
+    // (the pressure would grow without bound). Full contact is reached as delta -> mean(h).
+    const double h_mean = h.mean();
+    COATFFT_REQUIRE(!op_.periodic() || value < h_mean, "ContactSolver: approach = ", value,
+                    " m, but on a periodic surface it must stay below mean(height) = ", h_mean,
+                    " m (the displacement has zero mean: no contact solves a larger approach)");
   }
-  PolonskyKeerIteration iteration(op_, preconditioner_.get(), h, control, value,
-                                  options_.update_by_linearity);
+  int scale_applications = 0;
+  const double s =
+      control == ContactControl::load ? load_scale(op_, h, value, scale_applications) : 1.0;
+  const Field h_scaled = s == 1.0 ? Field() : Field(h / s);
+  COATFFT_REQUIRE(s == 1.0 || (h_scaled.allFinite() && value / s > 0),
+                  "ContactSolver: load = ", value, " N and heights spanning ",
+                  h.maxCoeff() - h.minCoeff(),
+                  " m are too far apart for double precision; rescale their units");
+  PolonskyKeerIteration iteration(op_, preconditioner_.get(), s == 1.0 ? h : h_scaled, control,
+                                  value / s, options_.update_by_linearity);
   ContactStatus status = ContactStatus::iteration_limit;
   int iterations = 0;
   while (iterations < options_.max_iterations) {
@@ -478,6 +610,8 @@ ContactResult ContactSolver::run(const Field& h, ContactControl control, double 
     }
   }
   ContactResult result = iteration.result(status, iterations, options_.compute_approach);
+  result.operator_applications += scale_applications;
+  unscale(result, s, value);
   result.warning = describe(result, options_.tolerance);
   return result;
 }

@@ -57,7 +57,8 @@ enum class ContactControl { load, approach };
 /// in any of these.
 enum class ContactStatus {
   /// The relative pressure change fell below the tolerance (or the gap was already exactly
-  /// uniform on the contact set).
+  /// uniform on the contact set), and the complementarity conditions hold on every cell
+  /// (contact/complementarity.hpp).
   converged,
   /// max_iterations done without converging; the last iterate is returned.
   iteration_limit,
@@ -67,10 +68,13 @@ enum class ContactStatus {
   /// Breakdown: r.t <= 0 along the search direction, impossible for a positive-definite operator;
   /// the iterate before the failed step is returned.
   non_positive_curvature,
+  /// A sliding contact (contact/sliding_contact.hpp): every normal solve converged, but the
+  /// friction coupling's fixed-point iteration used up its normal solves first.
+  coupling_limit,
 };
 
 /// The status as an identifier: "converged", "iteration_limit", "pressure_vanished",
-/// "non_positive_curvature" (the value of summary.json's "status").
+/// "non_positive_curvature", "coupling_limit" (the value of summary.json's "status").
 std::string_view to_string(ContactStatus status);
 
 /// Output of one contact solve. Fields have the grid's shape (nx, ny).
@@ -101,6 +105,9 @@ struct ContactResult {
   /// True when a border cell carries pressure: the contact reaches the domain edge, so the
   /// domain is too small for the problem (the solution is that of a truncated body).
   bool touches_boundary = false;
+  /// The largest overlap max(0, -min g) [m] of the returned gap: 0 when no cell interpenetrates.
+  /// A converged result has at most the gap's accuracy here (contact/complementarity.hpp).
+  double max_penetration = 0;
   /// Human-readable notes, describe(*this, tolerance): empty when all is well. For display only;
   /// programs read status and touches_boundary.
   std::string warning;

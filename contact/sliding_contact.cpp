@@ -54,6 +54,13 @@ ContactResult solve_sliding(ContactSolver& solver, const TangentialCoupling& cou
   result.operator_applications = applications;  // the cost of all the solves
   r.converged =
       all_converged && (options.friction == 0.0 || r.pressure_change <= options.tolerance);
+  if (!r.converged && result.converged) {  // the normal solves converged, the coupling did not
+    result.converged = false;
+    result.status = ContactStatus::coupling_limit;
+    result.warning = detail::concat("the friction coupling did not converge in ", r.solves,
+                                    " normal solves (pressure change ", r.pressure_change,
+                                    ", tolerance ", options.tolerance, ")");
+  }
   if (report) *report = r;
   return result;
 }

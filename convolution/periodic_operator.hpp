@@ -26,6 +26,7 @@ class PeriodicOperator final : public SurfaceOperator {
   void apply(const Field& pressure, Field& displacement) override;
   Method method() const override { return method_; }
   Precision precision() const { return precision_; }
+  bool periodic() const override { return true; }
   using SurfaceOperator::apply;
 
   struct Transforms;  // the FFTs in one precision (FFTW stays out of the public headers)

@@ -27,6 +27,9 @@ class SurfaceOperator {
   virtual Method method() const = 0;
   /// Its name as used in scene files and summary.json ("dcfft", "frf-split", ...).
   std::string name() const { return std::string(to_string(method())); }
+  /// Whether the surface repeats over the grid's period (no domain edge); false for the free
+  /// surfaces of a half-space.
+  virtual bool periodic() const { return false; }
 
   /// Allocating convenience form.
   Field apply(const Field& pressure) {

@@ -16,8 +16,11 @@ namespace {
 void validate_depths(const std::vector<double>& depths) {
   if (depths.empty()) throw InvalidArgument("stress operator: no depth given");
   for (double z : depths)
-    if (!std::isfinite(z) || z < 0.0)
-      throw InvalidArgument("stress operator: every depth must be finite and >= 0 [m]");
+    if (!std::isfinite(z) || z <= 0.0)
+      throw InvalidArgument(detail::concat(
+          "stress operator: depth z = ", z,
+          " m: every depth must be finite and > 0 [m] (z points into the body; the surface plane "
+          "z = 0 is not computed)"));
 }
 
 void refuse_sliding_tangential(const LayerStack& stack) {

@@ -89,6 +89,41 @@ TEST_CASE("a rough periodic contact made with coatfft surface", "[cli_periodic]"
   CHECK(applications <= 2 * iterations + 1);
 }
 
+TEST_CASE("a light rough periodic contact converges only on a solution", "[cli_periodic]") {
+  // The surface and load at which the solver once stopped after one iteration with one cell in
+  // contact, `converged`, while another cell overlapped by 1.4e-9 m. Now summary.json reports
+  // the largest overlap of the converged solution, at the solver's accuracy (the property over
+  // many rough gaps, against an independently recomputed gap: test_contact_complementarity.cpp).
+  const fs::path z = scratch("light_rough_z.npy");
+  fs::remove(z);
+  REQUIRE(run_coatfft("surface -o " + z.string() +
+                      " --nx 64 --ny 64 --lx 0.5e-3 --ly 0.5e-3 --hurst 0.8 --rms-height 0.2e-6 "
+                      "--seed 1")
+              .status == 0);
+  const coatfft::Field topography = coatfft::cli::read_npy(z);
+  const fs::path gap = scratch("light_rough_gap.npy");
+  coatfft::cli::write_npy(gap, topography.maxCoeff() - topography);
+  const std::string scene =
+      "[grid]\nnx = 64\nny = 64\nlx = 0.5e-3\nly = 0.5e-3\nboundary = \"periodic\"\n"
+      "[substrate]\nmaterial = \"steel\"\n[contact]\nindenter = \"height_map\"\npath = \"" +
+      gap.string() + "\"\nload = 0.01\n";
+  const fs::path out = scratch("light_rough_out");
+  fs::remove_all(out);
+  const auto run = run_coatfft("run " + write_scene(scene, "light_rough", "", "").string() +
+                               " -o " + out.string());
+  INFO(run.stderr_text);
+  REQUIRE(run.status == 0);
+  // A period has no edge: no "domain too small" warning.
+  CHECK(run.stderr_text.find("domain") == std::string::npos);
+  const nlohmann::json s = read_summary(out);
+  CHECK(s["converged"] == true);
+  CHECK(s["iterations"].get<int>() > 1);
+  CHECK(s["contact_area"].get<double>() > 1.5 * (0.5e-3 / 64) * (0.5e-3 / 64));  // > one cell
+  // 1e-10 (the tolerance) of a displacement below 1 um, plus rounding: far below the 1.4e-9 m.
+  CHECK(s["max_penetration"].get<double>() <= 1e-15);
+  CHECK(s["max_penetration"].get<double>() >= 0.0);
+}
+
 TEST_CASE("periodic scenes refuse what they do not support", "[cli_periodic]") {
   const BadCase cases[] = {
       {"periodic_spectral", "material = \"steel\"",

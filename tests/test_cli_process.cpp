@@ -352,6 +352,9 @@ TEST_CASE("coatfft run reports a contact solve that does not converge", "[cli][c
       " -o " + out.string());
   CHECK(result.status == 3);
   CHECK(result.stderr_text.find("did not converge") != std::string::npos);
+  // summary.json's warnings are printed too, the solver's note among them.
+  CHECK(result.stderr_text.find("coatfft: warning: not converged after 2 iterations") !=
+        std::string::npos);
   nlohmann::json s;
   std::ifstream(out / "summary.json") >> s;
   CHECK(s["converged"] == false);

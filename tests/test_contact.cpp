@@ -497,6 +497,7 @@ TEST_CASE("Contact statuses have stable names", "[contact]") {
   CHECK(to_string(ContactStatus::iteration_limit) == "iteration_limit");
   CHECK(to_string(ContactStatus::pressure_vanished) == "pressure_vanished");
   CHECK(to_string(ContactStatus::non_positive_curvature) == "non_positive_curvature");
+  CHECK(to_string(ContactStatus::coupling_limit) == "coupling_limit");
   const ContactResult unsolved;
   CHECK(unsolved.status == ContactStatus::iteration_limit);
   CHECK_FALSE(unsolved.converged);
@@ -579,4 +580,63 @@ TEST_CASE("The iteration callback sees every step, with falling residuals", "[co
   const ContactResult unwatched = ContactSolver(op).solve_load(hp.h, kLoad);
   CHECK(unwatched.iterations == res.iterations);
   CHECK((unwatched.pressure == res.pressure).all());
+}
+
+TEST_CASE("Loads far outside the physical range solve without overflow or NaN",
+          "[contact][bad_input][scaling]") {
+  // The problem is homogeneous: heights and load scaled by c give pressure, displacement and gap
+  // scaled by c (K is linear). The reference is the Hertz problem at 10 N; at 1e195 N and
+  // 1e-290 N the iteration's inner products (p g ~ c^2) would overflow or underflow unscaled.
+  HertzProblem problem(32);
+  DcfftOperator op(love_kernel(problem.grid, kModulus));
+  ContactSolver solver(op);
+  const ContactResult reference = solver.solve_load(problem.h, kLoad);
+  REQUIRE(reference.converged);
+  const double c = GENERATE(1e195, 1e-290);
+  const ContactResult r = solver.solve_load(problem.h * c, kLoad * c);
+  INFO("c = " << c << ", iterations " << r.iterations);
+  REQUIRE(r.converged);
+  REQUIRE(r.pressure.allFinite());
+  REQUIRE(r.gap.allFinite());
+  // The scaled inputs h c and W c carry one rounding each: relative 1e-12 is 4000 ulps.
+  CHECK((r.pressure - reference.pressure * c).abs().maxCoeff() <= 1e-12 * r.max_pressure);
+  CHECK((r.displacement - reference.displacement * c).abs().maxCoeff() <=
+        1e-12 * r.displacement.abs().maxCoeff());
+  CHECK(r.load == Approx(kLoad * c).epsilon(1e-12));
+  CHECK(r.contact_area == reference.contact_area);
+  CHECK(r.max_penetration <= 1e-12 * c * problem.h.maxCoeff());
+}
+
+TEST_CASE("Extreme loads on ordinary heights: the asymptotes", "[contact][bad_input][scaling]") {
+  // 1e-150 N touches only the highest point: its cells share W equally. 1e150 N flattens the
+  // surface (heights of a micrometre are nothing against displacements of 1e142 m): the whole
+  // free surface is in contact with the pressure of a flat face, p / W -> that of the unit load on
+  // h = 0. Displacements 1e-300 or 1e+300 times the heights are beyond double precision: refused.
+  HertzProblem problem(32);
+  const double cell = problem.grid.dx() * problem.grid.dy();
+  DcfftOperator op(love_kernel(problem.grid, kModulus));
+  ContactSolver solver(op);
+  const ContactResult tiny = solver.solve_load(problem.h, 1e-150);
+  INFO("tiny: " << to_string(tiny.status) << " after " << tiny.iterations << ", residual "
+                << tiny.residual << ", area " << tiny.contact_area / cell);
+  REQUIRE(tiny.converged);
+  // The four centre cells of the even grid share the lowest height.
+  const auto lowest = (problem.h == problem.h.minCoeff()).count();
+  CHECK(lowest == 4);
+  CHECK(tiny.contact_area == lowest * cell);
+  CHECK(tiny.max_pressure == Approx(1e-150 / (lowest * cell)).epsilon(1e-12));
+  CHECK(tiny.gap.allFinite());
+  const ContactResult huge = solver.solve_load(problem.h, 1e150);
+  const ContactResult flat = solver.solve_load(Field::Zero(32, 32), 1.0);
+  REQUIRE(huge.converged);
+  REQUIRE(flat.converged);
+  REQUIRE(huge.pressure.allFinite());
+  // The heights perturb p / W by about span(h) E* L / W ~ 1e-6 1e11 4e-4 / 1e150: far below
+  // rounding, so p / W matches the flat face's to the solver's tolerance.
+  CHECK((huge.pressure / 1e150 - flat.pressure).abs().maxCoeff() <= 1e-8 * flat.max_pressure);
+  for (const double load : {1e-300, 1e300}) {
+    CHECK_THROWS_WITH(solver.solve_load(problem.h, load),
+                      Catch::Contains("ContactSolver: load = ") &&
+                          Catch::Contains("which double precision cannot solve"));
+  }
 }

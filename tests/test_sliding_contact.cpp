@@ -83,6 +83,17 @@ TEST_CASE("sliding contact: the coupling iterated to its fixed point", "[contact
   CHECK(r.solves == 2);
   CHECK(r.pressure_shift == 0.0);
 
+  // Two solves cannot reach 1e-9 at a contraction of 0.07: the coupling, not the normal solver,
+  // ran out, and the status names it.
+  const ContactResult cut =
+      solve_sliding(solver, coupling, h, ContactControl::load, kLoad, {mu, 1e-9, 2}, &r);
+  CHECK(r.solves == 2);
+  CHECK_FALSE(r.converged);
+  CHECK_FALSE(cut.converged);
+  CHECK(cut.status == ContactStatus::coupling_limit);
+  CHECK(to_string(cut.status) == "coupling_limit");
+  CHECK_THAT(cut.warning, Catch::Contains("friction coupling did not converge in 2 normal solves"));
+
   CHECK_THROWS_AS(solve_sliding(solver, coupling, h, ContactControl::load, kLoad, {-0.1, 1e-9, 30}),
                   InvalidArgument);
   CHECK_THROWS_AS(solve_sliding(solver, coupling, h, ContactControl::load, kLoad, {mu, 0.0, 30}),

@@ -30,6 +30,7 @@ struct PyContactResult {
   bool converged = false;
   std::string status;
   bool touches_boundary = false;
+  double max_penetration = 0.0;
   std::string warning;
 };
 
@@ -49,6 +50,7 @@ PyContactResult to_python(ContactResult&& r) {
   out.converged = r.converged;
   out.status = std::string(to_string(r.status));
   out.touches_boundary = r.touches_boundary;
+  out.max_penetration = r.max_penetration;
   out.warning = r.warning;
   return out;
 }
@@ -100,10 +102,12 @@ void bind_contact(py::module_& m) {
       .def_readonly("residual", &PyContactResult::residual, "last relative pressure change")
       .def_readonly("converged", &PyContactResult::converged)
       .def_readonly("status", &PyContactResult::status,
-                    "\"converged\", \"iteration_limit\", \"pressure_vanished\" or "
-                    "\"non_positive_curvature\"")
+                    "\"converged\", \"iteration_limit\", \"pressure_vanished\", "
+                    "\"non_positive_curvature\" or \"coupling_limit\"")
       .def_readonly("touches_boundary", &PyContactResult::touches_boundary,
                     "pressure on a border cell: the domain is too small")
+      .def_readonly("max_penetration", &PyContactResult::max_penetration,
+                    "largest overlap max(0, -min(gap)) [m]; 0 when no cell interpenetrates")
       .def_readonly("warning", &PyContactResult::warning)
       .def("__repr__", [](const PyContactResult& r) {
         return py::str(

@@ -12,7 +12,8 @@ from conftest import quiet_operator, radius, rel_max
 R, W = 0.01, 100.0
 GRID = coatfft.Grid(128, 128, 0.8e-3, 0.8e-3)
 HEIGHT = radius(GRID) ** 2 / (2 * R)  # the paraboloid of the sphere
-STATUSES = {"converged", "iteration_limit", "pressure_vanished", "non_positive_curvature"}
+STATUSES = {"converged", "iteration_limit", "pressure_vanished", "non_positive_curvature",
+            "coupling_limit"}
 
 
 def hertz(e_star, load=W):
@@ -182,3 +183,51 @@ def test_contact_without_g0(steel, load_control):
     # Under approach control it is refused rather than solved against a wrong level.
     with pytest.raises(ValueError, match='approach control needs .* g0 = "omitted"'):
         coatfft.solve_contact(op, HEIGHT, approach=load_control.approach)
+
+
+def rough_gap(n, length, hurst, rms, seed):
+    """A periodic random-phase self-affine gap (min 0): C(q) ~ q^(-2(1+H)) up to Nyquist."""
+    rng = np.random.default_rng(seed)
+    q = 2 * np.pi * np.hypot(*np.meshgrid(np.fft.fftfreq(n, length / n),
+                                          np.fft.fftfreq(n, length / n), indexing="ij"))
+    amplitude = np.where(q > 0, np.maximum(q, 1e-30) ** (-(1 + hurst)), 0.0)
+    z = np.fft.ifft2(amplitude * np.exp(2j * np.pi * rng.random((n, n)))).real
+    z *= rms / z.std()
+    return z.max() - z
+
+
+def test_light_rough_contact_converges_only_on_a_solution(steel):
+    # A free 64^2 rough gap at 0.03 N: the solver once stopped at one iteration with one cell in
+    # contact while others overlapped. Every converged result must satisfy complementarity on
+    # every cell of the gap recomputed here from a fresh application, g = h + K p - approach:
+    # eps = 1e-10 max|u| (the tolerance's displacement) + 64 ulps of the largest term.
+    grid = coatfft.Grid(64, 64, 0.5e-3, 0.5e-3)
+    op = coatfft.make_operator(grid, steel, method="dcfft")
+    for seed in range(3):
+        h = rough_gap(64, 0.5e-3, 0.8, 0.2e-6, seed)
+        for load in (0.003, 0.03, 0.3):
+            r = coatfft.solve_contact(op, h, load=load)
+            assert r.converged
+            u = op(r.pressure)
+            contact = r.pressure > 0
+            approach = (h + u)[contact].mean()
+            g = h + u - approach
+            eps = 1e-10 * np.abs(u).max() + 64 * np.finfo(float).eps * (
+                np.abs(h).max() + np.abs(u).max() + abs(approach))
+            assert g[~contact].min() >= -eps
+            assert np.abs(g[contact]).max() <= eps
+            assert 0 <= r.max_penetration <= eps
+            assert r.max_penetration == max(0.0, -r.gap.min())
+
+
+def test_extreme_loads_give_finite_fields(dcfft):
+    # The problem is homogeneous: heights and load scaled by c scale the solution by c. At
+    # c = 1e195 and 1e-290 the solver's inner products would leave double's range unscaled (they
+    # once came back as NaN arrays); the fields must match c times the 100 N solution.
+    reference = coatfft.solve_contact(dcfft, HEIGHT, load=W)
+    for c in (1e195, 1e-290):
+        r = coatfft.solve_contact(dcfft, HEIGHT * c, load=W * c)
+        assert r.converged
+        assert np.isfinite(r.pressure).all() and np.isfinite(r.gap).all()
+        assert rel_max(r.pressure, reference.pressure * c) <= 1e-12
+        assert r.load == pytest.approx(W * c, rel=1e-12)

@@ -77,6 +77,9 @@ def test_errors(steel, tin):
         coatfft.stresses(steel, grid, [1e-4], p, at_interface="middle")
     with pytest.raises(ValueError, match="depth"):
         coatfft.stresses(steel, grid, [-1e-4], p)
+    # The surface plane is named as such, not as a kernel of infinite cost.
+    with pytest.raises(ValueError, match=r"depth z = 0 m: every depth must be finite and > 0"):
+        coatfft.stresses(steel, grid, [0.0], p)
     with pytest.raises(ValueError, match="shape"):
         coatfft.stresses(steel, grid, [1e-4], p[:-1])
     sliding = coatfft.LayerStack(steel, [coatfft.Coating(tin, 1e-4, "frictionless")])
