@@ -372,7 +372,7 @@ TEST_CASE("LayerModes: hard cases stay finite and take their limits", "[frf][mod
     for (double kh = 1e-8; kh <= 1.5e4; kh *= 10.0) {
       const double k = kh / h;
       std::vector<double> z = inner_depths(stack, k);
-      for (double d : interface_depths(stack)) z.push_back(d);
+      for (double d : stack.interface_depths()) z.push_back(d);
       z.push_back(0.0);
       z.push_back(1e3 / k);
       for (auto side : {InterfaceSide::above, InterfaceSide::below}) {
