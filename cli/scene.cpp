@@ -842,8 +842,9 @@ LayerStack read_scene_body(const std::filesystem::path& path) {
 std::vector<double> stress_plane_depths(const StressSpec& spec, const LayerStack& body) {
   std::vector<double> depths = spec.depths;
   for (int k = 1; k <= spec.nz; ++k) depths.push_back(spec.depth_max * k / spec.nz);
-  double interface = 0.0;
-  for (const Coating& c : body.coatings()) depths.push_back(interface += c.thickness);
+  // The interfaces' own depths, which LayerStack::locate places on them exactly.
+  const std::vector<double>& interfaces = body.interface_depths();
+  depths.insert(depths.end(), interfaces.begin(), interfaces.end());
   return depths;
 }
 

@@ -117,6 +117,7 @@ struct ShearSpec {
 struct StressSpec {
   std::vector<double> depths;                 ///< depths [m] of the planes, each > 0
   InterfaceSide side = InterfaceSide::below;  ///< at_interface: the medium of an interface depth
+                                              ///< (LayerStack::locate)
   bool section = false;                       ///< section = "xz": the plane y = 0
   double depth_max = 0.0;                     ///< the section's deepest row [m]
   int nz = 0;                                 ///< the section's rows, at depth_max k/nz, k = 1..nz

@@ -220,15 +220,6 @@ Eigen::VectorXd solve_sh(const std::vector<Medium>& media, double k) {
   return M.partialPivLu().solve(rhs);
 }
 
-// The medium holding depth z: the last one whose top is <= z (below) or < z (above; the surface
-// z = 0 belongs to the first medium either way).
-std::size_t medium_at(const std::vector<Medium>& media, double z, InterfaceSide side) {
-  const auto first_after = std::partition_point(media.begin(), media.end(), [&](const Medium& m) {
-    return side == InterfaceSide::below ? m.top <= z : m.top < z;
-  });
-  return first_after == media.begin() ? 0 : std::size_t(first_after - media.begin() - 1);
-}
-
 // The fields of docs/theory.md §2.7 at depth z in medium j: its rows at s = k zeta, r = k eta
 // times its amplitudes; displacements from the 2 mu k u (P-SV) and mu k u_T (SH) rows.
 ModeFields fields_at(const std::vector<Medium>& media, std::size_t j, double k, double z,
@@ -249,17 +240,17 @@ ModeFields fields_at(const std::vector<Medium>& media, std::size_t j, double k, 
 
 }  // namespace
 
-LayerModes::LayerModes(const LayerStack& stack) {
-  double top = 0.0;
-  for (const auto& coating : stack.coatings()) {
+LayerModes::LayerModes(const LayerStack& stack) : stack_(stack) {
+  const std::vector<double>& interfaces = stack.interface_depths();
+  for (std::size_t i = 0; i < stack.coatings().size(); ++i) {
+    const Coating& coating = stack.coatings()[i];
     const Material& mat = coating.material;
-    media_.push_back({top, coating.thickness, mat.poisson_ratio(), mat.shear_modulus(),
-                      coating.interface_below});
-    top += coating.thickness;
+    media_.push_back({i == 0 ? 0.0 : interfaces[i - 1], coating.thickness, mat.poisson_ratio(),
+                      mat.shear_modulus(), coating.interface_below});
   }
   const Material& sub = stack.substrate();
-  media_.push_back({top, std::numeric_limits<double>::infinity(), sub.poisson_ratio(),
-                    sub.shear_modulus(), Interface::bonded});
+  media_.push_back({stack.total_thickness(), std::numeric_limits<double>::infinity(),
+                    sub.poisson_ratio(), sub.shear_modulus(), Interface::bonded});
 }
 
 std::vector<ModeFields> LayerModes::at(double k, std::span<const double> depths,
@@ -275,7 +266,10 @@ std::vector<ModeFields> LayerModes::at(double k, std::span<const double> depths,
   std::vector<ModeFields> fields;
   fields.reserve(depths.size());
   for (const double z : depths) {
-    fields.push_back(fields_at(media_, medium_at(media_, z, side), k, z, psv, sh));
+    // At an interface, its own depth: the fields of either side are then those of the interface
+    // whatever rounding the given depth carries.
+    const DepthLocation at = stack_.locate(z, side);
+    fields.push_back(fields_at(media_, at.layer, k, at.depth, psv, sh));
   }
   return fields;
 }

@@ -29,9 +29,6 @@ struct ModeFields {
       sTz_t, sLT_t;
 };
 
-/// Which medium a depth equal to an interface's belongs to: the one above it or the one below.
-enum class InterfaceSide { above, below };
-
 namespace detail {
 /// One medium of a LayerModes stack (a coating, or the substrate with thickness +inf).
 struct ModeMedium {
@@ -49,13 +46,14 @@ class LayerModes {
   explicit LayerModes(const LayerStack& stack);
 
   /// The coefficients at every depth of `depths` [m] (each finite, >= 0) for wavenumber k > 0
-  /// [rad/m] (finite); a depth on an interface is evaluated in the medium `side` says. Interface
-  /// depths are the running sums h_1, h_1 + h_2, ... of the coating thicknesses, in that order.
-  /// InvalidArgument on bad input. One solve per call, then O(1) per depth.
+  /// [rad/m] (finite); a depth on an interface (LayerStack::locate: within its relative tolerance
+  /// of LayerStack::interface_depths) is evaluated at the interface in the medium `side` says.
+  /// InvalidArgument on bad input. One solve per call, then O(log n) per depth.
   std::vector<ModeFields> at(double k, std::span<const double> depths,
                              InterfaceSide side = InterfaceSide::below) const;
 
  private:
+  LayerStack stack_;                       // where each depth lies (LayerStack::locate)
   std::vector<detail::ModeMedium> media_;  // coatings top first, then the substrate
 };
 

@@ -1,5 +1,6 @@
 #include "layers/layer_stack.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <string>
@@ -31,6 +32,8 @@ LayerStack::LayerStack(std::vector<Coating> coatings, Material substrate)
     COATFFT_REQUIRE(std::isfinite(h) && h > 0, "LayerStack: coating ", i + 1,
                     ": thickness = ", shortest(h), " m, but the thickness must be finite and > 0");
   }
+  double depth = 0.0;
+  for (const Coating& c : coatings_) interfaces_.push_back(depth += c.thickness);
 }
 
 bool LayerStack::all_bonded() const {
@@ -40,9 +43,20 @@ bool LayerStack::all_bonded() const {
 }
 
 double LayerStack::total_thickness() const {
-  double sum = 0.0;
-  for (const auto& coating : coatings_) sum += coating.thickness;
-  return sum;
+  return interfaces_.empty() ? 0.0 : interfaces_.back();
+}
+
+DepthLocation LayerStack::locate(double depth, InterfaceSide side) const {
+  COATFFT_REQUIRE(std::isfinite(depth) && depth >= 0, "LayerStack: depth = ", shortest(depth),
+                  " m, but depths must be finite and >= 0");
+  // The interfaces within the tolerance of the depth are [lo, hi); the ones before lo lie above.
+  const double tol = interface_tolerance * depth;
+  const auto lo = std::lower_bound(interfaces_.begin(), interfaces_.end(), depth - tol);
+  const auto hi = std::upper_bound(lo, interfaces_.end(), depth + tol);
+  const auto above = static_cast<std::size_t>(lo - interfaces_.begin());
+  if (lo == hi) return {above, false, depth};
+  if (side == InterfaceSide::above) return {above, true, *lo};
+  return {static_cast<std::size_t>(hi - interfaces_.begin()), true, *(hi - 1)};
 }
 
 }  // namespace coatfft

@@ -54,13 +54,14 @@ struct StressPlaneKernel {
   std::array<std::array<Field, 3>, 6> coefficients;
 };
 
-/// The kernel of the plane at `depth` [m] (finite, > 0; on an interface in the medium `side`
-/// names) of the body `stack`, on `grid`, for the pressure and, if `tangential`, the tractions.
-/// Throws InvalidArgument on bad options or depth, and for a plane so shallow against the domain
-/// that it would need more than options.max_evaluations FRF evaluations (z = 0 always).
-/// The kernels of several planes at once: one LayerModes solve per wavevector serves every plane
-/// (the cost is about that of the shallowest plane; the memory grows with the planes). The same
-/// arguments and errors as stress_plane_kernel; `reports`, when given, gets one per plane.
+/// The kernel of the plane at `depth` [m] (finite, > 0; on an interface, as LayerStack::locate
+/// finds it, in the medium `side` names) of the body `stack`, on `grid`, for the pressure and, if
+/// `tangential`, the tractions. Throws InvalidArgument on bad options or depth, and for a plane so
+/// shallow against the domain that it would need more than options.max_evaluations FRF evaluations
+/// (z = 0 always). The kernels of several planes at once: one LayerModes solve per wavevector
+/// serves every plane (the cost is about that of the shallowest plane; the memory grows with the
+/// planes). The same arguments and errors as stress_plane_kernel; `reports`, when given, gets one
+/// per plane.
 std::vector<StressPlaneKernel> stress_plane_kernels(
     const Grid& grid, const LayerStack& stack, std::span<const double> depths, InterfaceSide side,
     bool tangential, const StressKernelOptions& options = {},

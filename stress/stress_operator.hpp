@@ -25,7 +25,7 @@ using PlaneStress = std::array<Field, 6>;
 
 struct StressOperatorOptions {
   StressKernelOptions kernel;  ///< how each plane's coefficients are made
-  /// Medium of a depth equal to an interface depth.
+  /// Medium of a depth on an interface (within LayerStack::locate's tolerance of its depth).
   InterfaceSide side = InterfaceSide::below;
   /// Whether the tractions q_x, q_y are loads too (their kernels cost twice the pressure's).
   bool tangential = false;

@@ -381,6 +381,28 @@ TEST_CASE("Axisymmetric stress: equilibrium inside a coating and the substrate",
   WARN("equilibrium residual, worst (of p/a): " << worst);
 }
 
+TEST_CASE("Axisymmetric stress: a typed depth equal to a running-sum interface is that interface",
+          "[axisymmetric_stress][interface]") {
+  // 10 um + 20 um = 3.0000000000000004e-5: the typed 30e-6 (one ulp above) gets the interface's
+  // fields on the side asked, bit for bit (one call: the same panels for both depths).
+  const Material tin(4e11, 0.25), soft(5e10, 0.3);
+  const LayerStack stack({{tin, 10e-6, Interface::bonded}, {soft, 20e-6, Interface::bonded}},
+                         kSteel);
+  const double exact = stack.interface_depths()[1];
+  REQUIRE(exact != 30e-6);
+  const std::vector<double> r{0.0, 0.5 * kA, kA};
+  const std::vector<double> z{30e-6, exact};
+  std::array<std::vector<AxisymmetricStress>, 2> f;  // above, below
+  for (auto side : {InterfaceSide::above, InterfaceSide::below}) {
+    f[int(side)] =
+        coatfft::axisymmetric_stress_grid(stack, AxisymmetricLoad::hertz, kP, kA, r, z, side, 1e-8);
+    for (std::size_t i = 0; i < r.size(); ++i)
+      CHECK(six(f[int(side)][i]) == six(f[int(side)][3 + i]));
+  }
+  // The sides differ: sigma_rr jumps on the axis, by 1.6 % of p.
+  CHECK(std::abs(f[0][0].srr - f[1][0].srr) > 0.01 * kP);
+}
+
 TEST_CASE("Axisymmetric stress: bad arguments are refused", "[axisymmetric_stress]") {
   const LayerStack body(kSteel);
   const auto call = [&](double amplitude, double a, double r, double z, double tol = 1e-10) {

@@ -265,3 +265,57 @@ TEST_CASE("[contact] friction iterates the normal-tangential coupling", "[cli_st
   CHECK(t["solves"] == 2);
   CHECK(t["pressure_shift"].get<double>() == 0.0);
 }
+
+TEST_CASE("[stress] a section row on a running-sum interface lies on the at_interface side",
+          "[cli_stress][interface]") {
+  // Coatings of 10 um and 20 um: the interface is at 10e-6 + 20e-6 = 3.0000000000000004e-5 and
+  // the section's first row at depth_max 1/2 = 3e-5, one ulp above it. The row is the interface
+  // (LayerStack::locate): the row y = 0 of the plane at the exact interface depth, same side.
+  const std::string scene = R"([grid]
+nx = 24
+ny = 20
+lx = 0.3e-3
+ly = 0.25e-3
+[substrate]
+material = "steel"
+[[coating]]
+material = "titanium_nitride"
+thickness = 10e-6
+[[coating]]
+E = 50e9
+nu = 0.3
+thickness = 20e-6
+[pressure]
+kind = "hertz"
+p0 = 1.0e9
+a = 0.1e-3
+sampling = "cell_average"
+[method]
+name = "frf-split"
+[stress]
+depths = [3.0000000000000004e-5]
+section = "xz"
+depth_max = 6e-5
+nz = 2
+alpha = 4
+)";
+  const std::string side_line = "at_interface = \"above\"\n";
+  const fs::path below = run_scene_ok(scene, "stress_row_below");
+  const fs::path above = run_scene_ok(scene + side_line, "stress_row_above");
+  const int nx = 24, ny = 20, j = (ny - 1) / 2;  // Grid::centre_j, the section's row
+  std::vector<double> row[2], plane[2];
+  for (int b = 0; b < 2; ++b) {
+    row[b] = npy_values((b ? below : above) / "stress_section.npy");
+    plane[b] = npy_values((b ? below : above) / "stress.npy");
+  }
+  double jump = 0;
+  for (int b = 0; b < 2; ++b)
+    for (int c = 0; c < 6; ++c)
+      for (int i = 0; i < nx; ++i) {
+        // The fields are the interface's; the alias cut-offs differ by an ulp: 1e-12 of p0.
+        CHECK(std::abs(row[b][c * nx + i] - plane[b][(c * ny + j) * nx + i]) < 1e-3);
+        jump = std::max(jump, std::abs(row[1][c * nx + i] - row[0][c * nx + i]));
+      }
+  CHECK(jump > 3e7);  // the sides differ: sigma_xx jumps across the interface, 6.7 % of p0
+  CHECK(read_summary(below)["stress"]["at_interface"] == "below");
+}

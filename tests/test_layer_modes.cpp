@@ -91,13 +91,6 @@ bool all_finite(const ModeFields& f) {
   return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
 }
 
-std::vector<double> interface_depths(const LayerStack& stack) {
-  std::vector<double> d;
-  double top = 0.0;
-  for (const auto& c : stack.coatings()) d.push_back(top += c.thickness);
-  return d;
-}
-
 // The stacks of the hard cases and the interface checks: contrasts both ways, nu = 0.4999, a
 // frictionless interface between two bonded ones.
 std::vector<LayerStack> test_stacks() {
@@ -148,7 +141,7 @@ TEST_CASE("LayerModes: homogeneous bodies give the closed forms of theory 2.7", 
       std::vector<double> z;
       for (double kz : {0.0, 1e-3, 0.05, 0.2, 0.4, 1.0, 2.0, 3.0, 3.5, 5.0, 10.0, 20.0, 30.0, 40.0})
         z.push_back(kz / k);
-      for (double d : interface_depths(*stack)) z.push_back(d);
+      for (double d : stack->interface_depths()) z.push_back(d);
       for (auto side : {InterfaceSide::above, InterfaceSide::below}) {
         const auto f = modes.at(k, z, side);
         for (std::size_t i = 0; i < z.size(); ++i) {
@@ -327,7 +320,7 @@ TEST_CASE("LayerModes: interface conditions above and below", "[frf][modes]") {
   double worst = 0.0;
   for (const LayerStack& stack : test_stacks()) {
     const LayerModes modes(stack);
-    const auto z = interface_depths(stack);
+    const std::vector<double>& z = stack.interface_depths();
     std::vector<double> mu;
     for (const auto& c : stack.coatings()) mu.push_back(c.material.shear_modulus());
     mu.push_back(stack.substrate().shear_modulus());
@@ -379,7 +372,7 @@ TEST_CASE("LayerModes: hard cases stay finite and take their limits", "[frf][mod
     for (double kh = 1e-8; kh <= 1.5e4; kh *= 10.0) {
       const double k = kh / h;
       std::vector<double> z = inner_depths(stack, k);
-      for (double d : interface_depths(stack)) z.push_back(d);
+      for (double d : stack.interface_depths()) z.push_back(d);
       z.push_back(0.0);
       z.push_back(1e3 / k);
       for (auto side : {InterfaceSide::above, InterfaceSide::below}) {
@@ -474,6 +467,30 @@ TEST_CASE("LayerModes: the medium of an interface depth follows InterfaceSide", 
   const double z0 = 0.0;
   CHECK(modes.at(k, {&z0, 1}, InterfaceSide::above)[0].uz_p ==
         modes.at(k, {&z0, 1}, InterfaceSide::below)[0].uz_p);
+}
+
+TEST_CASE("LayerModes: a typed depth equal to a running-sum interface is that interface",
+          "[frf][modes][interface]") {
+  // 10e-6 + 20e-6 = 3.0000000000000004e-5 (the typed 3e-5 is one ulp above, in the middle
+  // coating) and 7e-6 + 3e-6 = 9.999999999999999e-6 (1e-5 one ulp below, in the substrate):
+  // within LayerStack::locate's tolerance, both are the interface on the side asked, with the
+  // interface's own fields bit for bit.
+  const Material stiff(4e11, 0.25), soft(5e10, 0.3), steel(2.1e11, 0.3);
+  const LayerStack up({{stiff, 10e-6, Interface::bonded}, {soft, 20e-6, Interface::bonded}}, steel);
+  const LayerStack down({{stiff, 7e-6, Interface::bonded}, {soft, 3e-6, Interface::bonded}}, steel);
+  for (const auto& [stack, typed] : {std::pair{&up, 30e-6}, std::pair{&down, 10e-6}}) {
+    const LayerModes modes(*stack);
+    const double exact = stack->interface_depths()[1];
+    REQUIRE(exact != typed);
+    for (const double k : {1e3, 1e5, 3e5}) {
+      const double z[2] = {typed, exact};
+      const auto a = modes.at(k, z, InterfaceSide::above);
+      const auto b = modes.at(k, z, InterfaceSide::below);
+      CHECK(values(a[0]) == values(a[1]));
+      CHECK(values(b[0]) == values(b[1]));
+      CHECK(std::abs(a[0].sLL_p - b[0].sLL_p) > 0.1 * std::abs(b[0].sLL_p));
+    }
+  }
 }
 
 TEST_CASE("LayerModes refuses bad wavenumbers and depths", "[frf][modes]") {

@@ -3,6 +3,7 @@
 // half-space (Love 1929), the direct double sum of the coefficients (the padded convolution must
 // equal it to rounding, for every component, load and parity), and Johnson's (1985) eq. 3.45 on
 // the axis of a Hertz pressure.
+#include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
@@ -218,4 +219,32 @@ TEST_CASE("stress operator: interface conditions and a coating of the substrate'
   StressOperator(g, LayerStack(steel), {0.5 * h, 3 * h}, o).apply(p, &qx, nullptr, half);
   for (int d = 0; d < 2; ++d)
     for (int c = 0; c < 6; ++c) CHECK((same[d][c] - half[d][c]).abs().maxCoeff() < 1e-13);
+}
+
+TEST_CASE("stress operator: a typed depth equal to a running-sum interface is that interface",
+          "[stress_operator][interface]") {
+  // 10 um + 20 um = 3.0000000000000004e-5: the typed 30e-6 lies one ulp above the interface, in
+  // the soft middle coating, unless it is taken as the interface (LayerStack::locate).
+  const Material soft(50e9, 0.3);
+  const LayerStack stack({{tin, 10e-6, Interface::bonded}, {soft, 20e-6, Interface::bonded}},
+                         steel);
+  const double exact = stack.interface_depths()[1];
+  REQUIRE(exact != 30e-6);
+  const Grid g(24, 20, 0.3e-3, 0.25e-3);
+  const Field p = hertz_pressure(g, 1e9, 0.1e-3, Sampling::cell_average);
+  StressOperatorOptions o;
+  o.kernel.alpha = 4;
+  std::array<std::vector<PlaneStress>, 2> s;  // above, below: planes {30e-6, exact}
+  for (const InterfaceSide side : {InterfaceSide::above, InterfaceSide::below}) {
+    o.side = side;
+    StressOperator(g, stack, {30e-6, exact}, o).apply(p, nullptr, nullptr, s[int(side)]);
+  }
+  for (const auto& planes : s)
+    for (int c = 0; c < 6; ++c) {
+      // The typed depth gives the interface's values on the side asked: the fields are the
+      // interface's bit for bit; the alias series' cut-offs (from the depths) differ by an ulp.
+      CHECK((planes[0][c] - planes[1][c]).abs().maxCoeff() < 1e-3);  // Pa, 1e-12 of p0
+    }
+  // And the sides differ: sigma_xx jumps across the interface, by 6.7e7 Pa (6.7 % of p0) at most.
+  CHECK((s[0][0][s_xx] - s[1][0][s_xx]).abs().maxCoeff() > 3e7);
 }

@@ -32,10 +32,11 @@ struct AxisymmetricStress {
 /// quarter period of the oscillation of J(kr) P^(k), 1/(4 h_min) and 1/z, bisected where the
 /// Kronrod-Gauss difference asks for it. Accuracy ~rel_tol (1e-14 <= rel_tol < 1e-2) of
 /// |amplitude| for the stresses and of |amplitude| a / mu_min (softest medium) for the
-/// displacements. A depth on an interface is taken in the medium `side` names. z = 0 is refused:
-/// the integrals converge there only conditionally (the surface stresses jump at r = a under a
-/// uniform disk). Throws InvalidArgument on bad arguments, Error when the quadrature fails. Cost
-/// ~50 max(0.64 (r + a), 4 h_min, z)/z panels of 15 LayerModes solves (0.2 s at r = 3a, z = 0.01a).
+/// displacements. A depth on an interface (LayerStack::locate) is taken in the medium `side`
+/// names. z = 0 is refused: the integrals converge there only conditionally (the surface stresses
+/// jump at r = a under a uniform disk). Throws InvalidArgument on bad arguments, Error when the
+/// quadrature fails. Cost ~50 max(0.64 (r + a), 4 h_min, z)/z panels of 15 LayerModes solves (0.2 s
+/// at r = 3a, z = 0.01a).
 AxisymmetricStress axisymmetric_stress(const LayerStack& stack, AxisymmetricLoad load,
                                        double amplitude, double a, double r, double z,
                                        InterfaceSide side = InterfaceSide::below,

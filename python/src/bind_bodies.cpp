@@ -141,6 +141,10 @@ void bind_stack(py::module_& m) {
       .def_property_readonly("coatings", &LayerStack::coatings)
       .def_property_readonly("is_homogeneous", &LayerStack::is_homogeneous)
       .def_property_readonly("total_thickness", &LayerStack::total_thickness, "[m]")
+      .def_property_readonly("interface_depths", &LayerStack::interface_depths,
+                             "depths [m] of the interfaces, top first (running sums of the "
+                             "thicknesses): a depth within 256 DBL_EPSILON of one is that "
+                             "interface")
       .def("__eq__", py::overload_cast<const LayerStack&, const LayerStack&>(&equal),
            py::is_operator())
       .def("__repr__", py::overload_cast<const LayerStack&>(&repr));

@@ -68,6 +68,25 @@ def test_tractions_are_linear(steel):
     np.testing.assert_allclose((qy - base)[0, 3], (qx - base)[0, 4].T, atol=1e-14, rtol=0)
 
 
+def test_typed_depth_on_a_running_sum_interface(steel, tin):
+    # 10 um + 20 um = 3.0000000000000004e-05: the typed 30e-6, one ulp above, is that interface
+    # (LayerStack::locate, a relative 256 DBL_EPSILON) on the side at_interface names.
+    soft = coatfft.Material(50e9, 0.3)
+    body = coatfft.LayerStack(steel, [coatfft.Coating(tin, 10e-6), coatfft.Coating(soft, 20e-6)])
+    exact = body.interface_depths[1]
+    assert body.interface_depths == [10e-6, 10e-6 + 20e-6]
+    assert exact != 30e-6
+    grid = coatfft.Grid(24, 20, 0.3e-3, 0.25e-3)
+    p = coatfft.hertz_pressure(grid, 1e9, 0.1e-3, "cell_average")
+    sides = {side: coatfft.stresses(body, grid, [30e-6, exact], p, at_interface=side, alpha=4)
+             for side in ("above", "below")}
+    for s in sides.values():
+        # The interface's fields; the alias cut-offs (from the depths) differ by an ulp.
+        np.testing.assert_allclose(s[0], s[1], atol=1e-3, rtol=0)  # Pa: 1e-12 of p0
+    # The sides differ: sigma_xx jumps across the interface, by 6.7 % of p0.
+    assert np.abs(sides["above"][0, 0] - sides["below"][0, 0]).max() > 3e7
+
+
 def test_errors(steel, tin):
     grid, p = hertz_case(17)
     table = coatfft.TabulatedFrf(np.logspace(0, 8, 50), 1 / np.logspace(0, 8, 50) / 1e11)
