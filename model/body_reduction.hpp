@@ -42,6 +42,28 @@ struct ReferenceLoad {
 double reduction_effect(const Frf& full, const Frf& reduced, const ReferenceLoad& load,
                         double stop_above = std::numeric_limits<double>::infinity());
 
+/// Closed-form upper bound of reduction_effect for the substrate reduction of `stack` (every
+/// coating removed) under `load`, from FRF evaluations alone, no quadrature (docs/auto.md,
+/// section 2, "Closed-form bound"): |k H - k H_sub| sampled at four wavenumbers an octave and
+/// taken at the larger end of each bin, |P| by its envelope, and u(0) bounded below by the
+/// substrate's closed form less the same integral. At most 4100 FRF evaluations (`evaluations`
+/// counts them when given). +inf where the bound does not bound u(0) away from 0 (a coating that
+/// is not thin against the load). A homogeneous `stack` gives 0.
+double substrate_effect_bound(const LayerStack& stack, const ReferenceLoad& load,
+                              long* evaluations = nullptr);
+
+/// The largest ratio load radius / top coating thickness for which reduce_body evaluates the
+/// accurate bound (reduction_effect), whose Hankel reference takes about 10 a / h_top quadrature
+/// panels; beyond, the coating is far thinner than the load resolves and the closed-form bound
+/// decides (docs/auto.md, section 2).
+inline constexpr double accurate_radius_per_thickness = 1e4;
+
+/// The work of reduce_body, counted (docs/auto.md, section 2, "Work").
+struct ReductionWork {
+  long frf_evaluations = 0;  ///< of the given body's FRF and of every reduced body's
+  int quadratures = 0;       ///< integrals by quadrature: Hankel references and effect bounds
+};
+
 struct BodyReduction {
   LayerStack body;              ///< the body to compute with: the given one where not reduced
   std::string kind = "none";    ///< "none", "substrate", "top_half_space", "merged"
@@ -50,12 +72,17 @@ struct BodyReduction {
   /// The reductions tried with their effects, for reports; an effect above the budget is a lower
   /// bound (reduction_effect's stop_above).
   std::vector<std::pair<std::string, double>> tried;
+  ReductionWork work;
 };
 
 /// The simplest body whose effect bound, the largest over `loads` (at least one), is within
 /// `budget` (> 0): a homogeneous one (substrate or top_half_space, the smaller effect of the
 /// admissible ones) before merged layers; otherwise `stack` itself. A homogeneous `stack` is
-/// returned as it is.
+/// returned as it is. Where some load's radius exceeds accurate_radius_per_thickness times the
+/// top coating's thickness, the substrate is taken on substrate_effect_bound alone when that is
+/// within the budget (no quadrature at all); otherwise the effects are bounded against that
+/// bound's lower bound of u(0) instead of the Hankel reference. Either way the work is bounded
+/// (docs/auto.md, section 2, "Work").
 BodyReduction reduce_body(const LayerStack& stack, const std::vector<ReferenceLoad>& loads,
                           double budget);
 
