@@ -52,11 +52,12 @@ double reduction_effect(const Frf& full, const Frf& reduced, const ReferenceLoad
 double substrate_effect_bound(const LayerStack& stack, const ReferenceLoad& load,
                               long* evaluations = nullptr);
 
-/// The largest ratio load radius / top coating thickness for which reduce_body evaluates the
-/// accurate bound (reduction_effect), whose Hankel reference takes about 10 a / h_top quadrature
-/// panels; beyond, the coating is far thinner than the load resolves and the closed-form bound
-/// decides (docs/auto.md, section 2).
-inline constexpr double accurate_radius_per_thickness = 1e4;
+/// The most work reduce_body gives the accurate bound's Hankel references (reduction_effect's
+/// denominator): the sum over the loads of (number of coatings) x a / h_top. A reference takes
+/// about 10 a / h_top quadrature panels of 21 FRF evaluations, each costing about in proportion
+/// to the number of coatings; beyond this limit the coating is far thinner than the loads
+/// resolve and the closed-form bound decides (docs/auto.md, section 2, "Work").
+inline constexpr double accurate_work_limit = 2e4;
 
 /// The work of reduce_body, counted (docs/auto.md, section 2, "Work").
 struct ReductionWork {
@@ -78,11 +79,11 @@ struct BodyReduction {
 /// The simplest body whose effect bound, the largest over `loads` (at least one), is within
 /// `budget` (> 0): a homogeneous one (substrate or top_half_space, the smaller effect of the
 /// admissible ones) before merged layers; otherwise `stack` itself. A homogeneous `stack` is
-/// returned as it is. Where some load's radius exceeds accurate_radius_per_thickness times the
-/// top coating's thickness, the substrate is taken on substrate_effect_bound alone when that is
-/// within the budget (no quadrature at all); otherwise the effects are bounded against that
-/// bound's lower bound of u(0) instead of the Hankel reference. Either way the work is bounded
-/// (docs/auto.md, section 2, "Work").
+/// returned as it is. Where the Hankel references would exceed accurate_work_limit, the
+/// substrate is taken on substrate_effect_bound alone when that is within the budget (no
+/// quadrature at all); otherwise the effects are bounded against that bound's lower bound of
+/// u(0) instead of the Hankel reference. Either way the work is bounded (docs/auto.md, section 2,
+/// "Work").
 BodyReduction reduce_body(const LayerStack& stack, const std::vector<ReferenceLoad>& loads,
                           double budget);
 

@@ -125,8 +125,9 @@ TEST_CASE("reduce_body refuses a bad budget and keeps a homogeneous body", "[red
 
 TEST_CASE("a coating far thinner than the load is reduced by the closed-form bound alone",
           "[reduction][closed_form]") {
-  // 1 nm to 1e-20 m of TiN under a 1 mm Hertz load: radius / thickness > 1e4, so the Hankel
-  // reference (about 10 a / h panels) is never started and no integral is computed.
+  // 1 nm to 1e-20 m of TiN under a 1 mm Hertz load: a / h >= 1e6 is beyond accurate_work_limit,
+  // so the Hankel reference (about 10 a / h panels) is never started and no integral is
+  // computed.
   for (const double h : {1e-9, 1e-10, 1e-11, 1e-12, 1e-15, 1e-20}) {
     INFO("h = " << h);
     const BodyReduction r = reduce_body(coated(tin, h), {hertz_1mm}, 0.9e-4);
@@ -182,16 +183,27 @@ TEST_CASE("the closed-form bound holds on the grid for an unresolved coating",
 
 TEST_CASE("a coating at the resolvable limit still takes the accurate bound",
           "[reduction][closed_form]") {
-  // radius = 1e4 h: the Hankel reference is computed (about 1e5 panels at most).
-  const BodyReduction at = reduce_body(coated(tin, 1e-7), {hertz_1mm}, 1e-3);
+  // One coating, one load, a / h = 1.96e4 <= accurate_work_limit: the Hankel reference is
+  // computed (about 2e5 panels).
+  const BodyReduction at = reduce_body(coated(tin, 0.51e-7), {hertz_1mm}, 1e-3);
   CHECK(at.kind == "substrate");
   CHECK(at.work.quadratures > 0);
-  // Just beyond, the closed form decides.
-  const BodyReduction beyond = reduce_body(coated(tin, 0.99e-7), {hertz_1mm}, 1e-3);
+  // Just beyond (a / h = 2.04e4), the closed form decides.
+  const BodyReduction beyond = reduce_body(coated(tin, 0.49e-7), {hertz_1mm}, 1e-3);
   CHECK(beyond.kind == "substrate");
   CHECK(beyond.work.quadratures == 0);
+  CHECK(beyond.estimated_effect >= at.estimated_effect * 0.49 / 0.51);
+  // The limit counts the coatings and the loads: two loads of 1 mm on 0.2 um (existing cases
+  // above: 1e4) stay accurate; on two coatings of 0.1 um (4e4) they do not.
+  const ReferenceLoad disk{AxisymmetricLoad::uniform_disk, 1e-3};
+  CHECK(reduce_body(coated(tin, 0.2e-6), {hertz_1mm, disk}, 0.1).work.quadratures > 0);
+  const LayerStack two({Coating{tin, 0.1e-6, Interface::bonded},
+                        Coating{Material(279e9, 0.21), 0.1e-6, Interface::bonded}},
+                       steel);
+  CHECK(reduce_body(two, {hertz_1mm, disk}, 0.1).work.quadratures == 0);
   // Where the closed form exceeds the budget, the effect bounds run against its lower bound of
-  // u(0), with a bounded number of evaluations: 1 nm under a load one 47 um cell wide at 1e-6.
+  // u(0), with a bounded number of evaluations (docs/auto.md, section 2, "Work"): 1 nm under a
+  // load one 47 um cell wide at 1e-6.
   const ReferenceLoad cell{AxisymmetricLoad::hertz, grid.dx()};
   const BodyReduction strict = reduce_body(coated(tin, 1e-9), {cell, hertz_1mm}, 1e-6);
   CHECK(strict.kind == "none");
