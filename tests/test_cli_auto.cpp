@@ -144,6 +144,17 @@ TEST_CASE("coatfft check reduces a coating far below the load's scale without qu
   CHECK(d["auto"]["reduction"]["work"]["quadratures"] == 0);
 }
 
+TEST_CASE("coatfft run on a coating far below the load's scale ends, without a Hankel reference",
+          "[cli][auto]") {
+  // The a-posteriori check's reference would take about 1e10 panels: it is reported as skipped.
+  const std::string thin = "[[coating]]\nE = 400e9\nnu = 0.25\nthickness = 1e-12\n";
+  const nlohmann::json s = run_summary("auto_run_1pm", scene_without_method(thin));
+  CHECK(s["auto"]["reduction"]["kind"] == "substrate");
+  CHECK(s["a_posteriori"]["error"].is_null());
+  CHECK(s["a_posteriori"]["measure"].get<std::string>().find("far thinner than the load") !=
+        std::string::npos);
+}
+
 TEST_CASE("a load radius beyond half the domain is refused by run and check", "[cli][auto]") {
   // 200 m on a 3 mm domain (metres for micrometres): refused by the grid's one check of a load
   // radius (require_load_radius, which Python's make_operator load_radius also goes through).
