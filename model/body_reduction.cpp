@@ -158,10 +158,10 @@ double shape_bin(AxisymmetricLoad shape, double s0, double s1) {
 }
 
 // \int g(s/a) |Phi(s)| ds bounded from g sampled at nodes_per_octave wavenumbers an octave, from
-// 1e-3 / max(a, h_total) (where g ~ k h_total C_sub grows like k: Spinu 2021, the small-kh
-// expansion) to max(64 / h_min, 1e3 / a) (beyond, every layer's exp(-2 k h) < 1e-55): on each bin g
-// is taken at its larger end, below the first node at the first, beyond the last at the largest
-// sample or |C_inf - C_sub|, the limit.
+// 1e-3 / max(a, h_total) (where g grows like k h: C - C(0) = O(kh), docs/theory.md 2.6(b)) to
+// max(64 / h_min, 1e3 / a) (beyond, every layer's exp(-2 k h) < 1e-55): on each bin g is taken at
+// its larger end, below the first node at the first, beyond the last at the largest sample or
+// |C_inf - C_sub|, the limit.
 double sampled_integral(const Frf& full, const LayerStack& stack, const ReferenceLoad& load,
                         long& evaluations) {
   const double a = load.radius;
@@ -320,8 +320,9 @@ bool resolved(const LayerStack& stack, const std::vector<ReferenceLoad>& loads) 
 // the effect bounds' denominators.
 bool decide_unresolved(const LayerStack& stack, Reference& ref, BodyReduction& r) {
   double effect = 0.0;
+  long counted_by_full = 0;  // ref.full counts them into r.work already
   for (const ReferenceLoad& load : ref.loads) {
-    const ClosedFormBound b = closed_form_bound(ref.full, stack, load, r.work.frf_evaluations);
+    const ClosedFormBound b = closed_form_bound(ref.full, stack, load, counted_by_full);
     effect = std::max(effect, b.effect);
     ref.u0.push_back(b.centre_lower);
   }
