@@ -13,7 +13,9 @@
 //   max_x |u_reduced - u_full| / u_full(0) <= \int |H_red - H_full| |P| k dk / \int H_full P k dk,
 //
 // (u(0) = (1/2 pi) \int H P k dk, and |J0| <= 1): a bound on the whole surface, for the
-// continuous load. A reduction is used only where this bound is within the budget.
+// continuous load. A reduction is used only where this bound is within the budget. For a coating
+// far thinner than the loads, a closed-form bound of the substrate's effect decides instead
+// (substrate_effect_bound), with no quadrature.
 #include <limits>
 #include <string>
 #include <vector>
@@ -46,7 +48,7 @@ double reduction_effect(const Frf& full, const Frf& reduced, const ReferenceLoad
 /// coating removed) under `load`, from FRF evaluations alone, no quadrature (docs/auto.md,
 /// section 2, "Closed-form bound"): |k H - k H_sub| sampled at four wavenumbers an octave and
 /// taken at the larger end of each bin, |P| by its envelope, and u(0) bounded below by the
-/// substrate's closed form less the same integral. At most 4100 FRF evaluations (`evaluations`
+/// substrate's closed form less the same integral. At most 4001 FRF evaluations (`evaluations`
 /// counts them when given). +inf where the bound does not bound u(0) away from 0 (a coating that
 /// is not thin against the load). A homogeneous `stack` gives 0.
 double substrate_effect_bound(const LayerStack& stack, const ReferenceLoad& load,
