@@ -13,7 +13,9 @@
 namespace coatfft::cli {
 
 /// {"error": |u - u_ref| / max |u| at the centre cell, "measure": what was compared}, or
-/// {"error": null, "measure": why none} for loads without a reference (files, contacts).
+/// {"error": null, "measure": why none} for loads without a reference (files, contacts) and for a
+/// coating so much thinner than the load that the reference would exceed reduce_body's limit of
+/// that work (accurate_work_limit, model/body_reduction.hpp).
 nlohmann::json a_posteriori_check(const Scene& scene, const Field& uz);
 
 }  // namespace coatfft::cli

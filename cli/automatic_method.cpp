@@ -122,7 +122,11 @@ nlohmann::json reduction_json(const BodyReduction& r) {
   nlohmann::json tried = nlohmann::json::array();
   for (const auto& [kind, effect] : r.tried) tried.push_back({{"kind", kind}, {"effect", effect}});
   return {
-      {"kind", r.kind}, {"estimated_effect", r.estimated_effect}, {"why", r.why}, {"tried", tried}};
+      {"kind", r.kind},
+      {"estimated_effect", r.estimated_effect},
+      {"why", r.why},
+      {"tried", tried},
+      {"work", {{"frf_evaluations", r.work.frf_evaluations}, {"quadratures", r.work.quadratures}}}};
 }
 
 }  // namespace

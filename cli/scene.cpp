@@ -359,10 +359,7 @@ PressureSpec read_pressure(const toml::table& table, const Grid& grid,
     COATFFT_REQUIRE(spec.amplitude > 0, reader.where(amplitude_key), " = ", spec.amplitude,
                     " Pa must be > 0");
     spec.radius = reader.number("a");
-    const double half_domain = 0.5 * std::min(grid.lx(), grid.ly());
-    COATFFT_REQUIRE(spec.radius > 0 && spec.radius <= half_domain, reader.where("a"), " = ",
-                    spec.radius, " m must be > 0 and at most half the domain (", half_domain,
-                    " m)");
+    require_load_radius(grid, spec.radius, reader.where("a"));
     spec.sampling = reader.choice("sampling", "centre", {"centre", "cell_average"}) == "centre"
                         ? Sampling::centre
                         : Sampling::cell_average;

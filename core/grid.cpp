@@ -1,5 +1,6 @@
 #include "core/grid.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.hpp"
@@ -19,6 +20,12 @@ Grid::Grid(std::ptrdiff_t nx, std::ptrdiff_t ny, double lx, double ly)
   COATFFT_REQUIRE(lx >= min_length && lx <= max_length && ly >= min_length && ly <= max_length,
                   "Grid: lx = ", lx, " m, ly = ", ly, " m, but the domain lengths must lie in [",
                   min_length, ", ", max_length, "] m (rescale the units)");
+}
+
+void require_load_radius(const Grid& grid, double radius, std::string_view key) {
+  const double half_domain = 0.5 * std::min(grid.lx(), grid.ly());
+  COATFFT_REQUIRE(std::isfinite(radius) && radius > 0 && radius <= half_domain, key, " = ", radius,
+                  " m must be finite and > 0, and at most half the domain (", half_domain, " m)");
 }
 
 }  // namespace coatfft

@@ -1,6 +1,7 @@
 #pragma once
 // A uniform grid of nx x ny rectangular cells covering [-lx/2, lx/2] x [-ly/2, ly/2] (metres).
 #include <cstddef>
+#include <string_view>
 
 namespace coatfft {
 
@@ -39,5 +40,12 @@ class Grid {
   double lx_;
   double ly_;
 };
+
+/// Refuses the radius [m] of a load centred on `grid` that the grid cannot hold: not finite,
+/// <= 0, or more than half the shorter side of the domain (the load would not fit; a radius in
+/// other units, metres taken for millimetres, lands here). Throws InvalidArgument naming `key`
+/// ("[pressure] a", "make_operator: load_radius"). A radius narrower than a cell is the caller's
+/// to judge: cell averages keep its force, centre samples do not.
+void require_load_radius(const Grid& grid, double radius, std::string_view key);
 
 }  // namespace coatfft

@@ -122,3 +122,91 @@ TEST_CASE("reduce_body refuses a bad budget and keeps a homogeneous body", "[red
   CHECK_THROWS_AS(reduce_body(coated(tin, 1e-6), {}, 1e-3), InvalidArgument);
   CHECK(reduce_body(LayerStack(steel), {hertz_1mm}, 1e-3).kind == "none");
 }
+
+TEST_CASE("a coating far thinner than the load is reduced by the closed-form bound alone",
+          "[reduction][closed_form]") {
+  // 1 nm to 1e-20 m of TiN under a 1 mm Hertz load: a / h >= 1e6 is beyond accurate_work_limit,
+  // so the Hankel reference (about 10 a / h panels) is never started and no integral is
+  // computed.
+  for (const double h : {1e-9, 1e-10, 1e-11, 1e-12, 1e-15, 1e-20}) {
+    INFO("h = " << h);
+    const BodyReduction r = reduce_body(coated(tin, h), {hertz_1mm}, 0.9e-4);
+    CHECK(r.kind == "substrate");
+    CHECK(r.body.substrate() == steel);
+    CHECK(r.work.quadratures == 0);
+    CHECK(r.work.frf_evaluations > 0);
+    CHECK(r.work.frf_evaluations <= 4001);
+    CHECK(r.estimated_effect <= 0.9e-4);
+    // The bound is first order in h / a (to a logarithm), down to rounding.
+    CHECK(r.estimated_effect <= std::max(1e-4 * h / 1e-9, 1e-12));
+  }
+}
+
+TEST_CASE("the closed-form bound bounds the accurate one where both are computed",
+          "[reduction][closed_form]") {
+  const std::unique_ptr<Frf> substrate = make_frf(LayerStack(steel));
+  for (const double h : {0.2e-6, 2e-6, 20e-6})
+    for (const AxisymmetricLoad shape : {AxisymmetricLoad::hertz, AxisymmetricLoad::uniform_disk}) {
+      const LayerStack body = coated(tin, h);
+      const ReferenceLoad load{shape, 1e-3};
+      const double accurate = reduction_effect(*make_frf(body), *substrate, load);
+      long evaluations = 0;
+      const double closed = substrate_effect_bound(body, load, &evaluations);
+      INFO("h = " << h << ", accurate " << accurate << ", closed form " << closed);
+      CHECK(closed >= accurate);
+      CHECK(closed <= 10 * accurate);
+      CHECK(evaluations <= 4001);
+    }
+  // A soft coating (polymer on steel: the FRF rises 70-fold) is bounded too.
+  const LayerStack polymer = coated(Material(3e9, 0.35), 1e-6);
+  CHECK(substrate_effect_bound(polymer, hertz_1mm) >=
+        reduction_effect(*make_frf(polymer), *substrate, hertz_1mm));
+}
+
+TEST_CASE("the closed-form bound holds on the grid for an unresolved coating",
+          "[reduction][closed_form]") {
+  // The discrete operators' difference (frf-spectral on both bodies: the same lattice of the
+  // FRFs, so the difference is the FRFs') under the cell-averaged load stays within the bound.
+  const LayerStack body = coated(tin, 1e-9);
+  const BodyReduction r = reduce_body(body, {hertz_1mm}, 0.9e-4);
+  REQUIRE(r.kind == "substrate");
+  OperatorOptions o;
+  o.method = Method::frf_spectral;
+  Field u_full, u_sub;
+  const Field p = hertz_pressure(grid, 1e9, 1e-3, Sampling::cell_average);
+  make_operator(grid, body, o).op->apply(p, u_full);
+  make_operator(grid, LayerStack(steel), o).op->apply(p, u_sub);
+  const double truth = (u_sub - u_full).abs().maxCoeff() / u_full.abs().maxCoeff();
+  INFO("estimated " << r.estimated_effect << ", lattice difference " << truth);
+  CHECK(truth <= r.estimated_effect);
+}
+
+TEST_CASE("a coating at the resolvable limit still takes the accurate bound",
+          "[reduction][closed_form]") {
+  // One coating, one load, a / h = 1.96e4 <= accurate_work_limit: the Hankel reference is
+  // computed (about 2e5 panels).
+  const BodyReduction at = reduce_body(coated(tin, 0.51e-7), {hertz_1mm}, 1e-3);
+  CHECK(at.kind == "substrate");
+  CHECK(at.work.quadratures > 0);
+  // Just beyond (a / h = 2.04e4), the closed form decides.
+  const BodyReduction beyond = reduce_body(coated(tin, 0.49e-7), {hertz_1mm}, 1e-3);
+  CHECK(beyond.kind == "substrate");
+  CHECK(beyond.work.quadratures == 0);
+  CHECK(beyond.estimated_effect >= at.estimated_effect * 0.49 / 0.51);
+  // The limit counts the coatings and the loads: two loads of 1 mm on 0.2 um (existing cases
+  // above: 1e4) stay accurate; on two coatings of 0.1 um (4e4) they do not.
+  const ReferenceLoad disk{AxisymmetricLoad::uniform_disk, 1e-3};
+  CHECK(reduce_body(coated(tin, 0.2e-6), {hertz_1mm, disk}, 0.1).work.quadratures > 0);
+  const LayerStack two({Coating{tin, 0.1e-6, Interface::bonded},
+                        Coating{Material(279e9, 0.21), 0.1e-6, Interface::bonded}},
+                       steel);
+  CHECK(reduce_body(two, {hertz_1mm, disk}, 0.1).work.quadratures == 0);
+  // Where the closed form exceeds the budget, the effect bounds run against its lower bound of
+  // u(0), with a bounded number of evaluations (docs/auto.md, section 2, "Work"): 1 nm under a
+  // load one 47 um cell wide at 1e-6.
+  const ReferenceLoad cell{AxisymmetricLoad::hertz, grid.dx()};
+  const BodyReduction strict = reduce_body(coated(tin, 1e-9), {cell, hertz_1mm}, 1e-6);
+  CHECK(strict.kind == "none");
+  CHECK(strict.work.quadratures > 0);
+  CHECK(strict.work.frf_evaluations <= 2 * 4001 + 4 * 147 * 8379 * 2);
+}

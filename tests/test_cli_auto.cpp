@@ -115,6 +115,58 @@ TEST_CASE("coatfft check prints auto's choice, sizes, memory and time", "[cli][a
   CHECK(c["estimated_memory_bytes"].get<double>() > 0);
 }
 
+// `coatfft check SCENE`'s JSON.
+nlohmann::json check_json(const std::string& name, const std::string& scene_text) {
+  const fs::path scene = write_scene(scene_text, name, "", "");
+  const fs::path json = scratch(name + ".json");
+  const std::string command = std::string(COATFFT_EXE) + " check " + scene.string() + " > " +
+                              json.string() + " 2>/dev/null";
+  REQUIRE(std::system(command.c_str()) == 0);
+  std::ifstream in(json);
+  return nlohmann::json::parse(in);
+}
+
+TEST_CASE("coatfft check reduces a coating far below the load's scale without quadrature",
+          "[cli][auto]") {
+  // 1 pm of TiN under a 1 mm Hertz load: the closed-form bound decides (docs/auto.md, section 2),
+  // where the Hankel reference of the accurate bound would need about 1e10 panels.
+  const std::string thin = "[[coating]]\nE = 400e9\nnu = 0.25\nthickness = 1e-12\n";
+  const nlohmann::json c = check_json("auto_check_1pm", scene_without_method(thin));
+  CHECK(c["auto"]["reduction"]["kind"] == "substrate");
+  CHECK(c["auto"]["reduction"]["work"]["quadratures"] == 0);
+  CHECK(c["auto"]["reduction"]["work"]["frf_evaluations"].get<long>() <= 4001);
+  CHECK(c["auto"]["reduction"]["estimated_effect"].get<double>() <= 0.9e-4);
+  CHECK((c["method"] == "dcfft" || c["method"] == "direct"));
+  // 1e-20 m: the same, where the Hankel reference failed in its quadrature.
+  const std::string thinner = "[[coating]]\nE = 400e9\nnu = 0.25\nthickness = 1e-20\n";
+  const nlohmann::json d = check_json("auto_check_1e-20", scene_without_method(thinner));
+  CHECK(d["auto"]["reduction"]["kind"] == "substrate");
+  CHECK(d["auto"]["reduction"]["work"]["quadratures"] == 0);
+}
+
+TEST_CASE("coatfft run on a coating far below the load's scale ends, without a Hankel reference",
+          "[cli][auto]") {
+  // The a-posteriori check's reference would take about 1e10 panels: it is reported as skipped.
+  const std::string thin = "[[coating]]\nE = 400e9\nnu = 0.25\nthickness = 1e-12\n";
+  const nlohmann::json s = run_summary("auto_run_1pm", scene_without_method(thin));
+  CHECK(s["auto"]["reduction"]["kind"] == "substrate");
+  CHECK(s["a_posteriori"]["error"].is_null());
+  CHECK(s["a_posteriori"]["measure"].get<std::string>().find("far thinner than the load") !=
+        std::string::npos);
+}
+
+TEST_CASE("a load radius beyond half the domain is refused by run and check", "[cli][auto]") {
+  // 200 m on a 3 mm domain (metres for micrometres): refused by the grid's one check of a load
+  // radius (require_load_radius, which Python's make_operator load_radius also goes through).
+  const std::string base = scene_without_method("");
+  check_refused(base, {"auto_radius_200", "a = 1.0e-3", "a = 200",
+                       "= 200 m must be finite and > 0, and at most half the domain"});
+  const fs::path scene = write_scene(base, "auto_radius_200_check", "a = 1.0e-3", "a = 200");
+  const ProcessResult r = run_coatfft("check " + scene.string());
+  CHECK(r.status == 2);
+  CHECK(r.stderr_text.find("at most half the domain") != std::string::npos);
+}
+
 TEST_CASE("[grid] refine = \"auto\" chooses the grid for tolerance_total", "[cli][auto]") {
   const std::string refined = R"([grid]
 lx = 3.0e-3

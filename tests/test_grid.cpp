@@ -25,3 +25,19 @@ TEST_CASE("Grid refuses bad sizes with a message naming the value", "[grid][bad_
   CHECK_THROWS_AS(Grid(3, 3, 1.0, std::numeric_limits<double>::infinity()), InvalidArgument);
   CHECK_THROWS_AS(Grid(3, 3, std::numeric_limits<double>::quiet_NaN(), 1.0), InvalidArgument);
 }
+
+TEST_CASE("a load radius the grid cannot hold is refused, naming its key", "[grid][bad_input]") {
+  const Grid g(64, 32, 64e-6, 32e-6);  // 1 um cells, 16 um half of the shorter side
+  CHECK_NOTHROW(coatfft::require_load_radius(g, 16e-6, "load_radius"));
+  CHECK_NOTHROW(coatfft::require_load_radius(g, 1e-9, "load_radius"));  // narrower: caller's call
+  // 200 m on a micrometre grid: metres for micrometres, refused before anything is computed.
+  for (const double radius :
+       {200.0, 16.001e-6, 0.0, -1e-6, std::numeric_limits<double>::quiet_NaN(),
+        std::numeric_limits<double>::infinity()}) {
+    INFO(radius);
+    CHECK_THROWS_WITH(coatfft::require_load_radius(g, radius, "make_operator: load_radius"),
+                      Catch::Contains("make_operator: load_radius = ") &&
+                          Catch::Contains("at most half the domain (1.6e-05 m)"));
+    CHECK_THROWS_AS(coatfft::require_load_radius(g, radius, "load_radius"), InvalidArgument);
+  }
+}

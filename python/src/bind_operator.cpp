@@ -149,8 +149,7 @@ cli::AutomaticChoice automatic_choice(const Grid& grid, const Body& body, const 
   request.first_in_process = first_operator;
   std::vector<ReferenceLoad> loads = cli::unknown_load_references(grid);
   if (k.load_radius) {
-    COATFFT_REQUIRE(std::isfinite(*k.load_radius) && *k.load_radius > 0,
-                    "make_operator: load_radius = ", *k.load_radius, " m must be finite and > 0");
+    require_load_radius(grid, *k.load_radius, "make_operator: load_radius");
     loads = {{AxisymmetricLoad::hertz, std::max(*k.load_radius, 0.5 * grid.dx())}};
   }
   py::gil_scoped_release release;

@@ -317,6 +317,10 @@ def test_option_values_refused():
     for radius in (0.0, np.nan):
         raises(ValueError, r"make_operator: load_radius = .* m must be finite and > 0",
                make(load_radius=radius))
+    # 200 m on a 0.5 mm domain: refused as the scene's [pressure] a is (one library check),
+    # before the automatic choice starts.
+    raises(ValueError, r"make_operator: load_radius = 200 m must be finite and > 0, and at most "
+           r"half the domain \(0.00025 m\)", make(load_radius=200.0))
     for applications in (0.5, np.inf):
         raises(ValueError, r"make_operator: applications = .* must be finite and >= 1",
                make(applications=applications))
