@@ -315,6 +315,29 @@ TEST_CASE("bad FRF tables and [frf] scenes are refused with exit 2, one line, no
   for (const BadCase& c : scene_cases) check_refused(base, c);
 }
 
+TEST_CASE("[frf] c0 and c_inf that contradict the table's ends are refused, or warned about",
+          "[cli][validate_frf][bad_input]") {
+  // k H = 2e-9 1/Pa at every row: its ends are both limits.
+  std::ofstream(scratch("vfrf_limits.csv"))
+      << "k,H\n1e2,2e-11\n1e3,2e-12\n1e4,2e-13\n1e5,2e-14\n1e6,2e-15\n";
+  const std::string base = file_text(write_table_scene("vfrf_limits", steel_body, ""));
+  check_refused(base, BadCase{"vfrf_c0_1e8", "[frf]\n", "[frf]\nc0 = 0.2\n",
+                              "TabulatedFrf: c0 = 0.2 1/Pa and the table's k H = "});
+  check_refused(base, BadCase{"vfrf_c_inf_1e8", "[frf]\n", "[frf]\nc_inf = 2e-17\n",
+                              "differ by a factor 1e+08"});
+  // 5 % off: the run goes on, and says so on stderr and in summary.json.
+  const fs::path scene = write_scene(base, "vfrf_c0_5pc", "[frf]\n", "[frf]\nc0 = 2.1e-9\n");
+  const fs::path out = scratch("vfrf_c0_5pc_out");
+  fs::remove_all(out);
+  const auto result = run_captured("run " + scene.string() + " -o " + out.string());
+  INFO(result.err);
+  REQUIRE(result.status == 0);
+  CHECK(result.err.find("coatfft: warning: [frf] c0 = 2.1e-09 1/Pa") != std::string::npos);
+  const nlohmann::json summary = read_summary(out);
+  REQUIRE(summary["warnings"].size() == 1);
+  CHECK(summary["warnings"][0].get<std::string>().find("differ by 5") != std::string::npos);
+}
+
 TEST_CASE("validate-frf refuses what it cannot validate", "[cli][validate_frf][bad_input]") {
   write_table("vfrf_alone", LayerStack(material_by_name("steel")));
   // [frf] alone is a body `coatfft run` accepts, but there is nothing to validate it against.
