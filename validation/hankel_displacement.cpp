@@ -172,7 +172,7 @@ double asymptotic_tail(int n, AxisymmetricLoad load, double rho, double S, doubl
 }
 
 // The most panels one call integrates (each an adaptive 21-point rule, ~(a + r) K / pi of them
-// resolve J0(kr) up to K): about a second of FRF calls. Beyond, the far field is used or r is
+// resolve J0(kr) up to K): seconds of FRF calls. Beyond, the far field is used or r is
 // refused (far_field).
 constexpr double kMaxPanels = 1 << 20;
 
@@ -215,13 +215,14 @@ SmallWavenumbers second_order_bound(const Frf& frf, double k_max) {
 // of k in k H Phi(ka) contribute nothing (k^(2m+1) Phi(ka) transforms to a derivative of the
 // pressure, 0 for r > a) and the even ones k^(2m) like r^-(2m+1): u_z is the half-space of
 // compliance c0 (E* = 2/c0) under the same load, within a relative d2/(c0 r^2). That is returned
-// where it is below rel_tol/10 (r >= 100/k_s too, where the series holds); otherwise r is refused.
+// where it is below rel_tol/10 (and r >= 100/k_s, where the series holds, and r >= 10 a, where
+// the k^2 term's field is that of a point force); otherwise r is refused.
 double far_field(const Frf& frf, AxisymmetricLoad load, double amplitude, double a, double r,
                  double rel_tol, double k_max) {
   const double c0 = frf.c0();
   const SmallWavenumbers small = second_order_bound(frf, k_max);
   const double r_far =
-      std::max(std::sqrt(10.0 * small.d2_bound / (rel_tol * c0)), 100.0 / small.k_s);
+      std::max({std::sqrt(10.0 * small.d2_bound / (rel_tol * c0)), 100.0 / small.k_s, 10.0 * a});
   const double r_quadrature = pi * kMaxPanels / k_max - a;
   COATFFT_REQUIRE(r >= r_far, "hankel_displacement: r = ", r, " m is beyond the ", r_quadrature,
                   " m the quadrature resolves for FRF \"", frf.name(), "\" and short of the ",
