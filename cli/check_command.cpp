@@ -13,6 +13,7 @@
 #include "convolution/pipeline_error.hpp"
 #include "core/error.hpp"
 #include "frf/frf.hpp"
+#include "frf/tabulated_frf.hpp"
 
 namespace coatfft::cli {
 
@@ -74,6 +75,9 @@ void check_command(const CheckOptions& options) {
   if (report.predicted_error) out["predicted_error"] = *report.predicted_error;
   if (automatic) out["predicted_error"] = out["auto"]["predicted_error"];
   out["warnings"] = operator_warnings(report);
+  if (const auto* table = dynamic_cast<const TabulatedFrf*>(scene.frf.get()))
+    for (const std::string& warning : table->warnings())
+      out["warnings"].push_back("[frf] " + warning);
   std::cout << std::setw(2) << out << '\n';
 }
 

@@ -19,50 +19,57 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The columns of the header line: where k and H are, and the line, for messages.
+// The columns of the header line: where k and H are, how many there are, and the line, for
+// messages.
 struct Header {
   std::size_t line = 0;
-  std::size_t k = 0, H = 0;
+  std::size_t k = 0, H = 0, columns = 0;
+  std::string_view H_name;  // "H", or "frf" in a table written by `coatfft frf`
 };
 
+// Columns are found by name: k, and the FRF as H or as frf (the column of `coatfft frf`, whose
+// table is read back as it is written). Other columns, such as kh_total, are skipped.
 Header read_header(const fs::path& path, std::size_t line, std::string_view text) {
   const std::vector<std::string_view> names = csv_tokens(text);
-  std::array<std::optional<std::size_t>, 2> found;  // k, H
+  std::optional<std::size_t> k, H;
+  std::string_view H_name;
   for (std::size_t c = 0; c < names.size(); ++c) {
     const std::string_view name = names[c];
-    COATFFT_REQUIRE(name == "k" || name == "H", path.string(), ':', line, ": column ",
-                    quoted_excerpt(name),
-                    " is not k or H: the first line must name the columns k [rad/m] and H [m/Pa] "
-                    "(\"k,H\"), and no others");
-    std::optional<std::size_t>& slot = found[name == "k" ? 0 : 1];
-    COATFFT_REQUIRE(!slot, path.string(), ':', line, ": column ", name, " is named twice");
+    if (name != "k" && name != "H" && name != "frf") continue;
+    std::optional<std::size_t>& slot = name == "k" ? k : H;
+    COATFFT_REQUIRE(!slot, path.string(), ':', line, ": column ", name, " is named twice",
+                    name == "k" ? "" : " (H and frf both name the FRF [m/Pa]: give one)");
     slot = c;
+    if (name != "k") H_name = name;
   }
-  for (std::size_t i = 0; i < 2; ++i)
-    COATFFT_REQUIRE(found[i], path.string(), ':', line, ": the header names no column ",
-                    i == 0 ? "k" : "H", " (it must be \"k,H\")");
-  return {line, *found[0], *found[1]};
+  COATFFT_REQUIRE(k, path.string(), ':', line,
+                  ": the header names no column k [rad/m] (it must name k and H, e.g. \"k,H\")");
+  COATFFT_REQUIRE(H, path.string(), ':', line,
+                  ": the header names no column H [m/Pa] (or frf, as coatfft frf writes it; e.g. "
+                  "\"k,H\")");
+  return {line, *k, *H, names.size(), H_name};
 }
 
 struct Rows {
   std::vector<double> k, H;
 };
 
-// One data line: exactly the header's two values, finite and > 0, k above the previous row's.
+// One data line: one value per column of the header, k and H finite and > 0, k above the previous
+// row's. The values of other columns are not read.
 void read_row(const fs::path& path, std::size_t line, std::string_view text, const Header& header,
               Rows& rows) {
   const std::vector<std::string_view> tokens = csv_tokens(text);
   if (tokens.empty()) return;
   const std::size_t row = rows.k.size();
-  COATFFT_REQUIRE(tokens.size() == 2, path.string(), ':', line, ": row ", row, " has ",
-                  tokens.size(), " values, but the header (line ", header.line,
-                  ") names 2 columns, k and H");
+  COATFFT_REQUIRE(tokens.size() == header.columns, path.string(), ':', line, ": row ", row, " has ",
+                  tokens.size(), " values, but the header (line ", header.line, ") names ",
+                  header.columns, " columns");
   const double k = csv_value(path, line, row, header.k, tokens[header.k]);
   const double H = csv_value(path, line, row, header.H, tokens[header.H]);
   COATFFT_REQUIRE(std::isfinite(k) && k > 0, path.string(), ':', line, ": row ", row, ": k = ", k,
                   " rad/m, but it must be finite and > 0");
-  COATFFT_REQUIRE(std::isfinite(H) && H > 0, path.string(), ':', line, ": row ", row, ": H = ", H,
-                  " m/Pa, but it must be finite and > 0");
+  COATFFT_REQUIRE(std::isfinite(H) && H > 0, path.string(), ':', line, ": row ", row, ": ",
+                  header.H_name, " = ", H, " m/Pa, but it must be finite and > 0");
   COATFFT_REQUIRE(row == 0 || k > rows.k.back(), path.string(), ':', line, ": row ", row,
                   ": k = ", k, " rad/m is not above the previous row's k = ", rows.k.back(),
                   ": k must be strictly ascending");

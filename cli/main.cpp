@@ -94,7 +94,8 @@ int main(int argc, char** argv) {
                           "Shortest wavelength [m] (default 2 max(dx, dy))");
   surface_cmd->add_option("--long-cutoff", surface.long_cutoff,
                           "Roll-off wavelength [m] (default max(lx, ly): no roll-off)");
-  surface_cmd->add_option("--seed", surface.seed, "Seed of the random phases (default 0)");
+  surface_cmd->add_option("--seed", surface.seed,
+                          "Seed of the random phases, an integer in [0, 2^64 - 1] (default 0)");
 
   if (refuse_unknown_command(argc, argv)) return 2;
   try {

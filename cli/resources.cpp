@@ -118,7 +118,12 @@ double parse_memory_size(std::string_view text, std::string_view option) {
                   " = \"", detail::shorten(text),
                   "\": expected a size such as 512M, 4G or "
                   "1000000 (bytes)");
-  return value * scale;
+  // A 64-bit machine addresses at most 2^64 bytes: a larger limit is a typing error (and one
+  // beyond the doubles, such as 1e300T, would be infinite).
+  const double bytes = value * scale;
+  COATFFT_REQUIRE(bytes <= max_memory_bytes, option, " = \"", detail::shorten(text), "\" is ",
+                  bytes, " bytes, above the 2^64 bytes (16 EiB) a 64-bit machine can address");
+  return bytes;
 }
 
 void check_memory(const Scene& scene, std::optional<double> limit) {

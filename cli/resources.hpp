@@ -37,8 +37,12 @@ inline constexpr double program_bytes = 10.0 * 1024 * 1024;
 /// memory.max when smaller; nullopt when neither can be read.
 std::optional<double> available_memory();
 
+/// The largest memory size parse_memory_size accepts [bytes]: 2^64, all a 64-bit machine can
+/// address.
+inline constexpr double max_memory_bytes = 18446744073709551616.0;
+
 /// Parses a size such as "512M", "4G", "1.5GiB" or "1000000" (bytes; K, M, G, T are powers of
-/// 1024). Throws InvalidArgument naming `option`.
+/// 1024), at most max_memory_bytes. Throws InvalidArgument naming `option`.
 double parse_memory_size(std::string_view text, std::string_view option);
 
 /// Refuses the scene (InvalidArgument naming the keys and both amounts) when its estimate

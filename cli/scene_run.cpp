@@ -67,6 +67,9 @@ nlohmann::json common_summary(const Scene& scene, const Automatic& automatic,
   // The contact solver's notes join this list later. Nothing is printed here: run_scene prints
   // nothing, and the CLI prints the operator's warnings itself (cli/run_command.cpp).
   summary["warnings"] = operator_warnings(built.report);
+  if (const auto* table = dynamic_cast<const TabulatedFrf*>(scene.frf.get()))
+    for (const std::string& warning : table->warnings())
+      summary["warnings"].push_back("[frf] " + warning);
   summary.update(operator_report_json(built.report));
   summary["method_requested"] = automatic || scene.method.auto_periodic
                                     ? "auto"

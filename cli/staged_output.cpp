@@ -195,6 +195,15 @@ StagedFile::StagedFile(fs::path target, std::string_view what, std::vector<fs::p
       inputs_(std::move(inputs)),
       temporary_(hidden_beside(target_)),
       on_signal_({temporary_}, {}) {
+  // The file is written beside its target: a missing folder is named as the user wrote it, not
+  // as the hidden file that could not be opened.
+  std::error_code ec;
+  const fs::file_status folder = fs::status(target_.parent_path(), ec);
+  COATFFT_REQUIRE(fs::exists(folder), what_, " ", quoted(target), ": the directory ",
+                  quoted(target.parent_path()), " does not exist");
+  COATFFT_REQUIRE(fs::is_directory(folder), what_, " ", quoted(target), ": ",
+                  quoted(target.parent_path()), " is ", describe_file_type(folder.type()),
+                  ", not a directory");
   check_output_target(target_, what_, inputs_);
 }
 

@@ -1,15 +1,29 @@
 #include "cli/surface_command.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <vector>
 
 #include "cli/npy.hpp"
 #include "cli/staged_output.hpp"
+#include "core/detail/shorten.hpp"
 #include "core/error.hpp"
 #include "surfaces/self_affine_surface.hpp"
 
 namespace coatfft::cli {
+
+std::uint64_t parse_seed(std::string_view text, std::string_view option) {
+  std::uint64_t value = 0;
+  const char* end = text.data() + text.size();
+  // from_chars takes no sign and stops at an exponent or a point: all of the text must be read.
+  const auto [stop, ec] = std::from_chars(text.data(), end, value);
+  COATFFT_REQUIRE(!text.empty() && ec == std::errc() && stop == end, option, " = \"",
+                  detail::shorten(text), "\": expected an integer in [0, ",
+                  std::numeric_limits<std::uint64_t>::max(), "]");
+  return value;
+}
 
 void surface_command(const SurfaceOptions& o) {
   COATFFT_REQUIRE(o.output.extension() == ".npy", "-o ", o.output.string(),
@@ -28,7 +42,8 @@ void surface_command(const SurfaceOptions& o) {
   spec.rms_slope = o.rms_slope;
   spec.short_cutoff = o.short_cutoff;
   spec.long_cutoff = o.long_cutoff;
-  spec.seed = o.seed;
+  spec.seed = parse_seed(o.seed, "--seed");
+  check_self_affine_spec(grid, spec, "--rms-height", "--rms-slope");
   // The output is checked before any work: a file that cannot be written is refused at once.
   StagedFile file(o.output, "output file", {});
   const Field h = self_affine_surface(grid, spec);

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <string>
+#include <string_view>
 
 namespace coatfft::cli {
 
@@ -17,8 +19,14 @@ struct SurfaceOptions {
   double lx = 0.0, ly = 0.0;     ///< domain [m]
   double hurst = 0.0;
   std::optional<double> rms_height, rms_slope, short_cutoff, long_cutoff;
-  std::uint64_t seed = 0;
+  /// --seed as typed: parsed by parse_seed (CLI11 would saturate -1 or 2^64 to 2^64 - 1).
+  std::string seed = "0";
 };
+
+/// The --seed text as an integer in [0, 2^64 - 1]: decimal digits only, or InvalidArgument
+/// naming `option` (a sign, an exponent, a fraction or a value out of range are refused, not
+/// rounded or saturated into another surface's seed).
+std::uint64_t parse_seed(std::string_view text, std::string_view option);
 
 /// Makes the surface and writes it (through a temporary file renamed when complete); prints one
 /// line with its size, rms height and rms slope. InvalidArgument for bad options.

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <utility>
 
 #include "core/error.hpp"
@@ -73,6 +74,38 @@ double end_value(const std::vector<double>& k, const std::vector<double>& kH, bo
   return kH[end];
 }
 
+// `x` > 0 to three significant digits, for ratios in messages ("a factor 1e+08", not 99999999.99).
+double three_digits(double x) {
+  const double unit = std::pow(10.0, std::floor(std::log10(x)) - 2.0);
+  return std::round(x / unit) * unit;
+}
+
+// A given limit against the table's k H at that end (front: c0 at the smallest k, else c_inf at
+// the largest): refused beyond limit_refusal_factor either way, a warning returned beyond
+// limit_warning_tolerance, else an empty string.
+std::string check_given_limit(const std::vector<double>& k, const std::vector<double>& kH,
+                              bool front, double given) {
+  const std::size_t end = front ? 0 : k.size() - 1;
+  const char* name = front ? "c0" : "c_inf";
+  const double ratio = std::max(given / kH[end], kH[end] / given);
+  const auto describe = [&](double value) {
+    return detail::concat(name, " = ", value, " 1/Pa and the table's k H = ", kH[end],
+                          " 1/Pa at its ", front ? "smallest" : "largest", " k = ", k[end],
+                          " rad/m");
+  };
+  COATFFT_REQUIRE(ratio <= TabulatedFrf::limit_refusal_factor, "TabulatedFrf: ", describe(given),
+                  " differ by a factor ", three_digits(ratio), ", more than ",
+                  TabulatedFrf::limit_refusal_factor, ": they contradict each other (check ", name,
+                  ", ", front ? "2/E*_substrate" : "2/E*_top",
+                  ", and the table's units), or extend the table towards the limit");
+  if (std::abs(given / kH[end] - 1.0) <= TabulatedFrf::limit_warning_tolerance) return {};
+  return detail::concat(
+      describe(given), " differ by ", three_digits(std::abs(given / kH[end] - 1.0) * 100.0),
+      " %, more than ", TabulatedFrf::limit_warning_tolerance * 100.0,
+      " %: beyond the table k H is ", front ? "continued linearly in k" : "carried exponentially",
+      " to the given limit");
+}
+
 // The smallest value of the spline piece on [x[i], x[i+1]]: at an end, or where its derivative, a
 // quadratic in t = x - x[i] from the first and second derivatives GSL gives, vanishes.
 double piece_minimum(const gsl_interp* interp, const double* x, const double* y, std::size_t i) {
@@ -117,6 +150,11 @@ TabulatedFrf::TabulatedFrf(std::vector<double> k, std::vector<double> H, std::op
   c_inf_estimated_ = !c_inf;
   c0_ = c0 ? *c0 : end_value(k_, kH_, true);
   c_inf_ = c_inf ? *c_inf : end_value(k_, kH_, false);
+  for (const bool front : {true, false}) {
+    if (!(front ? c0 : c_inf)) continue;
+    std::string warning = check_given_limit(k_, kH_, front, front ? c0_ : c_inf_);
+    if (!warning.empty()) warnings_.push_back(std::move(warning));
+  }
 
   auto spline = std::make_unique<Spline>();
   spline->interp.reset(gsl_interp_alloc(gsl_interp_cspline, k_.size()));

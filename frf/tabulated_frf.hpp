@@ -19,7 +19,11 @@
 //              FRFs' exp(-2 k h_top), never faster than theirs once k_max h_top > 1/2).
 // C0 and Cinf not given are estimated as the end values k_min H_min and k_max H_max (the
 // extensions then are constants); the estimate is refused unless k H varies by at most
-// flatness_tolerance (relative) over the decade of k at that end of the table.
+// flatness_tolerance (relative) over the decade of k at that end of the table. C0 and Cinf given
+// are checked against those end values: a ratio beyond limit_refusal_factor either way is a
+// contradiction (a wrong unit, a wrong material, a table of another body) and refused; one
+// beyond 1 + limit_warning_tolerance is kept with a warning (warnings()), since the extension
+// then carries more of k H than the table does.
 //
 // Evaluation is const and thread-safe: no GSL accelerator is shared (each call searches the
 // table by bisection).
@@ -41,10 +45,17 @@ class TabulatedFrf final : public Frf {
   /// estimated from the table's end value: in the linear regime of small k that bounds the
   /// estimate's error by about flatness_tolerance / 9.
   static constexpr double flatness_tolerance = 1e-6;
+  /// The largest ratio (either way) of a given c0 (c_inf) to the table's k H at its smallest
+  /// (largest) k: beyond it, k H would have to change tenfold outside the table, which a table
+  /// of a body's transition does not leave undone; the limit and the table contradict each other.
+  static constexpr double limit_refusal_factor = 10.0;
+  /// The relative difference of a given limit and the table's end above which a warning is given.
+  static constexpr double limit_warning_tolerance = 0.01;
 
   /// k [rad/m]: finite, > 0, strictly ascending (also in ln k); H [m/Pa]: finite and > 0, one per
-  /// k; at least min_points rows. c0, c_inf [m/Pa * rad/m]: finite and > 0 when given, else
-  /// estimated (see above). Throws InvalidArgument naming the row (0-based) and the value.
+  /// k; at least min_points rows. c0, c_inf [m/Pa * rad/m]: finite and > 0 when given, within
+  /// limit_refusal_factor of the table's end, else estimated (see above). Throws
+  /// InvalidArgument naming the row (0-based) and the value, or the limit and both values.
   TabulatedFrf(std::vector<double> k, std::vector<double> H, std::optional<double> c0 = {},
                std::optional<double> c_inf = {});
   ~TabulatedFrf() override;
@@ -60,6 +71,9 @@ class TabulatedFrf final : public Frf {
 
   bool c0_estimated() const { return c0_estimated_; }
   bool c_inf_estimated() const { return c_inf_estimated_; }
+  /// A line for each given limit more than limit_warning_tolerance from the table's end
+  /// ("c0 = ... differ by 5 %, ..."; the program prefixes [frf], Python TabulatedFrf).
+  const std::vector<std::string>& warnings() const { return warnings_; }
   std::size_t size() const { return k_.size(); }
   const std::vector<double>& k() const { return k_; }  ///< the table's k [rad/m]
   const std::vector<double>& H() const { return H_; }  ///< the table's H [m/Pa]
@@ -71,6 +85,7 @@ class TabulatedFrf final : public Frf {
   std::vector<double> log_k_, kH_;  // the interpolated data
   double c0_ = 0.0, c_inf_ = 0.0;
   bool c0_estimated_ = false, c_inf_estimated_ = false;
+  std::vector<std::string> warnings_;
   std::unique_ptr<const Spline> spline_;
 };
 

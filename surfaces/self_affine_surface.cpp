@@ -5,6 +5,7 @@
 #include <complex>
 #include <numbers>
 #include <random>
+#include <string_view>
 
 #include "convolution/fftw_plan.hpp"
 #include "core/error.hpp"
@@ -47,7 +48,7 @@ struct Cutoffs {
   double q_r, q_s;
 };
 
-Cutoffs validate(const Grid& g, const SelfAffineSpec& s) {
+Cutoffs validate_spectrum(const Grid& g, const SelfAffineSpec& s) {
   COATFFT_REQUIRE(g.nx() >= 2 && g.ny() >= 2 && g.nx() % 2 == 0 && g.ny() % 2 == 0,
                   "self-affine surface: nx = ", g.nx(), " and ny = ", g.ny(),
                   " must be even and >= 2");
@@ -55,9 +56,6 @@ Cutoffs validate(const Grid& g, const SelfAffineSpec& s) {
                   "self-affine surface: the Hurst exponent ", s.hurst, " must be in (0, 1]");
   COATFFT_REQUIRE(s.rms_height.has_value() != s.rms_slope.has_value(),
                   "self-affine surface: give exactly one of the rms height and the rms slope");
-  const double rms = s.rms_height ? *s.rms_height : *s.rms_slope;
-  COATFFT_REQUIRE(std::isfinite(rms) && rms > 0, "self-affine surface: the rms ",
-                  s.rms_height ? "height" : "slope", " ", rms, " must be finite and > 0");
   const double nyquist_wavelength = 2.0 * std::max(g.dx(), g.dy());
   const double lambda_s = s.short_cutoff.value_or(nyquist_wavelength);
   const double lambda_r = s.long_cutoff.value_or(std::max(g.lx(), g.ly()));
@@ -75,6 +73,48 @@ Cutoffs validate(const Grid& g, const SelfAffineSpec& s) {
 double amplitude(double q, double hurst, const Cutoffs& c) {
   if (q == 0.0 || q > c.q_s * (1 + 1e-12)) return 0.0;
   return std::pow(std::max(q, c.q_r) / c.q_r, -(1.0 + hurst));
+}
+
+// The mean squares of height and slope of the surface for C0 = 1, by Parseval on the grid: sums
+// of a^2 and |k|^2 a^2 over the modes. Every mode has its amplitude a exactly, whatever its phase,
+// so they fix the ratio of rms height to rms slope before any surface is made.
+struct UnitMoments {
+  double height2 = 0.0, slope2 = 0.0;
+};
+
+UnitMoments unit_moments(const Grid& g, double hurst, const Cutoffs& c) {
+  UnitMoments m;
+  for (std::ptrdiff_t j = 0; j < g.ny(); ++j)
+    for (std::ptrdiff_t i = 0; i <= g.nx() / 2; ++i) {
+      const double weight = (i == 0 || i == g.nx() / 2) ? 1.0 : 2.0;
+      const double q = wavenumber(g, i, j);
+      const double a = amplitude(q, hurst, c);
+      m.height2 += weight * a * a;
+      m.slope2 += weight * q * q * a * a;
+    }
+  return m;
+}
+
+// The requested rms within the limits of the header, and for an rms slope the rms height it gives.
+void check_rms(const SelfAffineSpec& s, const UnitMoments& m, std::string_view height_name,
+               std::string_view slope_name) {
+  COATFFT_REQUIRE(m.height2 > 0, "self-affine surface: no Fourier mode lies between the cut-offs");
+  if (s.rms_height) {
+    const double h = *s.rms_height;
+    COATFFT_REQUIRE(std::isfinite(h) && h >= min_rms_height && h <= max_rms_height,
+                    "self-affine surface: ", height_name, " = ", h, " m must be in [",
+                    min_rms_height, ", ", max_rms_height, "] m (docs/surfaces.md, \"Limits\")");
+    return;
+  }
+  const double slope = *s.rms_slope;
+  COATFFT_REQUIRE(std::isfinite(slope) && slope > 0 && slope <= max_rms_slope,
+                  "self-affine surface: ", slope_name, " = ", slope, " must be in (0, ",
+                  max_rms_slope, "] (docs/surfaces.md, \"Limits\")");
+  const double height = slope * std::sqrt(m.height2 / m.slope2);
+  COATFFT_REQUIRE(height >= min_rms_height && height <= max_rms_height,
+                  "self-affine surface: ", slope_name, " = ", slope, " gives an rms height of ",
+                  height, " m on this grid and spectrum, outside [", min_rms_height, ", ",
+                  max_rms_height, "] m (docs/surfaces.md, \"Limits\")");
 }
 
 // Random phases, in a fixed order, with the symmetry that makes the field real: on the columns
@@ -134,13 +174,19 @@ double spectral_rms_slope(const Grid& g, const Field& h) {
   return std::sqrt(sum);
 }
 
+void check_self_affine_spec(const Grid& grid, const SelfAffineSpec& spec,
+                            std::string_view height_name, std::string_view slope_name) {
+  const Cutoffs cutoffs = validate_spectrum(grid, spec);
+  check_rms(spec, unit_moments(grid, spec.hurst, cutoffs), height_name, slope_name);
+}
+
 Field self_affine_surface(const Grid& grid, const SelfAffineSpec& spec) {
-  const Cutoffs cutoffs = validate(grid, spec);
+  check_self_affine_spec(grid, spec);
+  const Cutoffs cutoffs = validate_spectrum(grid, spec);
   HalfSpectrum half(grid.nx(), grid.ny());
   fill(grid, spec, cutoffs, half);
   Field h = inverse(grid, half);
   const double rms = spec.rms_height ? std::sqrt(h.square().mean()) : spectral_rms_slope(grid, h);
-  COATFFT_REQUIRE(rms > 0, "self-affine surface: no Fourier mode lies between the cut-offs");
   return h * ((spec.rms_height ? *spec.rms_height : *spec.rms_slope) / rms);
 }
 

@@ -11,6 +11,7 @@
 // average), zero mean, and is periodic over the domain. docs/surfaces.md.
 #include <cstdint>
 #include <optional>
+#include <string_view>
 
 #include "../core/grid.hpp"
 #include "../core/types.hpp"
@@ -30,9 +31,25 @@ struct SelfAffineSpec {
   std::uint64_t seed = 0;  ///< the same seed gives the same surface (bit for bit)
 };
 
+/// The rms heights [m] a surface may have: from a femtometre (far below any measured roughness;
+/// the spectrum's smallest modes stay normal doubles) to a metre (far above any contact
+/// topography; squares and Fourier sums stay far from overflow). docs/surfaces.md, "Limits".
+inline constexpr double min_rms_height = 1e-15, max_rms_height = 1.0;
+/// The largest rms slope [-] (a mean inclination of 84 degrees: beyond any real surface).
+inline constexpr double max_rms_slope = 10.0;
+
+/// Refuses (InvalidArgument) what self_affine_surface would refuse, before any work: H outside
+/// (0, 1], not exactly one rms, cut-offs not with 2 max(dx, dy) <= lambda_s < lambda_r, no mode
+/// between the cut-offs, an rms height outside [min_rms_height, max_rms_height], an rms slope above
+/// max_rms_slope or one whose surface would have an rms height outside that range (the ratio of
+/// the two is fixed by the spectrum, not by the phases). The rms values are named `height_name`
+/// and `slope_name` in the messages (the command line passes its flags).
+void check_self_affine_spec(const Grid& grid, const SelfAffineSpec& spec,
+                            std::string_view height_name = "the rms height",
+                            std::string_view slope_name = "the rms slope");
+
 /// The surface h(x_i, y_j) [m], shape (nx, ny) of `grid` (both even, >= 2). InvalidArgument for
-/// a bad spec (H outside (0, 1], not exactly one rms, cut-offs not with
-/// 2 max(dx, dy) <= lambda_s < lambda_r, or a spectrum with no mode between the cut-offs).
+/// a bad spec (check_self_affine_spec).
 Field self_affine_surface(const Grid& grid, const SelfAffineSpec& spec);
 
 /// The spectral rms slope sqrt(mean |grad h|^2) of a periodic field on `grid` [-]: the slope of its

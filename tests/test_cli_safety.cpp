@@ -212,6 +212,16 @@ TEST_CASE("counts and sizes have caps, refused before memory is spent", "[cli][s
   CHECK_FALSE(fs::exists(out));
 }
 
+TEST_CASE("--max-memory beyond what 64 bits address is refused by name", "[cli][safety]") {
+  const fs::path good = scene_with("safety_memory_good", "", "");
+  // 1.1e32 bytes and, through the unit, an infinite double: both were accepted as limits.
+  for (const char* size : {"99999999999999999999T", "1e300T", "17179869185G"}) {
+    INFO(size);
+    check_refusal(run_coatfft("check " + good.string() + " --max-memory " + size), "--max-memory");
+  }
+  CHECK(run_coatfft("check " + good.string() + " --max-memory 16777215T").status == 0);
+}
+
 TEST_CASE("extreme numbers are refused with the key, never as an internal error", "[cli][safety]") {
   const std::array cases{
       BadCase{"lx_2p53", "lx = 3.0e-3", "lx = 9007199254740993", "[pressure] a"},

@@ -71,3 +71,58 @@ TEST_CASE("coatfft surface refuses bad options with one line and writes nothing"
   CHECK(r.stderr_text.find(".npy") != std::string::npos);
   CHECK_FALSE(fs::exists(txt));
 }
+
+TEST_CASE("coatfft surface refuses rms values, seeds and outputs it cannot honour, by flag",
+          "[cli_surface]") {
+  const struct {
+    const char* name;
+    std::string args;
+    const char* must_mention;
+  } cases[] = {
+      // Heights of 1e296 m would overflow the printed rms (it read "inf" and "-nan").
+      {"slope_huge", kSurface + " --rms-slope 1e300", "--rms-slope"},
+      // A denormal rms height rounded the surface to zeros ("0 m").
+      {"height_denormal", kSurface + " --rms-height 1e-320", "--rms-height"},
+      {"height_huge", kSurface + " --rms-height 2", "--rms-height"},
+      // A slope within its own range whose surface would be sub-femtometre.
+      {"slope_tiny", kSurface + " --rms-slope 1e-14", "--rms-slope"},
+      // CLI11 saturated these two to 2^64 - 1: the same surface as the largest seed.
+      {"seed_negative", kSurface + " --rms-height 1e-6 --seed -1", "--seed"},
+      {"seed_2p64", kSurface + " --rms-height 1e-6 --seed 18446744073709551616", "--seed"},
+      {"seed_exponent", kSurface + " --rms-height 1e-6 --seed 1e23", "--seed"},
+      {"seed_fraction", kSurface + " --rms-height 1e-6 --seed 1.5", "--seed"},
+  };
+  for (const auto& c : cases) {
+    INFO(c.name);
+    const fs::path out = scratch(std::string("surface_limit_") + c.name + ".npy");
+    fs::remove(out);
+    const auto r = run_coatfft("surface -o " + out.string() + c.args);
+    INFO(r.stderr_text);
+    CHECK(r.status == 2);
+    CHECK(std::count(r.stderr_text.begin(), r.stderr_text.end(), '\n') == 1);
+    CHECK(r.stderr_text.find(c.must_mention) != std::string::npos);
+    CHECK_FALSE(fs::exists(out));
+  }
+  // The largest seed is a seed like any other.
+  const fs::path top = scratch("surface_seed_top.npy");
+  fs::remove(top);
+  CHECK(run_coatfft("surface -o " + top.string() + kSurface +
+                    " --rms-height 1e-6 --seed 18446744073709551615")
+            .status == 0);
+  CHECK(fs::exists(top));
+}
+
+TEST_CASE("coatfft surface names a missing output directory as given, not its staging file",
+          "[cli_surface]") {
+  const fs::path dir = scratch("surface_missing_dir");
+  fs::remove_all(dir);
+  const std::string target = (dir / "x.npy").string();
+  const auto r = run_coatfft("surface -o " + target + kSurface + " --rms-height 1e-6");
+  INFO(r.stderr_text);
+  CHECK(r.status == 2);
+  CHECK(std::count(r.stderr_text.begin(), r.stderr_text.end(), '\n') == 1);
+  CHECK(r.stderr_text.find("does not exist") != std::string::npos);
+  CHECK(r.stderr_text.find(dir.string()) != std::string::npos);
+  CHECK(r.stderr_text.find(".partial") == std::string::npos);
+  CHECK_FALSE(fs::exists(dir));
+}

@@ -161,3 +161,42 @@ TEST_CASE("hankel_displacement refuses bad arguments", "[hankel][bad_input]") {
   CHECK_THROWS_AS(coatfft::hankel_displacement(frf, AxisymmetricLoad::hertz, 1.0, 1.0, 0.0, 0.1),
                   coatfft::InvalidArgument);
 }
+
+TEST_CASE("hankel_displacement far away: the substrate's half-space, never NaN",
+          "[hankel][far_field]") {
+  const Material tin(4e11, 0.25), steel(2.1e11, 0.3), polymer(3e9, 0.4);
+  const double a = 1e-4, p = 1e9;
+  const HalfSpaceFrf half_space(steel);
+  const CoatedFrf hard(tin, 0.3 * a, steel, Interface::bonded);
+  const CoatedFrf soft(polymer, 0.5 * a, steel, Interface::frictionless);
+  // Beyond the quadrature's reach: the half-space of compliance c0 under the load of force
+  // F = 2 pi p a^2 Phi(0), u = F c0 / (2 pi r) to (a/r)^2. It read NaN at r = 1e300 m (r^2
+  // overflowed in the Hertz closed form); there u is subnormal, with 13 digits left.
+  for (const double r : {1e7, 1e100, 1e300}) {
+    for (const coatfft::Frf* frf : std::vector<const coatfft::Frf*>{&half_space, &hard, &soft}) {
+      for (auto load : {AxisymmetricLoad::hertz, AxisymmetricLoad::uniform_disk}) {
+        INFO(frf->name() << ", load " << static_cast<int>(load) << ", r = " << r);
+        const double phi0 = load == AxisymmetricLoad::hertz ? 1.0 / 3.0 : 0.5;
+        const double u = coatfft::hankel_displacement(*frf, load, p, a, r);
+        REQUIRE(std::isfinite(u));
+        CHECK(u == Approx(p * a * a * phi0 * frf->c0() / r).epsilon(r == 1e300 ? 1e-12 : 1e-14));
+      }
+    }
+  }
+  const double e_star = steel.plane_strain_modulus();
+  CHECK(coatfft::hertz_displacement(1e300, p, 1.0, e_star) ==
+        Approx(2.0 * p / (3.0 * e_star) / 1e300).epsilon(1e-14));
+  CHECK(coatfft::uniform_disk_displacement(1e300, p, 1.0, e_star) ==
+        Approx(p / e_star / 1e300).epsilon(1e-14));
+  // Where the panels reach, the quadrature approaches that half-space like r^-2: the k^2 term of
+  // k H (its odd terms give nothing outside the load), the law the far field's bound rests on.
+  const auto from_far_field = [&](double r) {
+    const double u = coatfft::hankel_displacement(hard, AxisymmetricLoad::hertz, p, a, r);
+    return u / coatfft::hertz_displacement(r, p, a, 2.0 / hard.c0()) - 1.0;
+  };
+  const double near = from_far_field(1e-2), far = from_far_field(3e-2);
+  CHECK(near / far == Approx(9.0).epsilon(1e-2));
+  // Between the two (beyond the panels, the far field not yet within rel_tol): refused by r.
+  CHECK_THROWS_WITH(coatfft::hankel_displacement(hard, AxisymmetricLoad::hertz, p, a, 10.0, 1e-12),
+                    Catch::Contains("r = 10 m") && Catch::Contains("far field"));
+}

@@ -248,3 +248,26 @@ TEST_CASE("stress operator: a typed depth equal to a running-sum interface is th
   // And the sides differ: sigma_xx jumps across the interface, by 6.7e7 Pa (6.7 % of p0) at most.
   CHECK((s[0][0][s_xx] - s[1][0][s_xx]).abs().maxCoeff() > 3e7);
 }
+
+TEST_CASE("von Mises is finite wherever its value is representable", "[stress][von_mises]") {
+  // A stress state and its von Mises value at 1 Pa, scaled by powers of ten up to 1e300 Pa and
+  // down to 1e-300 Pa: the unscaled squares overflowed to inf above ~1e154 Pa and underflowed
+  // to 0 below ~1e-154 Pa.
+  const StressVector unit{1.0, -0.5, 0.25, 0.3, -0.2, 0.1};
+  const double expected_unit = von_mises(unit);
+  for (const double scale : {1e300, 1e200, 1e-200, 1e-300}) {
+    INFO(scale);
+    StressVector s = unit;
+    for (double& v : s) v *= scale;
+    const double vm = von_mises(s);
+    REQUIRE(std::isfinite(vm));
+    CHECK(vm == Approx(expected_unit * scale).epsilon(1e-14));
+  }
+  // Differences of components near the largest double: (xx - yy) alone overflows.
+  const double big = 0.8e308;
+  const double vm = von_mises({big, -big, 0.0, 0.0, 0.0, 0.0});
+  REQUIRE(std::isfinite(vm));
+  CHECK(vm == Approx(std::sqrt(3.0) * big).epsilon(1e-14));
+  CHECK(von_mises({0, 0, 0, 0, 0, 0}) == 0.0);
+  CHECK(std::isnan(von_mises({std::nan(""), 0, 0, 0, 0, 0})));
+}

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <complex>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 #include "convolution/fftw_plan.hpp"
@@ -124,4 +125,35 @@ TEST_CASE("self-affine surfaces refuse bad specs", "[surfaces]") {
   refused([&](SelfAffineSpec& s) { s.short_cutoff = g.dx(); });  // below Nyquist
   refused([](SelfAffineSpec& s) { s.long_cutoff = 1e-5; });      // below the short cut-off
   CHECK_THROWS_AS(self_affine_surface(Grid(33, 32, 1e-3, 1e-3), ok), InvalidArgument);
+}
+
+TEST_CASE("self-affine surfaces refuse rms values that overflow or underflow", "[surfaces]") {
+  const Grid g(32, 32, 1e-3, 1e-3);
+  const auto spec = [](std::optional<double> height, std::optional<double> slope) {
+    SelfAffineSpec s;
+    s.rms_height = height;
+    s.rms_slope = slope;
+    return s;
+  };
+  // A denormal height was scaled to zeros; a slope of 1e300 to heights whose squares overflow.
+  CHECK_THROWS_AS(self_affine_surface(g, spec(1e-320, {})), InvalidArgument);
+  CHECK_THROWS_AS(self_affine_surface(g, spec(1.5 * max_rms_height, {})), InvalidArgument);
+  CHECK_THROWS_AS(self_affine_surface(g, spec({}, 1e300)), InvalidArgument);
+  CHECK_THROWS_AS(self_affine_surface(g, spec({}, 1.5 * max_rms_slope)), InvalidArgument);
+  // In its own range, but its surface would be far below a femtometre on a millimetre domain.
+  CHECK_THROWS_AS(self_affine_surface(g, spec({}, 1e-14)), InvalidArgument);
+  // The limits themselves are made, finite and as asked.
+  for (const double h : {min_rms_height, max_rms_height}) {
+    const Field z = self_affine_surface(g, spec(h, {}));
+    CHECK(z.isFinite().all());
+    CHECK(std::sqrt(z.square().mean()) == Approx(h).epsilon(1e-13));
+  }
+  const Field steep = self_affine_surface(g, spec({}, max_rms_slope));
+  CHECK(steep.isFinite().all());
+  CHECK(spectral_rms_slope(g, steep) == Approx(max_rms_slope).epsilon(1e-13));
+  // The check names the values as its caller does (the command line: its flags).
+  CHECK_THROWS_WITH(check_self_affine_spec(g, spec(1e-320, {}), "--rms-height", "--rms-slope"),
+                    Catch::Contains("--rms-height"));
+  CHECK_THROWS_WITH(check_self_affine_spec(g, spec({}, 1e-14), "--rms-height", "--rms-slope"),
+                    Catch::Contains("--rms-slope"));
 }

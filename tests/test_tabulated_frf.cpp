@@ -228,3 +228,27 @@ TEST_CASE("TabulatedFrf evaluates from several threads at once", "[frf][table]")
   for (std::thread& thread : threads) thread.join();
   for (const auto& result : results) CHECK(result == serial);
 }
+
+TEST_CASE("TabulatedFrf: given limits that contradict the table's ends are refused or warned",
+          "[frf][table]") {
+  const LayerStack body({{tin, 1e-6, Interface::bonded}}, steel);
+  const auto exact = coatfft::make_frf(body);
+  const Samples s = sample(*exact, 1e-6, 20, 1e-9, 1e3);
+  const double c0 = exact->c0(), c_inf = exact->c_inf();
+  // The true limits: the ends reach them, nothing to say.
+  CHECK(TabulatedFrf(s.k, s.H, c0, c_inf).warnings().empty());
+  // A limit 1e8 times off (a unit slip) made uz thousands of times too large, silently.
+  CHECK_THROWS_WITH(TabulatedFrf(s.k, s.H, 1e8 * c0, c_inf),
+                    Contains("c0 = ") && Contains("factor 1e+08") && Contains("contradict"));
+  CHECK_THROWS_WITH(TabulatedFrf(s.k, s.H, c0, 1e-8 * c_inf),
+                    Contains("c_inf = ") && Contains("factor 1e+08") && Contains("contradict"));
+  CHECK_THROWS_AS(TabulatedFrf(s.k, s.H, c0 / 11.0, c_inf), InvalidArgument);
+  CHECK_NOTHROW(TabulatedFrf(s.k, s.H, c0 / 9.0, c_inf));
+  // 5 % off: kept, with one warning naming the limit.
+  const TabulatedFrf off(s.k, s.H, 1.05 * c0, c_inf);
+  REQUIRE(off.warnings().size() == 1);
+  CHECK_THAT(off.warnings()[0], Contains("c0 = ") && Contains("differ by 5"));
+  const TabulatedFrf both(s.k, s.H, 0.98 * c0, 1.02 * c_inf);
+  CHECK(both.warnings().size() == 2);
+  CHECK(TabulatedFrf(s.k, s.H, 1.005 * c0, c_inf).warnings().empty());
+}

@@ -228,6 +228,43 @@ TEST_CASE("coatfft run on a table body reports it and matches the stack", "[cli]
   CHECK((u_table - u_stack).abs().maxCoeff() <= 1e-6 * u_stack.abs().maxCoeff());
 }
 
+TEST_CASE("the table coatfft frf writes is read back as an [frf] table", "[cli][validate_frf]") {
+  // The coated stack's scene, tabulated by `coatfft frf` (columns k,kh_total,frf,
+  // frf_over_substrate) over k h = 1e-9 .. 1e3 at per_decade points per decade, flat enough at
+  // both ends for c0 and c_inf to be estimated, then given back as the [frf] of the same scene.
+  const fs::path stack_scene = write_table_scene("vfrf_roundtrip_stack", coated_body);
+  std::string text = file_text(stack_scene);
+  text.erase(text.find("[frf]"), text.find("[substrate]") - text.find("[frf]"));
+  std::ofstream(stack_scene) << text;
+  const fs::path table = scratch("vfrf_roundtrip.csv");
+  fs::remove(table);
+  const double h = coated_stack().total_thickness();
+  auto result = run_captured("frf " + stack_scene.string() + " -o " + table.string() + " --k-min " +
+                             seventeen_digits(1e-9 / h) + " --k-max " + seventeen_digits(1e3 / h) +
+                             " --points " + std::to_string(12 * per_decade + 1));
+  INFO(result.err);
+  REQUIRE(result.status == 0);
+  REQUIRE(file_text(table).rfind("k,kh_total,frf,frf_over_substrate\n", 0) == 0);
+
+  const fs::path table_scene = write_table_scene("vfrf_roundtrip", coated_body);
+  const fs::path table_out = scratch("vfrf_roundtrip_out"), stack_out = scratch("vfrf_rt_out");
+  fs::remove_all(table_out);
+  fs::remove_all(stack_out);
+  result = run_captured("run " + table_scene.string() + " -o " + table_out.string());
+  INFO(result.err);
+  REQUIRE(result.status == 0);
+  REQUIRE(run_captured("run " + stack_scene.string() + " -o " + stack_out.string()).status == 0);
+  nlohmann::json summary;
+  std::ifstream(table_out / "summary.json") >> summary;
+  CHECK(summary["frf"] == "table");
+  CHECK(summary["frf_table"]["points"] == 12 * per_decade + 1);
+  // As for a table written here: 80 points per decade interpolate H to <= 2e-7, and frf-split
+  // is linear in H, so the displacements agree to validate-frf's default tolerance, 1e-6.
+  const coatfft::Field u_table = coatfft::cli::read_npy(table_out / "uz.npy");
+  const coatfft::Field u_stack = coatfft::cli::read_npy(stack_out / "uz.npy");
+  CHECK((u_table - u_stack).abs().maxCoeff() <= 1e-6 * u_stack.abs().maxCoeff());
+}
+
 TEST_CASE("bad FRF tables and [frf] scenes are refused with exit 2, one line, no output",
           "[cli][validate_frf][bad_input]") {
   const auto table_with = [](const std::string& name, const std::string& text) {
@@ -250,8 +287,12 @@ TEST_CASE("bad FRF tables and [frf] scenes are refused with exit 2, one line, no
            BadTable{"vfrf_nan", "# comment\nk,H\n1e2,nan\n" + rows.substr(10),
                     "vfrf_nan.csv:3: row 0: H = nan"},
            BadTable{"vfrf_few", "k,H\n1e2,2e-11\n1e3,2e-12\n", "2 rows"},
-           BadTable{"vfrf_no_header", rows, "vfrf_no_header.csv:1: column \"1e2\" is not k or H"},
-           BadTable{"vfrf_extra", "k,H,note\n" + rows, "column \"note\" is not k or H"},
+           BadTable{"vfrf_no_header", rows, "vfrf_no_header.csv:1: the header names no column k"},
+           BadTable{"vfrf_no_H", "k,note\n" + rows,
+                    "vfrf_no_H.csv:1: the header names no column H"},
+           BadTable{"vfrf_H_and_frf", "k,H,frf\n" + rows, "column frf is named twice"},
+           BadTable{"vfrf_short_row", "k,kh,H\n" + rows,
+                    "vfrf_short_row.csv:2: row 0 has 2 values"},
            BadTable{"vfrf_word", "H,k\n2e-11,1e2\nabc,1e3\n", "vfrf_word.csv:3: row 1, column 0"},
            BadTable{"vfrf_not_flat",
                     "k,H\n1e2,2e-11\n1e3,2.1e-12\n1e4,2e-13\n1e5,2e-14\n1e6,2e-15\n",
@@ -272,6 +313,29 @@ TEST_CASE("bad FRF tables and [frf] scenes are refused with exit 2, one line, no
               "table body ([frf])"},
   };
   for (const BadCase& c : scene_cases) check_refused(base, c);
+}
+
+TEST_CASE("[frf] c0 and c_inf that contradict the table's ends are refused, or warned about",
+          "[cli][validate_frf][bad_input]") {
+  // k H = 2e-9 1/Pa at every row: its ends are both limits.
+  std::ofstream(scratch("vfrf_limits.csv"))
+      << "k,H\n1e2,2e-11\n1e3,2e-12\n1e4,2e-13\n1e5,2e-14\n1e6,2e-15\n";
+  const std::string base = file_text(write_table_scene("vfrf_limits", steel_body, ""));
+  check_refused(base, BadCase{"vfrf_c0_1e8", "[frf]\n", "[frf]\nc0 = 0.2\n",
+                              "TabulatedFrf: c0 = 0.2 1/Pa and the table's k H = "});
+  check_refused(base, BadCase{"vfrf_c_inf_1e8", "[frf]\n", "[frf]\nc_inf = 2e-17\n",
+                              "differ by a factor 1e+08"});
+  // 5 % off: the run goes on, and says so on stderr and in summary.json.
+  const fs::path scene = write_scene(base, "vfrf_c0_5pc", "[frf]\n", "[frf]\nc0 = 2.1e-9\n");
+  const fs::path out = scratch("vfrf_c0_5pc_out");
+  fs::remove_all(out);
+  const auto result = run_captured("run " + scene.string() + " -o " + out.string());
+  INFO(result.err);
+  REQUIRE(result.status == 0);
+  CHECK(result.err.find("coatfft: warning: [frf] c0 = 2.1e-09 1/Pa") != std::string::npos);
+  const nlohmann::json summary = read_summary(out);
+  REQUIRE(summary["warnings"].size() == 1);
+  CHECK(summary["warnings"][0].get<std::string>().find("differ by 5") != std::string::npos);
 }
 
 TEST_CASE("validate-frf refuses what it cannot validate", "[cli][validate_frf][bad_input]") {

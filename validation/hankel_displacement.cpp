@@ -171,6 +171,67 @@ double asymptotic_tail(int n, AxisymmetricLoad load, double rho, double S, doubl
          oscillatory_tail(difference_part, 1.0 - rho, S, 0.5 * epsabs);
 }
 
+// The most panels one call integrates (each an adaptive 21-point rule, ~(a + r) K / pi of them
+// resolve J0(kr) up to K): seconds of FRF calls. Beyond, the far field is used or r is
+// refused (far_field).
+constexpr double kMaxPanels = 1 << 20;
+
+double panel_count(double hi, double a, double r) {
+  return std::ceil(hi * (a + r) / pi);
+}
+
+// k H(k) = c0 + d1 k + d2 k^2 + d3 k^3 + ... near k = 0, from three samples at k_s/4, k_s/2, k_s,
+// k_s the largest k of 8 consecutive halvings from k_max with |k H/c0 - 1| <= 1e-4 (well inside
+// the series' range). Returns k_s and a bound on |d2|: the fitted value, the next term's share
+// at k_s and the rounding of k H (1e-15 relative) divided by k^2.
+struct SmallWavenumbers {
+  double k_s, d2_bound;
+};
+
+SmallWavenumbers second_order_bound(const Frf& frf, double k_max) {
+  const double c0 = frf.c0();
+  const auto q = [&](double k) { return (k * frf(k) - c0) / k; };
+  int run = 0;
+  double k_s = 0.0;
+  for (double k = k_max; run < 8; k *= 0.5) {
+    if (k < 1e-280 * k_max)
+      throw Error(detail::concat("hankel_displacement: k H(k) of FRF \"", frf.name(),
+                                 "\" does not approach c0() = ", c0, " as k -> 0"));
+    if (std::abs(k * frf(k) / c0 - 1.0) <= 1e-4) {
+      if (run++ == 0) k_s = k;
+    } else {
+      run = 0;
+    }
+  }
+  const double k1 = 0.25 * k_s, k2 = 0.5 * k_s, k3 = k_s;
+  const double q1 = q(k1), q2 = q(k2), q3 = q(k3);
+  const double q12 = (q2 - q1) / (k2 - k1), q23 = (q3 - q2) / (k3 - k2);
+  const double d3 = (q23 - q12) / (k3 - k1);
+  const double d2 = q12 - d3 * (k1 + k2);
+  return {k_s, std::abs(d2) + std::abs(d3) * k_s + 1e-15 * c0 * 64.0 / (k_s * k_s)};
+}
+
+// u_z at an r too large for the panels (panel_count > kMaxPanels). Outside the load the odd powers
+// of k in k H Phi(ka) contribute nothing (k^(2m+1) Phi(ka) transforms to a derivative of the
+// pressure, 0 for r > a) and the even ones k^(2m) like r^-(2m+1): u_z is the half-space of
+// compliance c0 (E* = 2/c0) under the same load, within a relative d2/(c0 r^2). That is returned
+// where it is below rel_tol/10 (and r >= 100/k_s, where the series holds, and r >= 10 a, where
+// the k^2 term's field is that of a point force); otherwise r is refused.
+double far_field(const Frf& frf, AxisymmetricLoad load, double amplitude, double a, double r,
+                 double rel_tol, double k_max) {
+  const double c0 = frf.c0();
+  const SmallWavenumbers small = second_order_bound(frf, k_max);
+  const double r_far =
+      std::max({std::sqrt(10.0 * small.d2_bound / (rel_tol * c0)), 100.0 / small.k_s, 10.0 * a});
+  const double r_quadrature = pi * kMaxPanels / k_max - a;
+  COATFFT_REQUIRE(r >= r_far, "hankel_displacement: r = ", r, " m is beyond the ", r_quadrature,
+                  " m the quadrature resolves for FRF \"", frf.name(), "\" and short of the ",
+                  r_far, " m from which its far field holds to rel_tol = ", rel_tol);
+  const double e_star = 2.0 / c0;
+  return load == AxisymmetricLoad::hertz ? hertz_displacement(r, amplitude, a, e_star)
+                                         : uniform_disk_displacement(r, amplitude, a, e_star);
+}
+
 }  // namespace
 
 double axisymmetric_load_transform(AxisymmetricLoad load, double amplitude, double a, double k) {
@@ -197,6 +258,12 @@ double hankel_displacement(const Frf& frf, AxisymmetricLoad load, double amplitu
   // u ~ amplitude a C: the dimensionless integrals below are O(max(C0, Cinf)/a) or O(1).
   const double scale = std::max(frf.c0(), c_inf) / a;
   const double k_converged = converged_wavenumber(frf, a, 1e-3 * rel_tol);
+  // The direct route's panels reach max(k_converged, 500/min(a, r)) (hankel_load_integral).
+  const double k_max = route == HankelRoute::split
+                           ? k_converged
+                           : std::max(k_converged, 500.0 / std::min(a, r > 0 ? r : a));
+  if (panel_count(k_max, a, r) > kMaxPanels)
+    return far_field(frf, load, amplitude, a, r, rel_tol, k_max);
   // u = amplitude a^2 \int_0^inf k H(k) Phi(ka) J0(kr) dk (the 2 pi of P^ cancels the 1/2pi).
   if (route == HankelRoute::split) {
     const std::function<double(double)> remainder = [&](double k) {

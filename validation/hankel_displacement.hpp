@@ -33,6 +33,10 @@ double axisymmetric_load_transform(AxisymmetricLoad load, double amplitude, doub
 /// InvalidArgument on bad arguments and Error when the quadrature fails to reach the tolerance.
 /// Cost: ~(a + r)/h_top quadrature panels of 21 FRF calls (split route); safe to call from
 /// several threads at once (GSL's error handler is switched off for the duration, ref-counted).
+/// Where more than 2^20 panels would be needed, the far field: the half-space of compliance
+/// c0 under the same load (E* = 2/c0), whose relative error d2/(c0 r^2) (d2 the k^2 coefficient
+/// of k H near k = 0, fitted from three samples) must be below rel_tol/10, else InvalidArgument
+/// naming r and both distances. Finite for every finite r.
 double hankel_displacement(const Frf& frf, AxisymmetricLoad load, double amplitude, double a,
                            double r, double rel_tol = 1e-10,
                            HankelRoute route = HankelRoute::split);

@@ -3,7 +3,9 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <memory>
 #include <string>
+#include <utility>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
@@ -167,11 +169,18 @@ void bind_frfs(py::module_& m) {
       .def_property_readonly("function", &UserFrf::function)
       .def_property_readonly("calls", &UserFrf::calls, "calls of the function so far");
   py::class_<TabulatedFrf, Frf, std::shared_ptr<TabulatedFrf>>(m, "TabulatedFrf")
-      .def(py::init<std::vector<double>, std::vector<double>, std::optional<double>,
-                    std::optional<double>>(),
+      .def(py::init([](std::vector<double> k, std::vector<double> H, std::optional<double> c0,
+                       std::optional<double> c_inf) {
+             auto table = std::make_shared<TabulatedFrf>(std::move(k), std::move(H), c0, c_inf);
+             // A given limit far from the table's end: RuntimeWarning, as the program warns.
+             for (const std::string& warning : table->warnings())
+               warn_each(py::make_tuple("TabulatedFrf: " + warning));
+             return table;
+           }),
            "k"_a, "H"_a, "c0"_a = py::none(), "c_inf"_a = py::none(),
            "An FRF from a table: k [rad/m] ascending, H [m/Pa]; c0, c_inf estimated when not "
-           "given.")
+           "given, refused when more than 10 times off the table's ends (RuntimeWarning above "
+           "1 %).")
       .def_property_readonly("c0_estimated", &TabulatedFrf::c0_estimated)
       .def_property_readonly("c_inf_estimated", &TabulatedFrf::c_inf_estimated);
   m.def(

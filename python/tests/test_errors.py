@@ -689,3 +689,19 @@ def test_one_operator_two_threads():
     for r in results["contact"]:
         np.testing.assert_array_equal(r.pressure, contact.pressure)
         assert r.approach == contact.approach and r.iterations == contact.iterations
+
+
+def test_tabulated_frf_limits_that_contradict_the_table():
+    k = np.logspace(0, 4, 9)
+    h = 1 / k  # k H = 1 at both ends
+    raises(ValueError, r"TabulatedFrf: c0 = 1e\+08 1/Pa and the table's k H = 1 1/Pa .* differ by "
+           r"a factor 1e\+08, more than 10: they contradict each other",
+           lambda: coatfft.TabulatedFrf(k, h, c0=1e8, c_inf=1))
+    raises(ValueError, r"c_inf = 1e-08 1/Pa .* factor 1e\+08",
+           lambda: coatfft.TabulatedFrf(k, h, c0=1, c_inf=1e-8))
+    with pytest.warns(RuntimeWarning, match=r"c0 = 1.05 1/Pa .* differ by 5"):
+        table = coatfft.TabulatedFrf(k, h, c0=1.05, c_inf=1)
+    assert table.c0 == 1.05
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        coatfft.TabulatedFrf(k, h, c0=1.005, c_inf=1)

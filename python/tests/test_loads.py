@@ -202,6 +202,18 @@ def test_hankel_displacement_of_half_space(steel):
                                rtol=1e-8)
 
 
+def test_hankel_displacement_far_away(steel, tin_stack):
+    """Far beyond the quadrature's reach the substrate's half-space: u = F c0 / (2 pi r) with
+    F = 2 pi p0 a^2 / 3 (it was NaN at r = 1e300 m), finite and exact for a coated body too."""
+    p0, a = 1e9, 1e-3
+    r = np.array([1e10, 1e100, 1e300])
+    c0 = 2 / steel.E_star
+    for body in (steel, tin_stack):
+        u = coatfft.hankel_displacement(body, r, p0, a)
+        assert np.all(np.isfinite(u))
+        np.testing.assert_allclose(u, p0 * a * a * c0 / 3 / r, rtol=1e-12)
+
+
 def test_hankel_displacement_quadrature(steel, tin):
     """A UserFrf with a part of k H that is not constant, so that the integral is a quadrature:
     H = c_inf/k + (c0 - c_inf) exp(-k h)/k, whose second term is Boussinesq's kernel

@@ -38,6 +38,10 @@ def test_von_mises_formula():
                        + 3 * (yz**2 + xz**2 + xy**2))
     np.testing.assert_allclose(coatfft.von_mises(s), expected, rtol=1e-15, atol=0)
     assert coatfft.von_mises(s[0]).shape == (4, 5)
+    # Scaled by the largest component: finite wherever the value is (the squares overflowed).
+    big = coatfft.von_mises(s * 1e300)
+    assert np.all(np.isfinite(big))
+    np.testing.assert_allclose(big, expected * 1e300, rtol=1e-14, atol=0)
 
 
 def test_equals_the_program(coatfft_exe, tmp_path, steel, tin):
