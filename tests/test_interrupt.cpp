@@ -153,7 +153,7 @@ TEST_CASE("parallel_chunks: the calling thread, once done, asks the hook for a b
   CHECK(std::chrono::steady_clock::now() - start < 10s);
 }
 
-TEST_CASE("an interrupted operator set-up throws; set-up and operators work afterwards",
+TEST_CASE("an interrupted operator set-up throws, and set-up and operators work afterwards",
           "[interrupt]") {
   const Grid grid = coated_grid();
   const LayerStack body = coated_body();
@@ -175,7 +175,7 @@ TEST_CASE("an interrupted operator set-up throws; set-up and operators work afte
   CHECK((u_again == u_before).all());
 }
 
-TEST_CASE("an interrupted contact solve throws; the solver and its operator solve again",
+TEST_CASE("an interrupted contact solve throws, and the solver and its operator solve again",
           "[interrupt]") {
   const Grid grid(64, 64, 0.4e-3, 0.4e-3);
   const BuiltOperator built = make_operator(grid, LayerStack(steel), OperatorOptions{});
