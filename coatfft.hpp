@@ -17,6 +17,7 @@
 #include "convolution/surface_operator.hpp"
 #include "core/error.hpp"
 #include "core/grid.hpp"
+#include "core/interrupt.hpp"
 #include "core/norms.hpp"
 #include "core/threads.hpp"
 #include "core/types.hpp"

@@ -1,7 +1,7 @@
 // The coatfft command-line program. This is the only place where exceptions become exit codes:
 // 2 for bad input (coatfft::InvalidArgument, bad flags), 3 for a contact solve that did not
 // converge (outputs are written, summary.json says converged = false), 1 for a failed
-// validate-frf check and anything else.
+// validate-frf check and anything else. A run stopped by Ctrl-C ends by SIGINT (status 130).
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <string_view>
@@ -10,10 +10,12 @@
 #include "cli/frf_command.hpp"
 #include "cli/resources.hpp"
 #include "cli/run_command.hpp"
+#include "cli/signal_cleanup.hpp"
 #include "cli/surface_command.hpp"
 #include "cli/validate_frf_command.hpp"
 #include "core/detail/shorten.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 
 namespace {
 
@@ -123,6 +125,10 @@ int main(int argc, char** argv) {
       coatfft::cli::check_command(check);
     }
     if (*validate_cmd && !coatfft::cli::validate_frf_command(validate)) return 1;
+  } catch (const coatfft::Interrupted&) {
+    // Ctrl-C during `run`: the computation has stopped and unwound, its staged output removed.
+    std::cerr << "coatfft: interrupted\n" << std::flush;
+    coatfft::cli::end_by_sigint();
   } catch (const coatfft::InvalidArgument& e) {
     std::cerr << "coatfft: error: " << e.what() << '\n';
     return 2;

@@ -39,6 +39,7 @@ void Progress::end_line() {
 void Progress::stage(std::string_view what, Clock::time_point now) {
   // Not throttled: a run has a handful of stages, and a stage left on the screen after it has
   // ended would be wrong for as long as the next one takes.
+  stage_ = what;
   if (!due(now)) return;
   end_line();
   out_ << prefix(now) << what << '\n' << std::flush;
@@ -46,18 +47,27 @@ void Progress::stage(std::string_view what, Clock::time_point now) {
   printed_ = true;
 }
 
-void Progress::iteration(int k, double residual, Clock::time_point now) {
-  if (!due(now) || now - last_print_ < interval) return;
-  std::ostringstream text;
-  text << prefix(now) << "contact solve: iteration " << k << ", residual " << std::setprecision(2)
-       << residual;
-  std::string line = text.str();
+// One line, rewritten in place ('\r') by the next.
+void Progress::write_open_line(std::string line, Clock::time_point now) {
   // Blanks cover what is left of a longer line before ("iteration 100" then "iteration 99").
   if (line.size() < open_line_) line.append(open_line_ - line.size(), ' ');
   out_ << '\r' << line << std::flush;
   open_line_ = line.size();
   last_print_ = now;
   printed_ = true;
+}
+
+void Progress::tick(Clock::time_point now) {
+  if (stage_.empty() || !due(now) || now - last_print_ < tick_interval) return;
+  write_open_line(prefix(now) + stage_ + " ...", now);
+}
+
+void Progress::iteration(int k, double residual, Clock::time_point now) {
+  if (!due(now) || now - last_print_ < interval) return;
+  std::ostringstream text;
+  text << prefix(now) << "contact solve: iteration " << k << ", residual " << std::setprecision(2)
+       << residual;
+  write_open_line(text.str(), now);
 }
 
 void Progress::finish(Clock::time_point now) {

@@ -5,9 +5,10 @@
 // scripts and tests see only warnings and errors there.
 //
 // Progress is reported from the computing thread, between the steps it already takes: a stage is
-// announced when it starts, so a long first stage (the operator's setup) shows only through the
-// elapsed time on the line of the stage after it. No thread or timer is needed, and nothing else
-// writing to stderr (warnings) can be interleaved with a progress line.
+// announced when it starts, and while it runs the library's interrupt checks (core/interrupt.hpp,
+// every 50 ms or so) call tick(), which keeps one line with the elapsed time up to date, so a long
+// stage (the operator's or the stresses' set-up) is not silent. No thread or timer is needed, and
+// nothing else writing to stderr (warnings) can be interleaved with a progress line.
 #include <chrono>
 #include <cstddef>
 #include <iosfwd>
@@ -27,6 +28,8 @@ class Progress {
   using Clock = std::chrono::steady_clock;
   static constexpr std::chrono::milliseconds delay{1000};
   static constexpr std::chrono::milliseconds interval{250};
+  /// How often tick() shows that a stage is still running.
+  static constexpr std::chrono::milliseconds tick_interval{1000};
 
   /// Prints on `out` when `enabled`; the run's time counts from `start`.
   Progress(bool enabled, std::ostream& out, Clock::time_point start = Clock::now());
@@ -38,6 +41,9 @@ class Progress {
 
   /// A stage begins, e.g. "setting up the operator (dcfft)".
   void stage(std::string_view what, Clock::time_point now = Clock::now());
+  /// The current stage is still running: once `tick_interval` has passed since the last line,
+  /// "coatfft [12.3 s] <stage> ...", updated in place as iteration() does.
+  void tick(Clock::time_point now = Clock::now());
   /// Iteration `k` of a contact solve left `residual`.
   void iteration(int k, double residual, Clock::time_point now = Clock::now());
   /// The run is done: a last line with its total time, if anything was printed before.
@@ -47,13 +53,15 @@ class Progress {
   bool due(Clock::time_point now) const;
   std::string prefix(Clock::time_point now) const;
   void end_line();
+  void write_open_line(std::string line, Clock::time_point now);
 
   bool enabled_;
   std::ostream& out_;
   Clock::time_point start_;
   Clock::time_point last_print_;
   bool printed_ = false;
-  std::size_t open_line_ = 0;  ///< length of the line iteration() left open; 0 when none is
+  std::string stage_;          ///< the current stage, for tick()
+  std::size_t open_line_ = 0;  ///< length of the line left open (iteration, tick); 0 when none is
 };
 
 }  // namespace coatfft::cli

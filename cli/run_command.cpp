@@ -14,6 +14,7 @@
 #include "cli/progress.hpp"
 #include "cli/scene.hpp"
 #include "cli/scene_run.hpp"
+#include "cli/signal_cleanup.hpp"
 #include "cli/staged_output.hpp"
 #include "core/error.hpp"
 
@@ -109,6 +110,9 @@ void print_warnings(const nlohmann::json& summary) {
 RunStatus run_command(const RunOptions& options) {
   Progress progress(progress_wanted(options.quiet, ::isatty(STDERR_FILENO) == 1), std::cerr);
   const SceneRunOptions run_options{options.repeat, options.max_memory, &progress};
+  // Until the outputs are written, Ctrl-C stops the computation at its next check and the run
+  // unwinds (main.cpp reports it); the checks also keep a long stage's progress line going.
+  StopOnSigint stop_on_sigint([&progress] { progress.tick(); });
   PreparedScene prepared = prepare_scene(options.scene, run_options);
   const OutputSpec spec = prepared.scene.output;
   // Every output target is checked now, before any work: a run that cannot write is refused at
@@ -119,6 +123,8 @@ RunStatus run_command(const RunOptions& options) {
   // load_wisdom refuses one that is an input or one of OUTDIR's outputs.
   load_wisdom(prepared.scene, out);
   const SceneRun run = compute_scene(std::move(prepared), run_options);
+  // From here a signal ends the run at once: the staged files are removed by the handler.
+  stop_on_sigint.finish();
   print_warnings(run.summary);
   write_outputs(out, spec, run, progress);
   progress.finish();

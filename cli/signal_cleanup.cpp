@@ -4,6 +4,7 @@
 
 #include <array>
 #include <atomic>
+#include <cstdlib>
 #include <cstring>
 
 #include "core/error.hpp"
@@ -27,7 +28,16 @@ struct Slot {
 };
 Slot slots[kSlots];
 
+// What a SIGINT does: end the process (immediate), or, while a StopOnSigint is alive, ask the
+// computation to stop (asking), which it records once (asked). Lock-free, so the handler may
+// read and change it.
+enum SigintMode : int { immediate, asking, asked };
+std::atomic<int> sigint_mode{immediate};
+static_assert(std::atomic<int>::is_always_lock_free);
+
 extern "C" void remove_and_reraise(int sig) {
+  int expected = asking;
+  if (sig == SIGINT && sigint_mode.compare_exchange_strong(expected, asked)) return;
   for (Slot& slot : slots) {
     if (!slot.in_use.load()) continue;
     for (int n = 0; n < slot.nb_files; ++n) ::unlink(slot.paths[n]);
@@ -87,6 +97,33 @@ RemoveOnSignal::RemoveOnSignal(const std::vector<std::filesystem::path>& files,
 
 RemoveOnSignal::~RemoveOnSignal() {
   slots[slot_].in_use.store(false);
+}
+
+StopOnSigint::StopOnSigint(std::function<void()> on_check)
+    : hook_([on_check = std::move(on_check)] {
+        if (on_check) on_check();
+        return sigint_mode.load() == asked;
+      }) {
+  install_handler_once();
+  sigint_mode.store(asking);
+}
+
+StopOnSigint::~StopOnSigint() {
+  sigint_mode.store(immediate);
+}
+
+void StopOnSigint::finish() {
+  int expected = asking;
+  if (sigint_mode.compare_exchange_strong(expected, immediate)) return;
+  sigint_mode.store(immediate);
+  throw Interrupted();
+}
+
+void end_by_sigint() {
+  ::signal(SIGINT, SIG_DFL);
+  ::raise(SIGINT);
+  // Only if SIGINT is blocked: the status a shell gives a process that SIGINT ended.
+  std::_Exit(128 + SIGINT);
 }
 
 HoldSignals::HoldSignals() {

@@ -12,6 +12,7 @@
 #include "contact/fourier_preconditioner.hpp"
 #include "contact/initial_pressure.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 
 namespace coatfft {
 
@@ -600,6 +601,9 @@ ContactResult ContactSolver::run(const Field& h, ContactControl control, double 
   ContactStatus status = ContactStatus::iteration_limit;
   int iterations = 0;
   while (iterations < options_.max_iterations) {
+    // The iterate lives here and is dropped on the way out: the operator and the solver are
+    // left as they were, ready for another solve.
+    check_interrupt();
     ++iterations;
     const std::optional<ContactStatus> end = iteration.iterate(options_.tolerance);
     const bool stepped = !end || *end == ContactStatus::converged;

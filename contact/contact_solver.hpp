@@ -145,6 +145,9 @@ class ContactSolver {
   ContactResult solve_approach(const Field& height, double approach);
 
   /// Dispatches to solve_load or solve_approach.
+  ///
+  /// Each solve checks for interrupts before every iteration (core/interrupt.hpp) and throws
+  /// Interrupted when asked to stop; the solver and its operator can then solve again.
   ContactResult solve(const Field& height, ContactControl control, double value);
 
   const ContactOptions& options() const { return options_; }

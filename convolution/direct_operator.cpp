@@ -1,6 +1,7 @@
 #include "convolution/direct_operator.hpp"
 
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 
 namespace coatfft {
 
@@ -18,6 +19,7 @@ void DirectOperator::apply(const Field& pressure, Field& displacement) {
   const Field& w = wrapped_;
   displacement.resize(nx, ny);
   for (std::ptrdiff_t j = 0; j < ny; ++j) {
+    check_interrupt();  // (nx ny)^2 products: a large grid takes seconds
     for (std::ptrdiff_t i = 0; i < nx; ++i) {
       double sum = 0.0;
       for (std::ptrdiff_t l = 0; l < ny; ++l) {

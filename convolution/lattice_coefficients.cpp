@@ -12,6 +12,7 @@
 #include "core/detail/parallel_for.hpp"
 #include "core/detail/sinc.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "core/threads.hpp"
 
 namespace coatfft {
@@ -74,6 +75,8 @@ std::vector<Field> sample_quarters(const Grid& grid, const LatticeSpectra& s, co
     long long local = 0;
     std::vector<double> acc(nc), value(nc);
     for (std::ptrdiff_t jx = 0; jx < l.hx; ++jx) {
+      // A row of a thin coating's lattice folds thousands of aliases per point: seconds.
+      check_interrupt();
       std::fill(acc.begin(), acc.end(), 0.0);
       for (int p = -l.px; p <= l.px; ++p) {
         const double kx = static_cast<double>(jx) * l.dkx + 2.0 * kPi * p / grid.dx();

@@ -8,6 +8,7 @@
 #include "convolution/parity_transform.hpp"
 #include "core/error.hpp"
 #include "core/fft_size.hpp"
+#include "core/interrupt.hpp"
 
 namespace coatfft {
 
@@ -222,7 +223,11 @@ void ParityConvolution::apply(std::span<const Field* const> loads, std::vector<F
     throw InvalidArgument("parity convolution: one field (or null) per load");
   for (int l = 0; l < nb_loads_; ++l) transform_load(l, loads[l]);
   out.resize(spectra_.size());
-  for (std::size_t o = 0; o < spectra_.size(); ++o) inverse_into(o, out[o]);
+  // Many planes make many outputs. Stopping between two is safe: every apply starts afresh.
+  for (std::size_t o = 0; o < spectra_.size(); ++o) {
+    check_interrupt();
+    inverse_into(o, out[o]);
+  }
 }
 
 std::size_t ParityConvolution::memory_bytes() const {

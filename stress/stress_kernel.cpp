@@ -15,6 +15,7 @@
 #include "core/detail/sinc.hpp"
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "core/threads.hpp"
 #include "frf/stress_frf.hpp"
 
@@ -207,6 +208,8 @@ std::vector<Quarters> sample_quarters(const Sampling& s, int threads, long long&
     std::vector<double> active;
     std::vector<std::size_t> index;
     for (std::ptrdiff_t jx = 0; jx < hx; ++jx) {
+      // A row of a shallow plane's lattice folds thousands of aliases per point: seconds.
+      check_interrupt();
       std::fill(acc.begin(), acc.end(), Sums{});
       for (int p = -l.px; p <= l.px; ++p) {
         const double kx = static_cast<double>(jx) * l.dkx + 2.0 * kPi * p / l.dx;
@@ -275,6 +278,7 @@ std::vector<StressPlaneKernel> stress_plane_kernels(const Grid& grid, const Laye
     for (std::size_t d = 0; d < depths.size(); ++d)
       for (int c = 0; c < 6; ++c)
         for (int ld = 0; ld < nb_loads; ++ld) {
+          check_interrupt();  // each transform of the alpha-extended lattice takes a while
           const auto odd = stress_frf_odd(c, ld);
           if (l.band) {
             kernels[d].coefficients[c][ld] +=

@@ -138,6 +138,29 @@ TEST_CASE("Progress is silent in the first second, then prints stages and iterat
   CHECK(contains(out.str(), "iteration 13, residual 0.5\n"));
 }
 
+TEST_CASE("Progress::tick keeps a long stage's line going, once a second", "[cli][progress]") {
+  std::ostringstream out;
+  {
+    Progress progress(true, out, t0);
+    progress.tick(t0 + 1500ms);  // no stage yet: nothing to say
+    progress.stage("stresses on 3 planes", t0 + 100ms);
+    progress.tick(t0 + 900ms);  // within the first second: silent
+    CHECK(out.str().empty());
+    progress.tick(t0 + 1100ms);
+    std::string expected = "\rcoatfft [1.1 s] stresses on 3 planes ...";
+    CHECK(out.str() == expected);
+    progress.tick(t0 + 1600ms);  // not a second since the last line
+    CHECK(out.str() == expected);
+    progress.tick(t0 + 2200ms);
+    expected += "\rcoatfft [2.2 s] stresses on 3 planes ...";
+    CHECK(out.str() == expected);
+    // The next stage starts a line of its own.
+    progress.stage("writing summary.json", t0 + 2300ms);
+    expected += "\ncoatfft [2.3 s] writing summary.json\n";
+    CHECK(out.str() == expected);
+  }
+}
+
 TEST_CASE("Progress prints nothing for a short run or when it is disabled", "[cli][progress]") {
   std::ostringstream out;
   {
@@ -149,6 +172,7 @@ TEST_CASE("Progress prints nothing for a short run or when it is disabled", "[cl
   {
     Progress progress(false, out, t0);
     progress.stage("setting up the operator (dcfft)", t0 + 5s);
+    progress.tick(t0 + 7s);
     progress.iteration(3, 0.1, t0 + 10s);
     progress.finish(t0 + 20s);
   }

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/interrupt.hpp"
 #include "core/types.hpp"
 
 namespace coatfft::detail {
@@ -26,12 +27,14 @@ inline double median(std::vector<double> values) {
 }
 
 /// Median wall time [s] of `repeat` (>= 1) applications of `op` (any SurfaceOperator) to
-/// `pressure`; the last result is left in `displacement`.
+/// `pressure`; the last result is left in `displacement`. Throws Interrupted between two
+/// applications when asked to stop (core/interrupt.hpp).
 template <class Operator>
 double time_applications(Operator& op, const Field& pressure, Field& displacement, int repeat) {
   std::vector<double> seconds;
   seconds.reserve(static_cast<std::size_t>(std::max(repeat, 0)));
   for (int r = 0; r < repeat; ++r) {
+    check_interrupt();
     const auto start = std::chrono::steady_clock::now();
     op.apply(pressure, displacement);
     seconds.push_back(seconds_since(start));

@@ -14,6 +14,7 @@
 #include "frf/tabulated_frf.hpp"
 #include "materials/catalog.hpp"
 #include "user_frf.hpp"
+#include "without_gil.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;
@@ -45,10 +46,7 @@ py::array_t<double> evaluate_frf(const Frf& frf, const DoubleArray& k) {
   for (const double ki : ks)
     COATFFT_REQUIRE(std::isfinite(ki) && ki > 0, "frf: k = ", ki,
                     " rad/m, but every wavenumber must be finite and > 0");
-  {
-    py::gil_scoped_release release;
-    frf.evaluate(ks, h);
-  }
+  without_gil([&] { frf.evaluate(ks, h); });
   return array_like(k, std::move(h));
 }
 

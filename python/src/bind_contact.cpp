@@ -8,6 +8,7 @@
 #include "contact/contact_solver.hpp"
 #include "core/error.hpp"
 #include "operator.hpp"
+#include "without_gil.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;
@@ -74,13 +75,11 @@ PyContactResult solve_contact(Operator& op, const DoubleArray& height, std::opti
                   "solve_contact: approach control needs the displacement's level, but the "
                   "operator was built with g0 = \"omitted\"; build it with g0 = \"regularized\" "
                   "or \"quadrature\", or give a load");
-  ContactResult result;
-  {
-    py::gil_scoped_release release;
+  ContactResult result = without_gil([&] {
     const auto guard = op.lock();
     ContactSolver solver(op.op(), options);
-    result = load ? solver.solve_load(h, *load) : solver.solve_approach(h, *approach);
-  }
+    return load ? solver.solve_load(h, *load) : solver.solve_approach(h, *approach);
+  });
   return to_python(std::move(result));
 }
 

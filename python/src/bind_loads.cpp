@@ -13,6 +13,7 @@
 #include "loads/uniform_disk_pressure.hpp"
 #include "validation/hankel_displacement.hpp"
 #include "validation/hertz.hpp"
+#include "without_gil.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;
@@ -40,10 +41,13 @@ template <typename Function>
 py::array_t<double> at_radii(const DoubleArray& r, Function&& f) {
   std::vector<double> u(static_cast<std::size_t>(r.size()));
   const double* radii = r.data();
-  {
-    py::gil_scoped_release release;
-    for (std::size_t i = 0; i < u.size(); ++i) u[i] = f(radii[i]);
-  }
+  without_gil([&] {
+    // A Hankel reference integrates per radius: many radii take seconds.
+    for (std::size_t i = 0; i < u.size(); ++i) {
+      check_interrupt();
+      u[i] = f(radii[i]);
+    }
+  });
   return array_like(r, std::move(u));
 }
 

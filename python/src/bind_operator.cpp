@@ -17,6 +17,7 @@
 #include "core/detail/parse_name.hpp"
 #include "core/threads.hpp"
 #include "operator.hpp"
+#include "without_gil.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;
@@ -27,8 +28,7 @@ py::array_t<double> Operator::apply(const DoubleArray& pressure, const py::objec
   check_shape(pressure, grid(), "apply: pressure");
   py::array_t<double> u = output_array(out, grid(), "apply: out");
   double* target = u.mutable_data();
-  {
-    py::gil_scoped_release release;
+  without_gil([&] {
     const auto guard = lock();
     // The pressure is copied first, so `out` may be the pressure's own array.
     copy_into_field(pressure, pressure_, "apply: pressure");
@@ -37,8 +37,9 @@ py::array_t<double> Operator::apply(const DoubleArray& pressure, const py::objec
     COATFFT_REQUIRE(displacement_.allFinite(),
                     "apply: the displacement overflows double precision; rescale the units of the "
                     "pressure and the moduli");
+    // Only a complete result reaches `out`: an interrupted apply leaves it as it was.
     std::copy_n(displacement_.data(), displacement_.size(), target);
-  }
+  });
   return u;
 }
 
@@ -152,9 +153,10 @@ cli::AutomaticChoice automatic_choice(const Grid& grid, const Body& body, const 
     require_load_radius(grid, *k.load_radius, "make_operator: load_radius");
     loads = {{AxisymmetricLoad::hertz, std::max(*k.load_radius, 0.5 * grid.dx())}};
   }
-  py::gil_scoped_release release;
-  return body.frf ? cli::choose_automatically(grid, *body.frf, loads, request)
-                  : cli::choose_automatically(grid, *body.stack, loads, request);
+  return without_gil([&] {
+    return body.frf ? cli::choose_automatically(grid, *body.frf, loads, request)
+                    : cli::choose_automatically(grid, *body.stack, loads, request);
+  });
 }
 
 py::dict report_dict(const Grid& grid, const BuiltOperator& built, const MethodKeywords& k,
@@ -187,11 +189,9 @@ std::unique_ptr<Operator> make_operator_py(const Grid& grid, py::handle body_obj
   } else {
     options = named_options(grid, k);
   }
-  BuiltOperator built;
-  {
-    py::gil_scoped_release release;
-    built = stack ? make_operator(grid, *stack, options) : make_operator(grid, *body.frf, options);
-  }
+  BuiltOperator built = without_gil([&] {
+    return stack ? make_operator(grid, *stack, options) : make_operator(grid, *body.frf, options);
+  });
   first_operator = false;
   cli::refuse_untrustworthy(built.report, "make_operator: method");
   py::dict report = report_dict(grid, built, k, choice);

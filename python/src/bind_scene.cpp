@@ -13,6 +13,7 @@
 #include "cli/scene_run.hpp"
 #include "core/error.hpp"
 #include "load_names.hpp"
+#include "without_gil.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;
@@ -44,12 +45,7 @@ void add_stress_arrays(const Grid& grid, const cli::StressRun& s, py::dict& out)
 
 // The path as a str or any os.PathLike (pathlib.Path), as Python's own file functions take it.
 py::dict run_scene(const std::filesystem::path& path) {
-  std::optional<cli::SceneRun> computed;
-  {
-    py::gil_scoped_release release;
-    computed = cli::run_scene(path);
-  }
-  cli::SceneRun& run = *computed;
+  cli::SceneRun run = without_gil([&] { return cli::run_scene(path); });
   py::dict out;
   out["uz"] = array_from_field(std::move(run.uz));
   out["pressure"] = array_from_field(std::move(run.pressure));
@@ -89,11 +85,8 @@ py::dict validate_frf(py::handle frf_object, py::handle claim_object, const Grid
                   "FRF is checked against), not an Frf");
   const cli::FrfValidationOptions options =
       validation_options(load, amplitude, load_radius, sampling);
-  cli::FrfValidation result;
-  {
-    py::gil_scoped_release release;
-    result = cli::validate_frf(*frf.response(), *claim.stack, grid, tolerance, options);
-  }
+  const cli::FrfValidation result = without_gil(
+      [&] { return cli::validate_frf(*frf.response(), *claim.stack, grid, tolerance, options); });
   py::list checks;
   for (const cli::FrfCheck& c : result.checks)
     checks.append(py::dict("name"_a = c.name, "difference"_a = c.difference,

@@ -14,6 +14,7 @@
 #include "core/error.hpp"
 #include "stress/stress_invariants.hpp"
 #include "stress/stress_operator.hpp"
+#include "without_gil.hpp"
 
 namespace py = pybind11;
 
@@ -67,15 +68,14 @@ py::array_t<double> stresses(py::handle body_object, const Grid& grid, std::vect
   options.kernel.threads = threads;
   options.tangential = loads.qx || loads.qy;
   std::vector<double> values;
-  {
-    py::gil_scoped_release release;
+  without_gil([&] {
     StressOperator op(grid, stack, depths, options);
     std::vector<PlaneStress> planes;
     op.apply(loads.p, loads.x(), loads.y(), planes);
     values.reserve(planes.size() * 6 * static_cast<std::size_t>(grid.nb_cells()));
     for (const PlaneStress& plane : planes)
       for (const Field& c : plane) values.insert(values.end(), c.data(), c.data() + c.size());
-  }
+  });
   const std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(depths.size()), 6, grid.ny(),
                                        grid.nx()};
   py::array_t<double> out(shape);
@@ -93,11 +93,10 @@ py::tuple surface_displacements(py::handle body_object, const Grid& grid,
   SurfaceKernelOptions options;
   options.lattice.threads = threads;
   std::array<Field, 3> u;
-  {
-    py::gil_scoped_release release;
+  without_gil([&] {
     CerrutiOperator op(grid, stack, options);
     op.apply(loads.p, loads.x(), loads.y(), u);
-  }
+  });
   return py::make_tuple(array_from_field(std::move(u[0])), array_from_field(std::move(u[1])),
                         array_from_field(std::move(u[2])));
 }

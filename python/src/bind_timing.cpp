@@ -10,6 +10,7 @@
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
 #include "operator.hpp"
+#include "without_gil.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;
@@ -27,9 +28,10 @@ double apply_seconds(Operator& op, const DoubleArray& pressure, int repeat) {
   check_repeat(repeat);
   const Field p = field_from_array(pressure, op.grid(), "pressure");
   Field u(p.rows(), p.cols());
-  py::gil_scoped_release release;
-  const auto guard = op.lock();
-  return detail::time_applications(op.op(), p, u, repeat);
+  return without_gil([&] {
+    const auto guard = op.lock();
+    return detail::time_applications(op.op(), p, u, repeat);
+  });
 }
 
 // The plain C++ loop of H(k) calls, one virtual call per wavenumber.
@@ -39,13 +41,15 @@ double frf_loop_seconds(py::handle body, const DoubleArray& k, int repeat) {
   const double* ks = k.data();
   check_repeat(repeat);
   std::vector<double> seconds;
-  py::gil_scoped_release release;
-  for (int r = 0; r < repeat; ++r) {
-    const auto start = std::chrono::steady_clock::now();
-    for (std::size_t i = 0; i < h.size(); ++i) h[i] = (*frf)(ks[i]);
-    seconds.push_back(detail::seconds_since(start));
-  }
-  return detail::median(std::move(seconds));
+  return without_gil([&] {
+    for (int r = 0; r < repeat; ++r) {
+      check_interrupt();
+      const auto start = std::chrono::steady_clock::now();
+      for (std::size_t i = 0; i < h.size(); ++i) h[i] = (*frf)(ks[i]);
+      seconds.push_back(detail::seconds_since(start));
+    }
+    return detail::median(std::move(seconds));
+  });
 }
 
 }  // namespace

@@ -1,10 +1,12 @@
 // The extension module coatfft._coatfft: its parts, and the mapping of the library's errors to
 // Python's (docs/python.md): InvalidArgument is ValueError with the library's message, any other
 // coatfft::Error RuntimeError; pybind11 itself raises TypeError for arguments of the wrong type.
+// A call stopped by Ctrl-C raises KeyboardInterrupt (python/src/without_gil.hpp).
 #include <pybind11/pybind11.h>
 
 #include "bindings.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 
 namespace py = pybind11;
 
@@ -28,6 +30,10 @@ PYBIND11_MODULE(_coatfft, m) {
   py::register_exception_translator([](std::exception_ptr error) {
     try {
       if (error) std::rethrow_exception(error);
+    } catch (const coatfft::Interrupted&) {
+      // Stopped by a hook without an exception of Python's to raise (python/src/without_gil.hpp
+      // raises the handler's own): what Ctrl-C raises.
+      PyErr_SetNone(PyExc_KeyboardInterrupt);
     } catch (const coatfft::InvalidArgument& e) {
       PyErr_SetString(PyExc_ValueError, e.what());
     } catch (const coatfft::Error& e) {
