@@ -212,7 +212,7 @@ TEST_CASE("counts and sizes have caps, refused before memory is spent", "[cli][s
   CHECK_FALSE(fs::exists(out));
 }
 
-TEST_CASE("--max-memory beyond what 64 bits address is refused by name", "[cli][safety]") {
+TEST_CASE("a max-memory beyond what 64 bits address is refused by name", "[cli][safety]") {
   const fs::path good = scene_with("safety_memory_good", "", "");
   // 1.1e32 bytes and, through the unit, an infinite double: both were accepted as limits.
   for (const char* size : {"99999999999999999999T", "1e300T", "17179869185G"}) {
