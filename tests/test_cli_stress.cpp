@@ -258,9 +258,9 @@ TEST_CASE("[contact] friction iterates the normal-tangential coupling", "[cli_st
   CHECK(npy_shape(out / "ux.npy") == "(32, 32)");
   // Two bodies of one material: the tractions displace both surfaces alike, no coupling (the
   // body's K_zx less the indenter's is exactly 0): one more solve, the same pressure.
-  const fs::path same = run_scene_ok(std::string(kSmallContactScene) +
-                                         "friction = 0.3\nindenter_material = \"steel\"\n",
-                                     "sliding_same");
+  const fs::path same = run_scene_ok(
+      std::string(kSmallContactScene) + "friction = 0.3\nindenter_material = \"steel\"\n",
+      "sliding_same");
   const nlohmann::json t = read_summary(same)["friction_coupling"];
   CHECK(t["solves"] == 2);
   CHECK(t["pressure_shift"].get<double>() == 0.0);

@@ -22,8 +22,10 @@ std::string shape_text(const py::array& array) {
 
 void check_shape(const py::array& array, const Grid& grid, std::string_view what) {
   // numpy turns None or a number into a 0-d array: name that, not its shape "()".
-  COATFFT_REQUIRE(array.ndim() > 0, what, ": got a single value (None or a number), but the grid "
-                  "needs an array of shape (ny, nx) = (", grid.ny(), ", ", grid.nx(), ")");
+  COATFFT_REQUIRE(array.ndim() > 0, what,
+                  ": got a single value (None or a number), but the grid "
+                  "needs an array of shape (ny, nx) = (",
+                  grid.ny(), ", ", grid.nx(), ")");
   COATFFT_REQUIRE(array.ndim() == 2 && array.shape(0) == grid.ny() && array.shape(1) == grid.nx(),
                   what, ": shape ", shape_text(array), ", but the grid needs (ny, nx) = (",
                   grid.ny(), ", ", grid.nx(), ")");
