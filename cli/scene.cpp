@@ -181,6 +181,17 @@ auto in_section(std::string_view name, Build&& build) {
   }
 }
 
+// Material(E, nu) from the keys `e_key` and `nu_key`: the library's limits, named by those keys.
+Material material_from_moduli(SectionReader& reader, const char* e_key, const char* nu_key) {
+  const double E = reader.number(e_key);
+  const double nu = reader.number(nu_key);
+  try {
+    return Material(E, nu);
+  } catch (const InvalidArgument& e) {
+    throw InvalidArgument(detail::concat(reader.where(e_key), ", ", nu_key, ": ", e.what()));
+  }
+}
+
 Material read_material(SectionReader& reader) {
   if (reader.has("material")) {
     COATFFT_REQUIRE(!reader.has("E") && !reader.has("nu"), reader.where("material"),
@@ -192,13 +203,7 @@ Material read_material(SectionReader& reader) {
       throw InvalidArgument(detail::concat(reader.where("material"), ": ", e.what()));
     }
   }
-  const double E = reader.number("E");
-  const double nu = reader.number("nu");
-  try {
-    return Material(E, nu);
-  } catch (const InvalidArgument& e) {  // the library's limits, named by the scene's keys
-    throw InvalidArgument(detail::concat(reader.where("E"), ", nu: ", e.what()));
-  }
+  return material_from_moduli(reader, "E", "nu");
 }
 
 // [grid]: nx and ny, or refine = "auto" with tolerance_total (the grid is then chosen once the
@@ -447,14 +452,7 @@ ContactSpec read_contact(const toml::table& table, const Grid& grid, const Layer
     if (reader.has("indenter_material")) {
       spec.indenter_material = material_by_name(reader.string("indenter_material"));
     } else {
-      const double E = reader.number("indenter_E");
-      const double nu = reader.number("indenter_nu");
-      try {
-        spec.indenter_material = Material(E, nu);
-      } catch (const InvalidArgument& e) {
-        throw InvalidArgument(
-            detail::concat(reader.where("indenter_E"), ", indenter_nu: ", e.what()));
-      }
+      spec.indenter_material = material_from_moduli(reader, "indenter_E", "indenter_nu");
     }
   }
   // Catch geometry errors (a sphere smaller than the domain) before any work is done.

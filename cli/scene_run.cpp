@@ -293,8 +293,8 @@ SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat, Pr
   nlohmann::json coupling;
   ContactResult result = solve_scene_contact(solver, scene, surface, height_field, coupling);
   const double solve_seconds = seconds_since(start);
-  // A periodic surface has no edge: a contact across the period's border is a contact.
-  COATFFT_REQUIRE(scene.periodic || !result.touches_boundary,
+  // touches_boundary is false on a periodic surface (no edge: contact/contact_solver.hpp).
+  COATFFT_REQUIRE(!result.touches_boundary,
                   "[contact] the contact reaches the domain edge (pressure > 0 on a border cell): "
                   "the domain is too small for this contact; enlarge [grid] lx and ly (and nx, ny "
                   "to keep the cell size) or lower the load");

@@ -462,15 +462,16 @@ double log2_compliance(SurfaceOperator& op) {
 // displacement scale (C the compliance) and t ~ H / C the search direction, the iteration's inner
 // products are of order P U, H t and P H; s^2 = P H divides them to U / H, H / U and 1 (docs/
 // contact.md, "Scaling"), so a load of 1e150 N or 1e-150 N neither overflows nor underflows. s is
-// a power of two (scaling is exact) and 1 while P H lies within 2^+-128 (about 1e+-38: every
-// physical problem), so ordinary solves are untouched and cost no extra application; otherwise
-// the compliance costs one (`applications`). U / H itself cannot be scaled away: beyond 2^+-600
-// (1e+-180) the problem is refused.
+// a power of two (scaling is exact) and 1 while P H (P on a flat face) lies within 2^+-128 (about
+// 1e+-38: every physical problem), so ordinary solves are untouched and cost no extra application;
+// otherwise the compliance costs one (`applications`). U / H itself cannot be scaled away: beyond
+// 2^+-600 (1e+-180) the problem is refused.
 double load_scale(SurfaceOperator& op, const Field& h, double load, int& applications) {
   const double span = h.maxCoeff() - h.minCoeff();
   // In logarithms: W / A itself may overflow or underflow.
   const double log2_p = std::log2(load) - std::log2(op.grid().lx() * op.grid().ly());
-  if (span > 0 && std::abs(log2_p + std::log2(span)) <= 128) return 1.0;
+  // A flat face (span 0) is judged by P alone: its heights enter no product.
+  if (std::abs(log2_p + (span > 0 ? std::log2(span) : 0.0)) <= 128) return 1.0;
   ++applications;
   const double log2_u = log2_p + log2_compliance(op);
   const double log2_h = span > 0 ? std::log2(span) : log2_u;  // flat: only U matters

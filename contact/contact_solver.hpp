@@ -103,7 +103,8 @@ struct ContactResult {
   ContactStatus status = ContactStatus::iteration_limit;
   bool converged = false;  ///< status == ContactStatus::converged
   /// True when a border cell carries pressure: the contact reaches the domain edge, so the
-  /// domain is too small for the problem (the solution is that of a truncated body).
+  /// domain is too small for the problem (the solution is that of a truncated body). Always false
+  /// on a periodic operator, which has no edge.
   bool touches_boundary = false;
   /// The largest overlap max(0, -min g) [m] of the returned gap: 0 when no cell interpenetrates.
   /// A converged result has at most the gap's accuracy here (contact/complementarity.hpp).

@@ -1,6 +1,7 @@
 // `coatfft surface`: the file it writes (shape, rms as asked, the same bytes for the same seed)
 // and its refusals (one line, exit 2, no file).
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iterator>
@@ -18,6 +19,25 @@ const std::string kSurface = " --nx 64 --ny 48 --lx 1e-3 --ly 0.75e-3 --hurst 0.
 std::string bytes_of(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// One refused `coatfft surface` command line: exit 2, one line naming `must_mention`, no file.
+struct SurfaceCase {
+  const char* name;
+  std::string args;
+  const char* must_mention;
+};
+
+void check_surface_refused(const SurfaceCase& c, const std::string& prefix) {
+  INFO(c.name);
+  const fs::path out = scratch(prefix + c.name + ".npy");
+  fs::remove(out);
+  const auto r = run_coatfft("surface -o " + out.string() + c.args);
+  INFO(r.stderr_text);
+  CHECK(r.status == 2);
+  CHECK(std::count(r.stderr_text.begin(), r.stderr_text.end(), '\n') == 1);
+  CHECK(r.stderr_text.find(c.must_mention) != std::string::npos);
+  CHECK_FALSE(fs::exists(out));
 }
 
 }  // namespace
@@ -42,11 +62,7 @@ TEST_CASE("coatfft surface writes a reproducible self-affine surface", "[cli_sur
 }
 
 TEST_CASE("coatfft surface refuses bad options with one line and writes nothing", "[cli_surface]") {
-  const struct {
-    const char* name;
-    std::string args;
-    const char* must_mention;
-  } cases[] = {
+  const SurfaceCase cases[] = {
       {"odd", " --nx 63 --ny 48 --lx 1e-3 --ly 1e-3 --hurst 0.8 --rms-height 1e-6", "--nx"},
       {"both_rms", kSurface + " --rms-height 1e-6 --rms-slope 0.1", "exactly one"},
       {"no_rms", kSurface, "exactly one"},
@@ -54,17 +70,7 @@ TEST_CASE("coatfft surface refuses bad options with one line and writes nothing"
       {"cutoff", kSurface + " --rms-height 1e-6 --short-cutoff 1e-6", "short cut-off"},
       {"length", " --nx 64 --ny 48 --lx -1 --ly 1e-3 --hurst 0.8 --rms-height 1e-6", "--lx"},
   };
-  for (const auto& c : cases) {
-    INFO(c.name);
-    const fs::path out = scratch(std::string("surface_bad_") + c.name + ".npy");
-    fs::remove(out);
-    const auto r = run_coatfft("surface -o " + out.string() + c.args);
-    INFO(r.stderr_text);
-    CHECK(r.status == 2);
-    CHECK(std::count(r.stderr_text.begin(), r.stderr_text.end(), '\n') == 1);
-    CHECK(r.stderr_text.find(c.must_mention) != std::string::npos);
-    CHECK_FALSE(fs::exists(out));
-  }
+  for (const auto& c : cases) check_surface_refused(c, "surface_bad_");
   const fs::path txt = scratch("surface_bad.txt");
   const auto r = run_coatfft("surface -o " + txt.string() + kSurface + " --rms-height 1e-6");
   CHECK(r.status == 2);
@@ -74,11 +80,7 @@ TEST_CASE("coatfft surface refuses bad options with one line and writes nothing"
 
 TEST_CASE("coatfft surface refuses rms values, seeds and outputs it cannot honour, by flag",
           "[cli_surface]") {
-  const struct {
-    const char* name;
-    std::string args;
-    const char* must_mention;
-  } cases[] = {
+  const SurfaceCase cases[] = {
       // Heights of 1e296 m would overflow the printed rms (it read "inf" and "-nan").
       {"slope_huge", kSurface + " --rms-slope 1e300", "--rms-slope"},
       // A denormal rms height rounded the surface to zeros ("0 m").
@@ -92,17 +94,7 @@ TEST_CASE("coatfft surface refuses rms values, seeds and outputs it cannot honou
       {"seed_exponent", kSurface + " --rms-height 1e-6 --seed 1e23", "--seed"},
       {"seed_fraction", kSurface + " --rms-height 1e-6 --seed 1.5", "--seed"},
   };
-  for (const auto& c : cases) {
-    INFO(c.name);
-    const fs::path out = scratch(std::string("surface_limit_") + c.name + ".npy");
-    fs::remove(out);
-    const auto r = run_coatfft("surface -o " + out.string() + c.args);
-    INFO(r.stderr_text);
-    CHECK(r.status == 2);
-    CHECK(std::count(r.stderr_text.begin(), r.stderr_text.end(), '\n') == 1);
-    CHECK(r.stderr_text.find(c.must_mention) != std::string::npos);
-    CHECK_FALSE(fs::exists(out));
-  }
+  for (const auto& c : cases) check_surface_refused(c, "surface_limit_");
   // The largest seed is a seed like any other.
   const fs::path top = scratch("surface_seed_top.npy");
   fs::remove(top);
