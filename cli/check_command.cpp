@@ -33,6 +33,7 @@ void check_command(const CheckOptions& options) {
   // As run does: a pressure is applied once (run --repeat aside), a contact solve about
   // contact_applications times.
   const double applications = scene.contact ? contact_applications : 1.0;
+  check_memory(scene, options.max_memory);  // before the choice too, as run does
   const std::optional<AutomaticChoice> automatic = resolve_automatic_method(scene, applications);
   check_memory(scene, options.max_memory);
   if (scene.pressure) {  // reads and checks the loads as run does
@@ -46,7 +47,7 @@ void check_command(const CheckOptions& options) {
   refuse_untrustworthy(report);
 
   const Grid& grid = scene.grid;
-  const MemoryEstimate memory = estimate_memory(scene);
+  const MemoryNeed memory = estimate_memory(scene);
   const std::optional<double> available = available_memory();
   nlohmann::json out;
   out["scene"] = options.scene.string();

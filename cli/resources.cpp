@@ -3,103 +3,59 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <string>
 
 #include "cli/scene_stress.hpp"
-#include "convolution/dcfft_operator.hpp"
+#include "convolution/operator_memory.hpp"
 #include "core/detail/shorten.hpp"
 #include "core/error.hpp"
-#include "core/fft_size.hpp"
+#include "stress/stress_operator.hpp"
 
 namespace coatfft::cli {
 
 namespace {
 
-std::string gigabytes(double bytes) {
-  return detail::concat(std::round(bytes / 1e7) / 100, " GB");
-}
-
-// The transform lattice of the method: its size in cells and a description naming its keys.
-std::pair<double, std::string> transform_lattice(const Scene& scene) {
+// The keys that drive the operator's memory: the grid, and the lattice the method transforms.
+std::string lattice_drivers(const Scene& scene, const OperatorMemory& m) {
   const Grid& grid = scene.grid;
-  const OperatorOptions& o = scene.method.options;
-  const double nx = static_cast<double>(grid.nx());
-  const double ny = static_cast<double>(grid.ny());
   const std::string sizes = detail::concat("[grid] nx = ", grid.nx(), ", ny = ", grid.ny());
-  // A periodic operator transforms the grid itself (convolution/periodic_operator.hpp).
-  if (scene.periodic) return {nx * ny, detail::concat(sizes, " (periodic: no padding)")};
-  switch (o.method) {
+  if (scene.periodic) return detail::concat(sizes, " (periodic: no padding)");
+  switch (scene.method.options.method) {
     case Method::direct:
-      return {0.0, sizes};
+      return sizes;
     case Method::frf_spectral:
-      return {o.alpha * o.alpha * nx * ny,
-              detail::concat(sizes, ", [method] alpha = ", o.alpha, " (extended ", o.alpha * nx,
-                             " x ", o.alpha * ny, " lattice)")};
-    default: {
-      // DC-FFT's padded lattice: frf-dcfft at alpha = 2 hands it a spectrum (exactly 2n).
-      const auto form = o.method == Method::frf_dcfft && o.alpha == 2.0
-                            ? InfluenceKernel::Form::spectrum
-                            : InfluenceKernel::Form::coefficients;
-      const std::ptrdiff_t mx = DcfftOperator::padded_size(grid.nx(), form);
-      const std::ptrdiff_t my = DcfftOperator::padded_size(grid.ny(), form);
-      return {static_cast<double>(mx) * static_cast<double>(my),
-              detail::concat(sizes, " (padded ", mx, " x ", my, " transform)")};
-    }
+      return detail::concat(sizes, ", [method] alpha = ", scene.method.options.alpha, " (extended ",
+                            m.lattice_nx, " x ", m.lattice_ny, " lattice)");
+    default:
+      return detail::concat(sizes, " (padded ", m.lattice_nx, " x ", m.lattice_ny, " transform)");
   }
 }
 
 }  // namespace
 
-MemoryEstimate estimate_memory(const Scene& scene) {
-  const double cells = static_cast<double>(scene.grid.nx()) * static_cast<double>(scene.grid.ny());
-  const double fields = scene.contact ? 12.0 : 4.0;
-  auto [lattice, drivers] = transform_lattice(scene);
-  // A real input array, its complex half spectrum and the kernel's half spectrum: 2.5 doubles per
-  // lattice cell; the kernel construction of frf-split and frf-dcfft holds one more lattice.
-  double per_lattice_cell = 2.5 * 8.0;
-  const Method method = scene.method.options.method;
-  if (method == Method::frf_split || method == Method::frf_dcfft) per_lattice_cell += 8.0;
-  double bytes = program_bytes + 8.0 * fields * cells + per_lattice_cell * lattice;
-  // A contact's preconditioner: a real field, its half spectrum and the multiplier on the grid.
-  if (scene.contact) bytes += 20.0 * cells;
-  if (method == Method::frf_dcfft) {
-    const double alpha = scene.method.options.alpha;
-    bytes += 16.0 * alpha * alpha * cells;  // the FRF sampled on the alpha-extended lattice
-    drivers += detail::concat(", [method] alpha = ", alpha);
-  }
+MemoryNeed estimate_memory(const Scene& scene) {
+  const Grid& grid = scene.grid;
+  const double cells = static_cast<double>(grid.nx()) * static_cast<double>(grid.ny());
+  const OperatorMemory op = scene.periodic ? estimated_periodic_memory(grid)
+                                           : estimated_memory(grid, scene.method.options);
+  MemoryNeed need{program_bytes + op.bytes, lattice_drivers(scene, op)};
+  // The fields on the grid: 4 for a known pressure; 12 for a contact (iterates, directions, gap)
+  // and its preconditioner (a real field, its half spectrum and the multiplier).
+  need.bytes += scene.contact ? (12.0 * 8.0 + 20.0) * cells : 4.0 * 8.0 * cells;
+  if (scene.method.options.method == Method::frf_dcfft && !scene.periodic)
+    need.drivers += detail::concat(", [method] alpha = ", scene.method.options.alpha);
   if (scene.stress && scene.body) {
-    bytes += stress_memory_bytes(*scene.stress, *scene.body, scene.grid);
-    drivers += detail::concat(", [stress] ", stress_plane_depths(*scene.stress, *scene.body).size(),
-                              " planes at alpha = ", scene.stress->alpha);
+    const std::size_t planes = stress_plane_depths(*scene.stress, *scene.body).size();
+    const bool tangential = scene.shear || (scene.contact && scene.contact->friction > 0.0);
+    need.bytes += estimated_stress_bytes(grid, planes, scene.stress->alpha, tangential);
+    need.drivers +=
+        detail::concat(", [stress] ", planes, " planes at alpha = ", scene.stress->alpha);
   }
   if (scene.output.in_plane) {
-    // CerrutiOperator (convolution/parity_convolution.hpp): nine spectrum quarters, three load
-    // spectra of the padded lattice and the three outputs; while it is built, six coefficient
-    // fields and four lattice quarters of the layered remainders plus their long-range band.
-    const double hx = double(fast_even_fft_size(2 * scene.grid.nx() - 1)) / 2 + 1;
-    const double my = double(fast_even_fft_size(2 * scene.grid.ny() - 1));
-    bytes +=
-        8.0 * (9 * hx * (my / 2 + 1) + 3 * 2 * hx * my + 9 * cells +
-               4 * (scene.grid.nx() + 1.0) * (scene.grid.ny() + 1.0) + 4 * std::pow(34.0 * 16, 2));
-    drivers += ", ux.npy and uy.npy";
+    need.bytes += estimated_cerruti_bytes(grid);
+    need.drivers += ", ux.npy and uy.npy";
   }
-  return {bytes, drivers};
-}
-
-std::optional<double> available_memory() {
-  std::optional<double> bytes;
-  std::ifstream meminfo("/proc/meminfo");
-  for (std::string key; meminfo >> key;) {
-    double kib = 0;
-    std::string unit;
-    meminfo >> kib >> unit;
-    if (key == "MemAvailable:") bytes = kib * 1024.0;
-  }
-  std::ifstream cgroup("/sys/fs/cgroup/memory.max");
-  double limit = 0;
-  if (cgroup >> limit && (!bytes || limit < *bytes)) bytes = limit;  // "max" fails to parse
-  return bytes;
+  return need;
 }
 
 double parse_memory_size(std::string_view text, std::string_view option) {
@@ -127,14 +83,10 @@ double parse_memory_size(std::string_view text, std::string_view option) {
 }
 
 void check_memory(const Scene& scene, std::optional<double> limit) {
-  const MemoryEstimate need = estimate_memory(scene);
-  const std::optional<double> have = limit ? limit : available_memory();
-  if (!have) return;
-  COATFFT_REQUIRE(need.bytes <= *have, "the scene needs about ", gigabytes(need.bytes),
-                  " of memory, driven by ", need.drivers, ", but ", gigabytes(*have), " ",
-                  limit ? "is the limit (--max-memory)" : "is available (--max-memory to change)",
-                  ": use fewer cells",
-                  scene.method.options.method == Method::frf_spectral ? " or a smaller alpha" : "");
+  require_memory(estimate_memory(scene), limit, "the scene", "--max-memory",
+                 scene.method.options.method == Method::frf_spectral
+                     ? "use fewer cells or a smaller alpha"
+                     : "use fewer cells");
 }
 
 }  // namespace coatfft::cli

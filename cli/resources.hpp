@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "cli/scene.hpp"
+#include "core/memory.hpp"
 
 namespace coatfft::cli {
 
@@ -15,16 +16,11 @@ namespace coatfft::cli {
 inline constexpr int max_repeat = 100000;         ///< coatfft run --repeat
 inline constexpr long max_frf_points = 10000000;  ///< coatfft frf --points
 
-/// The memory a scene's run needs, by its largest parts.
-struct MemoryEstimate {
-  double bytes = 0.0;
-  std::string drivers;  ///< "nx = 65536, ny = 65536 (padded 131072 x 131072 transform)"
-};
-
 /// An upper estimate of the peak memory of `coatfft run` on `scene`: the grid's fields (4 for a
-/// known pressure, 12 for a contact: iterates, directions, gap), the transform buffers and the
-/// kernel spectrum of the method (docs/scene_format.md gives the formula).
-MemoryEstimate estimate_memory(const Scene& scene);
+/// known pressure, 12 for a contact: iterates, directions, gap), the operators' own
+/// (convolution/operator_memory.hpp, estimated_stress_bytes) and the program's
+/// (docs/scene_format.md gives the formula). `drivers` names the scene keys that drive it.
+MemoryNeed estimate_memory(const Scene& scene);
 
 /// What the program itself takes before any array of the scene (its code, the C++, FFTW, GSL and
 /// TOML libraries, FFTW's plans and tables, the heap's start): the peak resident set of
@@ -32,10 +28,6 @@ MemoryEstimate estimate_memory(const Scene& scene);
 /// of arrays; scripts/check_estimates_check.py) rounded up. Part of estimate_memory, so that small
 /// scenes are not estimated at a fraction of what they take.
 inline constexpr double program_bytes = 10.0 * 1024 * 1024;
-
-/// The memory this process may use [bytes]: MemAvailable of /proc/meminfo, or the cgroup's
-/// memory.max when smaller; nullopt when neither can be read.
-std::optional<double> available_memory();
 
 /// The largest memory size parse_memory_size accepts [bytes]: 2^64, all a 64-bit machine can
 /// address.

@@ -19,8 +19,10 @@
 #include "core/detail/shorten.hpp"
 #include "core/error.hpp"
 #include "core/threads.hpp"
+#include "loads/load_limits.hpp"
 #include "materials/catalog.hpp"
 #include "stress/stress_kernel.hpp"
+#include "stress/stress_operator.hpp"
 
 namespace coatfft::cli {
 
@@ -237,9 +239,10 @@ GridSection read_grid(const toml::table& root) {
                       ": applies only with refine = \"auto\"");
       const auto nx = reader.integer("nx");
       const auto ny = reader.integer("ny");
-      // Guard against input that would exhaust memory before FFTW does (padded arrays).
-      COATFFT_REQUIRE(nx <= 65536 && ny <= 65536, "nx = ", nx, ", ny = ", ny,
-                      ": at most 65536 cells per direction");
+      // Grid's own limit (core/grid.hpp), said with the scene's keys.
+      COATFFT_REQUIRE(nx <= Grid::max_cells_per_axis && ny <= Grid::max_cells_per_axis, "nx = ", nx,
+                      ", ny = ", ny, ": at most ", Grid::max_cells_per_axis,
+                      " cells per direction");
       COATFFT_REQUIRE(!g.periodic || (nx % 2 == 0 && ny % 2 == 0),
                       "boundary = \"periodic\" needs "
                       "even nx and ny (nx = ",
@@ -361,13 +364,14 @@ PressureSpec read_pressure(const toml::table& table, const Grid& grid,
   } else {
     const char* amplitude_key = spec.kind == PressureKind::hertz ? "p0" : "p";
     spec.amplitude = reader.number(amplitude_key);
-    COATFFT_REQUIRE(spec.amplitude > 0, reader.where(amplitude_key), " = ", spec.amplitude,
-                    " Pa must be > 0");
     spec.radius = reader.number("a");
-    require_load_radius(grid, spec.radius, reader.where("a"));
     spec.sampling = reader.choice("sampling", "centre", {"centre", "cell_average"}) == "centre"
                         ? Sampling::centre
                         : Sampling::cell_average;
+    // The cells are checked on the scene's final grid (scene_pressure): `grid` may be only the
+    // domain of a refinement.
+    require_disk_load(grid, spec.amplitude, spec.radius, Sampling::cell_average,
+                      {reader.where(amplitude_key), reader.where("a"), "[grid]"});
   }
   reader.finish();
   return spec;
@@ -598,8 +602,8 @@ StressSpec read_stress(const toml::table& root, const Scene& scene) {
     COATFFT_REQUIRE(spec.depth_max > 0.0, reader.where("depth_max"), " = ", spec.depth_max,
                     " must be > 0 [m]");
     const std::int64_t nz = reader.integer("nz");
-    COATFFT_REQUIRE(nz >= 1 && nz <= std::int64_t(max_stress_planes), reader.where("nz"), " = ", nz,
-                    " must be in [1, ", max_stress_planes, "]");
+    COATFFT_REQUIRE(nz >= 1 && nz <= std::int64_t(StressOperator::max_planes), reader.where("nz"),
+                    " = ", nz, " must be in [1, ", StressOperator::max_planes, "]");
     spec.nz = static_cast<int>(nz);
   }
   const std::int64_t alpha = reader.integer("alpha", 16);
@@ -626,9 +630,9 @@ StressSpec read_stress(const toml::table& root, const Scene& scene) {
   }
   COATFFT_REQUIRE(!spec.depths.empty() || spec.section,
                   "[stress] give depths = [...] or section = \"xz\" (or both)");
-  COATFFT_REQUIRE(spec.depths.size() + std::size_t(spec.nz) <= max_stress_planes,
+  COATFFT_REQUIRE(spec.depths.size() + std::size_t(spec.nz) <= StressOperator::max_planes,
                   "[stress] asks for ", spec.depths.size() + std::size_t(spec.nz),
-                  " planes; at most ", max_stress_planes);
+                  " planes; at most ", StressOperator::max_planes);
   reader.finish();
   return spec;
 }

@@ -124,9 +124,6 @@ struct StressSpec {
   int alpha = 16;  ///< period of the kernels' sampling lattice over the domain (docs/stress.md)
 };
 
-/// The most planes [stress] may ask for (depths and section rows together).
-inline constexpr std::size_t max_stress_planes = 512;
-
 /// The most cells along an axis that [grid] refine = "auto" chooses.
 inline constexpr std::ptrdiff_t max_refined_cells = 1024;
 

@@ -1,12 +1,12 @@
 #include "cli/scene_pressure.hpp"
 
-#include <algorithm>
 #include <cmath>
 
 #include "cli/csv.hpp"
 #include "cli/npy.hpp"
 #include "core/error.hpp"
 #include "loads/hertz_pressure.hpp"
+#include "loads/load_limits.hpp"
 #include "loads/uniform_disk_pressure.hpp"
 
 namespace coatfft::cli {
@@ -41,19 +41,14 @@ Field pressure_from_scene(const Scene& scene) {
   throw InvalidArgument("[pressure] kind: unknown");
 }
 
-// A load narrower than a cell, sampled at the cell centres, either misses every cell (u = 0) or
-// fills a whole cell (a force far above the intended one), and either way the output looks
-// plausible. Cell averages keep the force, so they stay allowed.
+// The disk's limits on the scene's final grid (loads/load_limits.hpp), and a pressure that is not
+// zero everywhere.
 void require_load(const Scene& scene, const Field& pressure) {
-  const Grid& grid = scene.grid;
   const PressureSpec& load = *scene.pressure;
-  if (load.kind != PressureKind::file && load.sampling == Sampling::centre) {
-    COATFFT_REQUIRE(
-        2.0 * load.radius >= std::max(grid.dx(), grid.dy()), "[pressure] a = ", load.radius,
-        " m: the load is narrower than a cell (dx = ", grid.dx(), " m, dy = ", grid.dy(),
-        " m from [grid] lx, ly, nx, ny) and is sampled at "
-        "the cell centres; refine the grid or use sampling = \"cell_average\"");
-  }
+  if (load.kind != PressureKind::file)
+    require_disk_load(scene.grid, load.amplitude, load.radius, load.sampling,
+                      {load.kind == PressureKind::hertz ? "[pressure] p0" : "[pressure] p",
+                       "[pressure] a", "[grid] lx, ly, nx, ny"});
   COATFFT_REQUIRE((pressure != 0.0).any(),
                   load.kind == PressureKind::file ? load.file.string() : std::string("[pressure]"),
                   ": the pressure is zero on every cell: nothing to compute");

@@ -336,7 +336,10 @@ PreparedScene prepare_scene(const fs::path& scene_file, const SceneRunOptions& o
   COATFFT_REQUIRE(options.repeat >= 1 && options.repeat <= max_repeat,
                   "--repeat = ", options.repeat, " must be in 1..", max_repeat);
   Scene scene = read_scene(scene_file);
-  // name = "auto" chooses the body and the method first: the memory estimate is the chosen one's.
+  // name = "auto" chooses the body and the method first, and the memory estimate is the chosen
+  // one's; before it, the estimate of the scene as read (DC-FFT's padded lattice, the least any
+  // candidate but direct summation on a small grid needs) refuses a grid too large for any.
+  check_memory(scene, options.max_memory);
   std::optional<AutomaticChoice> automatic = resolve_automatic_method(
       scene, scene.contact ? contact_applications : static_cast<double>(options.repeat));
   check_memory(scene, options.max_memory);

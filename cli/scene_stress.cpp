@@ -7,7 +7,6 @@
 
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
-#include "core/fft_size.hpp"
 #include "stress/stress_invariants.hpp"
 #include "stress/stress_operator.hpp"
 
@@ -118,21 +117,6 @@ StressRun compute_stress(const StressSpec& spec, const LayerStack& body, const G
     run.summary["section"] = {
         {"y", grid.y(grid.centre_j())}, {"depth_max", spec.depth_max}, {"nz", spec.nz}};
   return run;
-}
-
-double stress_memory_bytes(const StressSpec& spec, const LayerStack& body, const Grid& grid) {
-  const double planes = static_cast<double>(stress_plane_depths(spec, body).size());
-  const double hx = double(fast_even_fft_size(2 * grid.nx() - 1)) / 2 + 1;
-  const double hy = double(fast_even_fft_size(2 * grid.ny() - 1)) / 2 + 1;
-  const double cells = double(grid.nx()) * double(grid.ny());
-  // Per plane: six spectrum quarters and the six output fields (plus von Mises on output);
-  // while a group of up to 8 planes is built: six quarters of DC-FFT's lattice and six of the
-  // long-range band, about (34 alpha)^2 entries (sqrt(45) 32 alpha/(2 pi) per side).
-  const double group = std::min(planes, 8.0);
-  const double short_quarter = (grid.nx() + 1.0) * (grid.ny() + 1.0);
-  const double band = std::pow(34.0 * spec.alpha, 2);
-  return 8.0 *
-         (planes * (6 * hx * hy + 7 * cells) + group * 6 * (short_quarter + band) + 12 * hx * hy);
 }
 
 }  // namespace coatfft::cli

@@ -26,7 +26,4 @@ struct StressRun {
 StressRun compute_stress(const StressSpec& spec, const LayerStack& body, const Grid& grid,
                          const Field& pressure, const Tractions& q, int threads);
 
-/// Bytes compute_stress holds at its peak, for the scene's memory estimate.
-double stress_memory_bytes(const StressSpec& spec, const LayerStack& body, const Grid& grid);
-
 }  // namespace coatfft::cli

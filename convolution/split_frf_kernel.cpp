@@ -422,6 +422,7 @@ struct SplitPlan {
   bool wide_y = false;
   LatticeAxis lattice_x;
   LatticeAxis lattice_y;
+  double lattice_entries = 0.0;  // of the short-range fold (require_lattice)
   // The long-range part: Hankel panels in k, radial steps, and the rule over each cell.
   std::vector<double> panel_edges;  // of the uniform table
   double r_max = 0.0;               // the domain's diagonal plus the stencil's reach
@@ -526,21 +527,29 @@ LatticeAxis lattice_axis(const SplitPlan& p, std::ptrdiff_t n, double d, bool wi
   return a;
 }
 
-// The lattice of the short-range part, refused before any allocation when it would not fit
-// (a sigma given by the caller that is huge against a cell; the automatic sigma keeps the half
-// sizes <= max(2n, 96)).
+// The lattice of the short-range part. Its size is checked by require_lattice before any
+// allocation; a plan whose lattice would not fit gets no axes, so that the work estimate of a grid
+// the split kernel cannot take stays cheap.
 void choose_lattice(SplitPlan& p) {
   const double hx =
       std::max(static_cast<double>(p.nx), std::ceil(lattice_reach(p, p.wide_y) / p.dx));
   const double hy =
       std::max(static_cast<double>(p.ny), std::ceil(lattice_reach(p, p.wide_x) / p.dy));
-  const double entries = (p.wide_x ? 1.0 : hx + 1.0) * (p.wide_y ? 1.0 : hy + 1.0);
-  COATFFT_REQUIRE(entries <= max_lattice_entries, "split_frf_kernel: sigma = ", p.sigma,
-                  " m against cells of ", p.dx, " x ", p.dy, " m needs a short-range lattice of ",
-                  entries, " entries (more than ", max_lattice_entries,
-                  "); leave sigma automatic (0) or use frf-spectral");
+  p.lattice_entries = (p.wide_x ? 1.0 : hx + 1.0) * (p.wide_y ? 1.0 : hy + 1.0);
+  if (p.lattice_entries > max_lattice_entries) return;
   p.lattice_x = lattice_axis(p, p.nx, p.dx, p.wide_x, p.wide_y);
   p.lattice_y = lattice_axis(p, p.ny, p.dy, p.wide_y, p.wide_x);
+}
+
+// A lattice that would not fit is refused before it is allocated: a sigma given by the caller
+// that is huge against a cell, or a grid of more than ~11585^2 cells (the lattice covers every
+// offset of the domain); the automatic sigma keeps the half sizes <= max(2n, 96).
+void require_lattice(const SplitPlan& p) {
+  COATFFT_REQUIRE(p.lattice_entries <= max_lattice_entries, "split_frf_kernel: sigma = ", p.sigma,
+                  " m against cells of ", p.dx, " x ", p.dy, " m on ", p.nx, " x ", p.ny,
+                  " cells needs a short-range lattice of ", p.lattice_entries,
+                  " entries (more than ", max_lattice_entries,
+                  "); use fewer cells, leave sigma automatic (0), or use frf-spectral");
 }
 
 // Panels of the Hankel transform: geometric (halving) from the first uniform panel down to R's
@@ -1311,6 +1320,8 @@ SplitKernelWork split_frf_kernel_work(const Grid& grid, const Frf& frf,
                                       const SplitKernelOptions& options) {
   const SplitPlan p = make_split_plan(grid, frf, options);
   SplitKernelWork work;
+  work.lattice_entries = p.lattice_entries;
+  work.lattice_fits = p.lattice_entries <= max_lattice_entries;
   work.remainder_zero = p.remainder_zero;
   if (p.remainder_zero) return work;
   work.fold_terms = fold_terms(p);
@@ -1330,6 +1341,7 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
                                  const SplitKernelOptions& options, SplitKernelReport* report) {
   const auto start = std::chrono::steady_clock::now();
   const SplitPlan plan = make_split_plan(grid, frf, options);
+  require_lattice(plan);
   SplitKernelReport rep;
   report_plan(plan, rep);
   Field quarter(plan.nx + 1, plan.ny + 1);

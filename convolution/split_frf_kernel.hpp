@@ -94,6 +94,10 @@ struct SplitKernelWork {
   double cell_nodes = 0.0;          ///< table lookups of the long-range cell integrals
   double fold_terms = 0.0;          ///< alias terms of the short-range fold
   bool remainder_zero = false;      ///< R vanished: Love's coefficients only
+  double lattice_entries = 0.0;     ///< of the short-range fold
+  /// Whether that lattice fits the kernel's limit (2^27 entries): split_frf_kernel refuses a
+  /// plan that does not, and the automatic choice does not choose it.
+  bool lattice_fits = true;
 };
 SplitKernelWork split_frf_kernel_work(const Grid& grid, const Frf& frf,
                                       const SplitKernelOptions& options = {});

@@ -9,8 +9,10 @@ namespace coatfft {
 
 Grid::Grid(std::ptrdiff_t nx, std::ptrdiff_t ny, double lx, double ly)
     : nx_(nx), ny_(ny), lx_(lx), ly_(ly) {
-  COATFFT_REQUIRE(nx >= 1, "Grid: nx = ", nx, ", but nx must be >= 1");
-  COATFFT_REQUIRE(ny >= 1, "Grid: ny = ", ny, ", but ny must be >= 1");
+  COATFFT_REQUIRE(nx >= 1 && nx <= max_cells_per_axis, "Grid: nx = ", nx,
+                  ", but nx must be in [1, ", max_cells_per_axis, "]");
+  COATFFT_REQUIRE(ny >= 1 && ny <= max_cells_per_axis, "Grid: ny = ", ny,
+                  ", but ny must be in [1, ", max_cells_per_axis, "]");
   COATFFT_REQUIRE(std::isfinite(lx) && lx > 0, "Grid: lx = ", lx,
                   " m, but lx must be finite and > 0");
   COATFFT_REQUIRE(std::isfinite(ly) && ly > 0, "Grid: ly = ", ly,

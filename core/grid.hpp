@@ -7,14 +7,18 @@ namespace coatfft {
 
 class Grid {
  public:
-  /// Validates on construction: nx, ny >= 1 and lx, ly in [min_length, max_length] (throws
-  /// InvalidArgument).
+  /// Validates on construction: nx, ny in [1, max_cells_per_axis] and lx, ly in
+  /// [min_length, max_length] (throws InvalidArgument).
   Grid(std::ptrdiff_t nx, std::ptrdiff_t ny, double lx, double ly);
 
   /// Bounds of lx and ly [m]: any unit system from femtometres to light years fits, and the
   /// kernels' products of lengths cannot overflow or underflow double precision.
   static constexpr double min_length = 1e-100;
   static constexpr double max_length = 1e100;
+  /// Cells along one axis at most: 65536^2 cells take 32 GiB per field, and the padded transform
+  /// of a free boundary four times that; beyond it, sizes are typing errors, and nx * ny could
+  /// overflow before any memory estimate sees it.
+  static constexpr std::ptrdiff_t max_cells_per_axis = 65536;
 
   std::ptrdiff_t nx() const { return nx_; }
   std::ptrdiff_t ny() const { return ny_; }

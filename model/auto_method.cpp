@@ -85,6 +85,13 @@ MethodCandidate split_candidate(const Context& x, double split_tolerance) {
     return c;
   }
   const SplitKernelWork work = split_frf_kernel_work(x.grid, x.frf, o);
+  if (!work.lattice_fits) {
+    c.admissible = false;
+    c.predicted_error = inf;
+    c.note = detail::concat("a short-range lattice of ", work.lattice_entries,
+                            " entries: more than the split kernel takes");
+    return c;
+  }
   c.predicted_error = work.remainder_zero ? rounding_error : predicted_split_error(o.tolerance);
   c.setup_seconds = predicted_split_setup_seconds(x.grid, work, x.threads);
   c.apply_seconds = predicted_dcfft_apply_seconds(x.fft_nx, x.fft_ny, x.threads);

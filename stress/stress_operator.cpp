@@ -1,5 +1,6 @@
 #include "stress/stress_operator.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -7,21 +8,12 @@
 
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
+#include "core/fft_size.hpp"
 #include "frf/stress_frf.hpp"
 
 namespace coatfft {
 
 namespace {
-
-void validate_depths(const std::vector<double>& depths) {
-  if (depths.empty()) throw InvalidArgument("stress operator: no depth given");
-  for (double z : depths)
-    if (!std::isfinite(z) || z <= 0.0)
-      throw InvalidArgument(detail::concat(
-          "stress operator: depth z = ", z,
-          " m: every depth must be finite and > 0 [m] (z points into the body; the surface plane "
-          "z = 0 is not computed)"));
-}
 
 void refuse_sliding_tangential(const LayerStack& stack) {
   for (std::size_t i = 0; i < stack.coatings().size(); ++i)
@@ -36,13 +28,42 @@ void refuse_sliding_tangential(const LayerStack& stack) {
 
 }  // namespace
 
+void require_stress_depths(const std::vector<double>& depths) {
+  if (depths.empty()) throw InvalidArgument("stress operator: no depth given");
+  COATFFT_REQUIRE(depths.size() <= StressOperator::max_planes, "stress operator: ", depths.size(),
+                  " depths given; at most ", StressOperator::max_planes, " planes");
+  for (double z : depths)
+    if (!std::isfinite(z) || z <= 0.0)
+      throw InvalidArgument(detail::concat(
+          "stress operator: depth z = ", z,
+          " m: every depth must be finite and > 0 [m] (z points into the body; the surface plane "
+          "z = 0 is not computed)"));
+}
+
+double estimated_stress_bytes(const Grid& grid, std::size_t planes, int alpha, bool tangential) {
+  const double n = static_cast<double>(planes);
+  const double loads = tangential ? 3.0 : 1.0;
+  const double hx = double(fast_even_fft_size(2 * grid.nx() - 1)) / 2 + 1;
+  const double hy = double(fast_even_fft_size(2 * grid.ny() - 1)) / 2 + 1;
+  const double cells = double(grid.nx()) * double(grid.ny());
+  // Per plane: six spectrum quarters per load and the six output fields (plus von Mises on
+  // output); while a group of up to 8 planes is built: six quarters of DC-FFT's lattice and six
+  // of the long-range band, about (34 alpha)^2 entries (sqrt(45) 32 alpha/(2 pi) per side); the
+  // load spectra of the padded lattice.
+  const double group = std::min(n, 8.0);
+  const double short_quarter = (grid.nx() + 1.0) * (grid.ny() + 1.0);
+  const double band = std::pow(34.0 * alpha, 2);
+  return 8.0 * (n * (6 * loads * hx * hy + 7 * cells) + group * 6 * (short_quarter + band) +
+                12 * loads * hx * hy);
+}
+
 StressOperator::StressOperator(const Grid& grid, const LayerStack& stack,
                                std::vector<double> depths, const StressOperatorOptions& options)
     : depths_(std::move(depths)),
       tangential_(options.tangential),
       convolution_(grid, options.tangential ? 3 : 1, options.planning) {
   const auto start = std::chrono::steady_clock::now();
-  validate_depths(depths_);
+  require_stress_depths(depths_);
   if (tangential_) refuse_sliding_tangential(stack);
   // The planes' kernels are made in groups: one FRF solve per wavevector serves a group, and
   // a group's lattice quarters (six per plane) bound the memory.

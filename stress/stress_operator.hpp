@@ -32,10 +32,25 @@ struct StressOperatorOptions {
   Planning planning = Planning::estimate;
 };
 
+/// Throws InvalidArgument unless `depths` [m] is a plane list StressOperator computes: 1 to
+/// StressOperator::max_planes depths, each finite and > 0 (the front ends check it first, before
+/// they estimate the memory of the planes).
+void require_stress_depths(const std::vector<double>& depths);
+
+/// An upper estimate of the bytes a StressOperator of `planes` planes on `grid` takes while
+/// built and applied (its spectra, a group's kernel construction, the output fields), for a
+/// memory check before any allocation (core/memory.hpp); `alpha` as StressKernelOptions::alpha.
+double estimated_stress_bytes(const Grid& grid, std::size_t planes, int alpha, bool tangential);
+
 class StressOperator {
  public:
+  /// The most planes one operator computes: each holds six spectra of the padded lattice, and a
+  /// request beyond this is a typing error rather than a computation (every front end's limit).
+  static constexpr std::size_t max_planes = 512;
+
   /// Plans the planes at `depths` [m] (each finite, > 0) of the body `stack` on `grid`.
-  /// Throws InvalidArgument on bad options, an empty or non-finite depth list, or tangential
+  /// Throws InvalidArgument on bad options, an empty or non-finite depth list, more than
+  /// max_planes depths, or tangential
   /// loads on a stack with a frictionless interface (a net tangential force has no equilibrium
   /// there: the coating slides, docs/theory.md 2.3), or planes so shallow that their kernels
   /// exceed options.kernel.max_evaluations (stress_kernel_evaluations).

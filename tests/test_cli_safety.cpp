@@ -212,6 +212,41 @@ TEST_CASE("counts and sizes have caps, refused before memory is spent", "[cli][s
   CHECK_FALSE(fs::exists(out));
 }
 
+TEST_CASE("an automatic choice too large for the memory is refused by the memory check",
+          "[cli][safety]") {
+  // A coated 16384^2 scene: the least any method needs (dcfft's padded lattice, about 30 GB) is
+  // checked before the choice, whose lattice sizing would otherwise speak first, in its own terms.
+  const std::string scene = R"([grid]
+nx = 16384
+ny = 16384
+lx = 1e-3
+ly = 1e-3
+[substrate]
+material = "steel"
+[[coating]]
+material = "alumina"
+thickness = 1e-5
+[pressure]
+kind = "hertz"
+p0 = 1e9
+a = 1e-4
+[method]
+name = "auto"
+)";
+  const fs::path path = write_scene(scene, "safety_auto_memory", "", "");
+  const fs::path out = scratch("safety_auto_memory_out");
+  fs::remove_all(out);
+  for (const std::string& command :
+       {"run " + path.string() + " -o " + out.string(), "check " + path.string()}) {
+    INFO(command);
+    const ProcessResult r = run_coatfft(command + " --max-memory 4G");
+    check_refusal(r, "the scene needs about");
+    CHECK(r.stderr_text.find("nx = 16384, ny = 16384 (padded 32768 x 32768 transform)") !=
+          std::string::npos);
+  }
+  CHECK_FALSE(fs::exists(out));
+}
+
 TEST_CASE("a max-memory beyond what 64 bits address is refused by name", "[cli][safety]") {
   const fs::path good = scene_with("safety_memory_good", "", "");
   // 1.1e32 bytes and, through the unit, an infinite double: both were accepted as limits.

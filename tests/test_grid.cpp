@@ -21,6 +21,13 @@ TEST_CASE("Grid cell centres are symmetric about the origin", "[grid]") {
 TEST_CASE("Grid refuses bad sizes with a message naming the value", "[grid][bad_input]") {
   CHECK_THROWS_WITH(Grid(0, 3, 1.0, 1.0), Catch::Contains("nx = 0"));
   CHECK_THROWS_WITH(Grid(3, -1, 1.0, 1.0), Catch::Contains("ny = -1"));
+  // One limit per axis for every front end: at the limit the grid is built (no memory is
+  // allocated by a Grid), one beyond it is refused, even where nx * ny would overflow.
+  CHECK_NOTHROW(Grid(Grid::max_cells_per_axis, Grid::max_cells_per_axis, 1.0, 1.0));
+  CHECK_THROWS_WITH(Grid(Grid::max_cells_per_axis + 1, 3, 1.0, 1.0),
+                    Catch::Contains("nx = 65537, but nx must be in [1, 65536]"));
+  CHECK_THROWS_WITH(Grid(3, std::ptrdiff_t(1) << 40, 1.0, 1.0),
+                    Catch::Contains("ny = 1099511627776"));
   CHECK_THROWS_AS(Grid(3, 3, 0.0, 1.0), InvalidArgument);
   CHECK_THROWS_AS(Grid(3, 3, 1.0, std::numeric_limits<double>::infinity()), InvalidArgument);
   CHECK_THROWS_AS(Grid(3, 3, std::numeric_limits<double>::quiet_NaN(), 1.0), InvalidArgument);

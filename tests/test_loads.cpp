@@ -6,6 +6,7 @@
 #include "core/error.hpp"
 #include "core/grid.hpp"
 #include "loads/hertz_pressure.hpp"
+#include "loads/load_limits.hpp"
 #include "loads/uniform_disk_pressure.hpp"
 
 using namespace coatfft;
@@ -125,4 +126,23 @@ TEST_CASE("Loads refuse bad radii and pressures", "[loads][bad_input]") {
   CHECK_THROWS_WITH(uniform_disk_pressure(g, 1.0, -1.0, Sampling::cell_average),
                     Catch::Contains("a = -1"));
   CHECK_THROWS_AS(uniform_disk_pressure(g, 1.0, nan, Sampling::centre), InvalidArgument);
+}
+
+TEST_CASE("One set of disk-load limits for every front end", "[loads][bad_input]") {
+  const Grid g(64, 32, 1e-3, 0.5e-3);  // dx = dy = 15.6 um; half the domain 0.25 mm
+  const DiskLoadKeys keys{"p0", "a", "the grid"};
+  const auto refused = [&](double amplitude, double radius, Sampling s, const char* why) {
+    CHECK_THROWS_WITH(require_disk_load(g, amplitude, radius, s, keys), Catch::Contains(why));
+  };
+  CHECK_NOTHROW(require_disk_load(g, 1e9, 0.1e-3, Sampling::centre, keys));
+  refused(-1e9, 0.1e-3, Sampling::centre, "p0 = -1e+09 Pa must be finite and > 0");
+  refused(0.0, 0.1e-3, Sampling::centre, "p0 = 0 Pa");
+  refused(std::numeric_limits<double>::infinity(), 0.1e-3, Sampling::centre, "p0 = inf");
+  refused(1e9, 0.26e-3, Sampling::cell_average, "at most half the domain (0.00025 m)");
+  // A disk 0.4 cells wide: centre sampling misses or overfills; cell averages keep its force.
+  const double narrow = 0.2 * g.dx();
+  refused(1e9, narrow, Sampling::centre,
+          "narrower than a cell (dx = 1.5625e-05 m, dy = 1.5625e-05 m from the grid)");
+  CHECK_NOTHROW(require_disk_load(g, 1e9, narrow, Sampling::cell_average, keys));
+  CHECK_NOTHROW(require_disk_load(g, 1e9, 0.5 * g.dx(), Sampling::centre, keys));
 }

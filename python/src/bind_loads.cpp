@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "load_names.hpp"
 #include "loads/hertz_pressure.hpp"
+#include "loads/load_limits.hpp"
 #include "loads/uniform_disk_pressure.hpp"
 #include "validation/hankel_displacement.hpp"
 #include "validation/hertz.hpp"
@@ -89,7 +90,9 @@ void bind_pressures(py::module_& m) {
   m.def(
       "hertz_pressure",
       [](const Grid& grid, double p0, double a, std::string_view sampling) {
-        return array_from_field(hertz_pressure(grid, p0, a, parse_sampling(sampling)));
+        const Sampling s = parse_sampling(sampling);
+        require_disk_load(grid, p0, a, s, {"hertz_pressure: p0", "hertz_pressure: a", "grid"});
+        return array_from_field(hertz_pressure(grid, p0, a, s));
       },
       "grid"_a, "p0"_a, "a"_a, "sampling"_a = "centre",
       "p0 sqrt(1 - r^2/a^2) [Pa] on r < a, shape (ny, nx); sampling \"centre\" or "
@@ -97,7 +100,10 @@ void bind_pressures(py::module_& m) {
   m.def(
       "uniform_disk_pressure",
       [](const Grid& grid, double p, double a, std::string_view sampling) {
-        return array_from_field(uniform_disk_pressure(grid, p, a, parse_sampling(sampling)));
+        const Sampling s = parse_sampling(sampling);
+        require_disk_load(grid, p, a, s,
+                          {"uniform_disk_pressure: p", "uniform_disk_pressure: a", "grid"});
+        return array_from_field(uniform_disk_pressure(grid, p, a, s));
       },
       "grid"_a, "p"_a, "a"_a, "sampling"_a = "centre",
       "p [Pa] on r < a, shape (ny, nx); sampling \"centre\" or \"cell_average\".");

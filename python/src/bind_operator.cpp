@@ -14,7 +14,9 @@
 #include "cli/automatic_method.hpp"
 #include "cli/operator_from_scene.hpp"
 #include "cli/scene.hpp"
+#include "convolution/operator_memory.hpp"
 #include "core/detail/parse_name.hpp"
+#include "core/memory.hpp"
 #include "core/threads.hpp"
 #include "operator.hpp"
 #include "without_gil.hpp"
@@ -175,6 +177,19 @@ py::dict report_dict(const Grid& grid, const BuiltOperator& built, const MethodK
   return dict_from_json_text(json.dump());
 }
 
+// The program's memory refusal (core/memory.hpp) for the operator of `options` and the fields the
+// module holds beside it (the pressure and the displacement of apply).
+void require_operator_memory(const Grid& grid, const OperatorOptions& options) {
+  const OperatorMemory m = estimated_memory(grid, options);
+  const double fields = 2.0 * 8.0 * static_cast<double>(grid.nb_cells());
+  std::string drivers = detail::concat("grid ", grid.nx(), " x ", grid.ny());
+  if (m.lattice_nx > 0)
+    drivers += detail::concat(" (", m.lattice_nx, " x ", m.lattice_ny, " transform lattice)");
+  require_memory({m.bytes + fields, drivers}, std::nullopt, "make_operator", "",
+                 options.method == Method::frf_spectral ? "use fewer cells or a smaller alpha"
+                                                        : "use fewer cells");
+}
+
 std::unique_ptr<Operator> make_operator_py(const Grid& grid, py::handle body_object,
                                            MethodKeywords k) {
   const Body body = body_from_object(body_object);
@@ -183,12 +198,16 @@ std::unique_ptr<Operator> make_operator_py(const Grid& grid, py::handle body_obj
   const LayerStack* stack = body.stack ? &*body.stack : nullptr;
   if (k.method == "auto") {
     k.tolerance = k.tolerance.value_or(AutoRequest{}.tolerance);
+    // The default method is the least any choice needs: a grid too large for it is refused
+    // before the automatic choice spends time on it.
+    require_operator_memory(grid, OperatorOptions{});
     choice = automatic_choice(grid, body, k);
     options = choice->method.options;
     if (choice->reduction) stack = &choice->reduction->body;
   } else {
     options = named_options(grid, k);
   }
+  require_operator_memory(grid, options);
   BuiltOperator built = without_gil([&] {
     return stack ? make_operator(grid, *stack, options) : make_operator(grid, *body.frf, options);
   });

@@ -11,7 +11,9 @@
 #include "bindings.hpp"
 #include "bodies.hpp"
 #include "convolution/cerruti_operator.hpp"
+#include "convolution/operator_memory.hpp"
 #include "core/error.hpp"
+#include "core/memory.hpp"
 #include "stress/stress_invariants.hpp"
 #include "stress/stress_operator.hpp"
 #include "without_gil.hpp"
@@ -54,19 +56,44 @@ LayerStack layers_of(py::handle body_object, const std::string& who, const char*
   return *body.stack;
 }
 
+// The depths [m] of a 1-D array: a 2-D array is refused rather than flattened, whose planes would
+// come back in an order the caller did not write.
+std::vector<double> depth_list(const DoubleArray& depths) {
+  COATFFT_REQUIRE(depths.ndim() == 1,
+                  "stresses: depths must be a 1-D list of depths [m], not an "
+                  "array of ",
+                  depths.ndim(), " dimensions");
+  std::vector<double> list(depths.data(), depths.data() + depths.size());
+  require_stress_depths(list);
+  return list;
+}
+
+// The program's memory refusal (core/memory.hpp) for `planes` planes and their output array.
+void require_stress_memory(const Grid& grid, std::size_t planes, int alpha, bool tangential) {
+  const double out = 6.0 * 8.0 * static_cast<double>(planes) * static_cast<double>(grid.nb_cells());
+  require_memory({estimated_stress_bytes(grid, planes, alpha, tangential) + out,
+                  detail::concat("grid ", grid.nx(), " x ", grid.ny(), ", ", planes,
+                                 " planes at alpha = ", alpha)},
+                 std::nullopt, "stresses", "", "use fewer cells or fewer depths");
+}
+
 // (n_depths, 6, ny, nx) [Pa], components xx, yy, zz, yz, xz, xy, as stress.npy.
-py::array_t<double> stresses(py::handle body_object, const Grid& grid, std::vector<double> depths,
-                             const DoubleArray& pressure, const std::optional<DoubleArray>& qx,
+py::array_t<double> stresses(py::handle body_object, const Grid& grid,
+                             const DoubleArray& depth_array, const DoubleArray& pressure,
+                             const std::optional<DoubleArray>& qx,
                              const std::optional<DoubleArray>& qy, const std::string& at_interface,
                              int alpha, int threads) {
   const LayerStack stack =
       layers_of(body_object, "stresses", "the fields at depth need the layers");
-  const SurfaceLoads loads = surface_loads("stresses", grid, pressure, qx, qy);
+  const std::vector<double> depths = depth_list(depth_array);
   StressOperatorOptions options;
   options.side = parse_side(at_interface);
   options.kernel.alpha = alpha;
   options.kernel.threads = threads;
-  options.tangential = loads.qx || loads.qy;
+  options.tangential = qx || qy;
+  // Before the loads are copied: a grid too large is refused before anything is allocated.
+  require_stress_memory(grid, depths.size(), alpha, options.tangential);
+  const SurfaceLoads loads = surface_loads("stresses", grid, pressure, qx, qy);
   std::vector<double> values;
   without_gil([&] {
     StressOperator op(grid, stack, depths, options);
@@ -89,6 +116,10 @@ py::tuple surface_displacements(py::handle body_object, const Grid& grid,
                                 const std::optional<DoubleArray>& qy, int threads) {
   const LayerStack stack =
       layers_of(body_object, "surface_displacements", "the tangential response needs the layers");
+  // The operator, the loads' copies and the three outputs, before anything is allocated.
+  require_memory({estimated_cerruti_bytes(grid) + 6.0 * 8.0 * static_cast<double>(grid.nb_cells()),
+                  detail::concat("grid ", grid.nx(), " x ", grid.ny())},
+                 std::nullopt, "surface_displacements", "", "use fewer cells");
   const SurfaceLoads loads = surface_loads("surface_displacements", grid, pressure, qx, qy);
   SurfaceKernelOptions options;
   options.lattice.threads = threads;

@@ -193,8 +193,11 @@ def test_tabulated_frf_errors():
 # --- grid and loads ---------------------------------------------------------------------------
 
 @pytest.mark.parametrize("args, message", [
-    ((0, 4, 1.0, 1.0), "Grid: nx = 0, but nx must be >= 1"),
-    ((4, -2, 1.0, 1.0), "Grid: ny = -2, but ny must be >= 1"),
+    ((0, 4, 1.0, 1.0), r"Grid: nx = 0, but nx must be in \[1, 65536\]"),
+    ((4, -2, 1.0, 1.0), r"Grid: ny = -2, but ny must be in \[1, 65536\]"),
+    # The program's limit per axis (coatfft run refuses nx = 65537 by the same constant).
+    ((2**40, 8, 1.0, 1.0), r"Grid: nx = 1099511627776, but nx must be in \[1, 65536\]"),
+    ((8, 65537, 1.0, 1.0), r"Grid: ny = 65537, but ny must be in \[1, 65536\]"),
     ((4, 4, 0.0, 1.0), "Grid: lx = 0 m, but lx must be finite and > 0"),
     ((4, 4, 1.0, float("inf")), "Grid: ly = inf m, but ly must be finite and > 0"),
     ((4, 4, float("nan"), 1.0), "Grid: lx = nan m"),
@@ -213,13 +216,57 @@ def test_pressure_errors(function):
     name = function.__name__
     raises(ValueError, r'sampling = "corner" is not one of "centre", "cell_average"',
            lambda: function(GRID, 1e9, 1e-4, "corner"))
-    raises(ValueError, rf"{name}: p0? = nan Pa, but p0? must be finite",
+    raises(ValueError, rf"{name}: p0? = nan Pa must be finite and > 0",
            lambda: function(GRID, float("nan"), 1e-4))
-    raises(ValueError, rf"{name}: a = -1 m, but the .* radius must be finite and > 0",
+    raises(ValueError, rf"{name}: a = -1 m must be finite and > 0",
            lambda: function(GRID, 1e9, -1.0))
     raises(ValueError, rf"{name}: a = 0 m", lambda: function(GRID, 1e9, 0.0))
     raises(TypeError, "incompatible function arguments", lambda: function(GRID, "1e9", 1e-4))
     raises(TypeError, "incompatible function arguments", lambda: function(STEEL, 1e9, 1e-4))
+
+
+@pytest.mark.parametrize("function", [coatfft.hertz_pressure, coatfft.uniform_disk_pressure])
+def test_pressure_limits_as_the_program(function):
+    # The scene reader's limits (loads/load_limits.hpp): GRID is 1 mm x 0.5 mm, dx = 62.5 um.
+    name = function.__name__
+    raises(ValueError, rf"{name}: p0? = -1e\+09 Pa must be finite and > 0",
+           lambda: function(GRID, -1e9, 1e-4))
+    raises(ValueError, rf"{name}: a = 3e-04 m .* at most half the domain \(0.00025 m\)",
+           lambda: function(GRID, 1e9, 3e-4))
+    raises(ValueError, rf"{name}: a = 1e-05 m: the load is narrower than a cell",
+           lambda: function(GRID, 1e9, 1e-5))
+    # Cell averages keep a sub-cell load's force: allowed, and the force is right.
+    p = function(GRID, 1e9, 1e-5, "cell_average")
+    force = p.sum() * GRID.dx * GRID.dy
+    expected = (2.0 / 3.0 if name == "hertz_pressure" else 1.0) * np.pi * 1e-10 * 1e9
+    assert abs(force - expected) <= 1e-12 * expected
+
+
+def test_memory_refused_before_allocation():
+    # 65536^2 cells: the padded dcfft lattice alone needs about 410 GB, beyond any CI machine.
+    huge = coatfft.Grid(65536, 65536, 1e-3, 1e-3)
+    raises(ValueError, r"make_operator needs about .* of memory, driven by grid 65536 x 65536 "
+           r"\(131072 x 131072 transform lattice\), but .* is available: use fewer cells",
+           lambda: coatfft.make_operator(huge, STEEL, method="dcfft"))
+    raises(ValueError, r"make_operator needs about .* of memory",
+           lambda: coatfft.make_operator(huge, STEEL))
+    # np.zeros takes no memory until written, and is passed without a copy.
+    big = coatfft.Grid(16384, 16384, 1e-3, 1e-3)
+    p = np.zeros((16384, 16384))
+    raises(ValueError, r"stresses needs about .* driven by grid 16384 x 16384, 512 planes",
+           lambda: coatfft.stresses(STEEL, big, np.linspace(1e-5, 1e-4, 512), p))
+    raises(ValueError, r"surface_displacements needs about .* driven by grid 16384 x 16384",
+           lambda: coatfft.surface_displacements(STEEL, big, p))
+
+
+def test_stress_depths_as_the_program():
+    p = coatfft.hertz_pressure(GRID, 1e9, 1e-4)
+    raises(ValueError, "stresses: depths must be a 1-D list of depths",
+           lambda: coatfft.stresses(STEEL, GRID, [[1e-4, 2e-4]], p))
+    raises(ValueError, "513 depths given; at most 512 planes",
+           lambda: coatfft.stresses(STEEL, GRID, np.linspace(1e-5, 1e-4, 513), p))
+    raises(ValueError, "depth z = 0 m: every depth must be finite and > 0",
+           lambda: coatfft.stresses(STEEL, GRID, [0.0], p))
 
 
 @pytest.mark.parametrize("function", [coatfft.hertz_displacement,
