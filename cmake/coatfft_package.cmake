@@ -20,7 +20,43 @@ function(coatfft_public_headers)
     file(CREATE_LINK ${CMAKE_CURRENT_SOURCE_DIR}/${header}
          ${PROJECT_BINARY_DIR}/include/${destination}/${header} SYMBOLIC)
     install(FILES ${header} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/${destination})
+    set_property(GLOBAL APPEND PROPERTY COATFFT_PUBLIC_HEADERS ${destination}/${header})
   endforeach()
+endfunction()
+
+# The public surface, checked where it is defined (after every coatfft_public_headers): the
+# umbrella coatfft.hpp includes every other public header (at configure time), and, with
+# COATFFT_CHECK_HEADERS, each public header compiles on its own with only the include root a user
+# has (the build tree's, which mirrors an install) and Eigen: the target coatfft_header_check, one
+# object per header, rebuilt only when its header changes.
+function(coatfft_check_public_headers)
+  get_property(headers GLOBAL PROPERTY COATFFT_PUBLIC_HEADERS)
+  file(READ ${PROJECT_SOURCE_DIR}/coatfft.hpp umbrella)
+  set(missing)
+  foreach(header IN LISTS headers)
+    string(REGEX REPLACE "^coatfft/" "" relative ${header})
+    string(FIND "${umbrella}" "#include \"${relative}\"" at)
+    if(at LESS 0 AND NOT relative STREQUAL "coatfft.hpp")
+      list(APPEND missing ${relative})
+    endif()
+  endforeach()
+  if(missing)
+    list(JOIN missing ", " missing)
+    message(FATAL_ERROR "coatfft.hpp must include every public header; it misses ${missing}")
+  endif()
+  if(NOT COATFFT_CHECK_HEADERS)
+    return()
+  endif()
+  set(sources)
+  foreach(header IN LISTS headers)
+    string(MAKE_C_IDENTIFIER ${header} name)
+    set(source ${PROJECT_BINARY_DIR}/header_check/${name}.cpp)
+    file(CONFIGURE OUTPUT ${source} CONTENT "#include <${header}>\n")
+    list(APPEND sources ${source})
+  endforeach()
+  add_library(coatfft_header_check OBJECT ${sources})
+  target_link_libraries(coatfft_header_check PRIVATE coatfft)
+  coatfft_target_warnings(coatfft_header_check)
 endfunction()
 
 # The library, its export set (relocatable: paths relative to the install prefix, dependencies

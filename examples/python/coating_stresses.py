@@ -54,15 +54,19 @@ def main():
     parser.add_argument("--out", default=os.path.join("out", "python"),
                         help="folder for the figure (default: out/python)")
     parser.add_argument("--n", type=int, default=97, help="cells per side, odd (default 97)")
+    parser.add_argument("--nz", type=int, default=40,
+                        help="depths, evenly from 2 a / nz to 2 a (default 40)")
     args = parser.parse_args()
     if args.n % 2 == 0:
         sys.exit("--n must be odd (a cell centred on the axis)")
+    if args.nz < 8:
+        sys.exit("--nz must be at least 8 (the check compares the depths z >= a/4)")
 
     steel = coatfft.material("steel")
     tin = coatfft.Coating(coatfft.material("titanium_nitride"), 50e-6)
     grid = coatfft.Grid(args.n, args.n, 4 * A, 4 * A)
     p = coatfft.hertz_pressure(grid, P0, A, "cell_average")
-    depths = A * np.arange(1, 41) / 20
+    depths = 2 * A * np.arange(1, args.nz + 1) / args.nz
     bodies = {"steel": steel, "50 um TiN on steel": coatfft.LayerStack(steel, [tin])}
     results = {name: section(body, grid, p, depths) for name, body in bodies.items()}
 
