@@ -1,6 +1,6 @@
 // The automatic method choice measured: for each body, grid and tolerance (1e-2, 1e-3, 1e-4),
 // the whole path of `[method] name = "auto"` (reduce_body, choose_method, make_operator, one
-// application; cli/automatic_method.cpp) timed and its achieved operator error measured, next
+// application; scene/automatic_method.cpp) timed and its achieved operator error measured, next
 // to the hand-picked settings of the speed-against-error sweep (dcfft, frf-split, frf-spectral
 // and frf-dcfft at alpha 2, 4, 8 with g(0) regularized) and the fastest of them that meets the
 // tolerance (docs/auto.md, section 5). One Hertz load (p0 = 1 GPa, a = 1 mm, cell-averaged,
@@ -52,7 +52,7 @@ constexpr double p0 = 1e9;       // Hertz peak pressure [Pa]
 constexpr double radius = 1e-3;  // Hertz contact radius a [m]
 constexpr double side = 3e-3;    // the domain [-1.5a, 1.5a]^2 [m]
 constexpr double reference_split_tolerance = 1e-13;
-// The CLI's share of the tolerance offered to the body reduction (cli/automatic_method.hpp).
+// The CLI's share of the tolerance offered to the body reduction (scene/automatic_method.hpp).
 constexpr double reduction_share = 0.9;
 const std::vector<double> tolerances = {1e-2, 1e-3, 1e-4};
 
@@ -195,7 +195,7 @@ struct AutoRun {
 };
 
 // reduce_body, choose_method, make_operator and one application: what `coatfft run` does for
-// `[method] name = "auto"` with a Hertz pressure (cli/automatic_method.cpp).
+// `[method] name = "auto"` with a Hertz pressure (scene/automatic_method.cpp).
 AutoRun auto_path(const Grid& grid, const LayerStack& body, const Field& p, double tolerance,
                   Field& u) {
   const Stopwatch watch;

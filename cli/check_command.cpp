@@ -4,50 +4,52 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "cli/automatic_method.hpp"
-#include "cli/load_error_report.hpp"
-#include "cli/operator_from_scene.hpp"
-#include "cli/resources.hpp"
-#include "cli/scene.hpp"
-#include "cli/scene_pressure.hpp"
 #include "convolution/pipeline_error.hpp"
 #include "core/error.hpp"
 #include "frf/frf.hpp"
 #include "frf/tabulated_frf.hpp"
+#include "scene/automatic_method.hpp"
+#include "scene/load_error_report.hpp"
+#include "scene/operator_from_scene.hpp"
+#include "scene/resources.hpp"
+#include "scene/scene.hpp"
+#include "scene/scene_pressure.hpp"
 
 namespace coatfft::cli {
 
 namespace {
 
 // What make_operator will report as predicted_error, without building the operator.
-std::optional<double> predicted_error(const Scene& scene) {
+std::optional<double> predicted_error(const scene::Scene& scene) {
   const OperatorOptions& o = scene.method.options;
   if (o.method != Method::frf_spectral && o.method != Method::frf_dcfft) return std::nullopt;
-  return predicted_pipeline_error(scene.grid, *body_frf(scene), o.method, o.alpha, o.threads);
+  return predicted_pipeline_error(scene.grid, *scene::body_frf(scene), o.method, o.alpha,
+                                  o.threads);
 }
 
 }  // namespace
 
 void check_command(const CheckOptions& options) {
-  Scene scene = read_scene(options.scene);
+  scene::Scene scene = scene::read_scene(options.scene);
   // As run does: a pressure is applied once (run --repeat aside), a contact solve about
   // contact_applications times.
-  const double applications = scene.contact ? contact_applications : 1.0;
-  check_memory(scene, options.max_memory);  // before the choice too, as run does
-  const std::optional<AutomaticChoice> automatic = resolve_automatic_method(scene, applications);
+  const double applications = scene.contact ? scene::contact_applications : 1.0;
+  scene::check_memory(scene, options.max_memory);  // before the choice too, as run does
+  const std::optional<scene::AutomaticChoice> automatic =
+      scene::resolve_automatic_method(scene, applications);
   check_memory(scene, options.max_memory);
   if (scene.pressure) {  // reads and checks the loads as run does
-    const Field pressure = scene_pressure(scene);
-    scene_tractions(scene, pressure);
+    const Field pressure = scene::scene_pressure(scene);
+    scene::scene_tractions(scene, pressure);
   }
   OperatorReport report;
   report.method = scene.method.options.method;
   report.predicted_error = predicted_error(scene);
   if (report.predicted_error) report.alpha = scene.method.options.alpha;
-  refuse_untrustworthy(report);
+  scene::refuse_untrustworthy(report);
 
   const Grid& grid = scene.grid;
-  const MemoryNeed memory = estimate_memory(scene);
+  const MemoryNeed memory = scene::estimate_memory(scene);
   const std::optional<double> available = available_memory();
   nlohmann::json out;
   out["scene"] = options.scene.string();
@@ -62,20 +64,20 @@ void check_command(const CheckOptions& options) {
   out["method_requested"] =
       automatic || scene.method.auto_periodic ? "auto" : std::string(to_string(report.method));
   out["boundary"] = scene.periodic ? "periodic" : "free";
-  if (automatic) out["auto"] = automatic_choice_json(*automatic, scene.method.tolerance);
+  if (automatic) out["auto"] = scene::automatic_choice_json(*automatic, scene.method.tolerance);
   const MethodCandidate cost =
-      automatic ? automatic->method.chosen : predicted_scene_cost(scene, applications);
+      automatic ? automatic->method.chosen : scene::predicted_scene_cost(scene, applications);
   out["estimated_seconds"] = {{"setup", cost.setup_seconds},
                               {"apply", cost.apply_seconds},
                               {"applications", applications},
                               {"total", cost.total_seconds}};
-  out["refinement"] = refinement_json(scene);
+  out["refinement"] = scene::refinement_json(scene);
   out["estimated_memory_bytes"] = memory.bytes;
   out["memory_drivers"] = memory.drivers;
   out["available_memory_bytes"] = available ? nlohmann::json(*available) : nlohmann::json();
   if (report.predicted_error) out["predicted_error"] = *report.predicted_error;
   if (automatic) out["predicted_error"] = out["auto"]["predicted_error"];
-  out["warnings"] = operator_warnings(report);
+  out["warnings"] = scene::operator_warnings(report);
   if (const auto* table = dynamic_cast<const TabulatedFrf*>(scene.frf.get()))
     for (const std::string& warning : table->warnings())
       out["warnings"].push_back("[frf] " + warning);

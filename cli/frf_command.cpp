@@ -8,17 +8,17 @@
 #include <sstream>
 #include <vector>
 
-#include "cli/resources.hpp"
-#include "cli/scene.hpp"
 #include "cli/staged_output.hpp"
 #include "core/error.hpp"
 #include "frf/frf.hpp"
 #include "frf/frf_table.hpp"
+#include "scene/resources.hpp"
+#include "scene/scene.hpp"
 
 namespace coatfft::cli {
 
 void frf_command(const FrfOptions& options) {
-  const LayerStack body = read_scene_body(options.scene);
+  const LayerStack body = scene::read_scene_body(options.scene);
   const double h = body.total_thickness();
   // Coated: span the transition from the substrate (k h << 1) to the coating (k h >> 1).
   const double k_min = options.k_min.value_or(h > 0 ? 1e-3 / h : 1e2);
@@ -26,8 +26,8 @@ void frf_command(const FrfOptions& options) {
   COATFFT_REQUIRE(std::isfinite(k_min) && k_min > 0, "--k-min = ", k_min, " must be > 0");
   COATFFT_REQUIRE(std::isfinite(k_max) && k_max > k_min, "--k-max = ", k_max,
                   " must be finite and > --k-min = ", k_min);
-  COATFFT_REQUIRE(options.points >= 2 && options.points <= max_frf_points,
-                  "--points = ", options.points, " must be in 2..", max_frf_points);
+  COATFFT_REQUIRE(options.points >= 2 && options.points <= scene::max_frf_points,
+                  "--points = ", options.points, " must be in 2..", scene::max_frf_points);
   // The output is checked before any work: a table that cannot be written is refused at once.
   std::optional<StagedFile> file;
   if (!options.output.empty())

@@ -8,7 +8,6 @@
 
 #include "cli/check_command.hpp"
 #include "cli/frf_command.hpp"
-#include "cli/resources.hpp"
 #include "cli/run_command.hpp"
 #include "cli/signal_cleanup.hpp"
 #include "cli/surface_command.hpp"
@@ -16,6 +15,7 @@
 #include "core/detail/shorten.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
+#include "scene/resources.hpp"
 
 namespace {
 
@@ -44,7 +44,7 @@ int main(int argc, char** argv) {
   run_cmd->add_option("scene", run.scene, "Scene file (TOML)")->required();
   run_cmd->add_option("-o,--output", run.outdir, "Output folder")->required();
   run_cmd->add_option("--repeat", run.repeat, "Applications to time (median reported)")
-      ->check(CLI::Range(1, coatfft::cli::max_repeat));
+      ->check(CLI::Range(1, coatfft::scene::max_repeat));
   run_cmd->add_option("--max-memory", max_memory,
                       "Memory the run may use, e.g. 4G (default: what the machine has available)");
   run_cmd->add_flag("--quiet", run.quiet,
@@ -79,7 +79,7 @@ int main(int argc, char** argv) {
   frf_cmd->add_option("--k-min", frf.k_min, "Smallest wavenumber [rad/m]");
   frf_cmd->add_option("--k-max", frf.k_max, "Largest wavenumber [rad/m]");
   frf_cmd->add_option("--points", frf.points, "Number of log-spaced wavenumbers")
-      ->check(CLI::Range(2L, coatfft::cli::max_frf_points));
+      ->check(CLI::Range(2L, coatfft::scene::max_frf_points));
 
   coatfft::cli::SurfaceOptions surface;
   CLI::App* surface_cmd = app.add_subcommand(
@@ -112,8 +112,8 @@ int main(int argc, char** argv) {
 
   try {
     if (!max_memory.empty())
-      run.max_memory = coatfft::cli::parse_memory_size(max_memory, "--max-memory");
-    if (*run_cmd && coatfft::cli::run_command(run) == coatfft::cli::RunStatus::not_converged) {
+      run.max_memory = coatfft::scene::parse_memory_size(max_memory, "--max-memory");
+    if (*run_cmd && coatfft::cli::run_command(run) == coatfft::scene::RunStatus::not_converged) {
       std::cerr << "coatfft: warning: the contact solver did not converge (see summary.json)\n";
       return 3;
     }
@@ -121,7 +121,7 @@ int main(int argc, char** argv) {
     if (*surface_cmd) coatfft::cli::surface_command(surface);
     if (*check_cmd) {
       if (!check_max_memory.empty())
-        check.max_memory = coatfft::cli::parse_memory_size(check_max_memory, "--max-memory");
+        check.max_memory = coatfft::scene::parse_memory_size(check_max_memory, "--max-memory");
       coatfft::cli::check_command(check);
     }
     if (*validate_cmd && !coatfft::cli::validate_frf_command(validate)) return 1;

@@ -15,15 +15,18 @@
 #include <string>
 #include <string_view>
 
+#include "scene/progress_observer.hpp"
+
 namespace coatfft::cli {
 
 /// Whether `coatfft run` reports progress: only on a terminal, and not under --quiet.
 bool progress_wanted(bool quiet, bool stderr_is_terminal);
 
-/// Progress lines on one stream. Nothing is printed before `delay` has passed since the start;
-/// after it every stage is one line, and iterations update one line in place ('\r') at most once
-/// per `interval`, so that a terminal gets a few lines per second at most.
-class Progress {
+/// Progress lines on one stream: the scene layer's observer (scene/progress_observer.hpp) for a
+/// terminal. Nothing is printed before `delay` has passed since the start; after it every stage
+/// is one line, and iterations update one line in place ('\r') at most once per `interval`, so
+/// that a terminal gets a few lines per second at most.
+class Progress : public scene::ProgressObserver {
  public:
   using Clock = std::chrono::steady_clock;
   static constexpr std::chrono::milliseconds delay{1000};
@@ -35,17 +38,19 @@ class Progress {
   Progress(bool enabled, std::ostream& out, Clock::time_point start = Clock::now());
   /// Ends a line that iteration() left open, so that what follows on the stream (an error
   /// message) starts a line of its own.
-  ~Progress();
+  ~Progress() override;
   Progress(const Progress&) = delete;
   Progress& operator=(const Progress&) = delete;
 
-  /// A stage begins, e.g. "setting up the operator (dcfft)".
-  void stage(std::string_view what, Clock::time_point now = Clock::now());
+  /// A stage begins, e.g. "setting up the operator (dcfft)", at `now`.
+  void stage(std::string_view what, Clock::time_point now);
+  void stage(std::string_view what) override { stage(what, Clock::now()); }
   /// The current stage is still running: once `tick_interval` has passed since the last line,
   /// "coatfft [12.3 s] <stage> ...", updated in place as iteration() does.
   void tick(Clock::time_point now = Clock::now());
-  /// Iteration `k` of a contact solve left `residual`.
-  void iteration(int k, double residual, Clock::time_point now = Clock::now());
+  /// Iteration `k` of a contact solve left `residual`, at `now`.
+  void iteration(int k, double residual, Clock::time_point now);
+  void iteration(int k, double residual) override { iteration(k, residual, Clock::now()); }
   /// The run is done: a last line with its total time, if anything was printed before.
   void finish(Clock::time_point now = Clock::now());
 

@@ -9,14 +9,15 @@
 #include <string>
 #include <vector>
 
-#include "cli/npy.hpp"
-#include "cli/operator_from_scene.hpp"
 #include "cli/progress.hpp"
-#include "cli/scene.hpp"
-#include "cli/scene_run.hpp"
 #include "cli/signal_cleanup.hpp"
 #include "cli/staged_output.hpp"
+#include "cli/wisdom_file.hpp"
 #include "core/error.hpp"
+#include "scene/npy.hpp"
+#include "scene/operator_from_scene.hpp"
+#include "scene/scene.hpp"
+#include "scene/scene_run.hpp"
 
 namespace coatfft::cli {
 
@@ -35,7 +36,7 @@ void write_displacement_csv(const std::filesystem::path& path, const Grid& grid,
 
 // The files a run writes, in the order of the manifest (cli/staged_output.hpp). Only these are
 // checked, staged and committed.
-std::vector<std::string> output_names(const OutputSpec& spec) {
+std::vector<std::string> output_names(const scene::OutputSpec& spec) {
   std::vector<std::string> names;
   if (spec.uz) names.push_back("uz.npy");
   if (spec.pressure) names.push_back("pressure.npy");
@@ -57,34 +58,37 @@ std::string joined(const std::vector<std::string>& names) {
 
 // stress.npy (n_depths, 6, ny, nx), von_mises.npy (n_depths, ny, nx), stress_section.npy
 // (nz, 6, nx), von_mises_section.npy (nz, nx): docs/stress.md.
-void write_stress_outputs(StagedOutput& out, const OutputSpec& spec, const Grid& grid,
-                          const StressRun& s) {
+void write_stress_outputs(StagedOutput& out, const scene::OutputSpec& spec, const Grid& grid,
+                          const scene::StressRun& s) {
   const auto nx = static_cast<std::size_t>(grid.nx()), ny = static_cast<std::size_t>(grid.ny());
   if (spec.stress) {
     const std::size_t n = s.von_mises.size() / (nx * ny);
-    write_npy_array(out.path("stress.npy"), std::vector<std::size_t>{n, 6, ny, nx}, s.stress);
-    write_npy_array(out.path("von_mises.npy"), std::vector<std::size_t>{n, ny, nx}, s.von_mises);
+    scene::write_npy_array(out.path("stress.npy"), std::vector<std::size_t>{n, 6, ny, nx},
+                           s.stress);
+    scene::write_npy_array(out.path("von_mises.npy"), std::vector<std::size_t>{n, ny, nx},
+                           s.von_mises);
   }
   if (spec.stress_section) {
     const std::size_t nz = s.section_von_mises.size() / nx;
-    write_npy_array(out.path("stress_section.npy"), std::vector<std::size_t>{nz, 6, nx}, s.section);
-    write_npy_array(out.path("von_mises_section.npy"), std::vector<std::size_t>{nz, nx},
-                    s.section_von_mises);
+    scene::write_npy_array(out.path("stress_section.npy"), std::vector<std::size_t>{nz, 6, nx},
+                           s.section);
+    scene::write_npy_array(out.path("von_mises_section.npy"), std::vector<std::size_t>{nz, nx},
+                           s.section_von_mises);
   }
 }
 
 // Writes the requested outputs only: the CSV text, the costliest of them (a 2048^2 grid makes
 // hundreds of megabytes of decimal text), is not even formatted when it is not asked for.
-void write_outputs(StagedOutput& out, const OutputSpec& spec, const SceneRun& run,
+void write_outputs(StagedOutput& out, const scene::OutputSpec& spec, const scene::SceneRun& run,
                    Progress& progress) {
   progress.stage("writing " + joined(output_names(spec)));
-  if (spec.uz) write_npy(out.path("uz.npy"), run.uz);
-  if (spec.pressure) write_npy(out.path("pressure.npy"), run.pressure);
-  if (spec.gap && run.gap) write_npy(out.path("gap.npy"), *run.gap);
+  if (spec.uz) scene::write_npy(out.path("uz.npy"), run.uz);
+  if (spec.pressure) scene::write_npy(out.path("pressure.npy"), run.pressure);
+  if (spec.gap && run.gap) scene::write_npy(out.path("gap.npy"), *run.gap);
   if (run.stress) write_stress_outputs(out, spec, run.grid, *run.stress);
   if (spec.in_plane && run.ux && run.uy) {
-    write_npy(out.path("ux.npy"), *run.ux);
-    write_npy(out.path("uy.npy"), *run.uy);
+    scene::write_npy(out.path("ux.npy"), *run.ux);
+    scene::write_npy(out.path("uy.npy"), *run.uy);
   }
   if (spec.displacement_csv)
     write_displacement_csv(out.path("displacement.csv"), run.grid, run.pressure, run.uz);
@@ -107,22 +111,25 @@ void print_warnings(const nlohmann::json& summary) {
 
 }  // namespace
 
-RunStatus run_command(const RunOptions& options) {
+scene::RunStatus run_command(const RunOptions& options) {
   Progress progress(progress_wanted(options.quiet, ::isatty(STDERR_FILENO) == 1), std::cerr);
-  const SceneRunOptions run_options{options.repeat, options.max_memory, &progress};
+  const scene::SceneRunOptions run_options{options.repeat, options.max_memory, &progress};
   // Until the outputs are written, Ctrl-C stops the computation at its next check and the run
   // unwinds (main.cpp reports it); the checks also keep a long stage's progress line going.
   StopOnSigint stop_on_sigint([&progress] { progress.tick(); });
-  PreparedScene prepared = prepare_scene(options.scene, run_options);
-  const OutputSpec spec = prepared.scene.output;
+  scene::PreparedScene prepared = prepare_scene(options.scene, run_options);
+  const scene::OutputSpec spec = prepared.scene.output;
   // Every output target is checked now, before any work: a run that cannot write is refused at
   // once, not after minutes of computing. Outputs of an earlier run that this one does not
   // write are left to the manifest (stale ones removed at the commit).
   StagedOutput out(options.outdir, output_names(spec), prepared.scene.input_files);
-  // The wisdom file is loaded now and saved once the operator is planned (operator_from_scene);
+  // The wisdom file is loaded now and saved once everything is planned (cli/wisdom_file.hpp);
   // load_wisdom refuses one that is an input or one of OUTDIR's outputs.
   load_wisdom(prepared.scene, out);
-  const SceneRun run = compute_scene(std::move(prepared), run_options);
+  const std::filesystem::path wisdom = prepared.scene.method.wisdom;
+  const std::vector<std::filesystem::path> inputs = prepared.scene.input_files;
+  const scene::SceneRun run = compute_scene(std::move(prepared), run_options);
+  save_wisdom(wisdom, inputs);
   // From here a signal ends the run at once: the staged files are removed by the handler.
   stop_on_sigint.finish();
   print_warnings(run.summary);

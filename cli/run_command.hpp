@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <optional>
 
-#include "cli/scene_run.hpp"  // RunStatus; what the run computes (run_scene without the writing)
+#include "scene/scene_run.hpp"  // RunStatus; what the run computes (run_scene without the writing)
 
 namespace coatfft::cli {
 
@@ -18,11 +18,11 @@ struct RunOptions {
   bool quiet = false;
 };
 
-/// Runs the scene (prepare_scene, then compute_scene: cli/scene_run.hpp) and writes the outputs
+/// Runs the scene (prepare_scene, then compute_scene: scene/scene_run.hpp) and writes the outputs
 /// its [output] section asks for (by default OUTDIR/{uz.npy, pressure.npy, displacement.csv,
 /// summary.json}, + gap.npy for a contact) all at once (cli/staged_output.hpp). Reports progress
 /// on stderr when it is a terminal, unless quiet (cli/progress.hpp), and the operator's warnings
 /// once computed. Throws InvalidArgument on bad input, and leaves OUTDIR as it was on any failure.
-RunStatus run_command(const RunOptions& options);
+scene::RunStatus run_command(const RunOptions& options);
 
 }  // namespace coatfft::cli

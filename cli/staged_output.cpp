@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <fstream>
 
-#include "cli/input_file.hpp"
 #include "core/error.hpp"
+#include "scene/input_file.hpp"
 
 namespace coatfft::cli {
 
@@ -14,9 +14,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Paths in messages are quoted as file text is (cli/input_file.hpp): escaped and shortened.
+// Paths in messages are quoted as file text is (scene/input_file.hpp): escaped and shortened.
 std::string quoted(const fs::path& path) {
-  return quoted_excerpt(path.string());
+  return scene::quoted_excerpt(path.string());
 }
 
 // A hidden name beside `path`, unique to this process: ".NAME.partial-PID".
@@ -67,7 +67,8 @@ void check_output_target(const fs::path& target, std::string_view what,
   const fs::file_status status = fs::symlink_status(target, ec);
   if (!fs::exists(status)) return;
   COATFFT_REQUIRE(fs::is_regular_file(status), what, " ", quoted(target), " exists and is ",
-                  describe_file_type(status.type()), ": coatfft replaces only regular files");
+                  scene::describe_file_type(status.type()),
+                  ": coatfft replaces only regular files");
   for (const fs::path& input : inputs) {
     COATFFT_REQUIRE(!fs::equivalent(target, input, ec), what, " ", quoted(target),
                     " is an input of this run (", quoted(input), "): choose another output");
@@ -84,7 +85,8 @@ StagedOutput::StagedOutput(fs::path outdir, std::vector<std::string> names,
   const fs::file_status status = fs::status(outdir_, ec);
   if (!fs::exists(status)) return;
   COATFFT_REQUIRE(fs::is_directory(status), "output folder ", quoted(outdir), " exists and is ",
-                  describe_file_type(status.type()), ": -o names the folder the run writes into");
+                  scene::describe_file_type(status.type()),
+                  ": -o names the folder the run writes into");
   for (const std::string& name : names_) check_output_target(outdir_ / name, "output", inputs_);
 }
 
@@ -202,7 +204,7 @@ StagedFile::StagedFile(fs::path target, std::string_view what, std::vector<fs::p
   COATFFT_REQUIRE(fs::exists(folder), what_, " ", quoted(target), ": the directory ",
                   quoted(target.parent_path()), " does not exist");
   COATFFT_REQUIRE(fs::is_directory(folder), what_, " ", quoted(target), ": ",
-                  quoted(target.parent_path()), " is ", describe_file_type(folder.type()),
+                  quoted(target.parent_path()), " is ", scene::describe_file_type(folder.type()),
                   ", not a directory");
   check_output_target(target_, what_, inputs_);
 }

@@ -6,10 +6,10 @@
 #include <limits>
 #include <vector>
 
-#include "cli/npy.hpp"
 #include "cli/staged_output.hpp"
 #include "core/detail/shorten.hpp"
 #include "core/error.hpp"
+#include "scene/npy.hpp"
 #include "surfaces/self_affine_surface.hpp"
 
 namespace coatfft::cli {
@@ -47,7 +47,7 @@ void surface_command(const SurfaceOptions& o) {
   // The output is checked before any work: a file that cannot be written is refused at once.
   StagedFile file(o.output, "output file", {});
   const Field h = self_affine_surface(grid, spec);
-  write_npy(file.path(), h);
+  scene::write_npy(file.path(), h);
   file.commit();
   std::cout << "wrote " << o.output.string() << ": " << o.ny << " x " << o.nx
             << " heights [m], rms height " << std::sqrt(h.square().mean()) << " m, rms slope "

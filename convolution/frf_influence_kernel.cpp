@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "convolution/fftw_plan.hpp"
-#include "convolution/frf_spectral_operator.hpp"
+#include "convolution/frf_lattice.hpp"
 #include "core/detail/sinc.hpp"
 #include "core/error.hpp"
 

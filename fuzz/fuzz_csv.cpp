@@ -1,18 +1,18 @@
-// libFuzzer target: coatfft::cli::read_csv_matrix on arbitrary bytes. InvalidArgument is the
+// libFuzzer target: coatfft::scene::read_csv_matrix on arbitrary bytes. InvalidArgument is the
 // expected refusal; any other exception escapes and, like a crash or a sanitizer report, is a
 // finding.
 #include <cstddef>
 #include <cstdint>
 
-#include "cli/csv.hpp"
 #include "core/error.hpp"
 #include "fuzz/fuzz_input.hpp"
+#include "scene/csv.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const coatfft::fuzz::ScratchFolder scratch("fuzz_csv");
   const auto path = scratch.write("input.csv", data, size);
   try {
-    const coatfft::Field field = coatfft::cli::read_csv_matrix(path);
+    const coatfft::Field field = coatfft::scene::read_csv_matrix(path);
     if (field.size() == 0) __builtin_trap();  // the reader promises a non-empty array
   } catch (const coatfft::InvalidArgument&) {
   }

@@ -500,7 +500,7 @@ double centroid(const Grid& g, const Field& p) {
 
 // One contact per friction coefficient on `body`: the normal operator of make_operator (Love's
 // DC-FFT, or frf-split for a coated body) and the coupling u_z under q_x = mu p of
-// CerrutiOperator, as the command line builds them (cli/scene_run.cpp); n^2 cells over 4a.
+// CerrutiOperator, as the command line builds them (scene/scene_run.cpp); n^2 cells over 4a.
 std::vector<SlidingRow> sliding_rows(const LayerStack& body, const std::vector<double>& mus,
                                      std::ptrdiff_t n = 65) {
   const Grid g(n, n, 4 * kContactRadius, 4 * kContactRadius);

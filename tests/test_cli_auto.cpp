@@ -1,4 +1,4 @@
-// [method] name = "auto" through the command line (cli/automatic_method.hpp, docs/auto.md): the
+// [method] name = "auto" through the command line (scene/automatic_method.hpp, docs/auto.md): the
 // default method, its report in summary.json and `coatfft check`, reductions, refusals, and named
 // methods kept as they were.
 #include <catch2/catch.hpp>

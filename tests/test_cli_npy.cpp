@@ -11,10 +11,10 @@
 #include <limits>
 #include <string>
 
-#include "cli/csv.hpp"
-#include "cli/input_file.hpp"
-#include "cli/npy.hpp"
 #include "core/error.hpp"
+#include "scene/csv.hpp"
+#include "scene/input_file.hpp"
+#include "scene/npy.hpp"
 
 namespace fs = std::filesystem;
 using coatfft::Field;
@@ -51,9 +51,9 @@ TEST_CASE("npy: write then read round-trips shape and values", "[cli][npy]") {
   for (Eigen::Index j = 0; j < 3; ++j)
     for (Eigen::Index i = 0; i < 5; ++i)
       f(i, j) = 10.0 * static_cast<double>(j) + static_cast<double>(i) + 0.25;
-  coatfft::cli::write_npy(scratch("round.npy"), f);
+  coatfft::scene::write_npy(scratch("round.npy"), f);
   CHECK(fs::file_size(scratch("round.npy")) % 64 == (15 * 8) % 64);  // header padded to 64 bytes
-  const Field g = coatfft::cli::read_npy(scratch("round.npy"));
+  const Field g = coatfft::scene::read_npy(scratch("round.npy"));
   REQUIRE(g.rows() == 5);
   REQUIRE(g.cols() == 3);
   CHECK((g == f).all());
@@ -62,7 +62,7 @@ TEST_CASE("npy: write then read round-trips shape and values", "[cli][npy]") {
 TEST_CASE("npy: reads NumPy's own header layout, row j is y_j", "[cli][npy]") {
   const auto path = npy_with_header(
       "numpy.npy", "{'descr': '<f8', 'fortran_order': False, 'shape': (3, 4), }", 12);
-  const Field f = coatfft::cli::read_npy(path);
+  const Field f = coatfft::scene::read_npy(path);
   REQUIRE(f.rows() == 4);  // nx = columns of the (ny, nx) array
   REQUIRE(f.cols() == 3);
   CHECK(f(1, 0) == 1.0);  // C order: the second value is row 0, column 1
@@ -72,38 +72,39 @@ TEST_CASE("npy: reads NumPy's own header layout, row j is y_j", "[cli][npy]") {
 TEST_CASE("npy: refuses what it cannot read, naming the file", "[cli][npy][bad_input]") {
   using Catch::Contains;
   CHECK_THROWS_WITH(
-      coatfft::cli::read_npy(npy_with_header(
+      coatfft::scene::read_npy(npy_with_header(
           "int.npy", "{'descr': '<i4', 'fortran_order': False, 'shape': (3, 4), }", 6)),
       Contains("int.npy") && Contains("float64"));
   CHECK_THROWS_WITH(
-      coatfft::cli::read_npy(npy_with_header(
+      coatfft::scene::read_npy(npy_with_header(
           "fortran.npy", "{'descr': '<f8', 'fortran_order': True, 'shape': (3, 4), }", 12)),
       Contains("C order"));
   CHECK_THROWS_WITH(
-      coatfft::cli::read_npy(npy_with_header(
+      coatfft::scene::read_npy(npy_with_header(
           "vector.npy", "{'descr': '<f8', 'fortran_order': False, 'shape': (3,), }", 3)),
       Contains("2-D"));
   CHECK_THROWS_WITH(
-      coatfft::cli::read_npy(npy_with_header(
+      coatfft::scene::read_npy(npy_with_header(
           "short.npy", "{'descr': '<f8', 'fortran_order': False, 'shape': (3, 4), }", 5)),
       Contains("truncated"));
   std::ofstream(scratch("text.npy")) << "not an npy file at all";
-  CHECK_THROWS_WITH(coatfft::cli::read_npy(scratch("text.npy")), Contains("not a .npy"));
-  CHECK_THROWS_WITH(coatfft::cli::read_npy(scratch("missing.npy")), Contains("missing.npy"));
+  CHECK_THROWS_WITH(coatfft::scene::read_npy(scratch("text.npy")), Contains("not a .npy"));
+  CHECK_THROWS_WITH(coatfft::scene::read_npy(scratch("missing.npy")), Contains("missing.npy"));
 }
 
 TEST_CASE("CSV matrix: comments, blanks and commas; ragged rows and words refused",
           "[cli][npy][bad_input]") {
   std::ofstream(scratch("good.csv")) << "# heights\n1, 2 3\n\n4,5,6  # row 1\n";
-  const Field f = coatfft::cli::read_csv_matrix(scratch("good.csv"));
+  const Field f = coatfft::scene::read_csv_matrix(scratch("good.csv"));
   REQUIRE(f.rows() == 3);
   REQUIRE(f.cols() == 2);
   CHECK(f(2, 1) == 6.0);
   std::ofstream(scratch("ragged.csv")) << "1,2,3\n4,5\n";
-  CHECK_THROWS_WITH(coatfft::cli::read_csv_matrix(scratch("ragged.csv")),
+  CHECK_THROWS_WITH(coatfft::scene::read_csv_matrix(scratch("ragged.csv")),
                     Catch::Contains("ragged.csv:2"));
   std::ofstream(scratch("word.csv")) << "1,two,3\n";
-  CHECK_THROWS_WITH(coatfft::cli::read_csv_matrix(scratch("word.csv")), Catch::Contains("\"two\""));
+  CHECK_THROWS_WITH(coatfft::scene::read_csv_matrix(scratch("word.csv")),
+                    Catch::Contains("\"two\""));
 }
 
 namespace {
@@ -153,7 +154,7 @@ std::string message_of(const std::function<void()>& call) {
 TEST_CASE("input files: only regular files are opened, sizes are checked first",
           "[cli][npy][bad_input]") {
   using Catch::Contains;
-  using coatfft::cli::read_input_file;
+  using coatfft::scene::read_input_file;
   std::ofstream(scratch("input.txt")) << "hello\n";
   CHECK(read_input_file(scratch("input.txt"), "a test file", 100) == "hello\n");
   CHECK(read_input_file(scratch("input.txt"), "a test file", 6) == "hello\n");
@@ -170,8 +171,8 @@ TEST_CASE("input files: only regular files are opened, sizes are checked first",
                     Contains("zero.txt: not a regular file (a character device)"));
   CHECK(read_input_file(symlink_to("link.txt", scratch("input.txt")), "a test file", 100) ==
         "hello\n");
-  CHECK(coatfft::cli::require_regular_input(scratch("input.txt"), "a test file", 100) == 6);
-  coatfft::cli::InputFile file(scratch("input.txt"), "a test file", 100);
+  CHECK(coatfft::scene::require_regular_input(scratch("input.txt"), "a test file", 100) == 6);
+  coatfft::scene::InputFile file(scratch("input.txt"), "a test file", 100);
   char bytes[4] = {};
   file.read_exact(bytes, 4);
   CHECK(std::string(bytes, 4) == "hell");
@@ -181,8 +182,8 @@ TEST_CASE("input files: only regular files are opened, sizes are checked first",
 TEST_CASE("npy and CSV: FIFOs, directories and devices are refused without blocking",
           "[cli][npy][bad_input]") {
   using Catch::Contains;
-  using coatfft::cli::read_csv_matrix;
-  using coatfft::cli::read_npy;
+  using coatfft::scene::read_csv_matrix;
+  using coatfft::scene::read_npy;
   CHECK_THROWS_WITH(read_npy(fifo("pipe.npy")), Contains("pipe.npy: not a regular file (a FIFO)"));
   CHECK_THROWS_WITH(read_csv_matrix(fifo("pipe.csv")),
                     Contains("pipe.csv: not a regular file (a FIFO)"));
@@ -200,7 +201,7 @@ TEST_CASE("npy and CSV: FIFOs, directories and devices are refused without block
 TEST_CASE("npy: sizes in the header are checked against the file before allocating",
           "[cli][npy][bad_input]") {
   using Catch::Contains;
-  using coatfft::cli::read_npy;
+  using coatfft::scene::read_npy;
   const std::string dict = "{'descr': '<f8', 'fortran_order': False, 'shape': ";
   // 60000 x 60000 doubles would take 28.8 GB: refused from the sizes alone, quickly.
   const auto start = std::chrono::steady_clock::now();
@@ -229,7 +230,7 @@ TEST_CASE("npy: sizes in the header are checked against the file before allocati
 TEST_CASE("npy: the header is parsed strictly and quoted as it is in the file",
           "[cli][npy][bad_input]") {
   using Catch::Contains;
-  using coatfft::cli::read_npy;
+  using coatfft::scene::read_npy;
   const std::string dict = "{'descr': '<f8', 'fortran_order': False, 'shape': ";
   const std::string blanks_msg = message_of(
       [&] { read_npy(raw_npy("blanks.npy", 1, dict + "(32 32 ), }" + std::string(40, ' '), 0)); });
@@ -272,7 +273,7 @@ TEST_CASE("npy: the header is parsed strictly and quoted as it is in the file",
 TEST_CASE("CSV matrix: float64 range, 1-based line numbers, 0-based rows and columns",
           "[cli][npy][bad_input]") {
   using Catch::Contains;
-  using coatfft::cli::read_csv_matrix;
+  using coatfft::scene::read_csv_matrix;
   std::ofstream(scratch("tiny.csv")) << "1e-400, -1e-400, 1e-310, +2.5\n4.9e-324, inf, -0, 7\n";
   const Field f = read_csv_matrix(scratch("tiny.csv"));
   REQUIRE(f.rows() == 4);

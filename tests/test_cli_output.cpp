@@ -1,6 +1,6 @@
 // The [output] section of a scene: `coatfft run` writes the files it names (and summary.json,
 // always), byte for byte as a full run writes them, checks and replaces no others, and refuses
-// lists it cannot honour with one line and no output. run_scene (cli/scene_run.hpp) computes
+// lists it cannot honour with one line and no output. run_scene (scene/scene_run.hpp) computes
 // what the run writes, without writing anything.
 #include <array>
 #include <catch2/catch.hpp>
@@ -14,9 +14,9 @@
 #include <sstream>
 #include <string>
 
-#include "cli/npy.hpp"
-#include "cli/scene_run.hpp"
 #include "core/error.hpp"
+#include "scene/npy.hpp"
+#include "scene/scene_run.hpp"
 #include "tests/cli_process.hpp"
 
 using namespace coatfft_test;
@@ -119,27 +119,27 @@ class CaptureStderr {
 // run_scene on `base` (in a folder of its own, which must stay as it was, and with nothing
 // printed) against `coatfft run` of the same scene: the same fields bit for bit, the same summary
 // but for the times. Returns run_scene's result.
-coatfft::cli::SceneRun check_run_scene_as_run(const std::string& base, const std::string& name) {
+coatfft::scene::SceneRun check_run_scene_as_run(const std::string& base, const std::string& name) {
   const fs::path scene = scene_in_own_folder(base, name);
   const auto before = snapshot(scene.parent_path());
-  std::optional<coatfft::cli::SceneRun> result;
+  std::optional<coatfft::scene::SceneRun> result;
   std::string printed;
   {
     CaptureStderr captured;
-    result.emplace(coatfft::cli::run_scene(scene));
+    result.emplace(coatfft::scene::run_scene(scene));
     printed = captured.text();
   }
   CHECK(printed.empty());
   CHECK(snapshot(scene.parent_path()) == before);
-  coatfft::cli::SceneRun& run = *result;
+  coatfft::scene::SceneRun& run = *result;
 
   const fs::path out = scratch(name + "_out");
   fs::remove_all(out);
   REQUIRE(run_coatfft("run " + scene.string() + " -o " + out.string()).status == 0);
-  CHECK(same_bits(run.uz, coatfft::cli::read_npy(out / "uz.npy")));
-  CHECK(same_bits(run.pressure, coatfft::cli::read_npy(out / "pressure.npy")));
+  CHECK(same_bits(run.uz, coatfft::scene::read_npy(out / "uz.npy")));
+  CHECK(same_bits(run.pressure, coatfft::scene::read_npy(out / "pressure.npy")));
   CHECK(run.gap.has_value() == fs::exists(out / "gap.npy"));
-  if (run.gap) CHECK(same_bits(*run.gap, coatfft::cli::read_npy(out / "gap.npy")));
+  if (run.gap) CHECK(same_bits(*run.gap, coatfft::scene::read_npy(out / "gap.npy")));
   CHECK(keys_of(out / "summary.json") == [&] {
     std::set<std::string> keys;
     for (const auto& item : run.summary.items()) keys.insert(item.key());
@@ -237,20 +237,20 @@ TEST_CASE("[output] fields that cannot be honoured are refused with the key and 
 
 TEST_CASE("run_scene computes what coatfft run writes, and writes nothing", "[cli][output]") {
   SECTION("a known pressure") {
-    const coatfft::cli::SceneRun run = check_run_scene_as_run(kGoodScene, "run_scene_pressure");
-    CHECK(run.status == coatfft::cli::RunStatus::ok);
+    const coatfft::scene::SceneRun run = check_run_scene_as_run(kGoodScene, "run_scene_pressure");
+    CHECK(run.status == coatfft::scene::RunStatus::ok);
     CHECK_FALSE(run.gap);
     CHECK(run.uz.rows() == 33);
   }
   SECTION("a contact, with its gap") {
-    const coatfft::cli::SceneRun run =
+    const coatfft::scene::SceneRun run =
         check_run_scene_as_run(kSmallContactScene, "run_scene_contact");
-    CHECK(run.status == coatfft::cli::RunStatus::ok);
+    CHECK(run.status == coatfft::scene::RunStatus::ok);
     CHECK(run.gap);
     CHECK(run.summary["converged"] == true);
   }
   SECTION("a run that warns: in the summary only, where the CLI prints it too") {
-    const coatfft::cli::SceneRun run =
+    const coatfft::scene::SceneRun run =
         check_run_scene_as_run(kPipelineWarningScene, "run_scene_warning");
     REQUIRE(run.summary["warnings"].size() == 1);
     const ProcessResult printed =
@@ -265,7 +265,7 @@ TEST_CASE("run_scene reads the wisdom file of the scene but never writes it", "[
   const std::string with_wisdom = std::string(kGoodScene) + "wisdom = \"wisdom.fftw\"\n";
   const fs::path scene = scene_in_own_folder(with_wisdom, "run_scene_wisdom");
   const fs::path wisdom = scene.parent_path() / "wisdom.fftw";
-  coatfft::cli::run_scene(scene);
+  coatfft::scene::run_scene(scene);
   CHECK_FALSE(fs::exists(wisdom));
   // coatfft run writes it; run_scene then reads it and leaves it as it is.
   const fs::path out = scratch("run_scene_wisdom_out");
@@ -273,9 +273,9 @@ TEST_CASE("run_scene reads the wisdom file of the scene but never writes it", "[
   REQUIRE(run_coatfft("run " + scene.string() + " -o " + out.string()).status == 0);
   REQUIRE(fs::exists(wisdom));
   const auto before = snapshot(scene.parent_path());
-  const coatfft::cli::SceneRun run = coatfft::cli::run_scene(scene);
+  const coatfft::scene::SceneRun run = coatfft::scene::run_scene(scene);
   CHECK(snapshot(scene.parent_path()) == before);
-  CHECK(same_bits(run.uz, coatfft::cli::read_npy(out / "uz.npy")));
+  CHECK(same_bits(run.uz, coatfft::scene::read_npy(out / "uz.npy")));
 }
 
 TEST_CASE("run_scene refuses a bad scene with the message coatfft run prints",
@@ -294,7 +294,7 @@ TEST_CASE("run_scene refuses a bad scene with the message coatfft run prints",
     REQUIRE(refused.status == 2);
     std::string message;
     try {
-      coatfft::cli::run_scene(scene);
+      coatfft::scene::run_scene(scene);
     } catch (const coatfft::InvalidArgument& e) {
       message = e.what();
     }
@@ -304,9 +304,9 @@ TEST_CASE("run_scene refuses a bad scene with the message coatfft run prints",
   // A scene file that is not there, and a repeat count out of range.
   const fs::path missing = scratch("run_scene_missing.toml");
   fs::remove(missing);
-  CHECK_THROWS_AS(coatfft::cli::run_scene(missing), coatfft::InvalidArgument);
-  coatfft::cli::SceneRunOptions options;
+  CHECK_THROWS_AS(coatfft::scene::run_scene(missing), coatfft::InvalidArgument);
+  coatfft::scene::SceneRunOptions options;
   options.repeat = 0;
-  CHECK_THROWS_WITH(coatfft::cli::run_scene(scratch("run_scene_bad_nx.toml"), options),
+  CHECK_THROWS_WITH(coatfft::scene::run_scene(scratch("run_scene_bad_nx.toml"), options),
                     Catch::Contains("--repeat = 0"));
 }

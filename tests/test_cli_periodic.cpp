@@ -8,7 +8,7 @@
 #include <sstream>
 #include <string>
 
-#include "cli/npy.hpp"
+#include "scene/npy.hpp"
 #include "tests/cli_process.hpp"
 
 using namespace coatfft_test;
@@ -41,7 +41,7 @@ TEST_CASE("a periodic wavy contact from the command line is Westergaard's", "[cl
   for (int i = 0; i < n; ++i)
     h.row(i).setConstant(delta * (1 - std::cos(2 * std::numbers::pi * (i + 0.5 - n / 2) / n)));
   const fs::path gap = scratch("wavy_gap.npy");
-  coatfft::cli::write_npy(gap, h);
+  coatfft::scene::write_npy(gap, h);
   const double p_star = std::numbers::pi * e_star * delta / lambda;
   const double load = 0.5 * p_star * lambda * (2 * lambda / n);
   std::ostringstream scene;
@@ -64,9 +64,9 @@ TEST_CASE("a rough periodic contact made with coatfft surface", "[cli_periodic]"
                       " --nx 128 --ny 128 --lx 1e-3 --ly 1e-3 --hurst 0.8 --rms-height 0.5e-6 "
                       "--short-cutoff 3.2e-5 --seed 5")
               .status == 0);
-  const coatfft::Field topography = coatfft::cli::read_npy(z);
+  const coatfft::Field topography = coatfft::scene::read_npy(z);
   const fs::path gap = scratch("rough_gap.npy");
-  coatfft::cli::write_npy(gap, topography.maxCoeff() - topography);
+  coatfft::scene::write_npy(gap, topography.maxCoeff() - topography);
   const std::string scene =
       "[grid]\nnx = 128\nny = 128\nlx = 1e-3\nly = 1e-3\nboundary = \"periodic\"\n"
       "[substrate]\nmaterial = \"steel\"\n[[coating]]\nmaterial = \"titanium_nitride\"\n"
@@ -100,9 +100,9 @@ TEST_CASE("a light rough periodic contact converges only on a solution", "[cli_p
                       " --nx 64 --ny 64 --lx 0.5e-3 --ly 0.5e-3 --hurst 0.8 --rms-height 0.2e-6 "
                       "--seed 1")
               .status == 0);
-  const coatfft::Field topography = coatfft::cli::read_npy(z);
+  const coatfft::Field topography = coatfft::scene::read_npy(z);
   const fs::path gap = scratch("light_rough_gap.npy");
-  coatfft::cli::write_npy(gap, topography.maxCoeff() - topography);
+  coatfft::scene::write_npy(gap, topography.maxCoeff() - topography);
   const std::string scene =
       "[grid]\nnx = 64\nny = 64\nlx = 0.5e-3\nly = 0.5e-3\nboundary = \"periodic\"\n"
       "[substrate]\nmaterial = \"steel\"\n[contact]\nindenter = \"height_map\"\npath = \"" +

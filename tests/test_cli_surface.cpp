@@ -1,13 +1,13 @@
 // `coatfft surface`: the file it writes (shape, rms as asked, the same bytes for the same seed)
 // and its refusals (one line, exit 2, no file).
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
 #include <iterator>
 #include <string>
 
-#include "cli/npy.hpp"
+#include "scene/npy.hpp"
 #include "tests/cli_process.hpp"
 
 using namespace coatfft_test;
@@ -49,7 +49,7 @@ TEST_CASE("coatfft surface writes a reproducible self-affine surface", "[cli_sur
   const auto r = run_coatfft("surface -o " + a.string() + kSurface + " --rms-height 0.5e-6");
   INFO(r.stderr_text);
   REQUIRE(r.status == 0);
-  const coatfft::Field h = coatfft::cli::read_npy(a);
+  const coatfft::Field h = coatfft::scene::read_npy(a);
   CHECK(h.rows() == 64);  // (ny, nx) on disk, (nx, ny) in memory
   CHECK(h.cols() == 48);
   CHECK(std::sqrt(h.square().mean()) == Approx(0.5e-6).epsilon(1e-12));

@@ -14,8 +14,8 @@
 #include <set>
 #include <string>
 
-#include "cli/npy.hpp"
-#include "cli/scene.hpp"
+#include "scene/npy.hpp"
+#include "scene/scene.hpp"
 #include "tests/cli_process.hpp"
 #include "validation/axisymmetric_stress.hpp"
 #include "validation/axisymmetric_traction.hpp"
@@ -23,8 +23,8 @@
 #include "validation/hertz_contact.hpp"
 
 using namespace coatfft_test;
-using coatfft::cli::PressureKind;
-using coatfft::cli::Scene;
+using coatfft::scene::PressureKind;
+using coatfft::scene::Scene;
 
 namespace {
 
@@ -58,7 +58,7 @@ Run run_example(const std::string& name) {
 }
 
 Scene example_scene(const std::string& name) {
-  return coatfft::cli::read_scene(kScenes / (name + ".toml"));
+  return coatfft::scene::read_scene(kScenes / (name + ".toml"));
 }
 
 // The data of a float64 .npy file of any shape (the header ends at its first newline).
@@ -78,14 +78,14 @@ double number(const nlohmann::json& value) {
 // Centre displacement of the scene's load on a homogeneous half-space of plane-strain modulus
 // E*: pi p0 a / (2 E*) for Hertz (Johnson 1985 eq. 3.41a), 2 p a / E* for the uniform disk
 // (Johnson 1985 eq. 3.36), both through the closed forms of validation/hertz.hpp.
-double half_space_centre_displacement(const coatfft::cli::PressureSpec& load, double E_star) {
+double half_space_centre_displacement(const coatfft::scene::PressureSpec& load, double E_star) {
   return load.kind == PressureKind::hertz
              ? coatfft::hertz_displacement(0.0, load.amplitude, load.radius, E_star)
              : coatfft::uniform_disk_displacement(0.0, load.amplitude, load.radius, E_star);
 }
 
 // Total force of the continuous load: (2/3) pi p0 a^2 (Hertz) or pi p a^2 (disk) [N].
-double closed_form_load(const coatfft::cli::PressureSpec& load) {
+double closed_form_load(const coatfft::scene::PressureSpec& load) {
   const double area = std::numbers::pi * load.radius * load.radius;
   return load.kind == PressureKind::hertz ? 2.0 / 3.0 * load.amplitude * area
                                           : load.amplitude * area;
@@ -328,8 +328,8 @@ TEST_CASE("example auto_tolerance.toml: auto within its tolerance of frf-split",
   CHECK(named.summary["method_requested"] == "frf-split");
   const double reference = number(named.summary["uz_max"]);
   CHECK(std::abs(number(s["uz_max"]) - reference) <= tolerance * reference);
-  const coatfft::Field u_auto = coatfft::cli::read_npy(run.out / "uz.npy");
-  const coatfft::Field u_split = coatfft::cli::read_npy(named.out / "uz.npy");
+  const coatfft::Field u_auto = coatfft::scene::read_npy(run.out / "uz.npy");
+  const coatfft::Field u_split = coatfft::scene::read_npy(named.out / "uz.npy");
   REQUIRE(u_auto.rows() == u_split.rows());
   REQUIRE(u_auto.cols() == u_split.cols());
   CHECK((u_auto - u_split).abs().maxCoeff() <= tolerance * u_split.abs().maxCoeff());
@@ -390,7 +390,7 @@ TEST_CASE("example rough_sphere_contact.toml: a rough sphere carries its load on
   // constant), periodic as make_rough_sphere.py generates it, so its rms slope is taken by
   // periodic central differences, as the script does (0.0105).
   const coatfft::Grid& g = scene.grid;
-  const coatfft::Field gap = coatfft::cli::read_npy(kScenes / "rough_sphere.npy");
+  const coatfft::Field gap = coatfft::scene::read_npy(kScenes / "rough_sphere.npy");
   REQUIRE(gap.rows() == g.nx());
   REQUIRE(gap.cols() == g.ny());
   coatfft::Field z(g.nx(), g.ny());

@@ -1,4 +1,4 @@
-// A body given as a table of its FRF ([frf], cli/frf_table_file.hpp) and `coatfft validate-frf`:
+// A body given as a table of its FRF ([frf], scene/frf_table_file.hpp) and `coatfft validate-frf`:
 // coatfft's own FRFs written as tables pass, tables with the errors a user's FRF could carry
 // fail naming the check, a table body runs like the stack it tabulates, and bad tables and
 // scenes are refused with one line. The fixture tables are written here, into a scratch folder.
@@ -18,13 +18,13 @@
 #include <utility>
 #include <vector>
 
-#include "cli/frf_validation.hpp"
-#include "cli/npy.hpp"
 #include "core/error.hpp"
 #include "core/grid.hpp"
 #include "frf/frf.hpp"
 #include "layers/layer_stack.hpp"
 #include "materials/catalog.hpp"
+#include "scene/frf_validation.hpp"
+#include "scene/npy.hpp"
 #include "tests/cli_process.hpp"
 
 namespace fs = std::filesystem;
@@ -223,8 +223,8 @@ TEST_CASE("coatfft run on a table body reports it and matches the stack", "[cli]
   CHECK(table["c0"].get<double>() == Approx(coatfft::make_frf(coated_stack())->c0()).epsilon(1e-8));
   // The table interpolates H to <= 2.0e-7 (6e-9 for this body), and frf-split is linear in H:
   // the displacements agree to validate-frf's default tolerance, 1e-6.
-  const coatfft::Field u_table = coatfft::cli::read_npy(table_out / "uz.npy");
-  const coatfft::Field u_stack = coatfft::cli::read_npy(stack_out / "uz.npy");
+  const coatfft::Field u_table = coatfft::scene::read_npy(table_out / "uz.npy");
+  const coatfft::Field u_stack = coatfft::scene::read_npy(stack_out / "uz.npy");
   CHECK((u_table - u_stack).abs().maxCoeff() <= 1e-6 * u_stack.abs().maxCoeff());
 }
 
@@ -260,8 +260,8 @@ TEST_CASE("the table coatfft frf writes is read back as an [frf] table", "[cli][
   CHECK(summary["frf_table"]["points"] == 12 * per_decade + 1);
   // As for a table written here: 80 points per decade interpolate H to <= 2e-7, and frf-split
   // is linear in H, so the displacements agree to validate-frf's default tolerance, 1e-6.
-  const coatfft::Field u_table = coatfft::cli::read_npy(table_out / "uz.npy");
-  const coatfft::Field u_stack = coatfft::cli::read_npy(stack_out / "uz.npy");
+  const coatfft::Field u_table = coatfft::scene::read_npy(table_out / "uz.npy");
+  const coatfft::Field u_stack = coatfft::scene::read_npy(stack_out / "uz.npy");
   CHECK((u_table - u_stack).abs().maxCoeff() <= 1e-6 * u_stack.abs().maxCoeff());
 }
 
@@ -368,7 +368,7 @@ TEST_CASE("the tabulated-FRF example passes validate-frf and runs", "[cli][valid
   CHECK(result.status == 0);
 }
 
-// The library form of validate-frf (cli/frf_validation.hpp), on FRFs that are not tables: the
+// The library form of validate-frf (scene/frf_validation.hpp), on FRFs that are not tables: the
 // form the Python module calls with a user's own FRF. A small grid keeps it fast: 0.2 mm, 64
 // cells a side, resolves k h = 6e-3 .. 20 of a 2 um coating.
 namespace {
@@ -397,7 +397,7 @@ class DistortedFrf final : public coatfft::Frf {
   double c0_factor_;
 };
 
-std::string failed_checks(const coatfft::cli::FrfValidation& result) {
+std::string failed_checks(const coatfft::scene::FrfValidation& result) {
   std::string failed;
   for (const auto& check : result.checks)
     if (!check.passed) failed += (failed.empty() ? "" : ", ") + check.name;
@@ -410,7 +410,7 @@ TEST_CASE("validate_frf passes coatfft's own FRF of the stack, sampled over the 
           "[cli][validate_frf]") {
   const LayerStack stack = thin_coated_stack();
   const auto frf = coatfft::make_frf(stack);
-  const auto result = coatfft::cli::validate_frf(*frf, stack, small_grid, 1e-6);
+  const auto result = coatfft::scene::validate_frf(*frf, stack, small_grid, 1e-6);
   INFO(failed_checks(result));
   CHECK(result.passed);
   CHECK(result.reference == "coatfft's " + frf->name() + " FRF of the stack");
@@ -428,7 +428,7 @@ TEST_CASE("validate_frf passes coatfft's own FRF of the stack, sampled over the 
   CHECK(result.checks[0].detail == "k -> 0");
   CHECK(result.checks[1].detail == "k -> inf");
   // A tolerance below what the references resolve is raised to their floors.
-  const auto strict = coatfft::cli::validate_frf(*frf, stack, small_grid, 1e-12);
+  const auto strict = coatfft::scene::validate_frf(*frf, stack, small_grid, 1e-12);
   CHECK(strict.checks[2].tolerance == 1e-12);
   CHECK(strict.checks[4].tolerance == 1e-10);
   CHECK(strict.checks[5].tolerance == 1e-9);
@@ -441,7 +441,7 @@ TEST_CASE("validate_frf catches a wrong FRF, naming the check", "[cli][validate_
   SECTION("off by 1e-3 over one decade of k") {
     const DistortedFrf off(
         *exact, [&](double k) { return k * h >= 0.1 && k * h <= 1 ? 1.001 : 1.0; }, 1.0);
-    const auto result = coatfft::cli::validate_frf(off, stack, small_grid, 1e-6);
+    const auto result = coatfft::scene::validate_frf(off, stack, small_grid, 1e-6);
     const std::string failed = failed_checks(result);
     INFO(failed);
     CHECK_FALSE(result.passed);
@@ -454,7 +454,7 @@ TEST_CASE("validate_frf catches a wrong FRF, naming the check", "[cli][validate_
   SECTION("a wrong c0") {
     const DistortedFrf wrong_c0(
         *exact, [](double) { return 1.0; }, 1.001);
-    const auto result = coatfft::cli::validate_frf(wrong_c0, stack, small_grid, 1e-6);
+    const auto result = coatfft::scene::validate_frf(wrong_c0, stack, small_grid, 1e-6);
     INFO(failed_checks(result));
     CHECK_FALSE(result.passed);
     CHECK(failed_checks(result).find("c0") == 0);
@@ -468,15 +468,15 @@ TEST_CASE("validate_frf refuses a tolerance outside (0, 1) and a load without fo
   const LayerStack stack = thin_coated_stack();
   const auto frf = coatfft::make_frf(stack);
   for (const double tolerance : {0.0, 1.0, -1e-6, std::nan("")})
-    CHECK_THROWS_AS(coatfft::cli::validate_frf(*frf, stack, small_grid, tolerance),
+    CHECK_THROWS_AS(coatfft::scene::validate_frf(*frf, stack, small_grid, tolerance),
                     coatfft::InvalidArgument);
-  CHECK_THROWS_WITH(coatfft::cli::validate_frf(*frf, stack, small_grid, 0.0),
+  CHECK_THROWS_WITH(coatfft::scene::validate_frf(*frf, stack, small_grid, 0.0),
                     Catch::Matchers::Contains("--tolerance = 0 must be in (0, 1)"));
-  coatfft::cli::FrfValidationOptions options;
-  options.load = coatfft::cli::FrfCheckLoad{coatfft::AxisymmetricLoad::hertz, 0.0, 5e-5,
-                                            coatfft::Sampling::cell_average};
-  CHECK_THROWS_AS(coatfft::cli::validate_frf(*frf, stack, small_grid, 1e-6, options),
+  coatfft::scene::FrfValidationOptions options;
+  options.load = coatfft::scene::FrfCheckLoad{coatfft::AxisymmetricLoad::hertz, 0.0, 5e-5,
+                                              coatfft::Sampling::cell_average};
+  CHECK_THROWS_AS(coatfft::scene::validate_frf(*frf, stack, small_grid, 1e-6, options),
                   coatfft::InvalidArgument);
-  CHECK_THROWS_WITH(coatfft::cli::validate_frf(*frf, stack, small_grid, 1e-6, options),
+  CHECK_THROWS_WITH(coatfft::scene::validate_frf(*frf, stack, small_grid, 1e-6, options),
                     Catch::Matchers::Contains("amplitude = 0"));
 }

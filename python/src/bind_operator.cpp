@@ -11,14 +11,14 @@
 
 #include "bindings.hpp"
 #include "bodies.hpp"
-#include "cli/automatic_method.hpp"
-#include "cli/operator_from_scene.hpp"
-#include "cli/scene.hpp"
 #include "convolution/operator_memory.hpp"
 #include "core/detail/parse_name.hpp"
 #include "core/memory.hpp"
 #include "core/threads.hpp"
 #include "operator.hpp"
+#include "scene/automatic_method.hpp"
+#include "scene/operator_from_scene.hpp"
+#include "scene/scene.hpp"
 #include "without_gil.hpp"
 
 namespace py = pybind11;
@@ -108,9 +108,9 @@ OperatorOptions named_options(const Grid& grid, const MethodKeywords& k) {
     }
   });
   refuse_keywords_not_applying(k, o.method);
-  COATFFT_REQUIRE(o.method != Method::direct || grid.nb_cells() <= cli::max_direct_cells,
+  COATFFT_REQUIRE(o.method != Method::direct || grid.nb_cells() <= scene::max_direct_cells,
                   "make_operator: method = \"direct\" on ", grid.nx(), " x ", grid.ny(),
-                  " cells: direct summation is limited to ", cli::max_direct_cells,
+                  " cells: direct summation is limited to ", scene::max_direct_cells,
                   " cells (its cost grows as (nx ny)^2); use \"dcfft\", which gives the same "
                   "result");
   o.alpha = k.alpha.value_or(o.alpha);
@@ -132,7 +132,8 @@ OperatorOptions named_options(const Grid& grid, const MethodKeywords& k) {
 // operator of a Python session pays it.
 bool first_operator = true;
 
-cli::AutomaticChoice automatic_choice(const Grid& grid, const Body& body, const MethodKeywords& k) {
+scene::AutomaticChoice automatic_choice(const Grid& grid, const Body& body,
+                                        const MethodKeywords& k) {
   for (const auto& [given, name] :
        {std::pair{k.alpha.has_value(), "alpha"}, std::pair{k.g0.has_value(), "g0"},
         std::pair{k.g0_tol.has_value(), "g0_tol"}})
@@ -150,20 +151,20 @@ cli::AutomaticChoice automatic_choice(const Grid& grid, const Body& body, const 
   request.max_threads = threads_keyword(k, std::clamp(cores, 1, max_threads));
   request.planning = planning_keyword(k);
   request.first_in_process = first_operator;
-  std::vector<ReferenceLoad> loads = cli::unknown_load_references(grid);
+  std::vector<ReferenceLoad> loads = scene::unknown_load_references(grid);
   if (k.load_radius) {
     require_load_radius(grid, *k.load_radius, "make_operator: load_radius");
     loads = {{AxisymmetricLoad::hertz, std::max(*k.load_radius, 0.5 * grid.dx())}};
   }
   return without_gil([&] {
-    return body.frf ? cli::choose_automatically(grid, *body.frf, loads, request)
-                    : cli::choose_automatically(grid, *body.stack, loads, request);
+    return body.frf ? scene::choose_automatically(grid, *body.frf, loads, request)
+                    : scene::choose_automatically(grid, *body.stack, loads, request);
   });
 }
 
 py::dict report_dict(const Grid& grid, const BuiltOperator& built, const MethodKeywords& k,
-                     const std::optional<cli::AutomaticChoice>& choice) {
-  nlohmann::json json = cli::operator_report_json(built.report);
+                     const std::optional<scene::AutomaticChoice>& choice) {
+  nlohmann::json json = scene::operator_report_json(built.report);
   json["method"] = to_string(built.report.method);
   json["method_requested"] = k.method;
   json["nx"] = grid.nx();
@@ -172,8 +173,8 @@ py::dict report_dict(const Grid& grid, const BuiltOperator& built, const MethodK
   json["fft_ny"] = built.report.fft_ny;
   json["setup_seconds"] = built.report.setup_seconds;
   json["kernel_seconds"] = built.report.kernel_seconds;
-  json["warnings"] = cli::operator_warnings(built.report);
-  if (choice) json["auto"] = cli::automatic_choice_json(*choice, *k.tolerance);
+  json["warnings"] = scene::operator_warnings(built.report);
+  if (choice) json["auto"] = scene::automatic_choice_json(*choice, *k.tolerance);
   return dict_from_json_text(json.dump());
 }
 
@@ -193,7 +194,7 @@ void require_operator_memory(const Grid& grid, const OperatorOptions& options) {
 std::unique_ptr<Operator> make_operator_py(const Grid& grid, py::handle body_object,
                                            MethodKeywords k) {
   const Body body = body_from_object(body_object);
-  std::optional<cli::AutomaticChoice> choice;
+  std::optional<scene::AutomaticChoice> choice;
   OperatorOptions options;
   const LayerStack* stack = body.stack ? &*body.stack : nullptr;
   if (k.method == "auto") {
@@ -212,7 +213,7 @@ std::unique_ptr<Operator> make_operator_py(const Grid& grid, py::handle body_obj
     return stack ? make_operator(grid, *stack, options) : make_operator(grid, *body.frf, options);
   });
   first_operator = false;
-  cli::refuse_untrustworthy(built.report, "make_operator: method");
+  scene::refuse_untrustworthy(built.report, "make_operator: method");
   py::dict report = report_dict(grid, built, k, choice);
   warn_each(report["warnings"]);
   return std::make_unique<Operator>(std::move(built), std::move(report));

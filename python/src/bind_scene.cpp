@@ -9,10 +9,10 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "bodies.hpp"
-#include "cli/frf_validation.hpp"
-#include "cli/scene_run.hpp"
 #include "core/error.hpp"
 #include "load_names.hpp"
+#include "scene/frf_validation.hpp"
+#include "scene/scene_run.hpp"
 #include "without_gil.hpp"
 
 namespace py = pybind11;
@@ -24,7 +24,7 @@ namespace {
 
 // The arrays of a [stress] scene, shaped as the program's stress.npy, von_mises.npy,
 // stress_section.npy and von_mises_section.npy.
-void add_stress_arrays(const Grid& grid, const cli::StressRun& s, py::dict& out) {
+void add_stress_arrays(const Grid& grid, const scene::StressRun& s, py::dict& out) {
   const auto as_array = [](const std::vector<double>& v, std::vector<py::ssize_t> shape) {
     py::array_t<double> a(shape);
     std::copy(v.begin(), v.end(), a.mutable_data());
@@ -45,7 +45,7 @@ void add_stress_arrays(const Grid& grid, const cli::StressRun& s, py::dict& out)
 
 // The path as a str or any os.PathLike (pathlib.Path), as Python's own file functions take it.
 py::dict run_scene(const std::filesystem::path& path) {
-  cli::SceneRun run = without_gil([&] { return cli::run_scene(path); });
+  scene::SceneRun run = without_gil([&] { return scene::run_scene(path); });
   py::dict out;
   out["uz"] = array_from_field(std::move(run.uz));
   out["pressure"] = array_from_field(std::move(run.pressure));
@@ -59,16 +59,16 @@ py::dict run_scene(const std::filesystem::path& path) {
 
 // The load of the displacement checks, as a scene's [pressure] gives it to the command: none
 // (the default loads), or a shape with its amplitude [Pa], radius [m] and sampling.
-cli::FrfValidationOptions validation_options(const std::optional<std::string>& load,
-                                             double amplitude, std::optional<double> radius,
-                                             const std::string& sampling) {
-  cli::FrfValidationOptions options;
+scene::FrfValidationOptions validation_options(const std::optional<std::string>& load,
+                                               double amplitude, std::optional<double> radius,
+                                               const std::string& sampling) {
+  scene::FrfValidationOptions options;
   COATFFT_REQUIRE(load.has_value() == radius.has_value(),
                   "validate_frf: give load and load_radius together (or neither, for the default "
                   "loads)");
   if (load)
     options.load =
-        cli::FrfCheckLoad{parse_load(*load), amplitude, *radius, parse_sampling(sampling)};
+        scene::FrfCheckLoad{parse_load(*load), amplitude, *radius, parse_sampling(sampling)};
   return options;
 }
 
@@ -83,12 +83,12 @@ py::dict validate_frf(py::handle frf_object, py::handle claim_object, const Grid
   COATFFT_REQUIRE(claim.stack,
                   "validate_frf: body must be a LayerStack or a Material (what the "
                   "FRF is checked against), not an Frf");
-  const cli::FrfValidationOptions options =
+  const scene::FrfValidationOptions options =
       validation_options(load, amplitude, load_radius, sampling);
-  const cli::FrfValidation result = without_gil(
-      [&] { return cli::validate_frf(*frf.response(), *claim.stack, grid, tolerance, options); });
+  const scene::FrfValidation result = without_gil(
+      [&] { return scene::validate_frf(*frf.response(), *claim.stack, grid, tolerance, options); });
   py::list checks;
-  for (const cli::FrfCheck& c : result.checks)
+  for (const scene::FrfCheck& c : result.checks)
     checks.append(py::dict("name"_a = c.name, "difference"_a = c.difference,
                            "tolerance"_a = c.tolerance, "passed"_a = c.passed,
                            "detail"_a = c.detail, "reference"_a = c.reference));

@@ -1,0 +1,168 @@
+#include "scene/automatic_method.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <variant>
+
+#include "validation/hertz_contact.hpp"
+
+namespace coatfft::scene {
+
+namespace {
+
+// The plane-strain moduli that may set a contact's size: the substrate's and the top layer's
+// (a coated contact's radius lies between the two half-spaces'); for a table body 2/c0 and
+// 2/c_inf, which are the same two.
+std::vector<double> bounding_moduli(const Scene& scene) {
+  if (scene.frf) return {2.0 / scene.frf->c0(), 2.0 / scene.frf->c_inf()};
+  const LayerStack& body = *scene.body;
+  std::vector<double> moduli{body.substrate().plane_strain_modulus()};
+  if (!body.is_homogeneous())
+    moduli.push_back(body.coatings().front().material.plane_strain_modulus());
+  return moduli;
+}
+
+std::vector<ReferenceLoad> contact_loads(const Scene& scene, const ContactSpec& spec) {
+  const Grid& grid = scene.grid;
+  if (const auto* punch = std::get_if<FlatPunch>(&spec.indenter))
+    return {{AxisymmetricLoad::uniform_disk, punch->radius}};
+  const double* radius = nullptr;
+  if (const auto* s = std::get_if<Sphere>(&spec.indenter)) radius = &s->radius;
+  if (const auto* p = std::get_if<Paraboloid>(&spec.indenter)) radius = &p->radius;
+  if (radius == nullptr) return unknown_load_references(grid);
+  std::vector<ReferenceLoad> loads;
+  for (const double E_star : bounding_moduli(scene)) {
+    const HertzSphere h = spec.load ? hertz_sphere_for_load(*spec.load, *radius, E_star)
+                                    : hertz_sphere_for_approach(*spec.approach, *radius, E_star);
+    loads.push_back({AxisymmetricLoad::hertz, h.contact_radius});
+  }
+  return loads;
+}
+
+}  // namespace
+
+std::vector<ReferenceLoad> unknown_load_references(const Grid& grid) {
+  return {{AxisymmetricLoad::hertz, std::max(grid.dx(), grid.dy())},
+          {AxisymmetricLoad::hertz, 0.5 * std::min(grid.lx(), grid.ly())}};
+}
+
+std::vector<ReferenceLoad> reference_loads(const Scene& scene) {
+  const Grid& grid = scene.grid;
+  std::vector<ReferenceLoad> loads;
+  if (scene.contact) {
+    loads = contact_loads(scene, *scene.contact);
+  } else if (scene.pressure->kind == PressureKind::file) {
+    loads = unknown_load_references(grid);
+  } else {
+    loads = {{axisymmetric_shape(*scene.pressure), scene.pressure->radius}};
+  }
+  // A load narrower than a cell acts on the grid as one cell.
+  for (ReferenceLoad& load : loads) load.radius = std::max(load.radius, grid.dx() * 0.5);
+  return loads;
+}
+
+AutomaticChoice choose_automatically(const Grid& grid, const LayerStack& body,
+                                     std::vector<ReferenceLoad> loads, AutoRequest request) {
+  AutomaticChoice choice;
+  choice.applications = request.applications;
+  choice.reference_loads = std::move(loads);
+  choice.reduction = reduce_body(body, choice.reference_loads, reduction_share * request.tolerance);
+  request.tolerance -= choice.reduction->estimated_effect;
+  choice.method = choose_method(grid, choice.reduction->body, request);
+  return choice;
+}
+
+AutomaticChoice choose_automatically(const Grid& grid, const Frf& frf,
+                                     std::vector<ReferenceLoad> loads, const AutoRequest& request) {
+  AutomaticChoice choice;
+  choice.applications = request.applications;
+  choice.reference_loads = std::move(loads);
+  choice.method = choose_method(grid, frf, request);
+  return choice;
+}
+
+std::optional<AutomaticChoice> resolve_automatic_method(Scene& scene, double applications) {
+  MethodSpec& m = scene.method;
+  if (!m.automatic) return std::nullopt;
+  AutoRequest request;
+  request.tolerance = m.tolerance;
+  request.applications = applications;
+  request.max_threads = m.options.threads;
+  request.planning = m.options.planning;
+  request.first_in_process = true;  // a command-line run builds one operator
+  AutomaticChoice choice =
+      scene.frf ? choose_automatically(scene.grid, *scene.frf, reference_loads(scene), request)
+                : choose_automatically(scene.grid, *scene.body, reference_loads(scene), request);
+  if (choice.reduction && choice.reduction->kind != "none") m.reduced_body = choice.reduction->body;
+  // g(0) omitted is the scene's own choice (a load-controlled contact without the approach).
+  const G0Method g0 = m.options.g0;
+  m.options = choice.method.options;
+  m.options.g0 = g0;
+  return choice;
+}
+
+namespace {
+
+nlohmann::json finite_or_null(double value) {
+  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json();
+}
+
+nlohmann::json candidate_json(const MethodCandidate& c) {
+  return {{"method", to_string(c.method)},
+          {"admissible", c.admissible},
+          {"predicted_error", finite_or_null(c.predicted_error)},
+          {"predicted_setup_seconds", c.setup_seconds},
+          {"predicted_apply_seconds", c.apply_seconds},
+          {"predicted_total_seconds", c.total_seconds},
+          {"note", c.note}};
+}
+
+nlohmann::json reduction_json(const BodyReduction& r) {
+  nlohmann::json tried = nlohmann::json::array();
+  for (const auto& [kind, effect] : r.tried) tried.push_back({{"kind", kind}, {"effect", effect}});
+  return {
+      {"kind", r.kind},
+      {"estimated_effect", r.estimated_effect},
+      {"why", r.why},
+      {"tried", tried},
+      {"work", {{"frf_evaluations", r.work.frf_evaluations}, {"quadratures", r.work.quadratures}}}};
+}
+
+}  // namespace
+
+nlohmann::json automatic_choice_json(const AutomaticChoice& choice, double tolerance) {
+  const MethodCandidate& c = choice.method.chosen;
+  nlohmann::json out;
+  out["tolerance"] = tolerance;
+  out["applications"] = choice.applications;
+  out["method"] = to_string(c.method);
+  out["why"] = choice.method.why;
+  out["threads"] = choice.method.options.threads;
+  if (c.method == Method::frf_split) out["split_tolerance"] = choice.method.options.split.tolerance;
+  const double effect = choice.reduction ? choice.reduction->estimated_effect : 0.0;
+  out["predicted_error"] = c.predicted_error + effect;
+  out["predicted_operator_error"] = c.predicted_error;
+  out["predicted_setup_seconds"] = c.setup_seconds;
+  out["predicted_apply_seconds"] = c.apply_seconds;
+  out["predicted_total_seconds"] = c.total_seconds;
+  out["candidates"] = nlohmann::json::array();
+  for (const MethodCandidate& k : choice.method.candidates)
+    out["candidates"].push_back(candidate_json(k));
+  out["reduction"] = choice.reduction ? reduction_json(*choice.reduction) : nlohmann::json();
+  out["reference_loads"] = nlohmann::json::array();
+  for (const ReferenceLoad& load : choice.reference_loads)
+    out["reference_loads"].push_back(
+        {{"shape", load.shape == AxisymmetricLoad::hertz ? "hertz" : "uniform_disk"},
+         {"radius", load.radius}});
+  return out;
+}
+
+MethodCandidate predicted_scene_cost(const Scene& scene, double applications) {
+  const OperatorOptions& o = scene.method.options;
+  if (scene.frf) return predict_method(scene.grid, *scene.frf, o, applications, true);
+  const LayerStack& body = scene.method.reduced_body ? *scene.method.reduced_body : *scene.body;
+  return predict_method(scene.grid, body, o, applications, true);
+}
+
+}  // namespace coatfft::scene

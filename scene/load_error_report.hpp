@@ -1,0 +1,21 @@
+#pragma once
+// The load's own discretisation error in summary.json (docs/theory.md 4.7): "load_discretization"
+// for analytic loads (hertz, uniform_disk), estimated with the scene's own operator by one extra
+// application; and "refinement", what [grid] refine = "auto" chose.
+#include <nlohmann/json.hpp>
+
+#include "convolution/surface_operator.hpp"
+#include "scene/scene.hpp"
+
+namespace coatfft::scene {
+
+/// {"estimated_error": max |u_cellwise - u_continuous| / max |u| (estimated), "absolute_error"
+/// [m], "sampling"}, or null for a load given as a file.
+nlohmann::json load_discretization_json(const Scene& scene, SurfaceOperator& op,
+                                        const Field& pressure, const Field& uz);
+
+/// {"tolerance_total", "load_tolerance", "operator_tolerance", "estimate", "tried": [{nx, ny,
+/// estimate}]}, or null without refine = "auto".
+nlohmann::json refinement_json(const Scene& scene);
+
+}  // namespace coatfft::scene

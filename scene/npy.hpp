@@ -1,0 +1,35 @@
+#pragma once
+// Reading and writing 2-D float64 arrays as NumPy .npy (format 1.0, C order); CSV is scene/csv.hpp.
+// A Field (nx, ny) is stored as shape (ny, nx): row j is y_j (docs/conventions.md), which is
+// the Field's own memory layout, so no transposition happens.
+//
+// The readers take only regular files (scene/input_file.hpp) and check every size before they
+// allocate. Their refusals are one-line InvalidArgument messages that start with the path; a
+// place in a CSV file is "PATH:LINE:" with 1-based line numbers, a place in the array is
+// "row j, column i" with 0-based indices as NumPy writes a[j, i]; text echoed from the file is
+// quoted, its non-printable bytes escaped, and shortened to 80 characters.
+#include <cstdint>
+#include <filesystem>
+#include <span>
+
+#include "core/types.hpp"
+#include "scene/input_file.hpp"
+
+namespace coatfft::scene {
+
+/// Writes `data` as a C-order little-endian float64 .npy file of shape `shape` (whose product
+/// must be data.size()).
+void write_npy_array(const std::filesystem::path& path, std::span<const std::size_t> shape,
+                     std::span<const double> data);
+
+/// Writes `field` as a (ny, nx) little-endian float64 .npy file.
+void write_npy(const std::filesystem::path& path, const Field& field);
+
+/// Reads a 2-D '<f8' C-order .npy file (format 1.0, 2.0 or 3.0) of shape (rows, cols) into a
+/// Field (cols, rows). The header must be a well-formed dict with exactly the keys 'descr',
+/// 'fortran_order' and 'shape', the shape two positive integers, and the file exactly the header
+/// followed by rows x cols x 8 bytes. Throws InvalidArgument naming the file for anything else,
+/// quoting the header as it is in the file (less its padding).
+Field read_npy(const std::filesystem::path& path, std::uintmax_t max_bytes = kMaxArrayFileBytes);
+
+}  // namespace coatfft::scene

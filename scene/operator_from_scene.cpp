@@ -1,0 +1,98 @@
+#include "scene/operator_from_scene.hpp"
+
+#include <chrono>
+#include <memory>
+#include <string>
+
+#include "convolution/periodic_kernel.hpp"
+#include "convolution/periodic_operator.hpp"
+#include "core/detail/timing.hpp"
+#include "core/error.hpp"
+#include "scene/input_file.hpp"
+
+namespace coatfft::scene {
+
+namespace fs = std::filesystem;
+
+std::string read_wisdom_file(const fs::path& path) {
+  constexpr std::uintmax_t max_wisdom_bytes = 64 << 20;
+  return read_input_file(path, "an FFTW wisdom file", max_wisdom_bytes);
+}
+
+bool holds_fftw_wisdom(const std::string& text) {
+  return text.rfind("(fftw-3", 0) == 0;
+}
+
+// [grid] boundary = "periodic": the periodic coefficients of the body's FRF (for dcfft and
+// frf-split alike, exact for the periodic problem) and their circular convolution.
+BuiltOperator periodic_operator(const Scene& scene) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::shared_ptr<const Frf> frf = body_frf(scene);
+  PeriodicKernelOptions kernel;
+  kernel.threads = scene.method.options.threads;
+  const Field coefficients = periodic_influence_kernel(scene.grid, *frf, kernel);
+  BuiltOperator built;
+  built.report.method = scene.method.options.method;
+  built.report.frf = frf->name();
+  built.report.kernel_seconds = detail::seconds_since(start);
+  built.op = std::make_unique<PeriodicOperator>(
+      scene.grid, coefficients, built.report.method, scene.method.options.planning,
+      Precision::double_precision, scene.method.options.threads);
+  built.report.setup_seconds = detail::seconds_since(start);
+  built.report.fft_nx = scene.grid.nx();
+  built.report.fft_ny = scene.grid.ny();
+  return built;
+}
+
+BuiltOperator operator_from_scene(const Scene& scene) {
+  const MethodSpec& method = scene.method;
+  // name = "auto" may have reduced the body (scene/automatic_method.hpp).
+  const LayerStack& body = method.reduced_body ? *method.reduced_body : *scene.body;
+  BuiltOperator built = scene.periodic ? periodic_operator(scene)
+                        : scene.frf    ? make_operator(scene.grid, *scene.frf, method.options)
+                                       : make_operator(scene.grid, body, method.options);
+  refuse_untrustworthy(built.report);
+  return built;
+}
+
+void refuse_untrustworthy(const OperatorReport& report, std::string_view who) {
+  const std::optional<double> error = report.predicted_error;
+  COATFFT_REQUIRE(!error || *error <= pipeline_refusal_error, who, " = \"",
+                  to_string(report.method), "\": predicted error ", *error,
+                  " of max |u| on these cells with alpha = ", report.alpha.value_or(0),
+                  " (docs/theory.md 4.6): the result would be meaningless; use \"frf-split\" "
+                  "(exact on any cells) or square cells and a larger alpha");
+}
+
+std::vector<std::string> operator_warnings(const OperatorReport& report) {
+  std::vector<std::string> warnings;
+  if (report.predicted_error && *report.predicted_error > pipeline_warning_error)
+    warnings.push_back(detail::concat(
+        "method ", to_string(report.method), ": predicted error ", *report.predicted_error,
+        " of max |u| (periodisation of the FRF pipelines at alpha = ", report.alpha.value_or(0),
+        ", docs/theory.md 4.6); \"frf-split\" is exact, or raise alpha"));
+  return warnings;
+}
+
+nlohmann::json operator_report_json(const OperatorReport& report) {
+  nlohmann::json json = nlohmann::json::object();
+  if (!report.frf.empty()) json["frf"] = report.frf;
+  if (report.g0) {
+    // An omitted g(0) is no value at all (the operator uses 0 in its place): reported as null.
+    const G0Result& g0 = *report.g0;
+    const bool omitted = g0.method == G0Method::omitted;
+    json["g0"] = omitted ? nlohmann::json() : nlohmann::json(g0.value);
+    json["g0_method"] = std::string(to_string(g0.method));
+    json["g0_seconds"] = g0.seconds;
+    json["g0_estimated_error"] = omitted ? nlohmann::json() : nlohmann::json(g0.estimated_error);
+  }
+  if (report.alpha) json["alpha"] = *report.alpha;
+  if (report.predicted_error) json["predicted_error"] = *report.predicted_error;
+  if (report.split) {
+    json["split_beta"] = report.split->beta;
+    json["split_seconds"] = report.split->seconds;
+  }
+  return json;
+}
+
+}  // namespace coatfft::scene

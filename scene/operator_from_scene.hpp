@@ -1,0 +1,43 @@
+#pragma once
+// The scene's operator: make_operator on the scene's grid, body and [method] options (which
+// writes no file: the program loads and saves the FFTW wisdom file around it, cli/wisdom_file.hpp),
+// and the operator's report as the keys of summary.json.
+#include <nlohmann/json.hpp>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "convolution/make_operator.hpp"
+#include "scene/scene.hpp"
+
+namespace coatfft::scene {
+
+/// The text of the FFTW wisdom file at `path` (at most 64 MiB: wisdom of a few hundred plans is
+/// tens of kilobytes; a FIFO or a device is refused, scene/input_file.hpp).
+std::string read_wisdom_file(const std::filesystem::path& path);
+/// Whether `text` is FFTW wisdom, by its first characters.
+bool holds_fftw_wisdom(const std::string& text);
+
+/// Thresholds on the predicted error of the FRF pipelines frf-spectral and frf-dcfft
+/// (OperatorReport::predicted_error, docs/theory.md 4.6), relative to max |u|: above the first a
+/// run warns, above the second its result cannot be trusted at all and it is refused.
+inline constexpr double pipeline_warning_error = 1e-2;
+inline constexpr double pipeline_refusal_error = 1.0;
+
+/// Builds the operator. Throws InvalidArgument when the method cannot handle the body (e.g. Love
+/// DC-FFT on a coating), and when an FRF pipeline's predicted error exceeds pipeline_refusal_error.
+BuiltOperator operator_from_scene(const Scene& scene);
+
+/// Throws InvalidArgument when the report's predicted error exceeds pipeline_refusal_error; the
+/// message starts with `who` and the method's name (`[method] name = "frf-spectral"`).
+void refuse_untrustworthy(const OperatorReport& report, std::string_view who = "[method] name");
+
+/// Warnings about what was built, for stderr and summary.json's "warnings": an FRF pipeline whose
+/// predicted error exceeds pipeline_warning_error.
+std::vector<std::string> operator_warnings(const OperatorReport& report);
+
+/// The method-specific keys of summary.json: frf, alpha, g0, g0_method, g0_seconds,
+/// g0_estimated_error (an omitted g(0) is reported as null), split_beta, split_seconds.
+nlohmann::json operator_report_json(const OperatorReport& report);
+
+}  // namespace coatfft::scene

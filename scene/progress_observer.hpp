@@ -1,0 +1,19 @@
+#pragma once
+// What a scene's computation reports while it runs: the stage it enters ("setting up the
+// operator (dcfft)") and the iterations of a contact solve. A front end that shows progress
+// implements it (the program's terminal lines, cli/progress.hpp); the scene layer never writes to
+// a stream itself, and the default observer reports nothing.
+#include <string_view>
+
+namespace coatfft::scene {
+
+class ProgressObserver {
+ public:
+  virtual ~ProgressObserver() = default;
+  /// A stage begins; it lasts until the next one.
+  virtual void stage(std::string_view /*what*/) {}
+  /// Iteration `k` of a contact solve left `residual` (ContactOptions::on_iteration).
+  virtual void iteration(int /*k*/, double /*residual*/) {}
+};
+
+}  // namespace coatfft::scene

@@ -1,0 +1,855 @@
+#include "scene/scene.hpp"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <set>
+#include <thread>
+#include <vector>
+
+#include "convolution/surface_kernels.hpp"
+#include "core/detail/brief.hpp"
+#include "core/detail/parse_name.hpp"
+#include "core/detail/shorten.hpp"
+#include "core/error.hpp"
+#include "core/threads.hpp"
+#include "loads/load_limits.hpp"
+#include "materials/catalog.hpp"
+#include "scene/csv.hpp"
+#include "scene/frf_table_file.hpp"
+#include "scene/input_file.hpp"
+#include "scene/npy.hpp"
+#include "stress/stress_kernel.hpp"
+#include "stress/stress_operator.hpp"
+
+namespace coatfft::scene {
+
+namespace {
+
+// Reads the keys of one TOML table, remembering which were used so that unknown keys (typos)
+// are refused instead of silently ignored.
+class SectionReader {
+ public:
+  SectionReader(const toml::table& table, std::string name)
+      : table_(table), name_(std::move(name)) {}
+
+  bool has(std::string_view key) const { return table_.contains(key); }
+
+  double number(std::string_view key) {
+    const toml::node& node = require(key);
+    COATFFT_REQUIRE(node.is_number(), where(key), " must be a number, got ", describe(node));
+    // An integer too large for an exact double (9007199254740993) is still a number: rounded.
+    const double value = node.is_integer() ? static_cast<double>(node.as_integer()->get())
+                                           : node.as_floating_point()->get();
+    COATFFT_REQUIRE(std::isfinite(value), where(key), " = ", value, " must be finite");
+    return value;
+  }
+  double number(std::string_view key, double fallback) { return has(key) ? number(key) : fallback; }
+
+  std::int64_t integer(std::string_view key) {
+    const toml::node& node = require(key);
+    COATFFT_REQUIRE(node.is_integer(), where(key), " must be an integer, got ", describe(node));
+    return node.value<std::int64_t>().value();
+  }
+  std::int64_t integer(std::string_view key, std::int64_t fallback) {
+    return has(key) ? integer(key) : fallback;
+  }
+
+  bool boolean(std::string_view key, bool fallback) {
+    if (!has(key)) return fallback;
+    const toml::node& node = require(key);
+    COATFFT_REQUIRE(node.is_boolean(), where(key), " must be true or false, got ", describe(node));
+    return node.value<bool>().value();
+  }
+
+  std::string string(std::string_view key) {
+    const toml::node& node = require(key);
+    COATFFT_REQUIRE(node.is_string(), where(key), " must be a string, got ", describe(node));
+    return node.value<std::string>().value();
+  }
+  std::string string(std::string_view key, std::string fallback) {
+    return has(key) ? string(key) : fallback;
+  }
+  /// The list of finite numbers at `key` (possibly empty).
+  std::vector<double> numbers(std::string_view key) {
+    const toml::node& node = require(key);
+    const toml::array* array = node.as_array();
+    COATFFT_REQUIRE(array != nullptr, where(key), " must be a list of numbers, got ",
+                    describe(node));
+    std::vector<double> values;
+    for (const toml::node& e : *array) {
+      COATFFT_REQUIRE(e.is_number(), where(key),
+                      " must be a list of numbers, got an entry of type ", describe(e));
+      const double v = e.is_integer() ? static_cast<double>(e.as_integer()->get())
+                                      : e.as_floating_point()->get();
+      COATFFT_REQUIRE(std::isfinite(v), where(key), " holds ", v, ": every depth must be finite");
+      values.push_back(v);
+    }
+    return values;
+  }
+  /// The list of strings at `key` (possibly empty).
+  std::vector<std::string> strings(std::string_view key) {
+    const toml::node& node = require(key);
+    const toml::array* array = node.as_array();
+    COATFFT_REQUIRE(array != nullptr, where(key), " must be a list of strings, got ",
+                    describe(node));
+    std::vector<std::string> values;
+    for (const toml::node& element : *array) {
+      COATFFT_REQUIRE(element.is_string(), where(key),
+                      " must be a list of strings, got an entry of type ", describe(element));
+      values.push_back(element.value<std::string>().value());
+    }
+    return values;
+  }
+  /// The enumerator named by the string at `key` (`fallback` when absent), by `parse` (which
+  /// throws InvalidArgument "\"x\" is not one of ..." for an unknown name).
+  template <typename Enum, typename Parse>
+  Enum named(std::string_view key, Enum fallback, Parse&& parse) {
+    if (!has(key)) return fallback;
+    const std::string value = string(key);
+    try {
+      return parse(value);
+    } catch (const InvalidArgument& e) {
+      throw InvalidArgument(detail::concat(where(key), " = ", e.what()));
+    }
+  }
+  std::string choice(std::string_view key, std::string fallback,
+                     std::initializer_list<std::string_view> allowed) {
+    std::string value = string(key, std::move(fallback));
+    std::string list;
+    for (auto a : allowed) {
+      if (a == value) return value;
+      list += (list.empty() ? "\"" : ", \"") + std::string(a) + "\"";
+    }
+    throw InvalidArgument(
+        detail::concat(where(key), " = \"", detail::shorten(value), "\" is not one of ", list));
+  }
+
+  /// Refuses every key that was not read.
+  void finish() const {
+    for (auto&& [key, node] : table_) {
+      COATFFT_REQUIRE(used_.count(std::string(key.str())), "[", name_, "] unknown key \"",
+                      detail::shorten(key.str()), "\"", line_of(node));
+    }
+  }
+
+  std::string where(std::string_view key) const {
+    std::string line;
+    if (const toml::node* node = table_.get(key)) line = line_of(*node);
+    return detail::concat("[", name_, "] ", key, line);
+  }
+
+ private:
+  const toml::node& require(std::string_view key) {
+    const toml::node* node = table_.get(key);
+    COATFFT_REQUIRE(node != nullptr, "[", name_, "] missing required key \"", key, "\"");
+    used_.insert(std::string(key));
+    return *node;
+  }
+  static std::string line_of(const toml::node& node) {
+    return node.source().begin ? detail::concat(" (line ", node.source().begin.line, ")") : "";
+  }
+  static std::string describe(const toml::node& node) {
+    std::ostringstream os;
+    os << node.type();
+    return os.str();
+  }
+
+  const toml::table& table_;
+  std::string name_;
+  std::set<std::string> used_;
+};
+
+const toml::table& section(const toml::table& root, std::string_view name, bool required) {
+  static const toml::table empty;
+  const toml::node* node = root.get(name);
+  COATFFT_REQUIRE(node != nullptr || !required, "missing required section [", name, "]");
+  if (node == nullptr) return empty;
+  COATFFT_REQUIRE(node->is_table(), "[", name, "] must be a table");
+  return *node->as_table();
+}
+
+// Library constructors validate values; prefix their messages with the section they came from.
+template <typename Build>
+auto in_section(std::string_view name, Build&& build) {
+  try {
+    return build();
+  } catch (const InvalidArgument& e) {
+    const std::string message = e.what();
+    if (message.rfind("[", 0) == 0) throw;
+    throw InvalidArgument(detail::concat("[", name, "] ", message));
+  }
+}
+
+// Material(E, nu) from the keys `e_key` and `nu_key`: the library's limits, named by those keys.
+Material material_from_moduli(SectionReader& reader, const char* e_key, const char* nu_key) {
+  const double E = reader.number(e_key);
+  const double nu = reader.number(nu_key);
+  try {
+    return Material(E, nu);
+  } catch (const InvalidArgument& e) {
+    throw InvalidArgument(detail::concat(reader.where(e_key), ", ", nu_key, ": ", e.what()));
+  }
+}
+
+Material read_material(SectionReader& reader) {
+  if (reader.has("material")) {
+    COATFFT_REQUIRE(!reader.has("E") && !reader.has("nu"), reader.where("material"),
+                    ": give either material or E and nu, not both");
+    const std::string name = reader.string("material");
+    try {
+      return material_by_name(name);
+    } catch (const InvalidArgument& e) {
+      throw InvalidArgument(detail::concat(reader.where("material"), ": ", e.what()));
+    }
+  }
+  return material_from_moduli(reader, "E", "nu");
+}
+
+// [grid]: nx and ny, or refine = "auto" with tolerance_total (the grid is then chosen once the
+// load and the body are known: refine_grid).
+struct GridSection {
+  double lx = 0.0;
+  double ly = 0.0;
+  std::optional<Grid> grid;               // nx and ny given
+  std::optional<double> tolerance_total;  // refine = "auto"
+  bool periodic = false;                  // boundary = "periodic"
+};
+
+GridSection read_grid(const toml::table& root) {
+  SectionReader reader(section(root, "grid", true), "grid");
+  return in_section("grid", [&] {
+    GridSection g{reader.number("lx"), reader.number("ly"), std::nullopt, std::nullopt, false};
+    g.periodic = reader.choice("boundary", "free", {"free", "periodic"}) == "periodic";
+    if (reader.choice("refine", "none", {"none", "auto"}) == "auto") {
+      COATFFT_REQUIRE(!g.periodic,
+                      "refine = \"auto\" chooses grids for free boundaries: give nx "
+                      "and ny with boundary = \"periodic\"");
+      COATFFT_REQUIRE(!reader.has("nx") && !reader.has("ny"),
+                      "refine = \"auto\" chooses nx and ny: remove them");
+      const double t = reader.number("tolerance_total");
+      COATFFT_REQUIRE(t > 0 && t <= 0.1, reader.where("tolerance_total"), " = ", t,
+                      " must be in (0, 0.1]");
+      g.tolerance_total = t;
+      Grid(1, 1, g.lx, g.ly);  // checks lx and ly now
+    } else {
+      COATFFT_REQUIRE(!reader.has("tolerance_total"), reader.where("tolerance_total"),
+                      ": applies only with refine = \"auto\"");
+      const auto nx = reader.integer("nx");
+      const auto ny = reader.integer("ny");
+      // Grid's own limit (core/grid.hpp), said with the scene's keys.
+      COATFFT_REQUIRE(nx <= Grid::max_cells_per_axis && ny <= Grid::max_cells_per_axis, "nx = ", nx,
+                      ", ny = ", ny, ": at most ", Grid::max_cells_per_axis,
+                      " cells per direction");
+      COATFFT_REQUIRE(!g.periodic || (nx % 2 == 0 && ny % 2 == 0),
+                      "boundary = \"periodic\" needs "
+                      "even nx and ny (nx = ",
+                      nx, ", ny = ", ny, ")");
+      g.grid = Grid(nx, ny, g.lx, g.ly);
+    }
+    reader.finish();
+    return g;
+  });
+}
+
+PressureSpec read_pressure(const toml::table& table, const Grid& grid,
+                           const std::filesystem::path& scene_dir);
+
+}  // namespace
+
+AnalyticLoad analytic_load(const PressureSpec& spec) {
+  return {spec.kind == PressureKind::hertz ? AnalyticLoad::Kind::hertz
+                                           : AnalyticLoad::Kind::uniform_disk,
+          spec.amplitude, spec.radius, spec.sampling};
+}
+
+AxisymmetricLoad axisymmetric_shape(const PressureSpec& spec) {
+  return spec.kind == PressureKind::hertz ? AxisymmetricLoad::hertz
+                                          : AxisymmetricLoad::uniform_disk;
+}
+
+namespace {
+
+// refine = "auto": the grid on which the load's discretisation error is within tolerance_total
+// less the operator's tolerance ([method] tolerance, by default a tenth of tolerance_total).
+Grid refine_grid(const toml::table& root, const GridSection& g, Scene& scene) {
+  MethodSpec& m = scene.method;
+  COATFFT_REQUIRE(m.automatic,
+                  "[grid] refine = \"auto\" needs [method] name = \"auto\": the "
+                  "total tolerance is shared between the load's cells and the operator");
+  COATFFT_REQUIRE(root.contains("pressure"),
+                  "[grid] refine = \"auto\" applies to a known "
+                  "pressure ([pressure] kind = \"hertz\" or \"uniform_disk\")");
+  const toml::table& method = section(root, "method", false);
+  if (!method.contains("tolerance")) m.tolerance = *g.tolerance_total / 10;
+  COATFFT_REQUIRE(m.tolerance < *g.tolerance_total, "[method] tolerance = ", m.tolerance,
+                  " must be below [grid] tolerance_total = ", *g.tolerance_total);
+  const PressureSpec p = in_section("pressure", [&] {
+    return read_pressure(section(root, "pressure", true), Grid(1, 1, g.lx, g.ly), {});
+  });
+  COATFFT_REQUIRE(p.kind != PressureKind::file,
+                  "[grid] refine = \"auto\" needs an analytic "
+                  "load: [pressure] kind = \"hertz\" or \"uniform_disk\"");
+  const AnalyticLoad load = analytic_load(p);
+  GridRefinementOptions options;
+  try {
+    options.body_factor = load_error_body_factor(*body_frf(scene), load);
+  } catch (const InvalidArgument&) {
+    throw;
+  } catch (const Error& e) {  // the factor's Hankel reference did not converge
+    throw InvalidArgument(
+        detail::concat("[grid] refine = \"auto\": the load's error on this "
+                       "body cannot be estimated (",
+                       e.what(), "); give nx and ny"));
+  }
+  // The search estimates on the grids it tries: at most 1024 cells a side keeps it to seconds
+  // and a few hundred MB before the scene's memory is checked. Finer grids: give nx and ny.
+  options.max_cells = max_refined_cells;
+  const double share = m.tolerance / *g.tolerance_total;
+  GridChoice choice = in_section("grid", [&] {
+    return choose_grid_for_tolerance(g.lx, g.ly, load, *g.tolerance_total, share, options);
+  });
+  scene.refinement = GridRefinement{*g.tolerance_total, choice};
+  return choice.grid;
+}
+
+LayerStack read_body(const toml::table& root) {
+  SectionReader substrate_reader(section(root, "substrate", true), "substrate");
+  const Material substrate =
+      in_section("substrate", [&] { return read_material(substrate_reader); });
+  substrate_reader.finish();
+
+  std::vector<Coating> coatings;
+  if (const toml::node* node = root.get("coating")) {
+    const toml::array* array = node->as_array();
+    COATFFT_REQUIRE(array != nullptr && array->is_array_of_tables(),
+                    "coating must be an array of tables: write [[coating]]");
+    for (std::size_t n = 0; n < array->size(); ++n) {
+      const std::string name = detail::concat("coating ", n + 1);
+      SectionReader reader(*array->get(n)->as_table(), name);
+      coatings.push_back(in_section(name, [&] {
+        Coating coating{read_material(reader), reader.number("thickness"), Interface::bonded};
+        const std::string interface =
+            reader.choice("interface", "bonded", {"bonded", "frictionless"});
+        coating.interface_below =
+            interface == "bonded" ? Interface::bonded : Interface::frictionless;
+        return coating;
+      }));
+      reader.finish();
+    }
+  }
+  return in_section("coating", [&] { return LayerStack(std::move(coatings), substrate); });
+}
+
+// [substrate] is required, unless [frf] gives the body as a table and no stack is described.
+std::optional<LayerStack> read_optional_body(const toml::table& root) {
+  if (root.contains("frf") && !root.contains("substrate") && !root.contains("coating"))
+    return std::nullopt;
+  return read_body(root);
+}
+
+PressureSpec read_pressure(const toml::table& table, const Grid& grid,
+                           const std::filesystem::path& scene_dir) {
+  SectionReader reader(table, "pressure");
+  PressureSpec spec;
+  const std::string kind = reader.choice("kind", "", {"hertz", "uniform_disk", "file"});
+  spec.kind = kind == "hertz"          ? PressureKind::hertz
+              : kind == "uniform_disk" ? PressureKind::uniform_disk
+                                       : PressureKind::file;
+  if (spec.kind == PressureKind::file) {
+    spec.file = reader.string("path");
+    if (spec.file.is_relative()) spec.file = scene_dir / spec.file;
+  } else {
+    const char* amplitude_key = spec.kind == PressureKind::hertz ? "p0" : "p";
+    spec.amplitude = reader.number(amplitude_key);
+    spec.radius = reader.number("a");
+    spec.sampling = reader.choice("sampling", "centre", {"centre", "cell_average"}) == "centre"
+                        ? Sampling::centre
+                        : Sampling::cell_average;
+    // The cells are checked on the scene's final grid (scene_pressure): `grid` may be only the
+    // domain of a refinement.
+    require_disk_load(grid, spec.amplitude, spec.radius, Sampling::cell_average,
+                      {reader.where(amplitude_key), reader.where("a"), "[grid]"});
+  }
+  reader.finish();
+  return spec;
+}
+
+double positive(SectionReader& reader, std::string_view key) {
+  const double value = reader.number(key);
+  COATFFT_REQUIRE(value > 0, reader.where(key), " = ", value, " must be > 0");
+  return value;
+}
+
+Field read_height_map(const std::filesystem::path& file) {
+  const std::string ext = file.extension().string();
+  COATFFT_REQUIRE(ext == ".npy" || ext == ".csv", "[contact] path = ", file.string(),
+                  ": must end in .npy or .csv");
+  return ext == ".npy" ? read_npy(file) : read_csv_matrix(file);
+}
+
+// `stack_body`: the body the operator is built from when it is a stack, nullptr for a table.
+ContactSpec read_contact(const toml::table& table, const Grid& grid, const LayerStack* stack_body,
+                         const std::filesystem::path& scene_dir) {
+  SectionReader reader(table, "contact");
+  ContactSpec spec;
+  spec.indenter_name = reader.choice(
+      "indenter", "", {"sphere", "paraboloid", "cylinder", "flat_punch", "height_map"});
+  const std::string& kind = spec.indenter_name;
+  const double half_domain = 0.5 * std::min(grid.lx(), grid.ly());
+  if (kind == "sphere") {
+    spec.indenter = Sphere{positive(reader, "radius")};
+  } else if (kind == "paraboloid") {
+    spec.indenter = Paraboloid{positive(reader, "radius")};
+  } else if (kind == "cylinder") {
+    spec.indenter = Cylinder{positive(reader, "radius"), reader.number("length", 0.0),
+                             positive(reader, "end_radius")};
+    const double length = std::get<Cylinder>(spec.indenter).flat_length;
+    COATFFT_REQUIRE(length >= 0 && length < grid.lx(), reader.where("length"), " = ", length,
+                    " m must be >= 0 and shorter than the domain (lx = ", grid.lx(), " m)");
+  } else if (kind == "flat_punch") {
+    spec.indenter = FlatPunch{positive(reader, "radius"), positive(reader, "edge_radius")};
+    const double a = std::get<FlatPunch>(spec.indenter).radius;
+    COATFFT_REQUIRE(a < half_domain, reader.where("radius"), " = ", a,
+                    " m: the punch must fit in the domain (radius < ", half_domain, " m)");
+  } else {
+    std::filesystem::path file = reader.string("path");
+    if (file.is_relative()) file = scene_dir / file;
+    spec.height_file = file;
+    spec.indenter = HeightMap{read_height_map(file)};
+    const Field& h = std::get<HeightMap>(spec.indenter).heights;
+    COATFFT_REQUIRE(h.rows() == grid.nx() && h.cols() == grid.ny(), file.string(), ": shape (",
+                    h.cols(), ", ", h.rows(), ") but the grid needs (ny, nx) = (", grid.ny(), ", ",
+                    grid.nx(), ")");
+    for (Eigen::Index j = 0; j < h.cols(); ++j)
+      for (Eigen::Index i = 0; i < h.rows(); ++i)
+        COATFFT_REQUIRE(std::isfinite(h(i, j)), file.string(), ": row ", j, ", column ", i,
+                        ": height ", h(i, j), " is not finite");
+  }
+  COATFFT_REQUIRE(reader.has("load") != reader.has("approach"),
+                  "[contact] give exactly one of load (N) and approach (m)");
+  if (reader.has("load")) spec.load = positive(reader, "load");
+  if (reader.has("approach")) spec.approach = positive(reader, "approach");
+  spec.report_approach = reader.boolean("report_approach", spec.report_approach);
+  COATFFT_REQUIRE(spec.report_approach || spec.load, reader.where("report_approach"),
+                  " = false: under approach control the approach is the input and is always "
+                  "reported; report_approach = false needs load control (load = ...)");
+  spec.tolerance = reader.number("tolerance", spec.tolerance);
+  COATFFT_REQUIRE(spec.tolerance > 0 && spec.tolerance < 1, reader.where("tolerance"), " = ",
+                  spec.tolerance, " must be in (0, 1)");
+  const auto max_iterations = reader.integer("max_iterations", spec.max_iterations);
+  COATFFT_REQUIRE(max_iterations >= 1 && max_iterations <= 1000000, reader.where("max_iterations"),
+                  " = ", max_iterations, " must be in 1..1000000");
+  spec.max_iterations = static_cast<int>(max_iterations);
+  spec.friction = reader.number("friction", 0.0);
+  COATFFT_REQUIRE(spec.friction >= 0.0 && spec.friction <= 10.0, reader.where("friction"), " = ",
+                  spec.friction, " must be in [0, 10]");
+  if (reader.has("indenter_material") || reader.has("indenter_E") || reader.has("indenter_nu")) {
+    COATFFT_REQUIRE(stack_body != nullptr,
+                    "[contact] an elastic indenter needs a homogeneous body given by [substrate] "
+                    "(composite modulus); with a table body ([frf]) the indenter must be rigid");
+    COATFFT_REQUIRE(stack_body->is_homogeneous(),
+                    "[contact] an elastic indenter needs a homogeneous body (composite modulus); "
+                    "for a coated body the indenter must be rigid");
+    if (reader.has("indenter_material")) {
+      spec.indenter_material = material_by_name(reader.string("indenter_material"));
+    } else {
+      spec.indenter_material = material_from_moduli(reader, "indenter_E", "indenter_nu");
+    }
+  }
+  // Catch geometry errors (a sphere smaller than the domain) before any work is done.
+  in_section("contact", [&] { check_indenter(grid, spec.indenter); });
+  reader.finish();
+  return spec;
+}
+
+// Keys that would be ignored by the chosen method are refused: a user who sets alpha for dcfft
+// believes it does something.
+void refuse_keys_not_applying(const SectionReader& reader, const MethodSpec& spec) {
+  const Method method = spec.options.method;
+  const std::string name = spec.automatic ? "auto" : std::string(to_string(method));
+  const bool pipeline =
+      !spec.automatic && (method == Method::frf_spectral || method == Method::frf_dcfft);
+  for (const char* key : {"alpha", "g0", "g0_tol"})
+    COATFFT_REQUIRE(pipeline || !reader.has(key), reader.where(key),
+                    ": applies only to the FRF "
+                    "pipelines \"frf-spectral\" and \"frf-dcfft\", not to name = \"",
+                    name, "\"", spec.automatic ? " (which chooses them)" : "");
+  COATFFT_REQUIRE(spec.automatic || !reader.has("tolerance"), reader.where("tolerance"),
+                  ": applies only to name = \"auto\", not to name = \"", name, "\"");
+  for (const char* key : {"planning", "wisdom"})
+    COATFFT_REQUIRE(spec.automatic || method != Method::direct || !reader.has(key),
+                    reader.where(key),
+                    ": FFTW settings do not apply to name = \"direct\", which uses no FFT");
+}
+
+MethodSpec read_method(const toml::table& root, const std::filesystem::path& scene_dir) {
+  SectionReader reader(section(root, "method", false), "method");
+  MethodSpec spec;
+  OperatorOptions& o = spec.options;
+  spec.automatic = reader.string("name", "auto") == "auto";
+  if (!spec.automatic) {
+    o.method = reader.named("name", o.method, [](std::string_view name) {
+      try {
+        return parse_method(name);
+      } catch (const InvalidArgument& e) {
+        throw InvalidArgument(detail::concat(e.what(), " or \"auto\""));
+      }
+    });
+  }
+  refuse_keys_not_applying(reader, spec);
+  if (spec.automatic) {
+    spec.tolerance = reader.number("tolerance", spec.tolerance);
+    COATFFT_REQUIRE(spec.tolerance >= 1e-12 && spec.tolerance <= 0.1, reader.where("tolerance"),
+                    " = ", spec.tolerance, " must be in [1e-12, 0.1]");
+    // The threads the choice may use: all the machine's, unless the scene caps them.
+    o.threads = std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, max_threads);
+  }
+  o.alpha = reader.number("alpha", o.alpha);
+  // omitted is not a user's choice: a load-controlled contact makes it (report_approach).
+  o.g0 = reader.named("g0", o.g0, [](std::string_view name) {
+    return detail::parse_name(name, std::array{G0Method::regularized, G0Method::quadrature});
+  });
+  o.g0_tolerance = reader.number("g0_tol", o.g0_tolerance);
+  o.planning = reader.named("planning", o.planning, parse_planning);
+  const auto threads = reader.integer("threads", o.threads);
+  COATFFT_REQUIRE(threads >= 1 && threads <= max_threads, reader.where("threads"), " = ", threads,
+                  " must be in 1..", max_threads);
+  o.threads = static_cast<int>(threads);
+  if (reader.has("wisdom")) {
+    spec.wisdom = reader.string("wisdom");
+    if (spec.wisdom.is_relative()) spec.wisdom = scene_dir / spec.wisdom;
+  }
+  reader.finish();
+  return spec;
+}
+
+// The names of [output] fields and the flag each sets; "summary" sets none, since summary.json
+// is always written (naming it is allowed, so that a list can say everything it expects).
+struct OutputField {
+  std::string_view name;
+  bool OutputSpec::*flag;
+};
+constexpr std::array<OutputField, 5> output_fields{
+    {{"uz", &OutputSpec::uz},
+     {"pressure", &OutputSpec::pressure},
+     {"gap", &OutputSpec::gap},
+     {"displacement_csv", &OutputSpec::displacement_csv},
+     {"summary", nullptr}}};
+
+// Sets the flag of one name of [output] fields, refusing an unknown name and "gap" for a scene
+// that has none.
+void select_output(OutputSpec& spec, const std::string& name, const SectionReader& reader,
+                   bool contact) {
+  const auto field = std::find_if(output_fields.begin(), output_fields.end(),
+                                  [&](const OutputField& f) { return f.name == name; });
+  if (field == output_fields.end()) {
+    std::string list;
+    for (const OutputField& f : output_fields)
+      list += (list.empty() ? "\"" : ", \"") + std::string(f.name) + "\"";
+    throw InvalidArgument(detail::concat(reader.where("fields"), ": ", quoted_excerpt(name),
+                                         " is not one of ", list));
+  }
+  COATFFT_REQUIRE(contact || name != "gap", reader.where("fields"),
+                  ": \"gap\" applies only to a [contact] scene (a known [pressure] has no gap)");
+  if (field->flag != nullptr) spec.*field->flag = true;
+}
+
+OutputSpec read_output(const toml::table& root, bool contact) {
+  SectionReader reader(section(root, "output", false), "output");
+  OutputSpec spec;
+  spec.gap = contact;
+  if (reader.has("fields")) {
+    const std::vector<std::string> names = reader.strings("fields");
+    COATFFT_REQUIRE(!names.empty(), reader.where("fields"),
+                    " = []: name at least one output (summary.json is always written: "
+                    "fields = [\"summary\"] writes only it)");
+    spec = OutputSpec{false, false, false, false, false, false, false};
+    std::set<std::string> seen;
+    for (const std::string& name : names) {
+      select_output(spec, name, reader, contact);  // a known name from here on
+      COATFFT_REQUIRE(seen.insert(name).second, reader.where("fields"), ": \"", name,
+                      "\" is listed twice");
+    }
+  }
+  reader.finish();
+  return spec;
+}
+
+// [stress]: planes at depth and the section y = 0. The stress kernels need the layers themselves
+// (docs/theory.md 2.7), which an [frf] table does not give.
+StressSpec read_stress(const toml::table& root, const Scene& scene) {
+  SectionReader reader(section(root, "stress", true), "stress");
+  COATFFT_REQUIRE(scene.body.has_value() && !scene.frf,
+                  "[stress] needs the body's layers, given "
+                  "by [substrate] and [[coating]]; an [frf] table does not describe the fields "
+                  "at depth");
+  StressSpec spec;
+  if (reader.has("depths")) spec.depths = reader.numbers("depths");
+  for (double z : spec.depths)
+    COATFFT_REQUIRE(z > 0.0, reader.where("depths"), " holds ", z,
+                    ": every depth must be > 0 [m] (z points into the body; the surface plane "
+                    "z = 0 is not computed)");
+  spec.side = reader.choice("at_interface", "below", {"below", "above"}) == "below"
+                  ? InterfaceSide::below
+                  : InterfaceSide::above;
+  spec.section = reader.has("section");
+  if (spec.section) {
+    reader.choice("section", "xz", {"xz"});
+    spec.depth_max = reader.number("depth_max");
+    COATFFT_REQUIRE(spec.depth_max > 0.0, reader.where("depth_max"), " = ", spec.depth_max,
+                    " must be > 0 [m]");
+    const std::int64_t nz = reader.integer("nz");
+    COATFFT_REQUIRE(nz >= 1 && nz <= std::int64_t(StressOperator::max_planes), reader.where("nz"),
+                    " = ", nz, " must be in [1, ", StressOperator::max_planes, "]");
+    spec.nz = static_cast<int>(nz);
+  }
+  const std::int64_t alpha = reader.integer("alpha", 16);
+  COATFFT_REQUIRE(alpha >= 2 && alpha <= 32, reader.where("alpha"), " = ", alpha,
+                  " must be an integer in [2, 32]");
+  COATFFT_REQUIRE(alpha * std::max(scene.grid.nx(), scene.grid.ny()) <= 16384,
+                  reader.where("alpha"), " = ", alpha, " times ",
+                  std::max(scene.grid.nx(), scene.grid.ny()),
+                  " cells exceeds the 16384-point sampling lattice; lower alpha");
+  spec.alpha = static_cast<int>(alpha);
+  {
+    // The kernels' cost, estimated before any work (stress/stress_kernel.hpp).
+    const std::vector<double> planes = stress_plane_depths(spec, *scene.body);
+    StressKernelOptions kernel;
+    kernel.alpha = spec.alpha;
+    if (!planes.empty()) {
+      const double z = *std::min_element(planes.begin(), planes.end());
+      const double n = stress_kernel_evaluations(scene.grid, planes, kernel);
+      COATFFT_REQUIRE(n <= kernel.max_evaluations, "[stress] the plane at z = ", z,
+                      " m is too shallow for a ", scene.grid.lx(), " x ", scene.grid.ly(),
+                      " m domain: its kernel needs about ", n, " FRF evaluations (limit ",
+                      kernel.max_evaluations, "; the cost grows like (L/z)^2)");
+    }
+  }
+  COATFFT_REQUIRE(!spec.depths.empty() || spec.section,
+                  "[stress] give depths = [...] or section = \"xz\" (or both)");
+  COATFFT_REQUIRE(spec.depths.size() + std::size_t(spec.nz) <= StressOperator::max_planes,
+                  "[stress] asks for ", spec.depths.size() + std::size_t(spec.nz),
+                  " planes; at most ", StressOperator::max_planes);
+  reader.finish();
+  return spec;
+}
+
+// [shear]: tangential tractions with a known pressure.
+ShearSpec read_shear(const toml::table& root, const std::filesystem::path& scene_dir) {
+  SectionReader reader(section(root, "shear", true), "shear");
+  ShearSpec spec;
+  spec.proportional = reader.choice("kind", "", {"proportional", "file"}) == "proportional";
+  if (spec.proportional) {
+    spec.friction = reader.number("mu");
+    COATFFT_REQUIRE(spec.friction >= 0.0 && spec.friction <= 10.0, reader.where("mu"), " = ",
+                    spec.friction, " must be in [0, 10]");
+    spec.along_x = reader.choice("direction", "x", {"x", "y"}) == "x";
+  } else {
+    for (auto [key, path] : {std::pair{"path_x", &spec.path_x}, {"path_y", &spec.path_y}})
+      if (reader.has(key)) {
+        *path = reader.string(key);
+        if (path->is_relative()) *path = scene_dir / *path;
+      }
+    COATFFT_REQUIRE(!spec.path_x.empty() || !spec.path_y.empty(),
+                    "[shear] kind = \"file\" needs path_x, path_y or both");
+  }
+  reader.finish();
+  return spec;
+}
+
+bool surface_kernels_affordable(const Scene& scene) {
+  return surface_kernel_evaluations(scene.grid, *scene.body) <= LatticeOptions{}.max_evaluations;
+}
+
+// Tangential tractions act on the surface displacements of any bonded layer stack
+// (convolution/surface_kernels.hpp) and on the stresses. An [frf] table gives no tangential
+// response, and on a body with a frictionless interface a net tangential force has no equilibrium
+// (the coating slides; docs/theory.md 2.3). The layered kernels' cost is checked before any work.
+void check_tangential(const Scene& scene, const char* key) {
+  COATFFT_REQUIRE(!scene.frf && scene.body, key,
+                  " needs a body of [substrate] and [[coating]]: an [frf] table gives no "
+                  "response to tangential tractions");
+  for (std::size_t i = 0; i < scene.body->coatings().size(); ++i)
+    COATFFT_REQUIRE(scene.body->coatings()[i].interface_below != Interface::frictionless, key,
+                    ": tangential tractions on a body with a frictionless interface (below "
+                    "coating ",
+                    i + 1, ") are not supported: a net tangential force has no equilibrium there");
+  COATFFT_REQUIRE(surface_kernels_affordable(scene), key, ": the top coating (",
+                  detail::brief(scene.body->coatings().front().thickness),
+                  " m) is so thin against the ", detail::brief(scene.grid.lx()), " x ",
+                  detail::brief(scene.grid.ly()), " m domain that its surface kernels need about ",
+                  detail::brief(surface_kernel_evaluations(scene.grid, *scene.body)),
+                  " FRF evaluations (limit ", detail::brief(LatticeOptions{}.max_evaluations),
+                  "; the cost grows like (L/h)^2)");
+}
+
+// [grid] boundary = "periodic": the periodic operator of convolution/periodic_kernel.hpp, built
+// from the body's FRF (docs/theory.md 4.8). It replaces dcfft (homogeneous) and frf-split (any
+// body); "auto" takes the one of them the body allows. The other methods compute free surfaces,
+// and so do the stresses and the tangential tractions so far: refused.
+void check_periodic(Scene& scene) {
+  MethodSpec& m = scene.method;
+  if (m.automatic) {
+    m.automatic = false;
+    m.auto_periodic = true;
+    m.options.method =
+        !scene.frf && scene.body->is_homogeneous() ? Method::dcfft : Method::frf_split;
+  }
+  const Method method = m.options.method;
+  COATFFT_REQUIRE(
+      method == Method::dcfft || method == Method::frf_split, "[method] name = \"",
+      to_string(method),
+      "\" computes free (non-periodic) surfaces: with [grid] boundary "
+      "= \"periodic\" use \"frf-split\" (any body), \"dcfft\" (homogeneous) or \"auto\"");
+  COATFFT_REQUIRE(!scene.stress,
+                  "[stress] computes free (non-periodic) bodies only so far: "
+                  "remove it or use [grid] boundary = \"free\"");
+  COATFFT_REQUIRE(!scene.shear && !(scene.contact && scene.contact->friction > 0.0),
+                  "tangential tractions ([shear], [contact] friction) act on free (non-periodic) "
+                  "surfaces only so far: use [grid] boundary = \"free\"");
+}
+
+// [frf]: the body as a table of its FRF. Love's coefficients (direct, dcfft) need a material,
+// which a table does not give, so those methods are refused here rather than when building.
+void read_frf(const toml::table& root, const std::filesystem::path& scene_dir, Scene& scene) {
+  SectionReader reader(section(root, "frf", true), "frf");
+  std::filesystem::path file = reader.string("path");
+  if (file.is_relative()) file = scene_dir / file;
+  std::optional<double> c0, c_inf;
+  if (reader.has("c0")) c0 = positive(reader, "c0");
+  if (reader.has("c_inf")) c_inf = positive(reader, "c_inf");
+  reader.finish();
+  const Method method = scene.method.options.method;
+  COATFFT_REQUIRE(scene.method.automatic || !uses_love_coefficients(method), "[method] name = \"",
+                  to_string(method),
+                  "\" uses Love's coefficients of a homogeneous material, which a table body "
+                  "([frf]) does not give; use \"frf-split\", \"frf-dcfft\" or \"frf-spectral\"");
+  scene.frf = in_section("frf", [&] { return read_frf_table(file, c0, c_inf); });
+  scene.frf_file = file;
+}
+
+// A scene is a few hundred bytes; a megabyte is far beyond any real one.
+constexpr std::uintmax_t max_scene_bytes = 1 << 20;
+
+toml::table parse_scene_text(const std::string& text, const std::filesystem::path& path) {
+  try {
+    toml::table root = toml::parse(text, path.string());
+    const std::set<std::string> known{"grid",   "substrate", "coating", "pressure", "contact",
+                                      "method", "output",    "frf",     "stress",   "shear"};
+    for (auto&& [key, node] : root) {
+      COATFFT_REQUIRE(known.count(std::string(key.str())), "unknown section or key \"",
+                      detail::shorten(key.str()), "\"");
+    }
+    return root;
+  } catch (const toml::parse_error& e) {
+    throw InvalidArgument(detail::concat(
+        "line ", e.source().begin.line, ": TOML syntax error: ", detail::shorten(e.description())));
+  }
+}
+
+// Scene errors start with the file name, so that a message stands on its own.
+template <typename Parse>
+auto with_file_name(const std::filesystem::path& path, Parse&& parse) {
+  try {
+    return parse();
+  } catch (const InvalidArgument& e) {
+    throw InvalidArgument(detail::concat(path.string(), ": ", e.what()));
+  }
+}
+
+}  // namespace
+
+Scene read_scene(const std::filesystem::path& path) {
+  // read_input_file's messages start with the path already.
+  const std::string text = read_input_file(path, "a scene file", max_scene_bytes);
+  return with_file_name(path, [&] {
+    const toml::table root = parse_scene_text(text, path);
+    const std::filesystem::path scene_dir = path.parent_path();
+    const GridSection grid = read_grid(root);
+    Scene scene{grid.grid.value_or(Grid(1, 1, grid.lx, grid.ly)),
+                read_optional_body(root),
+                std::nullopt,
+                read_method(root, scene_dir),
+                std::nullopt,
+                {},
+                {}};
+    if (root.contains("frf")) read_frf(root, scene_dir, scene);
+    if (grid.tolerance_total) scene.grid = refine_grid(root, grid, scene);
+    in_section("method", [&] { check_operator_options(scene.grid, scene.method.options); });
+    // Direct summation costs (nx ny)^2 operations per application: hours beyond this size.
+    COATFFT_REQUIRE(
+        scene.method.options.method != Method::direct || scene.grid.nb_cells() <= max_direct_cells,
+        "[method] name = \"direct\" on ", scene.grid.nx(), " x ", scene.grid.ny(),
+        " cells: direct summation is limited to ", max_direct_cells,
+        " cells (its cost grows as (nx ny)^2); use \"dcfft\", which gives the same "
+        "result");
+    COATFFT_REQUIRE(root.contains("pressure") != root.contains("contact"),
+                    "a scene needs exactly one of [pressure] (known load) and [contact]");
+    if (root.contains("pressure"))
+      scene.pressure = read_pressure(section(root, "pressure", true), scene.grid, scene_dir);
+    else
+      scene.contact = in_section("contact", [&] {
+        return read_contact(section(root, "contact", true), scene.grid,
+                            scene.frf ? nullptr : &*scene.body, scene_dir);
+      });
+    scene.output = read_output(root, scene.contact.has_value());
+    if (root.contains("stress")) {
+      scene.stress = read_stress(root, scene);
+      scene.output.stress = !scene.stress->depths.empty();
+      scene.output.stress_section = scene.stress->section;
+    }
+    if (root.contains("shear")) {
+      COATFFT_REQUIRE(scene.pressure.has_value(),
+                      "[shear] goes with a known [pressure]; a "
+                      "[contact] scene gives its friction as [contact] friction = mu");
+      scene.shear = read_shear(root, scene_dir);
+      check_tangential(scene, "[shear]");
+      for (const auto& file : {scene.shear->path_x, scene.shear->path_y})
+        if (!file.empty()) scene.input_files.push_back(file);
+    }
+    if (scene.contact && scene.contact->friction > 0.0)
+      check_tangential(scene, "[contact] friction");
+    scene.periodic = grid.periodic;
+    if (scene.periodic) check_periodic(scene);
+    // The in-plane surface displacements (ux.npy, uy.npy), with tangential tractions or stresses,
+    // of a bonded body whose surface kernels are affordable (checked above when tractions act).
+    scene.output.in_plane =
+        (scene.stress || scene.shear || (scene.contact && scene.contact->friction > 0.0)) &&
+        !scene.frf && scene.body && scene.body->all_bonded() && surface_kernels_affordable(scene);
+    // g(0) only shifts every displacement by one constant, which a load-controlled contact
+    // absorbs in its approach; when that approach is not reported, g(0) is not computed at all.
+    if (scene.contact && !scene.contact->report_approach)
+      scene.method.options.g0 = G0Method::omitted;
+    scene.input_files.push_back(path);
+    if (scene.frf) scene.input_files.push_back(scene.frf_file);
+    if (scene.pressure && scene.pressure->kind == PressureKind::file)
+      scene.input_files.push_back(scene.pressure->file);
+    if (scene.contact && !scene.contact->height_file.empty())
+      scene.input_files.push_back(scene.contact->height_file);
+    return scene;
+  });
+}
+
+LayerStack read_scene_body(const std::filesystem::path& path) {
+  const std::string text = read_input_file(path, "a scene file", max_scene_bytes);
+  return with_file_name(path, [&] { return read_body(parse_scene_text(text, path)); });
+}
+
+std::vector<double> stress_plane_depths(const StressSpec& spec, const LayerStack& body) {
+  std::vector<double> depths = spec.depths;
+  for (int k = 1; k <= spec.nz; ++k) depths.push_back(spec.depth_max * k / spec.nz);
+  // The interfaces' own depths, which LayerStack::locate places on them exactly.
+  const std::vector<double>& interfaces = body.interface_depths();
+  depths.insert(depths.end(), interfaces.begin(), interfaces.end());
+  return depths;
+}
+
+std::shared_ptr<const Frf> body_frf(const Scene& scene) {
+  if (scene.frf) return scene.frf;
+  return make_frf(*scene.body);
+}
+
+}  // namespace coatfft::scene

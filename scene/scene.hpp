@@ -1,0 +1,175 @@
+#pragma once
+// The scene file: a small TOML description of one computation (docs/scene_format.md).
+// read_scene() validates everything it can before any work starts, so that a bad scene ends with
+// one line naming the key and the value, and no output.
+#include <cstddef>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "contact/indenter.hpp"
+#include "convolution/make_operator.hpp"
+#include "core/grid.hpp"
+#include "frf/frf.hpp"
+#include "frf/layer_modes.hpp"
+#include "layers/layer_stack.hpp"
+#include "loads/grid_refinement.hpp"
+#include "loads/sampling.hpp"
+#include "validation/hankel_displacement.hpp"
+
+namespace coatfft::scene {
+
+/// [pressure] kind.
+enum class PressureKind { hertz, uniform_disk, file };
+
+/// [pressure]: a known surface pressure.
+struct PressureSpec {
+  PressureKind kind = PressureKind::hertz;
+  double amplitude = 0;                  ///< p0 (hertz) or p (uniform_disk) [Pa]
+  double radius = 0;                     ///< a [m]
+  Sampling sampling = Sampling::centre;  ///< kind = "sampling": "centre" or "cell_average"
+  std::filesystem::path file;            ///< .npy or .csv of shape (ny, nx) [Pa], for kind = "file"
+};
+
+/// The analytic load of a hertz or uniform_disk [pressure] (not a file): for the estimate of its
+/// discretisation error and the grid chosen for it (loads/), and its shape for the Hankel
+/// reference and the reduced models (validation/, model/).
+AnalyticLoad analytic_load(const PressureSpec& spec);
+AxisymmetricLoad axisymmetric_shape(const PressureSpec& spec);
+
+/// [method]: how displacements are computed. The keys name, alpha, g0, g0_tol, planning and
+/// threads are read into the library's OperatorOptions (checked by check_operator_options). A
+/// load-controlled contact with report_approach = false sets options.g0 = G0Method::omitted.
+struct MethodSpec {
+  /// name = "auto" (the default): method, kernel tolerance, threads and a reduced body are
+  /// chosen for `tolerance` (scene/automatic_method.hpp, docs/auto.md); `options` then holds the
+  /// user's planning and, in threads, the most threads the choice may use.
+  bool automatic = true;
+  /// [method] tolerance: the largest operator error relative to max |u| (name = "auto" only).
+  double tolerance = 1e-4;
+  OperatorOptions options;
+  /// Set by resolve_automatic_method when a simpler body is within the tolerance
+  /// (model/body_reduction.hpp): the body the operator is built for.
+  std::optional<LayerStack> reduced_body;
+  std::filesystem::path wisdom;  ///< FFTW wisdom file to load and save (optional)
+  /// name = "auto" on a periodic boundary, resolved to dcfft or frf-split by the body alone
+  /// (automatic is then false): reported as requested "auto".
+  bool auto_periodic = false;
+};
+
+/// The most cells `direct` is run on: its cost grows as (nx ny)^2, hours beyond this size (and
+/// dcfft gives the same result).
+inline constexpr std::ptrdiff_t max_direct_cells = 1 << 16;
+
+/// [contact]: a frictionless normal contact with an indenter (contact/).
+struct ContactSpec {
+  std::string indenter_name;  ///< "sphere", "paraboloid", "cylinder", "flat_punch", "height_map"
+  Indenter indenter;
+  std::filesystem::path height_file;  ///< the file of a height_map indenter
+  std::optional<double> load;         ///< total normal load [N] (load control), or
+  std::optional<double> approach;     ///< rigid-body approach [m] (approach control)
+  double tolerance = 1e-10;
+  int max_iterations = 1000;
+  /// Report the rigid-body approach (load control). false: the approach is not computed, and an
+  /// FRF operator is built without g(0) (G0Method::omitted), which load control does not need
+  /// (docs/contact.md). Must stay true under approach control.
+  bool report_approach = true;
+  /// Elastic indenter (homogeneous bodies only): the body's modulus is replaced by the
+  /// composite modulus 1/E* = 1/E*_body + 1/E*_indenter (Johnson section 4.2).
+  std::optional<Material> indenter_material;
+  /// Coefficient of friction of a full sliding along +x: q_x = friction p on the body's surface,
+  /// for the stresses ([stress]); the normal contact is solved frictionless (docs/stress.md).
+  double friction = 0.0;
+};
+
+/// [output]: the files `coatfft run` writes (docs/scene_format.md, "[output]"). summary.json is
+/// always written; it is not a choice. Without [output] (or its key fields) every file that
+/// applies is written.
+struct OutputSpec {
+  bool uz = true;                ///< uz.npy
+  bool pressure = true;          ///< pressure.npy
+  bool gap = false;              ///< gap.npy: a [contact] scene only (its default there is true)
+  bool displacement_csv = true;  ///< displacement.csv
+  /// stress.npy and von_mises.npy: set by [stress] depths (not an [output] field name)
+  bool stress = false;
+  /// stress_section.npy and von_mises_section.npy: set by [stress] section
+  bool stress_section = false;
+  /// ux.npy and uy.npy: set by [stress], [shear] or [contact] friction on a bonded body (not an
+  /// [frf] table) whose surface kernels are affordable (convolution/surface_kernels.hpp)
+  bool in_plane = false;
+};
+
+/// [shear]: known tangential tractions that the surface receives, with a [pressure]: q = friction
+/// p along one axis (kind = "proportional"), or read from files (kind = "file"). They enter the
+/// stresses ([stress]); the surface displacements uz do not include them yet.
+struct ShearSpec {
+  bool proportional = true;      ///< kind = "proportional"; false: kind = "file"
+  double friction = 0.0;         ///< mu [-] of kind = "proportional"
+  bool along_x = true;           ///< direction = "x" (true) or "y"
+  std::filesystem::path path_x;  ///< kind = "file": q_x [Pa], .npy or .csv (ny, nx); may be empty
+  std::filesystem::path path_y;  ///< the same for q_y
+};
+
+/// [stress]: the stresses inside the body on planes z = const and on the section y = 0
+/// (docs/stress.md; stress/stress_operator.hpp), under the scene's pressure.
+struct StressSpec {
+  std::vector<double> depths;                 ///< depths [m] of the planes, each > 0
+  InterfaceSide side = InterfaceSide::below;  ///< at_interface: the medium of an interface depth
+                                              ///< (LayerStack::locate)
+  bool section = false;                       ///< section = "xz": the plane y = 0
+  double depth_max = 0.0;                     ///< the section's deepest row [m]
+  int nz = 0;                                 ///< the section's rows, at depth_max k/nz, k = 1..nz
+  int alpha = 16;  ///< period of the kernels' sampling lattice over the domain (docs/stress.md)
+};
+
+/// The most cells along an axis that [grid] refine = "auto" chooses.
+inline constexpr std::ptrdiff_t max_refined_cells = 1024;
+
+/// [grid] refine = "auto": nx and ny chosen so that the load's discretisation error stays within
+/// tolerance_total less the operator's tolerance (loads/grid_refinement.hpp).
+struct GridRefinement {
+  double tolerance_total = 0.0;
+  GridChoice choice;
+};
+
+/// Exactly one of `pressure` and `contact` is set. The body is `frf` when [frf] gives a table
+/// (every operator is built from it; `body`, if [substrate] is also given, only describes what
+/// the table claims to be, for `coatfft validate-frf`); otherwise `body`, which is then set.
+struct Scene {
+  Grid grid;
+  std::optional<LayerStack> body;
+  std::optional<PressureSpec> pressure;
+  MethodSpec method;
+  std::optional<ContactSpec> contact;
+  /// The scene file and the files it names (pressure, height map, FRF table): the run's inputs,
+  /// which no output may replace. The wisdom file is method.wisdom.
+  std::vector<std::filesystem::path> input_files;
+  OutputSpec output;
+  std::shared_ptr<const Frf> frf = nullptr;  ///< [frf]: the body as a table (TabulatedFrf)
+  std::filesystem::path frf_file = {};       ///< [frf] path
+  std::optional<GridRefinement> refinement = std::nullopt;  ///< set when [grid] refine = "auto"
+  std::optional<StressSpec> stress = std::nullopt;          ///< [stress]
+  std::optional<ShearSpec> shear = std::nullopt;            ///< [shear]
+  /// [grid] boundary = "periodic": the surface repeats over the domain (docs/scene_format.md).
+  bool periodic = false;
+};
+
+/// The depths of every plane a [stress] scene computes: the depths, then the section's rows,
+/// then each interface of the body (for its largest shear stress).
+std::vector<double> stress_plane_depths(const StressSpec& spec, const LayerStack& body);
+
+/// The FRF of the scene's body: the [frf] table, or make_frf of [substrate] and [[coating]].
+std::shared_ptr<const Frf> body_frf(const Scene& scene);
+
+/// Parses and validates a scene file. Throws InvalidArgument with a one-line message
+/// ("scene.toml: [grid] nx = 0: ...") on any problem. Relative file paths in the scene are
+/// taken relative to the scene file's folder.
+Scene read_scene(const std::filesystem::path& path);
+
+/// Parses only the body of a scene ([substrate] and [[coating]]), for commands that need no
+/// grid or load (`coatfft frf`). Other sections must still be known ones.
+LayerStack read_scene_body(const std::filesystem::path& path);
+
+}  // namespace coatfft::scene

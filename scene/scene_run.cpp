@@ -1,0 +1,396 @@
+#include "scene/scene_run.hpp"
+
+#include <chrono>
+#include <memory>
+#include <string>
+#include <utility>
+#include <variant>
+
+#include "contact/contact_solver.hpp"
+#include "contact/indenter.hpp"
+#include "contact/sliding_contact.hpp"
+#include "convolution/cerruti_operator.hpp"
+#include "convolution/fftw_wisdom.hpp"
+#include "core/detail/timing.hpp"
+#include "core/error.hpp"
+#include "scene/a_posteriori.hpp"
+#include "scene/frf_table_file.hpp"
+#include "scene/load_error_report.hpp"
+#include "scene/operator_from_scene.hpp"
+#include "scene/resources.hpp"
+#include "scene/scene_pressure.hpp"
+#include "validation/hertz.hpp"
+#include "validation/hertz_contact.hpp"
+
+namespace coatfft::scene {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Automatic = std::optional<AutomaticChoice>;
+using Clock = std::chrono::steady_clock;
+using coatfft::detail::seconds_since;
+
+// Median wall time of `repeat` applications of `op` to `pressure`; leaves the result in `uz`,
+// which must come out finite.
+double time_applications(const Scene& scene, SurfaceOperator& op, const Field& pressure, Field& uz,
+                         int repeat) {
+  const double seconds = coatfft::detail::time_applications(op, pressure, uz, repeat);
+  // Finite inputs can still overflow: |u| ~ p L / E* and the transforms sum p over the grid.
+  COATFFT_REQUIRE(uz.allFinite(), "the displacement overflows double precision: max pressure ",
+                  pressure.abs().maxCoeff(), " Pa, ", scene.frf ? "[frf] 2/c0" : "[substrate] E*",
+                  " = ", 2.0 / body_frf(scene)->c0(), " Pa, [grid] lx = ", scene.grid.lx(),
+                  " m, ly = ", scene.grid.ly(), " m; rescale the units of the load and the moduli");
+  return seconds;
+}
+
+nlohmann::json common_summary(const Scene& scene, const Automatic& automatic,
+                              const BuiltOperator& built, double apply_seconds, int repeat,
+                              const Field& pressure, const Field& uz) {
+  const Grid& grid = scene.grid;
+  nlohmann::json summary;
+  summary["method"] = to_string(built.report.method);
+  summary["boundary"] = scene.periodic ? "periodic" : "free";
+  summary["nx"] = grid.nx();
+  summary["ny"] = grid.ny();
+  summary["lx"] = grid.lx();
+  summary["ly"] = grid.ly();
+  summary["setup_seconds"] = built.report.setup_seconds;
+  summary["apply_seconds"] = apply_seconds;
+  summary["repeat"] = repeat;
+  summary["total_load"] = pressure.sum() * grid.dx() * grid.dy();
+  summary["uz_center"] = uz(grid.centre_i(), grid.centre_j());
+  summary["uz_max"] = uz.maxCoeff();
+  summary["estimated_memory_bytes"] = estimate_memory(scene).bytes;
+  // The contact solver's notes join this list later. Nothing is printed here: run_scene prints
+  // nothing, and the CLI prints the operator's warnings itself (cli/run_command.cpp).
+  summary["warnings"] = operator_warnings(built.report);
+  if (const auto* table = dynamic_cast<const TabulatedFrf*>(scene.frf.get()))
+    for (const std::string& warning : table->warnings())
+      summary["warnings"].push_back("[frf] " + warning);
+  summary.update(operator_report_json(built.report));
+  summary["method_requested"] = automatic || scene.method.auto_periodic
+                                    ? "auto"
+                                    : std::string(to_string(scene.method.options.method));
+  if (automatic) {
+    summary["auto"] = automatic_choice_json(*automatic, scene.method.tolerance);
+    // The operator's predicted error with the reduction's: a pipeline's own proxy prediction
+    // (operator_report_json) is kept where it is larger.
+    const double predicted = summary["auto"]["predicted_error"].get<double>();
+    if (!summary.contains("predicted_error") || summary["predicted_error"].is_null() ||
+        summary["predicted_error"].get<double>() < predicted)
+      summary["predicted_error"] = predicted;
+  }
+  if (const auto* table = dynamic_cast<const TabulatedFrf*>(scene.frf.get()))
+    summary["frf_table"] = frf_table_json(scene.frf_file, *table);
+  return summary;
+}
+
+// The error measure of Spinu (2021), section 5: max |u_num - u_exact| / u_exact(0).
+double max_error_vs_hertz(const Grid& grid, const Field& uz, double p0, double a, double E_star) {
+  const double u0 = hertz_displacement(0.0, p0, a, E_star);
+  return (uz - hertz_displacement_field(grid, p0, a, E_star)).abs().maxCoeff() / u0;
+}
+
+// "setting up the operator (dcfft)".
+std::string setup_stage(const Scene& scene) {
+  return detail::concat("setting up the operator (", to_string(scene.method.options.method), ")");
+}
+
+std::string applications_stage(int repeat) {
+  return detail::concat("applying the operator (", repeat, repeat == 1 ? " time)" : " times)");
+}
+
+SceneRun compute_pressure(const Scene& scene, const Automatic& automatic, int repeat,
+                          ProgressObserver& progress) {
+  const Grid& grid = scene.grid;
+  Field pressure = scene_pressure(scene);
+  progress.stage(setup_stage(scene));
+  BuiltOperator built = operator_from_scene(scene);
+  progress.stage(applications_stage(repeat));
+  Field uz;
+  const double apply_seconds = time_applications(scene, *built.op, pressure, uz, repeat);
+
+  nlohmann::json summary =
+      common_summary(scene, automatic, built, apply_seconds, repeat, pressure, uz);
+  // The a-posteriori check compares with the free surface's Hankel reference.
+  summary["a_posteriori"] = scene.periodic ? nlohmann::json() : a_posteriori_check(scene, uz);
+  summary["load_discretization"] = load_discretization_json(scene, *built.op, pressure, uz);
+  summary["refinement"] = refinement_json(scene);
+  const PressureSpec& load = *scene.pressure;
+  if (load.kind == PressureKind::hertz && !scene.frf && scene.body->is_homogeneous() &&
+      !scene.periodic) {
+    summary["max_error_vs_hertz"] = max_error_vs_hertz(
+        grid, uz, load.amplitude, load.radius, scene.body->substrate().plane_strain_modulus());
+  }
+  return {grid,         std::move(pressure), std::move(uz),
+          std::nullopt, std::move(summary),  RunStatus::ok};
+}
+
+ContactOptions solver_options(const ContactSpec& spec, int threads, ProgressObserver& progress) {
+  ContactOptions options;
+  options.threads = threads;
+  options.tolerance = spec.tolerance;
+  options.max_iterations = spec.max_iterations;
+  // Under load control the approach is the only output that depends on g(0) (docs/contact.md).
+  options.compute_approach = spec.report_approach;
+  options.on_iteration = [&progress](int k, double residual) { progress.iteration(k, residual); };
+  return options;
+}
+
+// summary.json's "hertz": the Hertz solution of a sphere or paraboloid on a homogeneous body, for
+// comparison; null for any other contact.
+nlohmann::json hertz_json(const Scene& scene) {
+  const ContactSpec& spec = *scene.contact;
+  const bool hertzian = std::holds_alternative<Paraboloid>(spec.indenter) ||
+                        std::holds_alternative<Sphere>(spec.indenter);
+  if (!hertzian || scene.frf || !scene.body->is_homogeneous() || scene.periodic) return nullptr;
+  const double R = std::holds_alternative<Sphere>(spec.indenter)
+                       ? std::get<Sphere>(spec.indenter).radius
+                       : std::get<Paraboloid>(spec.indenter).radius;
+  const double E_star = scene.body->substrate().plane_strain_modulus();
+  const HertzSphere hertz = spec.load ? hertz_sphere_for_load(*spec.load, R, E_star)
+                                      : hertz_sphere_for_approach(*spec.approach, R, E_star);
+  return {{"load", hertz.load},
+          {"contact_radius", hertz.contact_radius},
+          {"max_pressure", hertz.max_pressure},
+          {"approach", hertz.approach}};
+}
+
+// The contact's keys of summary.json, after common_summary's.
+void add_contact_summary(nlohmann::json& summary, const Scene& scene, const ContactResult& result,
+                         double solve_seconds) {
+  const ContactSpec& spec = *scene.contact;
+  summary["indenter"] = spec.indenter_name;
+  summary["a_posteriori"] = a_posteriori_check(scene, result.displacement);
+  summary["solve_seconds"] = solve_seconds;
+  summary["load"] = result.load;
+  // Keys that do not apply stay in the summary with the value null.
+  const auto or_null = [](const std::optional<double>& value) {
+    return value ? nlohmann::json(*value) : nlohmann::json();
+  };
+  summary["approach"] = or_null(result.approach);
+  summary["contact_area"] = result.contact_area;
+  // sqrt(A / pi) is a contact radius only for a round contact; for any other shape it is just
+  // the radius of the disk of equal area.
+  summary["equivalent_radius"] = or_null(result.contact_radius);
+  summary["contact_radius"] =
+      is_axisymmetric(spec.indenter) ? or_null(result.contact_radius) : nlohmann::json();
+  summary["max_pressure"] = result.max_pressure;
+  summary["iterations"] = result.iterations;
+  summary["operator_applications"] = result.operator_applications;
+  summary["residual"] = result.residual;
+  summary["converged"] = result.converged;
+  summary["status"] = to_string(result.status);
+  summary["max_penetration"] = result.max_penetration;
+  if (!result.warning.empty()) {
+    summary["warning"] = result.warning;
+    summary["warnings"].push_back(result.warning);
+  }
+  // Absent, not null, when it does not apply: summary.json has always been so.
+  if (nlohmann::json hertz = hertz_json(scene); !hertz.is_null()) summary["hertz"] = hertz;
+}
+
+// The surface response of the scene's body (convolution/surface_kernels.hpp), built once for the
+// sliding contact's coupling and the in-plane displacements.
+std::shared_ptr<CerrutiOperator> surface_response(const Grid& grid, const LayerStack& body,
+                                                  int threads) {
+  SurfaceKernelOptions options;
+  options.lattice.threads = threads;
+  return std::make_shared<CerrutiOperator>(grid, body, options);
+}
+
+// The in-plane surface displacements of a bonded body (the operator `op` of surface_response), and
+// the normal displacement of the tractions: added to uz in a known-load scene; in a contact, where
+// the sliding solve has included it already (contact/sliding_contact.hpp), only reported (summary
+// "tangential_uz": its largest value over the largest uz).
+void add_in_plane(CerrutiOperator& op, const Tractions& q, SceneRun& run) {
+  std::array<Field, 3> u;
+  op.apply(run.pressure, q.qx ? &*q.qx : nullptr, q.qy ? &*q.qy : nullptr, u);
+  run.ux = std::move(u[0]);
+  run.uy = std::move(u[1]);
+  if (!q.qx && !q.qy) return;
+  const Field zero = Field::Zero(run.grid.nx(), run.grid.ny());
+  op.apply(zero, q.qx ? &*q.qx : nullptr, q.qy ? &*q.qy : nullptr, u);
+  run.summary["tangential_uz"] = u[2].abs().maxCoeff() / run.uz.abs().maxCoeff();
+  if (run.gap) return;
+  run.uz += u[2];
+  run.summary["uz_max"] = run.uz.maxCoeff();
+  run.summary["uz_center"] = run.uz(run.grid.centre_i(), run.grid.centre_j());
+}
+
+// The normal displacement of q_x relative to the indenter: the body's (any bonded stack,
+// convolution/surface_kernels.hpp) less an elastic indenter's, whose surface receives -q_x.
+TangentialCoupling tangential_coupling(std::shared_ptr<CerrutiOperator> on_body,
+                                       const std::optional<Material>& indenter, int threads) {
+  std::shared_ptr<CerrutiOperator> on_indenter;
+  if (indenter) on_indenter = surface_response(on_body->grid(), LayerStack(*indenter), threads);
+  return [on_body, on_indenter](const Field& qx) {
+    const Field zero = Field::Zero(qx.rows(), qx.cols());
+    std::array<Field, 3> u;
+    on_body->apply(zero, &qx, nullptr, u);
+    Field uz = std::move(u[2]);
+    if (on_indenter) {
+      on_indenter->apply(zero, &qx, nullptr, u);
+      uz -= u[2];
+    }
+    return uz;
+  };
+}
+
+// The contact solve: frictionless, or under full sliding with the coupling iterated
+// (contact/sliding_contact.hpp), reported in summary "friction_coupling".
+ContactResult solve_scene_contact(ContactSolver& solver, const Scene& scene,
+                                  const std::shared_ptr<CerrutiOperator>& surface,
+                                  const Field& height_field, nlohmann::json& report) {
+  const ContactSpec& spec = *scene.contact;
+  const ContactControl control = spec.load ? ContactControl::load : ContactControl::approach;
+  const double value = spec.load ? *spec.load : *spec.approach;
+  if (spec.friction == 0.0) return solver.solve(height_field, control, value);
+  SlidingOptions options;
+  options.friction = spec.friction;
+  // Each solve is converged to spec.tolerance: the change between two solves cannot be smaller.
+  options.tolerance = 10.0 * spec.tolerance;
+  SlidingReport r;
+  ContactResult result = solve_sliding(
+      solver,
+      // A scene with friction writes ux.npy and uy.npy (scene/scene.cpp): its surface response is
+      // built.
+      tangential_coupling(surface, spec.indenter_material, scene.method.options.threads),
+      height_field, control, value, options, &r);
+  report = {{"solves", r.solves},
+            {"pressure_change", r.pressure_change},
+            {"pressure_shift", r.pressure_shift},
+            {"centroid_shift", r.centroid_shift},
+            {"converged", r.converged}};
+  return result;
+}
+
+// `surface`: the body's surface response (surface_response) when the scene writes ux.npy, for
+// the friction coupling; built before an elastic indenter's composite modulus replaces the body
+// for the normal compliance.
+SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat,
+                         ProgressObserver& progress,
+                         const std::shared_ptr<CerrutiOperator>& surface) {
+  const ContactSpec& spec = *scene.contact;
+  if (spec.indenter_material) {
+    // Two homogeneous elastic bodies in frictionless normal contact deform as one half-space of
+    // the composite modulus (Johnson section 4.2); only E* enters the normal compliance.
+    const Material& body = scene.body->substrate();
+    const double E_star = composite_modulus(body, *spec.indenter_material);
+    const double nu = body.poisson_ratio();
+    scene.body = LayerStack(Material(E_star * (1 - nu * nu), nu));
+  }
+  const Field height_field = height(scene.grid, spec.indenter);
+  progress.stage(setup_stage(scene));
+  BuiltOperator built = operator_from_scene(scene);
+
+  ContactSolver solver(*built.op, solver_options(spec, scene.method.options.threads, progress));
+  progress.stage(spec.load ? "solving the contact (load control)"
+                           : "solving the contact (approach control)");
+  const auto start = Clock::now();
+  nlohmann::json coupling;
+  ContactResult result = solve_scene_contact(solver, scene, surface, height_field, coupling);
+  const double solve_seconds = seconds_since(start);
+  // touches_boundary is false on a periodic surface (no edge: contact/contact_solver.hpp).
+  COATFFT_REQUIRE(!result.touches_boundary,
+                  "[contact] the contact reaches the domain edge (pressure > 0 on a border cell): "
+                  "the domain is too small for this contact; enlarge [grid] lx and ly (and nx, ny "
+                  "to keep the cell size) or lower the load");
+
+  progress.stage(applications_stage(repeat));
+  Field uz;  // only for the timing: the solver returned the displacement
+  const double apply_seconds = time_applications(scene, *built.op, result.pressure, uz, repeat);
+  nlohmann::json summary = common_summary(scene, automatic, built, apply_seconds, repeat,
+                                          result.pressure, result.displacement);
+  add_contact_summary(summary, scene, result, solve_seconds);
+  if (!coupling.is_null()) summary["friction_coupling"] = coupling;
+  // The solver computes the gap in any case; the CLI saves it only when [output] asks for it.
+  return {scene.grid,
+          std::move(result.pressure),
+          std::move(result.displacement),
+          std::move(result.gap),
+          std::move(summary),
+          result.converged ? RunStatus::ok : RunStatus::not_converged};
+}
+
+// run_scene's FFTW wisdom: the scene's wisdom file is imported when it exists. Building and
+// computing write no file (the program saves the wisdom itself, cli/wisdom_file.hpp), and the
+// checks of load_wisdom guard only what `coatfft run` is about to write (the wisdom file must not
+// be an input or an output of the run, nor a file of another kind).
+// Wisdom only makes planning faster: a file that does not hold FFTW's (or another version's) is
+// ignored, as a missing one is. A FIFO, a device or an oversized file is still refused before
+// anything is read (scene/input_file.hpp).
+void import_wisdom_read_only(const Scene& scene) {
+  const fs::path& wisdom = scene.method.wisdom;
+  std::error_code ec;
+  if (wisdom.empty() || !fs::exists(fs::status(wisdom, ec))) return;
+  const std::string text = read_wisdom_file(wisdom);
+  if (holds_fftw_wisdom(text)) import_fftw_wisdom(text);
+}
+
+}  // namespace
+
+PreparedScene prepare_scene(const fs::path& scene_file, const SceneRunOptions& options) {
+  COATFFT_REQUIRE(options.repeat >= 1 && options.repeat <= max_repeat,
+                  "--repeat = ", options.repeat, " must be in 1..", max_repeat);
+  Scene scene = read_scene(scene_file);
+  // name = "auto" chooses the body and the method first, and the memory estimate is the chosen
+  // one's; before it, the estimate of the scene as read (DC-FFT's padded lattice, the least any
+  // candidate but direct summation on a small grid needs) refuses a grid too large for any.
+  check_memory(scene, options.max_memory);
+  std::optional<AutomaticChoice> automatic = resolve_automatic_method(
+      scene, scene.contact ? contact_applications : static_cast<double>(options.repeat));
+  check_memory(scene, options.max_memory);
+  return {std::move(scene), std::move(automatic)};
+}
+
+SceneRun compute_scene(PreparedScene prepared, const SceneRunOptions& options) {
+  // Without an observer of the caller's, the default one, which reports nothing.
+  ProgressObserver silent;
+  ProgressObserver& progress = options.progress ? *options.progress : silent;
+  // The stresses need the body as the scene gives it (an elastic indenter's composite modulus
+  // replaces it for the contact solve only).
+  const std::optional<StressSpec> stress = prepared.scene.stress;
+  const Scene scene_copy = prepared.scene;
+  const std::optional<LayerStack> body = prepared.scene.body;
+  const int threads = prepared.scene.method.options.threads;
+  std::shared_ptr<CerrutiOperator> surface;
+  if (scene_copy.output.in_plane) {
+    progress.stage("setting up the surface response to tractions");
+    surface = surface_response(scene_copy.grid, *body, threads);
+  }
+  SceneRun run =
+      prepared.scene.contact
+          ? compute_contact(std::move(prepared.scene), prepared.automatic, options.repeat, progress,
+                            surface)
+          : compute_pressure(prepared.scene, prepared.automatic, options.repeat, progress);
+  const Tractions q = scene_tractions(scene_copy, run.pressure);
+  if (stress) {
+    progress.stage("stresses on " + std::to_string(stress_plane_depths(*stress, *body).size()) +
+                   " planes");
+    run.stress = compute_stress(*stress, *body, run.grid, run.pressure, q, threads);
+    run.summary["stress"] = run.stress->summary;
+  }
+  if (scene_copy.output.in_plane) {
+    progress.stage("in-plane surface displacements");
+    add_in_plane(*surface, q, run);
+  } else if (stress) {
+    // Only [stress] asked for them (tractions would have been refused): say why they are missing.
+    run.summary["warnings"].push_back(
+        body->all_bonded()
+            ? "ux.npy and uy.npy are not written: the top coating is too thin against the domain "
+              "for its surface kernels (convolution/surface_kernels.hpp)"
+            : "ux.npy and uy.npy are not written: a body with a frictionless interface has no "
+              "finite in-plane surface response (the coating slides)");
+  }
+  return run;
+}
+
+SceneRun run_scene(const fs::path& scene_file, const SceneRunOptions& options) {
+  PreparedScene prepared = prepare_scene(scene_file, options);
+  import_wisdom_read_only(prepared.scene);
+  return compute_scene(std::move(prepared), options);
+}
+
+}  // namespace coatfft::scene

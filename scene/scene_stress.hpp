@@ -1,0 +1,29 @@
+#pragma once
+// The stresses a [stress] scene asks for (docs/stress.md): the planes at its depths, the section
+// y = 0, and the summary's "stress" object (largest von Mises and principal tensile stress, the
+// largest shear stress on each interface), under the scene's pressure.
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "core/types.hpp"
+#include "scene/scene.hpp"
+#include "scene/scene_pressure.hpp"
+
+namespace coatfft::scene {
+
+/// What [stress] computes. Arrays are C-order, ready for .npy.
+struct StressRun {
+  std::vector<double> stress;     ///< (n_depths, 6, ny, nx) [Pa]; empty without depths
+  std::vector<double> von_mises;  ///< (n_depths, ny, nx) [Pa]
+  std::vector<double> section;    ///< (nz, 6, nx) [Pa] on the row nearest y = 0; empty without
+  std::vector<double> section_von_mises;  ///< (nz, nx) [Pa]
+  nlohmann::json summary;                 ///< summary.json's "stress"
+};
+
+/// The stresses of `spec` in the body `body` on `grid` under `pressure` and the tractions `q`
+/// (each (nx, ny) [Pa]), with the library's StressOperator on `threads` threads. Throws
+/// InvalidArgument if a result is not finite.
+StressRun compute_stress(const StressSpec& spec, const LayerStack& body, const Grid& grid,
+                         const Field& pressure, const Tractions& q, int threads);
+
+}  // namespace coatfft::scene
