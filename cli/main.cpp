@@ -3,8 +3,12 @@
 // converge (outputs are written, summary.json says converged = false), 1 for a failed
 // validate-frf check and anything else. A run stopped by Ctrl-C ends by SIGINT (status 130).
 #include <CLI/CLI.hpp>
+#include <functional>
 #include <iostream>
+#include <memory>
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "cli/check_command.hpp"
 #include "cli/frf_command.hpp"
@@ -31,100 +35,121 @@ bool refuse_unknown_command(int argc, char** argv) {
   return true;
 }
 
-}  // namespace
+// A subcommand, and what running it returns: the exit status.
+struct Command {
+  CLI::App* app;
+  std::function<int()> run;
+};
 
-int main(int argc, char** argv) {
-  CLI::App app{"coatfft: surface displacements and contact of coated elastic half-spaces"};
-  app.require_subcommand(1);
-  app.set_version_flag("--version", std::string("coatfft ") + COATFFT_VERSION);
-
-  coatfft::cli::RunOptions run;
-  std::string max_memory;
-  CLI::App* run_cmd = app.add_subcommand("run", "Compute the surface displacement of a scene");
-  run_cmd->add_option("scene", run.scene, "Scene file (TOML)")->required();
-  run_cmd->add_option("-o,--output", run.outdir, "Output folder")->required();
-  run_cmd->add_option("--repeat", run.repeat, "Applications to time (median reported)")
+// Each command's arguments live as long as its runner (shared with it), bound to its flags.
+Command add_run(CLI::App& app) {
+  struct Args {
+    coatfft::cli::RunOptions options;
+    std::string max_memory;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand("run", "Compute the surface displacement of a scene");
+  cmd->add_option("scene", args->options.scene, "Scene file (TOML)")->required();
+  cmd->add_option("-o,--output", args->options.outdir, "Output folder")->required();
+  cmd->add_option("--repeat", args->options.repeat, "Applications to time (median reported)")
       ->check(CLI::Range(1, coatfft::scene::max_repeat));
-  run_cmd->add_option("--max-memory", max_memory,
-                      "Memory the run may use, e.g. 4G (default: what the machine has available)");
-  run_cmd->add_flag("--quiet", run.quiet,
-                    "No progress on the terminal (warnings and errors are still printed)");
+  cmd->add_option("--max-memory", args->max_memory,
+                  "Memory the run may use, e.g. 4G (default: what the machine has available)");
+  cmd->add_flag("--quiet", args->options.quiet,
+                "No progress on the terminal (warnings and errors are still printed)");
+  return {cmd, [args] {
+            if (!args->max_memory.empty())
+              args->options.max_memory =
+                  coatfft::scene::parse_memory_size(args->max_memory, "--max-memory");
+            if (coatfft::cli::run_command(args->options) != coatfft::scene::RunStatus::ok) {
+              std::cerr << "coatfft: warning: the contact solver did not converge (see "
+                           "summary.json)\n";
+              return 3;
+            }
+            return 0;
+          }};
+}
 
-  coatfft::cli::CheckOptions check;
-  std::string check_max_memory;
-  CLI::App* check_cmd = app.add_subcommand(
+Command add_check(CLI::App& app) {
+  struct Args {
+    coatfft::cli::CheckOptions options;
+    std::string max_memory;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(
       "check",
       "Validate a scene as run does and print what it would compute (JSON), computing "
       "and writing nothing");
-  check_cmd->add_option("scene", check.scene, "Scene file (TOML)")->required();
-  check_cmd->add_option("--max-memory", check_max_memory, "As for run");
+  cmd->add_option("scene", args->options.scene, "Scene file (TOML)")->required();
+  cmd->add_option("--max-memory", args->max_memory, "As for run");
+  return {cmd, [args] {
+            if (!args->max_memory.empty())
+              args->options.max_memory =
+                  coatfft::scene::parse_memory_size(args->max_memory, "--max-memory");
+            coatfft::cli::check_command(args->options);
+            return 0;
+          }};
+}
 
-  coatfft::cli::ValidateFrfOptions validate;
-  CLI::App* validate_cmd = app.add_subcommand(
+Command add_validate_frf(CLI::App& app) {
+  auto options = std::make_shared<coatfft::cli::ValidateFrfOptions>();
+  CLI::App* cmd = app.add_subcommand(
       "validate-frf",
       "Check a scene's [frf] table against its [substrate] and [[coating]] (exit 1 if a check "
       "fails)");
-  validate_cmd->add_option("scene", validate.scene, "Scene file (TOML) with [frf] and [substrate]")
+  cmd->add_option("scene", options->scene, "Scene file (TOML) with [frf] and [substrate]")
       ->required();
-  validate_cmd->add_option("--tolerance", validate.tolerance,
-                           "Largest relative difference accepted (default 1e-6)");
+  cmd->add_option("--tolerance", options->tolerance,
+                  "Largest relative difference accepted (default 1e-6)");
+  return {cmd, [options] { return coatfft::cli::validate_frf_command(*options) ? 0 : 1; }};
+}
 
-  coatfft::cli::FrfOptions frf;
-  CLI::App* frf_cmd = app.add_subcommand("frf", "Print the FRF of a scene's body as a CSV table");
-  frf_cmd
-      ->add_option("scene", frf.scene,
-                   "Scene file (TOML); only [substrate] and [[coating]] are used")
+Command add_frf(CLI::App& app) {
+  auto options = std::make_shared<coatfft::cli::FrfOptions>();
+  CLI::App* cmd = app.add_subcommand("frf", "Print the FRF of a scene's body as a CSV table");
+  cmd->add_option("scene", options->scene,
+                  "Scene file (TOML); only [substrate] and [[coating]] are used")
       ->required();
-  frf_cmd->add_option("-o,--output", frf.output, "CSV file (default: standard output)");
-  frf_cmd->add_option("--k-min", frf.k_min, "Smallest wavenumber [rad/m]");
-  frf_cmd->add_option("--k-max", frf.k_max, "Largest wavenumber [rad/m]");
-  frf_cmd->add_option("--points", frf.points, "Number of log-spaced wavenumbers")
+  cmd->add_option("-o,--output", options->output, "CSV file (default: standard output)");
+  cmd->add_option("--k-min", options->k_min, "Smallest wavenumber [rad/m]");
+  cmd->add_option("--k-max", options->k_max, "Largest wavenumber [rad/m]");
+  cmd->add_option("--points", options->points, "Number of log-spaced wavenumbers")
       ->check(CLI::Range(2L, coatfft::scene::max_frf_points));
+  return {cmd, [options] {
+            coatfft::cli::frf_command(*options);
+            return 0;
+          }};
+}
 
-  coatfft::cli::SurfaceOptions surface;
-  CLI::App* surface_cmd = app.add_subcommand(
+Command add_surface(CLI::App& app) {
+  auto o = std::make_shared<coatfft::cli::SurfaceOptions>();
+  CLI::App* cmd = app.add_subcommand(
       "surface", "Write a periodic self-affine random surface (heights [m]) as a .npy file");
-  surface_cmd->add_option("-o,--output", surface.output, "Output .npy file")->required();
-  surface_cmd->add_option("--nx", surface.nx, "Cells along x (even)")->required();
-  surface_cmd->add_option("--ny", surface.ny, "Cells along y (even)")->required();
-  surface_cmd->add_option("--lx", surface.lx, "Domain length along x [m]")->required();
-  surface_cmd->add_option("--ly", surface.ly, "Domain length along y [m]")->required();
-  surface_cmd->add_option("--hurst", surface.hurst, "Hurst exponent H in (0, 1]")->required();
-  surface_cmd->add_option("--rms-height", surface.rms_height, "rms height [m]");
-  surface_cmd->add_option("--rms-slope", surface.rms_slope, "rms slope [-]");
-  surface_cmd->add_option("--short-cutoff", surface.short_cutoff,
-                          "Shortest wavelength [m] (default 2 max(dx, dy))");
-  surface_cmd->add_option("--long-cutoff", surface.long_cutoff,
-                          "Roll-off wavelength [m] (default max(lx, ly): no roll-off)");
-  surface_cmd->add_option("--seed", surface.seed,
-                          "Seed of the random phases, an integer in [0, 2^64 - 1] (default 0)");
+  cmd->add_option("-o,--output", o->output, "Output .npy file")->required();
+  cmd->add_option("--nx", o->nx, "Cells along x (even)")->required();
+  cmd->add_option("--ny", o->ny, "Cells along y (even)")->required();
+  cmd->add_option("--lx", o->lx, "Domain length along x [m]")->required();
+  cmd->add_option("--ly", o->ly, "Domain length along y [m]")->required();
+  cmd->add_option("--hurst", o->hurst, "Hurst exponent H in (0, 1]")->required();
+  cmd->add_option("--rms-height", o->rms_height, "rms height [m]");
+  cmd->add_option("--rms-slope", o->rms_slope, "rms slope [-]");
+  cmd->add_option("--short-cutoff", o->short_cutoff,
+                  "Shortest wavelength [m] (default 2 max(dx, dy))");
+  cmd->add_option("--long-cutoff", o->long_cutoff,
+                  "Roll-off wavelength [m] (default max(lx, ly): no roll-off)");
+  cmd->add_option("--seed", o->seed,
+                  "Seed of the random phases, an integer in [0, 2^64 - 1] (default 0)");
+  return {cmd, [o] {
+            coatfft::cli::surface_command(*o);
+            return 0;
+          }};
+}
 
-  if (refuse_unknown_command(argc, argv)) return 2;
+// Runs the command the user chose; its exceptions become exit statuses.
+int run_chosen(const std::vector<Command>& commands) {
   try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
-    // One line, like every other refusal.
-    std::cerr << "coatfft: error: " << coatfft::detail::shorten(e.what(), 200)
-              << " (see coatfft --help)\n";
-    return 2;
-  }
-
-  try {
-    if (!max_memory.empty())
-      run.max_memory = coatfft::scene::parse_memory_size(max_memory, "--max-memory");
-    if (*run_cmd && coatfft::cli::run_command(run) == coatfft::scene::RunStatus::not_converged) {
-      std::cerr << "coatfft: warning: the contact solver did not converge (see summary.json)\n";
-      return 3;
-    }
-    if (*frf_cmd) coatfft::cli::frf_command(frf);
-    if (*surface_cmd) coatfft::cli::surface_command(surface);
-    if (*check_cmd) {
-      if (!check_max_memory.empty())
-        check.max_memory = coatfft::scene::parse_memory_size(check_max_memory, "--max-memory");
-      coatfft::cli::check_command(check);
-    }
-    if (*validate_cmd && !coatfft::cli::validate_frf_command(validate)) return 1;
+    for (const Command& command : commands)
+      if (*command.app) return command.run();
   } catch (const coatfft::Interrupted&) {
     // Ctrl-C during `run`: the computation has stopped and unwound, its staged output removed.
     std::cerr << "coatfft: interrupted\n" << std::flush;
@@ -141,4 +166,25 @@ int main(int argc, char** argv) {
     return 1;
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"coatfft: surface displacements and contact of coated elastic half-spaces"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("coatfft ") + COATFFT_VERSION);
+  const std::vector<Command> commands{add_run(app), add_check(app), add_validate_frf(app),
+                                      add_frf(app), add_surface(app)};
+  if (refuse_unknown_command(argc, argv)) return 2;
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    // One line, like every other refusal.
+    std::cerr << "coatfft: error: " << coatfft::detail::shorten(e.what(), 200)
+              << " (see coatfft --help)\n";
+    return 2;
+  }
+  return run_chosen(commands);
 }
