@@ -8,6 +8,8 @@
 #include "convolution/direct_operator.hpp"
 #include "convolution/frf_influence_kernel.hpp"
 #include "convolution/frf_spectral_operator.hpp"
+#include "convolution/periodic_kernel.hpp"
+#include "convolution/periodic_operator.hpp"
 #include "convolution/pipeline_error.hpp"
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
@@ -78,6 +80,23 @@ std::unique_ptr<SurfaceOperator> frf_operator(const Grid& grid, const Frf& frf,
       "use \"frf-split\", \"frf-dcfft\" or \"frf-spectral\""));
 }
 
+// Boundary::periodic: the periodic coefficients of the body's FRF (exact for the periodic
+// problem, for dcfft and frf-split alike) and their circular convolution on the grid itself.
+std::unique_ptr<SurfaceOperator> periodic_operator(const Grid& grid, const Frf& frf,
+                                                   const OperatorOptions& o,
+                                                   OperatorReport& report) {
+  report.frf = frf.name();
+  PeriodicKernelOptions kernel;
+  kernel.threads = o.threads;
+  const auto start = std::chrono::steady_clock::now();
+  const Field coefficients = periodic_influence_kernel(grid, frf, kernel);
+  report.kernel_seconds += detail::seconds_since(start);
+  report.fft_nx = grid.nx();
+  report.fft_ny = grid.ny();
+  return std::make_unique<PeriodicOperator>(grid, coefficients, o.method, o.planning,
+                                            Precision::double_precision, o.threads);
+}
+
 std::unique_ptr<SurfaceOperator> kernel_operator(const InfluenceKernel& kernel,
                                                  const OperatorOptions& o) {
   if (o.method == Method::direct) return std::make_unique<DirectOperator>(kernel);
@@ -110,6 +129,11 @@ void check_operator_options(const Grid& grid, const OperatorOptions& o) {
   COATFFT_REQUIRE(o.g0_tolerance > 0 && o.g0_tolerance < 1, "g(0) tolerance = ", o.g0_tolerance,
                   " must be in (0, 1)");
   COATFFT_REQUIRE(std::isfinite(o.alpha) && o.alpha >= 1, "alpha = ", o.alpha, " must be >= 1");
+  COATFFT_REQUIRE(
+      o.boundary == Boundary::free || o.method == Method::dcfft || o.method == Method::frf_split,
+      "method \"", to_string(o.method),
+      "\" computes free (non-periodic) surfaces: on a periodic boundary use "
+      "\"frf-split\" (any body) or \"dcfft\" (homogeneous)");
   if (!samples_frf_lattice(o.method)) return;
   for (const auto n : {grid.nx(), grid.ny()}) {
     const double m = o.alpha * static_cast<double>(n);
@@ -125,6 +149,8 @@ void check_operator_options(const Grid& grid, const OperatorOptions& o) {
 BuiltOperator make_operator(const Grid& grid, const LayerStack& body,
                             const OperatorOptions& options) {
   return timed(grid, options, [&](OperatorReport& report) -> std::unique_ptr<SurfaceOperator> {
+    if (options.boundary == Boundary::periodic)
+      return periodic_operator(grid, *make_frf(body), options, report);
     if (!uses_love_coefficients(options.method))
       return frf_operator(grid, *make_frf(body), options, report);
     // Love's coefficients exist in closed form only for the homogeneous half-space.
@@ -139,8 +165,10 @@ BuiltOperator make_operator(const Grid& grid, const LayerStack& body,
 }
 
 BuiltOperator make_operator(const Grid& grid, const Frf& frf, const OperatorOptions& options) {
-  return timed(grid, options,
-               [&](OperatorReport& report) { return frf_operator(grid, frf, options, report); });
+  return timed(grid, options, [&](OperatorReport& report) {
+    return options.boundary == Boundary::periodic ? periodic_operator(grid, frf, options, report)
+                                                  : frf_operator(grid, frf, options, report);
+  });
 }
 
 BuiltOperator make_operator(const InfluenceKernel& kernel, const OperatorOptions& options) {

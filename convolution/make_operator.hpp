@@ -20,9 +20,17 @@
 
 namespace coatfft {
 
+/// The surface's extent: free (an isolated load on a half-space, the grid a window of it), or
+/// periodic (the grid one period of a surface repeated in x and y, docs/theory.md 4.8).
+enum class Boundary { free, periodic };
+
 /// How to build an operator. The defaults are those of a scene file without [method] keys.
 struct OperatorOptions {
   Method method = Method::dcfft;
+  /// Boundary::periodic builds the exact periodic operator of the body's FRF
+  /// (convolution/periodic_operator.hpp) for method dcfft or frf-split (both convolve the same
+  /// periodic coefficients); the other methods compute free surfaces only.
+  Boundary boundary = Boundary::free;
   /// Domain extension ratio of frf-spectral (>= 1) and frf-dcfft (>= 2); alpha nx and alpha ny
   /// must be whole numbers. Ignored by the other methods.
   double alpha = 2.0;
@@ -66,8 +74,9 @@ struct BuiltOperator {
 };
 
 /// Throws InvalidArgument, with a message naming the option ("alpha = 1.5: ..."), unless
-/// `options` can be used on `grid` (alpha, tolerances, threads). make_operator calls it first; a
-/// reader of user input calls it to refuse bad input before any work starts.
+/// `options` can be used on `grid` (alpha, tolerances, threads, a method the boundary allows).
+/// make_operator calls it first; a reader of user input calls it to refuse bad input before any
+/// work starts.
 void check_operator_options(const Grid& grid, const OperatorOptions& options);
 
 /// The operator of `options.method` for `body` on `grid`. Throws InvalidArgument for bad options

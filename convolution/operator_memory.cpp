@@ -31,6 +31,7 @@ OperatorMemory transform_lattice(const Grid& grid, const OperatorOptions& o) {
 }  // namespace
 
 OperatorMemory estimated_memory(const Grid& grid, const OperatorOptions& options) {
+  if (options.boundary == Boundary::periodic) return estimated_periodic_memory(grid);
   OperatorMemory m = transform_lattice(grid, options);
   const double lattice = double(m.lattice_nx) * double(m.lattice_ny);
   const bool builds_on_lattice =

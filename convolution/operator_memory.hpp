@@ -17,7 +17,8 @@ struct OperatorMemory {
   std::ptrdiff_t lattice_ny = 0;
 };
 
-/// make_operator's operator of `options.method` on `grid`: a real input array, its complex half
+/// make_operator's operator of `options.method` on `grid` (on a periodic boundary,
+/// estimated_periodic_memory): a real input array, its complex half
 /// spectrum and the kernel's half spectrum (2.5 doubles per lattice cell); frf-split and
 /// frf-dcfft build their kernel on one more lattice, and frf-dcfft samples the FRF on the
 /// alpha-extended lattice.

@@ -4,9 +4,6 @@
 #include <memory>
 #include <string>
 
-#include "convolution/periodic_kernel.hpp"
-#include "convolution/periodic_operator.hpp"
-#include "core/detail/timing.hpp"
 #include "core/error.hpp"
 #include "scene/input_file.hpp"
 
@@ -23,34 +20,13 @@ bool holds_fftw_wisdom(const std::string& text) {
   return text.rfind("(fftw-3", 0) == 0;
 }
 
-// [grid] boundary = "periodic": the periodic coefficients of the body's FRF (for dcfft and
-// frf-split alike, exact for the periodic problem) and their circular convolution.
-BuiltOperator periodic_operator(const Scene& scene) {
-  const auto start = std::chrono::steady_clock::now();
-  const std::shared_ptr<const Frf> frf = body_frf(scene);
-  PeriodicKernelOptions kernel;
-  kernel.threads = scene.method.options.threads;
-  const Field coefficients = periodic_influence_kernel(scene.grid, *frf, kernel);
-  BuiltOperator built;
-  built.report.method = scene.method.options.method;
-  built.report.frf = frf->name();
-  built.report.kernel_seconds = detail::seconds_since(start);
-  built.op = std::make_unique<PeriodicOperator>(
-      scene.grid, coefficients, built.report.method, scene.method.options.planning,
-      Precision::double_precision, scene.method.options.threads);
-  built.report.setup_seconds = detail::seconds_since(start);
-  built.report.fft_nx = scene.grid.nx();
-  built.report.fft_ny = scene.grid.ny();
-  return built;
-}
-
 BuiltOperator operator_from_scene(const Scene& scene) {
   const MethodSpec& method = scene.method;
   // name = "auto" may have reduced the body (scene/automatic_method.hpp).
   const LayerStack& body = method.reduced_body ? *method.reduced_body : *scene.body;
-  BuiltOperator built = scene.periodic ? periodic_operator(scene)
-                        : scene.frf    ? make_operator(scene.grid, *scene.frf, method.options)
-                                       : make_operator(scene.grid, body, method.options);
+  // A periodic grid's operator too: method.options.boundary says which (read_scene).
+  BuiltOperator built = scene.frf ? make_operator(scene.grid, *scene.frf, method.options)
+                                  : make_operator(scene.grid, body, method.options);
   refuse_untrustworthy(built.report);
   return built;
 }

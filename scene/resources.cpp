@@ -36,8 +36,7 @@ std::string lattice_drivers(const Scene& scene, const OperatorMemory& m) {
 MemoryNeed estimate_memory(const Scene& scene) {
   const Grid& grid = scene.grid;
   const double cells = static_cast<double>(grid.nx()) * static_cast<double>(grid.ny());
-  const OperatorMemory op = scene.periodic ? estimated_periodic_memory(grid)
-                                           : estimated_memory(grid, scene.method.options);
+  const OperatorMemory op = estimated_memory(grid, scene.method.options);
   MemoryNeed need{program_bytes + op.bytes, lattice_drivers(scene, op)};
   // The fields on the grid: 4 for a known pressure; 12 for a contact (iterates, directions, gap)
   // and its preconditioner (a real field, its half spectrum and the multiplier).

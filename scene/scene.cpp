@@ -692,6 +692,7 @@ void check_tangential(const Scene& scene, const char* key) {
 // and so do the stresses and the tangential tractions so far: refused.
 void check_periodic(Scene& scene) {
   MethodSpec& m = scene.method;
+  m.options.boundary = Boundary::periodic;
   if (m.automatic) {
     m.automatic = false;
     m.auto_periodic = true;

@@ -11,6 +11,8 @@
 #include "contact/indenter.hpp"
 #include "convolution/dcfft_operator.hpp"
 #include "convolution/influence_kernel.hpp"
+#include "convolution/make_operator.hpp"
+#include "convolution/operator_memory.hpp"
 #include "convolution/periodic_kernel.hpp"
 #include "convolution/periodic_operator.hpp"
 #include "convolution/split_frf_kernel.hpp"
@@ -63,7 +65,7 @@ struct WavySurface {
   }
 };
 
-double measured_eigenvalue(const Grid& g, PeriodicOperator& op, int mx, int my) {
+double measured_eigenvalue(const Grid& g, SurfaceOperator& op, int mx, int my) {
   Field p(g.nx(), g.ny());
   for (std::ptrdiff_t j = 0; j < g.ny(); ++j)
     for (std::ptrdiff_t i = 0; i < g.nx(); ++i)
@@ -240,4 +242,35 @@ TEST_CASE("a two-dimensional sinusoid pressed into full contact", "[periodic][co
     for (std::ptrdiff_t i = 0; i < n; ++i)
       worst = std::max(worst, std::abs(r.pressure(i, j) - (p_m - p1 * h(i, j) / delta)));
   CHECK(worst < 1e-4 * p1);
+}
+
+TEST_CASE("the factory builds the periodic operator of any body", "[periodic]") {
+  // A coated body through make_operator(boundary = periodic): its eigenvalues are the aliased FRF
+  // of the stack, by the brute force above, for both methods the boundary allows.
+  const Grid g(24, 16, 2e-3, 1.5e-3);
+  const LayerStack body({Coating{Material(400e9, 0.25), 50e-6, Interface::bonded}}, steel);
+  const auto frf = make_frf(body);
+  for (const Method method : {Method::frf_split, Method::dcfft}) {
+    OperatorOptions options;
+    options.method = method;
+    options.boundary = Boundary::periodic;
+    BuiltOperator built = make_operator(g, body, options);
+    CHECK(built.op->periodic());
+    CHECK(built.report.method == method);
+    CHECK(built.report.fft_nx == 24);
+    for (auto [mx, my] : {std::pair{1, 0}, {5, 3}, {12, 8}}) {
+      INFO(to_string(method) << ": " << mx << ", " << my);
+      CHECK(measured_eigenvalue(g, *built.op, mx, my) ==
+            Approx(eigenvalue(g, *frf, mx, my)).epsilon(1e-7));
+    }
+    CHECK(estimated_memory(g, options).bytes == estimated_periodic_memory(g).bytes);
+  }
+  // The methods that compute free surfaces are refused on a period, by name.
+  for (const Method method : {Method::direct, Method::frf_spectral, Method::frf_dcfft}) {
+    OperatorOptions options;
+    options.method = method;
+    options.boundary = Boundary::periodic;
+    CHECK_THROWS_WITH(make_operator(g, body, options),
+                      Catch::Contains("computes free (non-periodic) surfaces"));
+  }
 }

@@ -51,6 +51,7 @@ namespace {
 // cost model's `applications` and `load_radius` for method = "auto".
 struct MethodKeywords {
   std::string method;
+  std::string boundary;
   std::optional<double> tolerance, alpha, g0_tol, load_radius, applications;
   std::optional<std::string> g0, planning;
   std::optional<int> threads;
@@ -167,6 +168,7 @@ py::dict report_dict(const Grid& grid, const BuiltOperator& built, const MethodK
   nlohmann::json json = scene::operator_report_json(built.report);
   json["method"] = to_string(built.report.method);
   json["method_requested"] = k.method;
+  json["boundary"] = k.boundary;
   json["nx"] = grid.nx();
   json["ny"] = grid.ny();
   json["fft_nx"] = built.report.fft_nx;
@@ -191,13 +193,42 @@ void require_operator_memory(const Grid& grid, const OperatorOptions& options) {
                                                         : "use fewer cells");
 }
 
+// boundary = "periodic" (docs/python.md): the exact periodic operator, for "dcfft" or "frf-split";
+// "auto" takes the one the body allows, as a scene's [grid] boundary = "periodic" does. The
+// automatic choice's tolerance model is that of free surfaces: its keywords are refused.
+OperatorOptions periodic_options(const Grid& grid, const Body& body, const MethodKeywords& k) {
+  if (k.method != "auto") {
+    OperatorOptions o = named_options(grid, k);
+    o.boundary = Boundary::periodic;
+    check_operator_options(grid, o);
+    return o;
+  }
+  for (const auto& [given, name] :
+       {std::pair{k.tolerance.has_value(), "tolerance"},
+        std::pair{k.load_radius.has_value(), "load_radius"},
+        std::pair{k.applications.has_value(), "applications"},
+        std::pair{k.alpha.has_value(), "alpha"}, std::pair{k.g0.has_value(), "g0"},
+        std::pair{k.g0_tol.has_value(), "g0_tol"}})
+    refuse_if(given, name, "auto", "free boundaries (boundary = \"free\")");
+  OperatorOptions o;
+  o.boundary = Boundary::periodic;
+  o.method = body.stack && body.stack->is_homogeneous() ? Method::dcfft : Method::frf_split;
+  o.planning = planning_keyword(k);
+  o.threads = threads_keyword(k, 1);
+  return o;
+}
+
 std::unique_ptr<Operator> make_operator_py(const Grid& grid, py::handle body_object,
                                            MethodKeywords k) {
   const Body body = body_from_object(body_object);
   std::optional<scene::AutomaticChoice> choice;
   OperatorOptions options;
   const LayerStack* stack = body.stack ? &*body.stack : nullptr;
-  if (k.method == "auto") {
+  COATFFT_REQUIRE(k.boundary == "free" || k.boundary == "periodic", "make_operator: boundary = \"",
+                  k.boundary, "\" is not one of \"free\", \"periodic\"");
+  if (k.boundary == "periodic") {
+    options = periodic_options(grid, body, k);
+  } else if (k.method == "auto") {
     k.tolerance = k.tolerance.value_or(AutoRequest{}.tolerance);
     // The default method is the least any choice needs: a grid too large for it is refused
     // before the automatic choice spends time on it.
@@ -241,20 +272,23 @@ void bind_operator(py::module_& m) {
       });
   m.def(
       "make_operator",
-      [](const Grid& grid, py::handle body, std::string method, std::optional<double> tolerance,
-         std::optional<double> alpha, std::optional<std::string> g0, std::optional<double> g0_tol,
+      [](const Grid& grid, py::handle body, std::string method, std::string boundary,
+         std::optional<double> tolerance, std::optional<double> alpha,
+         std::optional<std::string> g0, std::optional<double> g0_tol,
          std::optional<std::string> planning, std::optional<int> threads,
          std::optional<double> applications, std::optional<double> load_radius) {
-        return make_operator_py(grid, body,
-                                {std::move(method), tolerance, alpha, g0_tol, load_radius,
-                                 applications, std::move(g0), std::move(planning), threads});
+        return make_operator_py(
+            grid, body,
+            {std::move(method), std::move(boundary), tolerance, alpha, g0_tol, load_radius,
+             applications, std::move(g0), std::move(planning), threads});
       },
-      "grid"_a, "body"_a, py::kw_only(), "method"_a = "auto", "tolerance"_a = py::none(),
-      "alpha"_a = py::none(), "g0"_a = py::none(), "g0_tol"_a = py::none(),
-      "planning"_a = py::none(), "threads"_a = py::none(), "applications"_a = py::none(),
-      "load_radius"_a = py::none(),
+      "grid"_a, "body"_a, py::kw_only(), "method"_a = "auto", "boundary"_a = "free",
+      "tolerance"_a = py::none(), "alpha"_a = py::none(), "g0"_a = py::none(),
+      "g0_tol"_a = py::none(), "planning"_a = py::none(), "threads"_a = py::none(),
+      "applications"_a = py::none(), "load_radius"_a = py::none(),
       "The operator of `body` (LayerStack, Material or Frf) on `grid`; keywords as the scene's "
-      "[method] keys (docs/python.md).");
+      "[method] keys, and boundary = \"free\" or \"periodic\" as [grid] boundary "
+      "(docs/python.md).");
 }
 
 }  // namespace coatfft::python

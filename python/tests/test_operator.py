@@ -368,3 +368,34 @@ def test_reprs(steel):
     x, y = np.meshgrid(grid.x, grid.y)
     result = coatfft.solve_contact(op, (x**2 + y**2) / 0.02, load=1.0)
     assert repr(result).startswith("ContactResult(status='converged', iterations=")
+
+
+def test_periodic_boundary_against_the_wavy_closed_form(steel, tin_stack):
+    # One period of p = p0 cos(k x) on 64 cells, uniform in y: u = 2 p0 cos(k x) / (E* k)
+    # (Johnson 1985, section 13.2). The cell-wise constant load changes the amplitude by
+    # sinc(k dx / 2) and its aliases by about (k dx)^2 / (4 pi^2): 4e-4 and 2.4e-4 here.
+    lam, p0 = 1e-3, 1e8
+    grid = coatfft.Grid(64, 2, lam, 2 * lam / 64)
+    p = p0 * np.cos(2 * np.pi * grid.x / lam)[np.newaxis, :].repeat(2, axis=0)
+    exact = 2 * p / (steel.E_star * 2 * np.pi / lam)
+    for method in ("auto", "dcfft", "frf-split"):
+        op = coatfft.make_operator(grid, steel, method=method, boundary="periodic")
+        assert op.report["boundary"] == "periodic"
+        assert op.report["fft_nx"] == 64
+        assert rel_max(op.apply(p), exact) < 1e-3, method
+    # A coated body's periodic operator: auto takes frf-split, and 2 um of TiN (stiffer than
+    # steel) make the surface stiffer, by about k h (E*_steel / E*_TiN - 1) ~ 1e-2 (docs/theory.md).
+    coated = coatfft.make_operator(grid, tin_stack, boundary="periodic")
+    assert coated.method == "frf-split"
+    bare = np.abs(coatfft.make_operator(grid, steel, boundary="periodic").apply(p)).max()
+    assert 0.9 * bare < np.abs(coated.apply(p)).max() < bare
+
+
+def test_periodic_boundary_refusals(steel):
+    grid = coatfft.Grid(16, 16, 1e-3, 1e-3)
+    with pytest.raises(ValueError, match='"frf-spectral" computes free'):
+        coatfft.make_operator(grid, steel, method="frf-spectral", boundary="periodic")
+    with pytest.raises(ValueError, match='boundary = "closed" is not one of "free", "periodic"'):
+        coatfft.make_operator(grid, steel, boundary="closed")
+    with pytest.raises(ValueError, match="tolerance applies only to free boundaries"):
+        coatfft.make_operator(grid, steel, boundary="periodic", tolerance=1e-3)
