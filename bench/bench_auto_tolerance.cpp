@@ -99,7 +99,7 @@ Field apply_once(const Grid& grid, const LayerStack& body, const OperatorOptions
 Field reference(const Grid& grid, const LayerStack& body, const Field& p,
                 SplitRoute route = SplitRoute::automatic) {
   OperatorOptions o;
-  o.method = body.is_homogeneous() ? Method::dcfft : Method::frf_split;
+  o.method = exact_method(body);
   o.split.tolerance = reference_split_tolerance;
   o.split.route = route;
   return apply_once(grid, body, o, p);

@@ -20,6 +20,7 @@
 
 #include "bench/bench_report.hpp"
 #include "contact/contact_solver.hpp"
+#include "convolution/make_operator.hpp"
 #include "convolution/periodic_kernel.hpp"
 #include "convolution/periodic_operator.hpp"
 #include "core/detail/timing.hpp"
@@ -100,9 +101,7 @@ ContactResult solve_row(std::ptrdiff_t n, const Body& body, PeriodicOperator& op
 
 PeriodicOperator make_operator(const Grid& g, const Body& body, const Field& kernel,
                                Precision precision) {
-  return PeriodicOperator(g, kernel,
-                          body.stack.is_homogeneous() ? Method::dcfft : Method::frf_split,
-                          Planning::estimate, precision);
+  return PeriodicOperator(g, kernel, exact_method(body.stack), Planning::estimate, precision);
 }
 
 double median_apply_ms(PeriodicOperator& op, const Field& p) {

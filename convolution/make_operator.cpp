@@ -123,6 +123,10 @@ BuiltOperator timed(const Grid& grid, const OperatorOptions& options, Build&& bu
 
 }  // namespace
 
+Method exact_method(const LayerStack& body) {
+  return body.is_homogeneous() ? Method::dcfft : Method::frf_split;
+}
+
 void check_operator_options(const Grid& grid, const OperatorOptions& o) {
   COATFFT_REQUIRE(o.threads >= 1 && o.threads <= max_threads, "threads = ", o.threads,
                   " must be in 1..", max_threads);

@@ -73,6 +73,11 @@ struct BuiltOperator {
   OperatorReport report;
 };
 
+/// The method that is exact on any cells for `body`: dcfft (Love's closed-form coefficients) for
+/// a homogeneous body, frf-split otherwise (and for a body given by its FRF alone). These are
+/// also the two methods a periodic boundary takes.
+Method exact_method(const LayerStack& body);
+
 /// Throws InvalidArgument, with a message naming the option ("alpha = 1.5: ..."), unless
 /// `options` can be used on `grid` (alpha, tolerances, threads, a method the boundary allows).
 /// make_operator calls it first; a reader of user input calls it to refuse bad input before any

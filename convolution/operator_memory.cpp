@@ -31,7 +31,8 @@ OperatorMemory transform_lattice(const Grid& grid, const OperatorOptions& o) {
 }  // namespace
 
 OperatorMemory estimated_memory(const Grid& grid, const OperatorOptions& options) {
-  if (options.boundary == Boundary::periodic) return estimated_periodic_memory(grid);
+  if (options.boundary == Boundary::periodic)  // the grid is the lattice: no padding
+    return {2.5 * 8.0 * double(grid.nx()) * double(grid.ny()), grid.nx(), grid.ny()};
   OperatorMemory m = transform_lattice(grid, options);
   const double lattice = double(m.lattice_nx) * double(m.lattice_ny);
   const bool builds_on_lattice =
@@ -40,10 +41,6 @@ OperatorMemory estimated_memory(const Grid& grid, const OperatorOptions& options
   if (options.method == Method::frf_dcfft)  // the FRF sampled on the alpha-extended lattice
     m.bytes += 16.0 * options.alpha * options.alpha * double(grid.nx()) * double(grid.ny());
   return m;
-}
-
-OperatorMemory estimated_periodic_memory(const Grid& grid) {
-  return {2.5 * 8.0 * double(grid.nx()) * double(grid.ny()), grid.nx(), grid.ny()};
 }
 
 double estimated_cerruti_bytes(const Grid& grid) {

@@ -17,15 +17,12 @@ struct OperatorMemory {
   std::ptrdiff_t lattice_ny = 0;
 };
 
-/// make_operator's operator of `options.method` on `grid` (on a periodic boundary,
-/// estimated_periodic_memory): a real input array, its complex half
-/// spectrum and the kernel's half spectrum (2.5 doubles per lattice cell); frf-split and
-/// frf-dcfft build their kernel on one more lattice, and frf-dcfft samples the FRF on the
-/// alpha-extended lattice.
+/// make_operator's operator of `options` on `grid`: a real input array, its complex half
+/// spectrum and the kernel's half spectrum (2.5 doubles per lattice cell) of the transform
+/// lattice, which is the grid itself on a periodic boundary (no padding); on a free one,
+/// frf-split and frf-dcfft build their kernel on one more lattice, and frf-dcfft samples the FRF
+/// on the alpha-extended lattice.
 OperatorMemory estimated_memory(const Grid& grid, const OperatorOptions& options);
-
-/// PeriodicOperator on `grid`: the grid is the transform lattice (no padding).
-OperatorMemory estimated_periodic_memory(const Grid& grid);
 
 /// CerrutiOperator on `grid` [bytes]: nine spectrum quarters, three load spectra of the padded
 /// lattice and the three outputs; while it is built, six coefficient fields and four lattice

@@ -696,8 +696,7 @@ void check_periodic(Scene& scene) {
   if (m.automatic) {
     m.automatic = false;
     m.auto_periodic = true;
-    m.options.method =
-        !scene.frf && scene.body->is_homogeneous() ? Method::dcfft : Method::frf_split;
+    m.options.method = scene.frf ? Method::frf_split : exact_method(*scene.body);
   }
   const Method method = m.options.method;
   COATFFT_REQUIRE(

@@ -64,7 +64,7 @@ double relative_max(const Field& u, const Field& reference) {
 // The exact linear convolution of `body` on `grid`: Love's DC-FFT or frf-split.
 BuiltOperator exact_operator(const Grid& grid, const LayerStack& body) {
   OperatorOptions o;
-  o.method = body.is_homogeneous() ? Method::dcfft : Method::frf_split;
+  o.method = exact_method(body);
   return make_operator(grid, body, o);
 }
 

@@ -16,8 +16,7 @@
 #include <vector>
 
 #include "contact/contact_solver.hpp"
-#include "convolution/periodic_kernel.hpp"
-#include "convolution/periodic_operator.hpp"
+#include "convolution/make_operator.hpp"
 #include "core/detail/timing.hpp"
 #include "frf/frf.hpp"
 #include "layers/layer_stack.hpp"
@@ -69,12 +68,12 @@ struct Point {
 
 std::vector<Point> area_curve(const Grid& g, const LayerStack& body, const Field& gap,
                               const std::vector<double>& loads) {
-  const auto frf = make_frf(body);
-  PeriodicKernelOptions o;
+  OperatorOptions o;
+  o.method = exact_method(body);
+  o.boundary = Boundary::periodic;
   o.threads = 2;
-  PeriodicOperator op(g, periodic_influence_kernel(g, *frf, o),
-                      body.is_homogeneous() ? Method::dcfft : Method::frf_split);
-  ContactSolver solver(op);
+  const BuiltOperator op = make_operator(g, body, o);
+  ContactSolver solver(*op.op);
   const double e_star = kSteel.plane_strain_modulus();
   std::vector<Point> points;
   for (double load : loads) {

@@ -505,7 +505,7 @@ std::vector<SlidingRow> sliding_rows(const LayerStack& body, const std::vector<d
                                      std::ptrdiff_t n = 65) {
   const Grid g(n, n, 4 * kContactRadius, 4 * kContactRadius);
   OperatorOptions options;
-  options.method = body.is_homogeneous() ? Method::dcfft : Method::frf_split;
+  options.method = exact_method(body);
   options.threads = kThreads;
   const BuiltOperator normal = make_operator(g, body, options);
   ContactSolver solver(*normal.op);

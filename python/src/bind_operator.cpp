@@ -212,7 +212,7 @@ OperatorOptions periodic_options(const Grid& grid, const Body& body, const Metho
     refuse_if(given, name, "auto", "free boundaries (boundary = \"free\")");
   OperatorOptions o;
   o.boundary = Boundary::periodic;
-  o.method = body.stack && body.stack->is_homogeneous() ? Method::dcfft : Method::frf_split;
+  o.method = body.stack ? exact_method(*body.stack) : Method::frf_split;
   o.planning = planning_keyword(k);
   o.threads = threads_keyword(k, 1);
   return o;
