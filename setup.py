@@ -30,6 +30,8 @@ class CMakeBuild(build_ext):
             "-DCOATFFT_PYTHON=ON", "-DCOATFFT_BUILD_CLI=OFF", "-DCOATFFT_BUILD_TESTS=OFF",
             "-DCOATFFT_BUILD_BENCH=OFF", "-DCOATFFT_BUILD_TABLES=OFF",
             "-DCOATFFT_BUILD_EXAMPLES=OFF", f"-DPython3_EXECUTABLE={sys.executable}",
+            # Built once: the library, the scene layer and the module as unity builds.
+            "-DCOATFFT_UNITY=ON",
             f"-DCOATFFT_PYTHON_OUTPUT_DIR={package_parent}",
         ]
         if shutil.which("ninja"):

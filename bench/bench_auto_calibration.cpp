@@ -4,7 +4,6 @@
 // application times of make_operator (medians), and the least-squares constants. One thread,
 // FFTW_ESTIMATE. Writes bench/results/auto_calibration.csv (or OUTPUT).
 //   bench_auto_calibration [OUTPUT] [--reps 3]
-#include <CLI/CLI.hpp>
 #include <Eigen/Dense>
 #include <chrono>
 #include <cmath>
@@ -15,6 +14,7 @@
 #include <vector>
 
 #include "bench/bench_report.hpp"
+#include "bench/command_line.hpp"
 #include "convolution/make_operator.hpp"
 #include "core/detail/timing.hpp"
 #include "frf/frf.hpp"
@@ -110,12 +110,12 @@ Eigen::VectorXd fit(const std::vector<std::vector<double>>& x, const std::vector
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Calibration data of the automatic method choice's cost model"};
+  coatfft::bench::CommandLine app{"Calibration data of the automatic method choice's cost model"};
   std::string out_path = std::string(COATFFT_SOURCE_DIR) + "/bench/results/auto_calibration.csv";
-  app.add_option("output", out_path, "CSV file")->capture_default_str();
+  app.add("output", out_path, "CSV file").show_default();
   int reps = 3;
-  app.add_option("--reps", reps, "Builds per row")->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  app.add("--reps", reps, "Builds per row").show_default();
+  if (const auto status = app.parse(argc, argv)) return *status;
   try {
     // FFTW's start: the first plan of the process against a later one (fftw_start_seconds).
     double first_s[2];

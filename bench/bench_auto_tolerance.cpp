@@ -15,7 +15,6 @@
 // bench/results/auto_tolerance.csv (or OUTPUT).
 //   bench_auto_tolerance [OUTPUT] [--quick] [--reps 3] [--cases soft_h0.1,...]
 //                        [--cross-check soft_h0.1,soft_h1,hard_h0.1,hard_h1]
-#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -30,6 +29,7 @@
 #include <vector>
 
 #include "bench/bench_report.hpp"
+#include "bench/command_line.hpp"
 #include "convolution/make_operator.hpp"
 #include "convolution/method.hpp"
 #include "core/detail/timing.hpp"
@@ -367,22 +367,21 @@ bool selected(const std::vector<std::string>& names, const std::string& name) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"The automatic method choice: tolerance against achieved error and time"};
+  coatfft::bench::CommandLine app{
+      "The automatic method choice: tolerance against achieved error and time"};
   std::string out_path = std::string(COATFFT_SOURCE_DIR) + "/bench/results/auto_tolerance.csv";
-  app.add_option("output", out_path, "CSV file")->capture_default_str();
+  app.add("output", out_path, "CSV file").show_default();
   bool quick = false;
-  app.add_flag("--quick", quick, "N = 128 only, one repetition (for trying)");
+  app.flag("--quick", quick, "N = 128 only, one repetition (for trying)");
   int reps = 3;
-  app.add_option("--reps", reps, "Repetitions per timing (1 with --quick)")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+  app.add("--reps", reps, "Repetitions per timing (1 with --quick)").show_default().positive();
   std::vector<std::string> names;
-  app.add_option("--cases", names, "Cases (default: all)")->delimiter(',');
+  app.add("--cases", names, "Cases (default: all)").comma_separated();
   std::vector<std::string> checks = {"soft_h0.1", "soft_h1", "hard_h0.1", "hard_h1"};
-  app.add_option("--cross-check", checks, "Cases whose reference is checked by the Hankel route")
-      ->delimiter(',')
-      ->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  app.add("--cross-check", checks, "Cases whose reference is checked by the Hankel route")
+      .comma_separated()
+      .show_default();
+  if (const auto status = app.parse(argc, argv)) return *status;
   if (quick) reps = 1;
   try {
     std::vector<Case> cases = all_cases();

@@ -6,7 +6,6 @@
 // and CSV rows, and writes the same to bench/results/contact.csv (or OUTPUT).
 //   bench_contact [OUTPUT] [--planning estimate|measure] [--sizes N ...]
 
-#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -18,6 +17,7 @@
 #include <vector>
 
 #include "bench/bench_report.hpp"
+#include "bench/command_line.hpp"
 #include "contact/contact_solver.hpp"
 #include "contact/indenter.hpp"
 #include "convolution/influence_kernel.hpp"
@@ -148,15 +148,14 @@ Row run(std::ptrdiff_t n, ContactControl control, bool preconditioned, bool upda
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Contact solver cost on the Hertz problem (DC-FFT)"};
+  coatfft::bench::CommandLine app{"Contact solver cost on the Hertz problem (DC-FFT)"};
   std::string path = "bench/results/contact.csv";
-  app.add_option("output", path, "CSV file")->capture_default_str();
+  app.add("output", path, "CSV file").show_default();
   std::string planning_name = "estimate";
-  app.add_option("--planning", planning_name, "FFTW planner effort: estimate or measure")
-      ->capture_default_str();
+  app.add("--planning", planning_name, "FFTW planner effort: estimate or measure").show_default();
   std::vector<std::ptrdiff_t> sizes = {256, 512, 1024, 2048};
-  app.add_option("--sizes", sizes, "grid sizes N (N x N cells)")->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  app.add("--sizes", sizes, "grid sizes N (N x N cells)").show_default();
+  if (const auto status = app.parse(argc, argv)) return *status;
   try {
     const Planning planning = parse_planning(planning_name);
     std::ostringstream out;

@@ -6,7 +6,6 @@
 //   bench_dcfft [OUTPUT] [--max-n N]
 #include <fftw3.h>
 
-#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <complex>
@@ -22,6 +21,7 @@
 
 #include "bench/bench_report.hpp"
 #include "bench/child_process.hpp"
+#include "bench/command_line.hpp"
 #include "convolution/fftw_plan.hpp"
 #include "convolution/influence_kernel.hpp"
 #include "convolution/make_operator.hpp"
@@ -249,19 +249,20 @@ void direct_vs_dcfft(std::ptrdiff_t n, std::vector<Row>& rows, std::ostream& log
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"One DC-FFT application against the bare padded FFTW pipeline; direct summation"};
+  coatfft::bench::CommandLine app{
+      "One DC-FFT application against the bare padded FFTW pipeline; direct summation"};
   std::string out_path = std::string(COATFFT_SOURCE_DIR) + "/bench/results/dcfft.csv";
-  app.add_option("output", out_path, "CSV file")->capture_default_str();
+  app.add("output", out_path, "CSV file").show_default();
   std::ptrdiff_t max_n = 2048;
-  app.add_option("--max-n", max_n, "Largest grid (also the size of the peak-RSS run)")
-      ->capture_default_str()
-      ->check(CLI::Range(std::ptrdiff_t{2}, std::ptrdiff_t{1} << 16));
+  app.add("--max-n", max_n, "Largest grid (also the size of the peak-RSS run)")
+      .show_default()
+      .range(std::ptrdiff_t{2}, std::ptrdiff_t{1} << 16);
   std::ptrdiff_t rss_n = 0;
-  app.add_option("--rss", rss_n,
-                 "Internal: only build and apply one N^2 operator (the child "
-                 "whose peak RSS is reported)")
-      ->group("");
-  CLI11_PARSE(app, argc, argv);
+  app.add("--rss", rss_n,
+          "Internal: only build and apply one N^2 operator (the child "
+          "whose peak RSS is reported)")
+      .hidden();
+  if (const auto status = app.parse(argc, argv)) return *status;
   try {
     if (rss_n > 0) return rss_child(rss_n);
     std::ostringstream header;

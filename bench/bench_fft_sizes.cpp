@@ -9,7 +9,6 @@
 //   bench_fft_sizes [OUTPUT] [--budget 4] [--threads 1]
 #include <fftw3.h>
 
-#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <exception>
@@ -21,6 +20,7 @@
 #include <vector>
 
 #include "bench/bench_report.hpp"
+#include "bench/command_line.hpp"
 #include "convolution/fftw_plan.hpp"
 #include "convolution/influence_kernel.hpp"
 #include "convolution/make_operator.hpp"
@@ -135,18 +135,17 @@ void run_pair(Method method, std::ptrdiff_t even, const OperatorOptions& o, doub
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"DC-FFT on awkward grid sizes (fast FFT padding) against the next power of two"};
+  coatfft::bench::CommandLine app{
+      "DC-FFT on awkward grid sizes (fast FFT padding) against the next power of two"};
   std::string out_path = std::string(COATFFT_SOURCE_DIR) + "/bench/results/fft_sizes.csv";
-  app.add_option("output", out_path, "CSV file")->capture_default_str();
+  app.add("output", out_path, "CSV file").show_default();
   double budget_s = 4.0;
-  app.add_option("--budget", budget_s, "Seconds of timed rounds per (method, N pair)")
-      ->capture_default_str()
-      ->check(CLI::Range(0.0, 600.0));
+  app.add("--budget", budget_s, "Seconds of timed rounds per (method, N pair)")
+      .show_default()
+      .range(0.0, 600.0);
   int threads = 1;
-  app.add_option("--threads", threads, "Threads of apply()")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 64));
-  CLI11_PARSE(app, argc, argv);
+  app.add("--threads", threads, "Threads of apply()").show_default().range(1, 64);
+  if (const auto status = app.parse(argc, argv)) return *status;
   try {
     std::ostringstream header;
     header << "# bench = bench_fft_sizes\n";

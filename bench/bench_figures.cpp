@@ -7,7 +7,6 @@
 //   fig3b_frf_g0.csv             frf-spectral at alpha = 2 with g(0) by quadrature at several
 //                                tolerances against the regularized g(0).
 // bench_figures DIR [--tiny]   (--tiny: N up to 64 in fig2b)
-#include <CLI/CLI.hpp>
 #include <cmath>
 #include <exception>
 #include <filesystem>
@@ -19,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include "bench/command_line.hpp"
 #include "bench/sweep_cases.hpp"
 #include "convolution/g0.hpp"
 #include "convolution/make_operator.hpp"
@@ -124,12 +124,12 @@ void write_figures(const std::string& dir, bool tiny) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"The data of Figures 2 and 3 of Spinu (2021) for coatfft"};
+  coatfft::bench::CommandLine app{"The data of Figures 2 and 3 of Spinu (2021) for coatfft"};
   std::string dir;
   bool tiny = false;
-  app.add_option("dir", dir, "Folder of the CSVs")->required();
-  app.add_flag("--tiny", tiny, "Grids up to N = 64 in Figure 2(b)");
-  CLI11_PARSE(app, argc, argv);
+  app.add("dir", dir, "Folder of the CSVs").required();
+  app.flag("--tiny", tiny, "Grids up to N = 64 in Figure 2(b)");
+  if (const auto status = app.parse(argc, argv)) return *status;
   try {
     write_figures(dir, tiny);
     std::cerr << "figure data written to " << dir << "\n";

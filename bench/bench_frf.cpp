@@ -5,7 +5,6 @@
 // Prints "# key = value" headers and CSV rows, and writes them to bench/results/frf_eval.csv
 // (or OUTPUT).
 //   bench_frf [OUTPUT]
-#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -16,6 +15,7 @@
 #include <vector>
 
 #include "bench/bench_report.hpp"
+#include "bench/command_line.hpp"
 #include "core/detail/timing.hpp"
 #include "frf/coated_frf.hpp"
 #include "frf/half_space_frf.hpp"
@@ -59,10 +59,10 @@ Result time_case(const coatfft::Frf& frf, const std::vector<double>& ks) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Nanoseconds per FRF evaluation H(k)"};
+  coatfft::bench::CommandLine app{"Nanoseconds per FRF evaluation H(k)"};
   std::string out_path = std::string(COATFFT_SOURCE_DIR) + "/bench/results/frf_eval.csv";
-  app.add_option("output", out_path, "CSV file")->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  app.add("output", out_path, "CSV file").show_default();
+  if (const auto status = app.parse(argc, argv)) return *status;
   const Material tin(4e11, 0.25), steel(2.1e11, 0.3), polymer(3e9, 0.4), dlc(2e11, 0.22);
   const double h = 1e-6;  // top coating thickness [m]
   std::vector<Case> cases;

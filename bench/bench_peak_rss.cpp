@@ -2,19 +2,20 @@
 // the child's own), its wall time and its exit status, which becomes this program's. Used by
 // scripts/run_benchmarks.sh for the memory of a whole coatfft run.
 //   bench_peak_rss CMD [ARGS...]
-#include <CLI/CLI.hpp>
 #include <exception>
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include "bench/child_process.hpp"
+#include "bench/command_line.hpp"
 
 int main(int argc, char** argv) {
-  CLI::App app{"Peak resident set size of a command: bench_peak_rss CMD [ARGS...]"};
-  app.prefix_command();  // CMD and everything after it are the command's, not ours
-  CLI11_PARSE(app, argc, argv);
-  const std::vector<std::string> command = app.remaining();
+  coatfft::bench::CommandLine app{
+      "Peak resident set size of a command: bench_peak_rss CMD [ARGS...]"};
+  app.leave_the_rest();  // CMD and everything after it are the command's, not ours
+  if (const auto status = app.parse(argc, argv)) return *status;
+  const std::vector<std::string> command = app.rest();
   if (command.empty()) {
     std::cerr << "bench_peak_rss: no command given\n" << app.help();
     return 2;

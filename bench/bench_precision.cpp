@@ -6,7 +6,6 @@
 // random (uniform [0, 1]) pressure, steel, N = 512 ... 4096. Prints `# key = value` headers and
 // CSV rows, and writes the same to bench/results/precision.csv (or OUTPUT).
 //   bench_precision [OUTPUT] [--sizes N ...]
-#include <CLI/CLI.hpp>
 #include <chrono>
 #include <exception>
 #include <iostream>
@@ -16,6 +15,7 @@
 #include <vector>
 
 #include "bench/bench_report.hpp"
+#include "bench/command_line.hpp"
 #include "convolution/periodic_kernel.hpp"
 #include "convolution/periodic_operator.hpp"
 #include "core/detail/timing.hpp"
@@ -49,12 +49,12 @@ Field random_pressure(std::ptrdiff_t n) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Single against double precision for the periodic operator"};
+  coatfft::bench::CommandLine app{"Single against double precision for the periodic operator"};
   std::string path = "bench/results/precision.csv";
-  app.add_option("output", path, "CSV file")->capture_default_str();
+  app.add("output", path, "CSV file").show_default();
   std::vector<std::ptrdiff_t> sizes = {512, 1024, 2048, 4096};
-  app.add_option("--sizes", sizes, "grid sizes N (N x N cells)")->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  app.add("--sizes", sizes, "grid sizes N (N x N cells)").show_default();
+  if (const auto status = app.parse(argc, argv)) return *status;
   try {
     std::ostringstream out;
     out << "# benchmark = bench_precision (periodic operator, one application, steel)\n";
@@ -82,8 +82,8 @@ int main(int argc, char** argv) {
         const double error = (u_single - u_exact).abs().maxCoeff() / u_exact.abs().maxCoeff();
         std::ostringstream row;
         row.precision(4);
-        row << n << "," << to_string(planning) << "," << threads << "," << exact_ms << "," << single_ms << ","
-            << exact_ms / single_ms << "," << error << "\n";
+        row << n << "," << to_string(planning) << "," << threads << "," << exact_ms << ","
+            << single_ms << "," << exact_ms / single_ms << "," << error << "\n";
         std::cout << row.str() << std::flush;
         out << row.str();
       }

@@ -4,7 +4,6 @@
 // against fresh evaluations between its nodes, and for the homogeneous case the Hankel value
 // against the closed form; 97 radii in [0, r_max]. Prints a CSV (and writes it with --output),
 // which scripts/plot_pareto.py renders into docs/benchmarks.md.
-#include <CLI/CLI.hpp>
 #include <chrono>
 #include <cmath>
 #include <exception>
@@ -13,6 +12,7 @@
 #include <string>
 
 #include "bench/bench_report.hpp"
+#include "bench/command_line.hpp"
 #include "bench/sweep_cases.hpp"
 #include "core/detail/timing.hpp"
 #include "validation/hertz.hpp"
@@ -21,10 +21,10 @@ int main(int argc, char** argv) {
   namespace sweep = coatfft::sweep;
   using coatfft::detail::seconds_since;
   using sweep::fmt;
-  CLI::App app{"Convergence of the references of bench_sweep"};
+  coatfft::bench::CommandLine app{"Convergence of the references of bench_sweep"};
   std::string output;
-  app.add_option("--output", output, "Also write the CSV here");
-  CLI11_PARSE(app, argc, argv);
+  app.add("--output", output, "Also write the CSV here");
+  if (const auto status = app.parse(argc, argv)) return *status;
   try {
     std::ostringstream os;
     os << "# bench_reference_check: max differences / u_ref(0) over 97 radii in [0, "

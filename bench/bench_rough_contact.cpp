@@ -9,7 +9,6 @@
 // Prints `# key = value` headers and CSV rows, and writes the same to
 // bench/results/rough_contact.csv (or OUTPUT).
 //   bench_rough_contact [OUTPUT] [--sizes N ...] [--original-up-to N] [--single-up-to N]
-#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <exception>
@@ -19,6 +18,7 @@
 #include <vector>
 
 #include "bench/bench_report.hpp"
+#include "bench/command_line.hpp"
 #include "contact/contact_solver.hpp"
 #include "convolution/make_operator.hpp"
 #include "convolution/periodic_kernel.hpp"
@@ -119,20 +119,18 @@ double median_apply_ms(PeriodicOperator& op, const Field& p) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Contact solver cost on a periodic rough surface"};
+  coatfft::bench::CommandLine app{"Contact solver cost on a periodic rough surface"};
   std::string path = "bench/results/rough_contact.csv";
-  app.add_option("output", path, "CSV file")->capture_default_str();
+  app.add("output", path, "CSV file").show_default();
   std::vector<std::ptrdiff_t> sizes = {1024, 2048, 4096};
-  app.add_option("--sizes", sizes, "grid sizes N (N x N cells)")->capture_default_str();
+  app.add("--sizes", sizes, "grid sizes N (N x N cells)").show_default();
   std::ptrdiff_t original_up_to = 4096;
-  app.add_option("--original-up-to", original_up_to,
-                 "largest N on which the original iteration runs too")
-      ->capture_default_str();
+  app.add("--original-up-to", original_up_to, "largest N on which the original iteration runs too")
+      .show_default();
   std::ptrdiff_t single_up_to = 2048;
-  app.add_option("--single-up-to", single_up_to,
-                 "largest N on which the single-precision solves run")
-      ->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  app.add("--single-up-to", single_up_to, "largest N on which the single-precision solves run")
+      .show_default();
+  if (const auto status = app.parse(argc, argv)) return *status;
   try {
     std::ostringstream out;
     out << "# benchmark = bench_rough_contact (periodic rough contact, load control)\n";

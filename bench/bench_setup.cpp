@@ -9,7 +9,6 @@
 //               [--methods dcfft,frf-spectral,frf-dcfft,frf-split]
 // (alpha is the extension ratio of frf-spectral and frf-dcfft; at alpha = 4 frf-dcfft's "kernel"
 // is frf_influence_kernel: FRF sampling on the 4N lattice and its DCT-I.)
-#include <CLI/CLI.hpp>
 #include <cmath>
 #include <exception>
 #include <iostream>
@@ -18,6 +17,7 @@
 #include <vector>
 
 #include "bench/bench_report.hpp"
+#include "bench/command_line.hpp"
 #include "bench/timed_setup.hpp"
 #include "convolution/g0.hpp"
 #include "convolution/make_operator.hpp"
@@ -45,29 +45,23 @@ constexpr double length = 4e-3;  // domain side [m]
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Setup against application cost per method"};
+  coatfft::bench::CommandLine app{"Setup against application cost per method"};
   std::string out_path = std::string(COATFFT_SOURCE_DIR) + "/bench/results/setup.csv";
-  app.add_option("output", out_path, "CSV file")->capture_default_str();
+  app.add("output", out_path, "CSV file").show_default();
   std::vector<std::ptrdiff_t> sizes = {512, 1024};
-  app.add_option("--sizes", sizes, "Grid sizes N")
-      ->delimiter(',')
-      ->capture_default_str()
-      ->check(CLI::Range(std::ptrdiff_t{2}, std::ptrdiff_t{1} << 16));
+  app.add("--sizes", sizes, "Grid sizes N")
+      .comma_separated()
+      .show_default()
+      .range(std::ptrdiff_t{2}, std::ptrdiff_t{1} << 16);
   std::vector<int> thread_list = {1, 2};
-  app.add_option("--threads", thread_list, "Thread counts")
-      ->delimiter(',')
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+  app.add("--threads", thread_list, "Thread counts").comma_separated().show_default().positive();
   int reps = 5;
-  app.add_option("--reps", reps, "Setups per row")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+  app.add("--reps", reps, "Setups per row").show_default().positive();
   double alpha = 2.0;
-  app.add_option("--alpha", alpha, "Extension ratio of frf-spectral and frf-dcfft")
-      ->capture_default_str();
+  app.add("--alpha", alpha, "Extension ratio of frf-spectral and frf-dcfft").show_default();
   std::vector<std::string> method_names;
-  app.add_option("--methods", method_names, "Methods (default: all but direct)")->delimiter(',');
-  CLI11_PARSE(app, argc, argv);
+  app.add("--methods", method_names, "Methods (default: all but direct)").comma_separated();
+  if (const auto status = app.parse(argc, argv)) return *status;
   try {
     constexpr int applies_per_rep = 3;
     std::vector<Method> methods;

@@ -7,7 +7,6 @@
 // application, medians of `reps` runs, and max |u| of the two methods. Prints "# key = value"
 // headers and CSV rows and writes them to bench/results/split_aspect_ratio.csv (or OUTPUT).
 //   bench_split_aspect [OUTPUT] [--reps 3] [--threads 1] [--cases ly_2mm,...,4096x1]
-#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <exception>
@@ -17,6 +16,7 @@
 #include <vector>
 
 #include "bench/bench_report.hpp"
+#include "bench/command_line.hpp"
 #include "convolution/make_operator.hpp"
 #include "convolution/method.hpp"
 #include "core/detail/timing.hpp"
@@ -110,20 +110,18 @@ std::string header(int reps, int threads) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"frf-split on elongated cells and domains, next to frf-spectral"};
+  coatfft::bench::CommandLine app{"frf-split on elongated cells and domains, next to frf-spectral"};
   std::string out_path = std::string(COATFFT_SOURCE_DIR) + "/bench/results/split_aspect_ratio.csv";
-  app.add_option("output", out_path, "CSV file")->capture_default_str();
+  app.add("output", out_path, "CSV file").show_default();
   int reps = 3;
-  app.add_option("--reps", reps, "Builds per case and method")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+  app.add("--reps", reps, "Builds per case and method").show_default().positive();
   int threads = 1;
-  app.add_option("--threads", threads, "Threads of the setup and the application")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+  app.add("--threads", threads, "Threads of the setup and the application")
+      .show_default()
+      .positive();
   std::vector<std::string> names;
-  app.add_option("--cases", names, "Cases (default: all)")->delimiter(',');
-  CLI11_PARSE(app, argc, argv);
+  app.add("--cases", names, "Cases (default: all)").comma_separated();
+  if (const auto status = app.parse(argc, argv)) return *status;
   try {
     const LayerStack body({Coating{Material(400e9, 0.25), 20e-6, Interface::bonded}},
                           Material(210e9, 0.3));

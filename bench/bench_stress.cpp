@@ -7,7 +7,6 @@
 // 8-plane operator.
 // Prints "# key = value" headers and CSV rows, and writes them to bench/results/stress.csv.
 //   bench_stress [OUTPUT] [--max-n N]
-#include <CLI/CLI.hpp>
 #include <chrono>
 #include <functional>
 #include <iostream>
@@ -17,6 +16,7 @@
 #include <vector>
 
 #include "bench/bench_report.hpp"
+#include "bench/command_line.hpp"
 #include "convolution/cerruti_operator.hpp"
 #include "convolution/influence_kernel.hpp"
 #include "convolution/make_operator.hpp"
@@ -104,12 +104,12 @@ std::vector<Row> measure(std::ptrdiff_t n) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Cost of a stress plane against a surface application"};
+  coatfft::bench::CommandLine app{"Cost of a stress plane against a surface application"};
   std::string output = "bench/results/stress.csv";
   std::ptrdiff_t max_n = 1024;
-  app.add_option("output", output, "CSV file to write")->capture_default_str();
-  app.add_option("--max-n", max_n, "largest N (powers of 2 from 128)")->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  app.add("output", output, "CSV file to write").show_default();
+  app.add("--max-n", max_n, "largest N (powers of 2 from 128)").show_default();
+  if (const auto status = app.parse(argc, argv)) return *status;
   std::ostringstream out;
   bench::write_machine_header(out);
   out << "# body = TiN 0.1 mm on steel, 4 mm domain; planes at 0.1 .. 0.8 mm; alpha = 16\n"

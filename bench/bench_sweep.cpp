@@ -9,7 +9,6 @@
 // holds the reference field, computes the errors.
 #include <unistd.h>
 
-#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -24,6 +23,7 @@
 
 #include "bench/bench_report.hpp"
 #include "bench/child_process.hpp"
+#include "bench/command_line.hpp"
 #include "bench/sweep_cases.hpp"
 #include "bench/sweep_row.hpp"
 #include "convolution/g0.hpp"
@@ -211,33 +211,33 @@ int sweep_main(const SweepConfig& cfg) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Speed against error: method x grid x alpha x g(0) on Hertz loads"};
+  coatfft::bench::CommandLine app{
+      "Speed against error: method x grid x alpha x g(0) on Hertz loads"};
   bool tiny = false, quick = false, full = false;
-  auto* tiny_flag = app.add_flag("--tiny", tiny, "N = 32, 64; the homogeneous case only");
-  auto* quick_flag = app.add_flag("--quick", quick, "N = 32 ... 512");
-  app.add_flag("--full", full, "N = 32 ... 2048 (the default)")
-      ->excludes(tiny_flag)
-      ->excludes(quick_flag);
-  tiny_flag->excludes(quick_flag);
+  auto& tiny_flag = app.flag("--tiny", tiny, "N = 32, 64; the homogeneous case only");
+  auto& quick_flag = app.flag("--quick", quick, "N = 32 ... 512");
+  app.flag("--full", full, "N = 32 ... 2048 (the default)")
+      .excludes(tiny_flag)
+      .excludes(quick_flag);
+  tiny_flag.excludes(quick_flag);
   std::string output = std::string(COATFFT_SOURCE_DIR) + "/bench/results/sweep.csv";
-  app.add_option("--output", output, "CSV file")->capture_default_str();
+  app.add("--output", output, "CSV file").show_default();
   int threads = 1;
-  app.add_option("--threads", threads, "Threads of each operator")->check(CLI::PositiveNumber);
+  app.add("--threads", threads, "Threads of each operator").positive();
   std::string planning = "estimate";
-  app.add_option("--planning", planning, "FFTW planner effort: estimate or measure");
+  app.add("--planning", planning, "FFTW planner effort: estimate or measure");
   std::vector<std::string> cases, methods;
-  app.add_option("--cases", cases, "Cases to run (default: all of the mode)")->delimiter(',');
-  app.add_option("--methods", methods, "Methods to run (default: all)")->delimiter(',');
+  app.add("--cases", cases, "Cases to run (default: all of the mode)").comma_separated();
+  app.add("--methods", methods, "Methods to run (default: all)").comma_separated();
   std::vector<std::ptrdiff_t> grids;
-  app.add_option("--grids", grids, "Grid sizes N (default: those of the mode)")
-      ->delimiter(',')
-      ->check(CLI::Range(std::ptrdiff_t{2}, std::ptrdiff_t{1} << 20));
+  app.add("--grids", grids, "Grid sizes N (default: those of the mode)")
+      .comma_separated()
+      .range(std::ptrdiff_t{2}, std::ptrdiff_t{1} << 20);
   std::string row_program =
       (std::filesystem::path(coatfft::bench::self_executable()).parent_path() / "bench_sweep_row")
           .string();
-  app.add_option("--row-program", row_program, "The bench_sweep_row program")
-      ->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  app.add("--row-program", row_program, "The bench_sweep_row program").show_default();
+  if (const auto status = app.parse(argc, argv)) return *status;
   try {
     SweepConfig cfg = mode_config(tiny ? "tiny" : quick ? "quick" : "full");
     cfg.output = output;

@@ -3,13 +3,13 @@
 // (timed as setup, by parts: bench/timed_setup.hpp), applies it once to warm up and then
 // repeatedly for about --budget seconds (3 to 51 times; the median is reported), and writes the
 // displacement and the timings for the parent (bench/sweep_row.hpp), which holds the reference.
-#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <exception>
 #include <iostream>
 #include <string>
 
+#include "bench/command_line.hpp"
 #include "bench/sweep_cases.hpp"
 #include "bench/sweep_row.hpp"
 #include "bench/timed_setup.hpp"
@@ -18,25 +18,24 @@
 
 int main(int argc, char** argv) {
   using namespace coatfft;
-  CLI::App app{"One row of bench_sweep (run by bench_sweep, not by hand)"};
+  coatfft::bench::CommandLine app{"One row of bench_sweep (run by bench_sweep, not by hand)"};
   sweep::RowSpec row;
   sweep::RowRun run;
   std::string method = "dcfft";
   std::string planning = "estimate";
   std::string g0;
   std::string output;
-  app.add_option("--case", row.case_name, "Case name (bench/sweep_cases.hpp)")->required();
-  app.add_option("--method", method, "Method")->required();
-  app.add_option("--n", row.n, "Cells per side")->required()->check(CLI::Range(1, 1 << 20));
-  app.add_option("--alpha", row.alpha, "Extension ratio (frf-spectral, frf-dcfft)");
-  app.add_option("--g0", g0, "g(0) method (frf-spectral, frf-dcfft)");
-  app.add_option("--g0-tol", row.g0_tol, "g(0) tolerance");
-  app.add_option("--planning", planning, "FFTW planner effort");
-  app.add_option("--threads", run.threads, "Threads");
-  app.add_option("--budget", run.budget_s, "Seconds of repeated applications");
-  app.add_option("--output", output, "Displacement file (timings: the same name + .txt)")
-      ->required();
-  CLI11_PARSE(app, argc, argv);
+  app.add("--case", row.case_name, "Case name (bench/sweep_cases.hpp)").required();
+  app.add("--method", method, "Method").required();
+  app.add("--n", row.n, "Cells per side").required().range(1, 1 << 20);
+  app.add("--alpha", row.alpha, "Extension ratio (frf-spectral, frf-dcfft)");
+  app.add("--g0", g0, "g(0) method (frf-spectral, frf-dcfft)");
+  app.add("--g0-tol", row.g0_tol, "g(0) tolerance");
+  app.add("--planning", planning, "FFTW planner effort");
+  app.add("--threads", run.threads, "Threads");
+  app.add("--budget", run.budget_s, "Seconds of repeated applications");
+  app.add("--output", output, "Displacement file (timings: the same name + .txt)").required();
+  if (const auto status = app.parse(argc, argv)) return *status;
   try {
     row.method = parse_method(method);
     run.planning = parse_planning(planning);

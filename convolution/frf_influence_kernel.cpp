@@ -15,7 +15,7 @@
 namespace coatfft {
 namespace {
 
-constexpr const char* who = "frf_influence_kernel";
+constexpr const char* kernel_name = "frf_influence_kernel";
 
 using detail::sinc;
 
@@ -24,7 +24,7 @@ using detail::sinc;
 InfluenceKernel frf_influence_kernel(const Grid& grid, const Frf& frf, double alpha,
                                      G0Method g0_method, double g0_tolerance, G0Result* g0_used,
                                      int threads) {
-  const G0Result g0 = lattice_g0(grid, frf, alpha, 2.0, g0_method, g0_tolerance, who);
+  const G0Result g0 = lattice_g0(grid, frf, alpha, 2.0, g0_method, g0_tolerance, kernel_name);
   if (g0_used != nullptr) *g0_used = g0;
   return frf_influence_kernel(grid, frf, alpha, g0, threads);
 }
@@ -58,11 +58,11 @@ InfluenceKernel frf_influence_kernel(const Grid& grid, const Frf& frf, double al
                                      const G0Result& g0, int threads) {
   using std::numbers::pi;
   const std::ptrdiff_t nx = grid.nx(), ny = grid.ny();
-  const std::ptrdiff_t mx = extended_size(nx, alpha, 2.0, who);
-  const std::ptrdiff_t my = extended_size(ny, alpha, 2.0, who);
-  COATFFT_REQUIRE(std::isfinite(g0.value), who, ": g(0) = ", g0.value,
+  const std::ptrdiff_t mx = extended_size(nx, alpha, 2.0, kernel_name);
+  const std::ptrdiff_t my = extended_size(ny, alpha, 2.0, kernel_name);
+  COATFFT_REQUIRE(std::isfinite(g0.value), kernel_name, ": g(0) = ", g0.value,
                   " m/Pa, but it must be finite");
-  COATFFT_REQUIRE(threads >= 1, who, ": threads = ", threads, ", but must be >= 1");
+  COATFFT_REQUIRE(threads >= 1, kernel_name, ": threads = ", threads, ", but must be >= 1");
   const double dx = grid.dx(), dy = grid.dy();
   const double dkx = 2.0 * pi / (static_cast<double>(mx) * dx);
   const double dky = 2.0 * pi / (static_cast<double>(my) * dy);
@@ -134,17 +134,17 @@ InfluenceKernel frf_influence_kernel(const Grid& grid, const Frf& frf, double al
 
 InfluenceKernel frf_dcfft_kernel(const Grid& grid, const Frf& frf, double alpha, const G0Result& g0,
                                  int threads) {
-  const std::ptrdiff_t mx = extended_size(grid.nx(), alpha, 2.0, who);
-  const std::ptrdiff_t my = extended_size(grid.ny(), alpha, 2.0, who);
+  const std::ptrdiff_t mx = extended_size(grid.nx(), alpha, 2.0, kernel_name);
+  const std::ptrdiff_t my = extended_size(grid.ny(), alpha, 2.0, kernel_name);
   if (mx != 2 * grid.nx() || my != 2 * grid.ny())
     return frf_influence_kernel(grid, frf, alpha, g0, threads);
   // At alpha = 2 the extended lattice is DC-FFT's own padded (2nx, 2ny) lattice, so the sampled
   // spectrum H sinc sinc *is* the spectrum DC-FFT would get back from the coefficients: the
   // inverse transform and the forward transform are skipped (the round trip only drops the
   // offsets +-nx, +-ny, which never reach the cropped output).
-  COATFFT_REQUIRE(std::isfinite(g0.value), who, ": g(0) = ", g0.value,
+  COATFFT_REQUIRE(std::isfinite(g0.value), kernel_name, ": g(0) = ", g0.value,
                   " m/Pa, but it must be finite");
-  COATFFT_REQUIRE(threads >= 1, who, ": threads = ", threads, ", but must be >= 1");
+  COATFFT_REQUIRE(threads >= 1, kernel_name, ": threads = ", threads, ", but must be >= 1");
   return InfluenceKernel(grid, InfluenceKernel::Form::spectrum,
                          detail::frf_cell_spectrum_quarter(grid, frf, mx, my, g0, threads),
                          Method::frf_dcfft);

@@ -19,13 +19,13 @@ namespace coatfft {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using std::numbers::pi;
 
 using detail::sinc;
 
 // One lattice of the split: (mx, my) = alpha (nx, ny) points of spacing (dx, dy); the part of
 // the spectrum it samples (weight w, 1 - w or 1), its alias orders and the quarter it fills.
-struct Lattice {
+struct SplitLattice {
   std::ptrdiff_t mx, my, hx, hy;
   double dkx, dky, k_cut, sigma;
   int px = 0, py = 0;
@@ -33,19 +33,19 @@ struct Lattice {
   bool band = false;  // the long-range part lies below Nyquist: no aliases, a band transform
 };
 
-Lattice make_lattice(const Grid& grid, double k_cut, int alpha, bool long_range, double sigma,
-                     int max_order, LatticeReport& report) {
-  Lattice l{};
+SplitLattice make_lattice(const Grid& grid, double k_cut, int alpha, bool long_range, double sigma,
+                          int max_order, LatticeReport& report) {
+  SplitLattice l{};
   l.mx = alpha * grid.nx();
   l.my = alpha * grid.ny();
-  l.dkx = 2.0 * kPi / (static_cast<double>(l.mx) * grid.dx());
-  l.dky = 2.0 * kPi / (static_cast<double>(l.my) * grid.dy());
+  l.dkx = 2.0 * pi / (static_cast<double>(l.mx) * grid.dx());
+  l.dky = 2.0 * pi / (static_cast<double>(l.my) * grid.dy());
   l.sigma = sigma;
   l.long_range = long_range;
   // The window is below 1e-16 beyond sqrt(45)/sigma.
   l.k_cut = long_range ? std::min(k_cut, std::sqrt(45.0) / sigma) : k_cut;
   const auto order = [&](double h) {
-    const double needed = std::ceil(l.k_cut * h / (2.0 * kPi)) + 1.0;
+    const double needed = std::ceil(l.k_cut * h / (2.0 * pi)) + 1.0;
     if (needed <= max_order) return static_cast<int>(needed);
     report.alias_capped = true;
     return max_order;
@@ -54,7 +54,7 @@ Lattice make_lattice(const Grid& grid, double k_cut, int alpha, bool long_range,
   l.py = order(grid.dy());
   l.hx = l.mx / 2 + 1;
   l.hy = l.my / 2 + 1;
-  if (long_range && l.k_cut * grid.dx() < kPi && l.k_cut * grid.dy() < kPi) {
+  if (long_range && l.k_cut * grid.dx() < pi && l.k_cut * grid.dy() < pi) {
     l.band = true;
     l.px = l.py = 0;
     l.hx = std::min(l.hx, static_cast<std::ptrdiff_t>(l.k_cut / l.dkx) + 1);
@@ -66,7 +66,7 @@ Lattice make_lattice(const Grid& grid, double k_cut, int alpha, bool long_range,
 }
 
 // The alias-folded quarters G_c(jx, jy) of one lattice.
-std::vector<Field> sample_quarters(const Grid& grid, const LatticeSpectra& s, const Lattice& l,
+std::vector<Field> sample_quarters(const Grid& grid, const LatticeSpectra& s, const SplitLattice& l,
                                    int threads, long long& evaluations) {
   const std::size_t nc = s.parity.size();
   std::vector<Field> g(nc, Field::Zero(l.hx, l.hy));
@@ -79,10 +79,10 @@ std::vector<Field> sample_quarters(const Grid& grid, const LatticeSpectra& s, co
       check_interrupt();
       std::fill(acc.begin(), acc.end(), 0.0);
       for (int p = -l.px; p <= l.px; ++p) {
-        const double kx = static_cast<double>(jx) * l.dkx + 2.0 * kPi * p / grid.dx();
+        const double kx = static_cast<double>(jx) * l.dkx + 2.0 * pi * p / grid.dx();
         const double wx = sinc(0.5 * kx * grid.dx());
         for (int q = -l.py; q <= l.py; ++q) {
-          const double ky = static_cast<double>(jy) * l.dky + 2.0 * kPi * q / grid.dy();
+          const double ky = static_cast<double>(jy) * l.dky + 2.0 * pi * q / grid.dy();
           const double k = std::hypot(kx, ky);
           if (k == 0.0 || k > l.k_cut) continue;
           const double part = l.long_range ? detail::ewald_window(l.sigma, k)
@@ -101,7 +101,7 @@ std::vector<Field> sample_quarters(const Grid& grid, const LatticeSpectra& s, co
   return g;
 }
 
-void add_lattice(const Grid& grid, const LatticeSpectra& s, const Lattice& l, int threads,
+void add_lattice(const Grid& grid, const LatticeSpectra& s, const SplitLattice& l, int threads,
                  std::vector<Field>& out, long long& evaluations) {
   const std::vector<Field> g = sample_quarters(grid, s, l, threads, evaluations);
   const double scale = 1.0 / (static_cast<double>(l.mx) * static_cast<double>(l.my));
@@ -123,9 +123,9 @@ double exponential_cut_off(double z, double tolerance) {
 }
 
 double lattice_evaluations(const Grid& grid, double k_cut, int alpha) {
-  const double cell = (kPi / grid.lx()) * (kPi / grid.ly());
+  const double cell = (pi / grid.lx()) * (pi / grid.ly());
   const double lattice = (grid.nx() + 1.0) * (grid.ny() + 1.0);
-  return std::max(0.25 * kPi * k_cut * k_cut / cell, lattice) +
+  return std::max(0.25 * pi * k_cut * k_cut / cell, lattice) +
          (alpha > 2 ? std::pow(34.0 * alpha, 2) : 0.0);
 }
 
@@ -150,7 +150,7 @@ std::vector<Field> lattice_coefficients(const Grid& grid, const LatticeSpectra& 
   std::vector<Field> out(spectra.parity.size(), Field::Zero(grid.nx(), grid.ny()));
   const int threads = o.threads;
   if (o.alpha == 2) {
-    Lattice whole = make_lattice(grid, spectra.k_cut, 2, false, 0.0, o.max_alias_order, r);
+    SplitLattice whole = make_lattice(grid, spectra.k_cut, 2, false, 0.0, o.max_alias_order, r);
     add_lattice(grid, spectra, whole, threads, out, r.evaluations);
   } else {
     // The short-range part on DC-FFT's own lattice (its images, >= L = 32 sigma away, are

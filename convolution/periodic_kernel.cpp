@@ -18,7 +18,7 @@ namespace coatfft {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using std::numbers::pi;
 // erfc(6.5) = 3.8e-20: the Ewald sums' terms beyond are below any tolerance of the options.
 constexpr double kErfcCut = 6.5;
 
@@ -27,7 +27,7 @@ using detail::sinc;
 // erf(alpha r)/r, smooth at r = 0 (its limit 2 alpha/sqrt(pi)).
 double erf_over_r(double alpha, double r) {
   const double t = alpha * r;
-  if (t < 1e-4) return 2.0 * alpha / std::sqrt(kPi) * (1.0 - t * t / 3.0);
+  if (t < 1e-4) return 2.0 * alpha / std::sqrt(pi) * (1.0 - t * t / 3.0);
   return std::erf(t) / r;
 }
 
@@ -41,7 +41,7 @@ double erf_cell_integral(double alpha, double x, double y, double dx, double dy)
       s +=
           rule.weights[p] * rule.weights[q] *
           erf_over_r(alpha, std::hypot(x - 0.5 * dx * rule.nodes[p], y - 0.5 * dy * rule.nodes[q]));
-  return 0.25 * dx * dy * s / (2.0 * kPi);
+  return 0.25 * dx * dy * s / (2.0 * pi);
 }
 
 // The Ewald split's real-space part, per unit C: the cell integral of erfc(alpha R)/(2 pi R)
@@ -77,7 +77,7 @@ double real_space(const Grid& g, double alpha, double x, double y) {
 // from the start (a homogeneous FRF).
 double remainder_cut(const Grid& g, const Frf& frf, double tolerance) {
   const double c = frf.c_inf();
-  double k = 1e-3 * 2.0 * kPi / std::max(g.lx(), g.ly());
+  double k = 1e-3 * 2.0 * pi / std::max(g.lx(), g.ly());
   int run = 0;
   double start = 0.0;
   for (int n = 0; n < 400; ++n, k *= 2.0) {
@@ -91,7 +91,7 @@ double remainder_cut(const Grid& g, const Frf& frf, double tolerance) {
   throw InvalidArgument("periodic kernel: k H(k) of the FRF does not approach its c_inf()");
 }
 
-struct Lattice {
+struct EwaldLattice {
   std::ptrdiff_t hx, ny;
   double dkx, dky, k_ewald, k_rest;
   int px, py;
@@ -99,7 +99,7 @@ struct Lattice {
 
 // The spectrum M(i, j) = sum over the aliases of (C erfc(k/(2 alpha))/k + R(k)) S(k), k != 0, on
 // the half lattice 0 <= i <= nx/2 (FFTW's c2r layout, j the signed frequency).
-std::vector<double> spectrum(const Grid& g, const Frf& frf, const Lattice& l, double alpha,
+std::vector<double> spectrum(const Grid& g, const Frf& frf, const EwaldLattice& l, double alpha,
                              int threads) {
   const double c = frf.c_inf();
   std::vector<double> m(static_cast<std::size_t>(l.hx * l.ny), 0.0);
@@ -109,8 +109,8 @@ std::vector<double> spectrum(const Grid& g, const Frf& frf, const Lattice& l, do
       double sum = 0.0;
       for (int p = -l.px; p <= l.px; ++p)
         for (int q = -l.py; q <= l.py; ++q) {
-          const double kx = i * l.dkx + 2.0 * kPi * p / g.dx();
-          const double ky = sj * l.dky + 2.0 * kPi * q / g.dy();
+          const double kx = i * l.dkx + 2.0 * pi * p / g.dx();
+          const double ky = sj * l.dky + 2.0 * pi * q / g.dy();
           const double k = std::hypot(kx, ky);
           if (k == 0.0 || k > std::max(l.k_ewald, l.k_rest)) continue;
           const double s = sinc(0.5 * kx * g.dx()) * sinc(0.5 * ky * g.dy());
@@ -150,21 +150,22 @@ void validate(const Grid& g, const Frf& frf, const PeriodicKernelOptions& o) {
                   "periodic kernel: the FRF's c_inf() must be finite and > 0");
 }
 
-Lattice make_lattice(const Grid& g, const Frf& frf, double alpha, const PeriodicKernelOptions& o) {
-  Lattice l{g.nx() / 2 + 1,
-            g.ny(),
-            2.0 * kPi / g.lx(),
-            2.0 * kPi / g.ly(),
-            2.0 * alpha * kErfcCut,
-            remainder_cut(g, frf, o.tolerance),
-            0,
-            0};
+EwaldLattice make_lattice(const Grid& g, const Frf& frf, double alpha,
+                          const PeriodicKernelOptions& o) {
+  EwaldLattice l{g.nx() / 2 + 1,
+                 g.ny(),
+                 2.0 * pi / g.lx(),
+                 2.0 * pi / g.ly(),
+                 2.0 * alpha * kErfcCut,
+                 remainder_cut(g, frf, o.tolerance),
+                 0,
+                 0};
   const double k_max = std::max(l.k_ewald, l.k_rest);
-  l.px = static_cast<int>(std::ceil(k_max * g.dx() / (2.0 * kPi))) + 1;
-  l.py = static_cast<int>(std::ceil(k_max * g.dy() / (2.0 * kPi))) + 1;
+  l.px = static_cast<int>(std::ceil(k_max * g.dx() / (2.0 * pi))) + 1;
+  l.py = static_cast<int>(std::ceil(k_max * g.dy() / (2.0 * pi))) + 1;
   // The points of the aliased half lattice within k_max: the aliases tile the plane, so about half
   // a disk of lattice cells (the loop visits every alias too, but a visit outside costs a compare).
-  const double evaluations = 0.5 * kPi * (k_max / l.dkx + 2.0) * (k_max / l.dky + 2.0);
+  const double evaluations = 0.5 * pi * (k_max / l.dkx + 2.0) * (k_max / l.dky + 2.0);
   COATFFT_REQUIRE(evaluations <= o.max_evaluations,
                   "periodic kernel: the FRF's remainder reaches k = ", detail::brief(k_max),
                   " rad/m, so far against the cells that about ", detail::brief(evaluations),
@@ -179,7 +180,7 @@ Field periodic_influence_kernel(const Grid& g, const Frf& frf, const PeriodicKer
   // alpha sets the split between space and lattice: 6/min(lx, ly) keeps the space part within
   // the nearest images and the lattice part within about 12 alpha = 72/min(lx, ly).
   const double alpha = 6.0 / std::min(g.lx(), g.ly());
-  const Lattice l = make_lattice(g, frf, alpha, o);
+  const EwaldLattice l = make_lattice(g, frf, alpha, o);
   Field k = to_space(g, spectrum(g, frf, l, alpha, o.threads));
   const double c = frf.c_inf();
   const std::ptrdiff_t hx = g.nx() / 2, hy = g.ny() / 2;

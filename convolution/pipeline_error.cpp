@@ -20,7 +20,7 @@
 namespace coatfft {
 namespace {
 
-constexpr const char* who = "predicted_pipeline_error";
+constexpr const char* estimate_name = "predicted_pipeline_error";
 
 // Cells across the shorter side of the proxy: the homogeneous error is converged in N there to
 // ~1 % at alpha = 2 and 4 and ~4 % at alpha = 8 (docs/validation_pipeline_error.md, section 2).
@@ -40,11 +40,11 @@ double min_alpha(Method method) {
 }
 
 void check_arguments(const Grid& grid, Method method, double alpha) {
-  COATFFT_REQUIRE(samples_frf_lattice(method), who, ": method \"", to_string(method),
+  COATFFT_REQUIRE(samples_frf_lattice(method), estimate_name, ": method \"", to_string(method),
                   "\" has no periodisation error; the model applies to \"frf-spectral\" and "
                   "\"frf-dcfft\" only");
-  extended_size(grid.nx(), alpha, min_alpha(method), who);
-  extended_size(grid.ny(), alpha, min_alpha(method), who);
+  extended_size(grid.nx(), alpha, min_alpha(method), estimate_name);
+  extended_size(grid.ny(), alpha, min_alpha(method), estimate_name);
 }
 
 // The smallest q in 1..64 for which alpha q is a whole number (to extended_size's 1e-9), 0 if none.
@@ -139,7 +139,7 @@ std::optional<PipelineErrorProxy> coated_proxy(const Grid& grid, const PipelineE
 std::unique_ptr<SurfaceOperator> pipeline_operator(const Grid& grid, const Frf& frf, Method method,
                                                    double alpha, int threads) {
   const G0Result g0 = lattice_g0(grid, frf, alpha, min_alpha(method), G0Method::regularized,
-                                 default_g0_tolerance, who);
+                                 default_g0_tolerance, estimate_name);
   if (method == Method::frf_spectral)
     return std::make_unique<FrfSpectralOperator>(grid, frf, alpha, g0, Planning::estimate, threads);
   return std::make_unique<DcfftOperator>(frf_dcfft_kernel(grid, frf, alpha, g0, threads),
@@ -274,14 +274,14 @@ Field pipeline_error_reference_load(const Grid& grid) {
 
 double predicted_pipeline_error(const Grid& grid, Method method, double alpha, int threads) {
   check_arguments(grid, method, alpha);
-  COATFFT_REQUIRE(threads >= 1, who, ": threads = ", threads, ", but must be >= 1");
+  COATFFT_REQUIRE(threads >= 1, estimate_name, ": threads = ", threads, ", but must be >= 1");
   return homogeneous_error(pipeline_error_proxy(grid, alpha), method, threads);
 }
 
 double predicted_pipeline_error(const Grid& grid, const Frf& frf, Method method, double alpha,
                                 int threads) {
   check_arguments(grid, method, alpha);
-  COATFFT_REQUIRE(threads >= 1, who, ": threads = ", threads, ", but must be >= 1");
+  COATFFT_REQUIRE(threads >= 1, estimate_name, ": threads = ", threads, ", but must be >= 1");
   const PipelineErrorProxy proxy = pipeline_error_proxy(grid, alpha);
   if (!splittable(frf) || homogeneous_enough(frf, proxy))
     return homogeneous_error(proxy, method, threads);

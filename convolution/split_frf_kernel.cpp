@@ -56,7 +56,7 @@ double split_rectangle_integral(double x, double y, double dx, double dy, double
 
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 constexpr double eps = std::numeric_limits<double>::epsilon();
 
 // ---- The remainder R(k) and the length scales of the FRF ------------------------------------

@@ -7,6 +7,13 @@
 
 namespace coatfft::detail {
 
+/// The smallest k h_j the layered FRFs use. Frictionless interfaces make the tangential compliance
+/// grow like 1/(kh)^2 as kh -> 0 (the layer slides rigidly, docs/theory.md §2.3); clamping kh_j
+/// at 1e-60 keeps it finite (< 1e125) in every product, and a k h_j that underflows to 0 cannot
+/// make a system singular, while H_zz, which depends on kh_j through O(kh_j) terms, changes by
+/// ~1e-60.
+inline constexpr double min_kh = 1e-60;
+
 /// sinh(x) - x for x >= 0, to a few ulps: Taylor series (Horner, 10 terms) below 1, direct above.
 inline double sinh_minus_x(double x) {
   if (x >= 1.0) return std::sinh(x) - x;  // the subtraction loses < 1 bit: sinh(1) - 1 > 0.17

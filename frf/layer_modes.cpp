@@ -27,10 +27,7 @@ constexpr double kExpUnderflow = 700.0;
 // well separated), those below it their mid-plane state (mid_plane_psv_rows, cosh(kh/2) <= 1.13);
 // both are accurate around 1.
 constexpr double kThinKh = 1.0;
-// With a frictionless interface the tangential responses grow like 1/(kh)^2 as kh -> 0 (the
-// layer slides, docs/theory.md §2.3); k h_j is clamped here, as in MultilayerFrf, so that a k h_j
-// that underflows to 0 cannot make the system singular.
-constexpr double kMinKh = 1e-60;
+using detail::min_kh;
 
 // P-SV rows: (U, W, szz, sxz~, sxx, syy) with U = 2 mu k ux~, W = 2 mu k uz (docs/theory.md §2.1
 // and the sxx, syy rows of Barber's form, §2.7). SH rows: (mu k u_T, sTz, sLT).
@@ -49,9 +46,9 @@ bool is_substrate(const Medium& m) {
   return std::isinf(m.thickness);
 }
 
-// k h_j of a coating (clamped, see kMinKh); +inf for the substrate.
+// k h_j of a coating (clamped, see min_kh); +inf for the substrate.
 double reduced_thickness(const Medium& m, double k) {
-  return is_substrate(m) ? m.thickness : std::max(k * m.thickness, kMinKh);
+  return is_substrate(m) ? m.thickness : std::max(k * m.thickness, min_kh);
 }
 
 // The P-SV rows of the decaying pairs at s = k zeta (top pair, unknowns A, B) and r = k eta

@@ -21,10 +21,7 @@ using Matrix24 = Eigen::Matrix<double, 2, 4>;
 
 // Above this kh_j the propagator is replaced by the decaying basis; both are accurate around 1.
 constexpr double kThinLayerKh = 1.0;
-// Frictionless interfaces make the tangential compliance grow like 1/(kh)^2 as kh -> 0 (the layer
-// slides rigidly, docs/theory.md §2.3). Clamping kh_j at 1e-60 keeps it finite (< 1e125) in every
-// product below, while changing H_zz, which depends on kh_j through O(kh_j) terms, by ~1e-60.
-constexpr double kMinKh = 1e-60;
+using detail::min_kh;
 // exp(-kh) underflows to zero beyond ~745; kh exp(-kh) is then set to zero explicitly.
 constexpr double kExpUnderflowKh = 700.0;
 
@@ -96,7 +93,7 @@ Eigen::Matrix2d MultilayerFrf::surface_compliance(double k) const {
   Eigen::Matrix2d kG = substrate_kG_;
   for (auto it = layers_.rbegin(); it != layers_.rend(); ++it) {
     const Layer& layer = *it;
-    const double t = std::max(k * layer.thickness, kMinKh);
+    const double t = std::max(k * layer.thickness, min_kh);
     const double nu = layer.nu;
     const double g = layer.gamma;
     if (t <= kThinLayerKh) {

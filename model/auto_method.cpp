@@ -18,7 +18,7 @@ namespace coatfft {
 
 namespace {
 
-constexpr double inf = std::numeric_limits<double>::infinity();
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // Love's DC-FFT and direct summation are exact up to rounding: 1e-15 to 1e-14 relative measured
 // against each other (tests/test_convolution.cpp); the bound keeps a margin.
 constexpr double rounding_error = 1e-13;
@@ -53,7 +53,7 @@ void finish(MethodCandidate& c, const AutoRequest& request) {
 MethodCandidate love_candidate(const Context& x, Method method) {
   MethodCandidate c{method, rounding_error, 0, 0, 0, x.love, ""};
   if (!x.love) {
-    c.predicted_error = inf;
+    c.predicted_error = kInfinity;
     c.note = "Love's coefficients need a homogeneous body";
     return c;
   }
@@ -87,7 +87,7 @@ MethodCandidate split_candidate(const Context& x, double split_tolerance) {
   const SplitKernelWork work = split_frf_kernel_work(x.grid, x.frf, o);
   if (!work.lattice_fits) {
     c.admissible = false;
-    c.predicted_error = inf;
+    c.predicted_error = kInfinity;
     c.note = detail::concat("a short-range lattice of ", work.lattice_entries,
                             " entries: more than the split kernel takes");
     return c;
@@ -106,7 +106,7 @@ MethodCandidate split_candidate(const Context& x, double split_tolerance) {
 // so it is evaluated only where the method, prediction included, would be the cheapest.
 // lattice_cost: their cost at `alpha`, without the error prediction.
 MethodCandidate lattice_cost(const Context& x, Method method, double alpha) {
-  MethodCandidate c{method, inf, 0, 0, 0, false, ""};
+  MethodCandidate c{method, kInfinity, 0, 0, 0, false, ""};
   const auto mx =
       static_cast<std::ptrdiff_t>(std::llround(alpha * static_cast<double>(x.grid.nx())));
   const auto my =
@@ -181,7 +181,7 @@ MethodChoice choose(Context x) {
   choice.candidates = {love_candidate(x, Method::direct), love_candidate(x, Method::dcfft),
                        split_candidate(x, split_tolerance_for(x.request.tolerance))};
   const auto best = [&] {
-    double t = inf;
+    double t = kInfinity;
     for (const auto& c : choice.candidates)
       if (c.admissible) t = std::min(t, c.total_seconds);
     return t;

@@ -12,6 +12,7 @@
 #include "core/detail/brief.hpp"
 #include "core/error.hpp"
 #include "core/gsl_quadrature.hpp"
+#include "validation/hankel_displacement.hpp"
 
 namespace coatfft {
 

@@ -22,7 +22,7 @@
 
 #include "../frf/frf.hpp"
 #include "../layers/layer_stack.hpp"
-#include "../validation/hankel_displacement.hpp"
+#include "../loads/axisymmetric_load.hpp"
 
 namespace coatfft {
 

@@ -14,6 +14,7 @@
 #include "frf/tabulated_frf.hpp"
 #include "loads/hertz_pressure.hpp"
 #include "loads/uniform_disk_pressure.hpp"
+#include "validation/hankel_displacement.hpp"
 
 namespace coatfft::scene {
 

@@ -15,8 +15,8 @@
 #include "core/grid.hpp"
 #include "frf/frf.hpp"
 #include "layers/layer_stack.hpp"
+#include "loads/axisymmetric_load.hpp"
 #include "loads/sampling.hpp"
-#include "validation/hankel_displacement.hpp"
 
 namespace coatfft::scene {
 

@@ -15,7 +15,7 @@
 #include "frf/frf.hpp"
 #include "frf/layer_modes.hpp"
 #include "layers/layer_stack.hpp"
-#include "loads/grid_refinement.hpp"
+#include "model/grid_refinement.hpp"
 #include "loads/sampling.hpp"
 #include "validation/hankel_displacement.hpp"
 
@@ -128,7 +128,7 @@ struct StressSpec {
 inline constexpr std::ptrdiff_t max_refined_cells = 1024;
 
 /// [grid] refine = "auto": nx and ny chosen so that the load's discretisation error stays within
-/// tolerance_total less the operator's tolerance (loads/grid_refinement.hpp).
+/// tolerance_total less the operator's tolerance (model/grid_refinement.hpp).
 struct GridRefinement {
   double tolerance_total = 0.0;
   GridChoice choice;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <numbers>
 #include <vector>
 
 #include "convolution/ewald_window.hpp"
@@ -23,7 +24,7 @@ namespace coatfft {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using std::numbers::pi;
 
 using detail::sinc;
 
@@ -35,7 +36,7 @@ using detail::sinc;
 // part S (1 - w).
 enum class Part { whole, long_range, short_range };
 
-struct Lattice {
+struct StressLattice {
   std::ptrdiff_t mx, my;
   double dx, dy, dkx, dky;
   std::vector<double> k_cut;
@@ -46,7 +47,7 @@ struct Lattice {
   bool band = false;      // the long-range part lies below Nyquist: no aliases, a band transform
 };
 
-double part_weight(const Lattice& l, double k) {
+double part_weight(const StressLattice& l, double k) {
   switch (l.part) {
     case Part::long_range:
       return detail::ewald_window(l.sigma, k);
@@ -76,15 +77,16 @@ void validate(const Grid& grid, std::span<const double> depths, const StressKern
 // Every stress FRF at depth z is bounded by a polynomial of degree <= 2 in k z times exp(-k z)
 // (docs/theory.md 2.7: the fields of the top pair; reflected waves decay faster), so the terms
 // with k z > ln(1/tol) + 2 ln(1 + ln(1/tol)) + 3 are below tol.
-Lattice make_lattice(const Grid& grid, std::span<const double> depths, const StressKernelOptions& o,
-                     int alpha, Part part, double sigma, std::vector<StressKernelReport>* reports) {
-  Lattice l{};
+StressLattice make_lattice(const Grid& grid, std::span<const double> depths,
+                           const StressKernelOptions& o, int alpha, Part part, double sigma,
+                           std::vector<StressKernelReport>* reports) {
+  StressLattice l{};
   l.mx = alpha * grid.nx();
   l.my = alpha * grid.ny();
   l.dx = grid.dx();
   l.dy = grid.dy();
-  l.dkx = 2.0 * kPi / (static_cast<double>(l.mx) * l.dx);
-  l.dky = 2.0 * kPi / (static_cast<double>(l.my) * l.dy);
+  l.dkx = 2.0 * pi / (static_cast<double>(l.mx) * l.dx);
+  l.dky = 2.0 * pi / (static_cast<double>(l.my) * l.dy);
   l.part = part;
   l.sigma = sigma;
   const double band =
@@ -96,7 +98,7 @@ Lattice make_lattice(const Grid& grid, std::span<const double> depths, const Str
     l.k_cut.push_back(k_cut);
     bool capped = false;
     const auto order = [&](double h) {
-      const double needed = std::ceil(k_cut * h / (2.0 * kPi)) + 1.0;
+      const double needed = std::ceil(k_cut * h / (2.0 * pi)) + 1.0;
       if (!(needed <= o.max_alias_order)) {
         capped = true;
         return o.max_alias_order;
@@ -114,7 +116,7 @@ Lattice make_lattice(const Grid& grid, std::span<const double> depths, const Str
   l.hx = l.mx / 2 + 1;
   l.hy = l.my / 2 + 1;
   // Below Nyquist along both axes, every alias of a band wavevector is beyond the band.
-  if (part == Part::long_range && band * l.dx < kPi && band * l.dy < kPi) {
+  if (part == Part::long_range && band * l.dx < pi && band * l.dy < pi) {
     l.band = true;
     l.px = l.py = 0;
     l.hx = static_cast<std::ptrdiff_t>(band / l.dkx) + 1;
@@ -153,7 +155,7 @@ using Quarters = std::array<std::array<Field, 3>, 6>;
 // What the lattice loop reads: the body, the lattice, the planes and their k = 0 limits.
 struct Sampling {
   const LayerModes& modes;
-  const Lattice& lattice;
+  const StressLattice& lattice;
   std::span<const double> depths;
   InterfaceSide side;
   int nb_loads;
@@ -194,7 +196,7 @@ void add_wavevector(const Sampling& s, double kx, double ky, double cell, std::v
 // alias-folded spectrum: real because each entry of T4 is real or imaginary with the parity of
 // stress_frf_odd.
 std::vector<Quarters> sample_quarters(const Sampling& s, int threads, long long& evaluations) {
-  const Lattice& l = s.lattice;
+  const StressLattice& l = s.lattice;
   const std::ptrdiff_t hx = l.hx;
   const std::ptrdiff_t hy = l.hy;
   std::vector<Quarters> g(s.depths.size());
@@ -212,10 +214,10 @@ std::vector<Quarters> sample_quarters(const Sampling& s, int threads, long long&
       check_interrupt();
       std::fill(acc.begin(), acc.end(), Sums{});
       for (int p = -l.px; p <= l.px; ++p) {
-        const double kx = static_cast<double>(jx) * l.dkx + 2.0 * kPi * p / l.dx;
+        const double kx = static_cast<double>(jx) * l.dkx + 2.0 * pi * p / l.dx;
         const double wx = sinc(0.5 * kx * l.dx);
         for (int q = -l.py; q <= l.py; ++q) {
-          const double ky = static_cast<double>(jy) * l.dky + 2.0 * kPi * q / l.dy;
+          const double ky = static_cast<double>(jy) * l.dky + 2.0 * pi * q / l.dy;
           add_wavevector(s, kx, ky, wx * sinc(0.5 * ky * l.dy), acc, active, index, local);
         }
       }
@@ -269,7 +271,7 @@ std::vector<StressPlaneKernel> stress_plane_kernels(const Grid& grid, const Laye
   long long evaluations = 0;
   // K(x) = (1/(mx my)) sum_k F(k) exp(+i k.x) = (1/(mx my)) i^(ox + oy) T[F] = T[G]/(mx my),
   // T the parity transform: the coefficients are real.
-  const auto add = [&](const Lattice& l) {
+  const auto add = [&](const StressLattice& l) {
     long long count = 0;
     const std::vector<Quarters> g =
         sample_quarters({modes, l, depths, side, nb_loads, at_zero}, options.threads, count);

@@ -152,11 +152,10 @@ int main(int argc, char** argv) {
   std::string csv_path;
   return tables::table_main(
       argc, argv,
-      {"hertz_dcfft_table", "DC-FFT on the Hertz pressure against the closed form, N = 32 ... 512",
-       "docs/validation_hertz_dcfft.md", check,
+      {"hertz_dcfft_table",
+       "DC-FFT on the Hertz pressure against the closed form, N = 32 ... 512",
+       "docs/validation_hertz_dcfft.md",
+       check,
        [&](const std::string& output) { return write_table(output, csv_path); },
-       [&](CLI::App& app) {
-         app.add_option("--csv", csv_path,
-                        "Also write the errors as a CSV (# key = value headers)");
-       }});
+       {{"--csv", "Also write the errors as a CSV (# key = value headers)", &csv_path}}});
 }

@@ -425,9 +425,8 @@ int main(int argc, char** argv) {
       argc, argv,
       {"split_kernel_table",
        "frf-split on coated Hertz cases against the continuous Hankel displacement",
-       "docs/validation_split_kernel.md", check,
+       "docs/validation_split_kernel.md",
+       check,
        [&](const std::string& output) { return write_table(output, quick); },
-       [&](CLI::App& app) {
-         app.add_flag("--quick", quick, "A reduced sweep and no further sections (partial file)");
-       }});
+       {{"--quick", "A reduced sweep and no further sections (partial file)", nullptr, &quick}}});
 }

@@ -5,17 +5,26 @@
 // recomputes a fast subset of its rows and compares them with the independent reference at the
 // tolerances the table promises; it is registered with ctest (tables/CMakeLists.txt), so a table
 // and its test are one code path.
-#include <CLI/CLI.hpp>
 #include <exception>
 #include <functional>
 #include <iostream>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "core/detail/write_text_file.hpp"
 #include "core/error.hpp"
 
 namespace coatfft::tables {
+
+/// A further option of a table's write mode: a value (`--csv PATH`, into `text`) or a flag
+/// (`--quick`, into `flag`); exactly one of the two is set.
+struct TableOption {
+  const char* name;         ///< "--csv"
+  const char* description;  ///< one line for --help
+  std::string* text = nullptr;
+  bool* flag = nullptr;
+};
 
 /// A table program: what main() hands to table_main.
 struct TableProgram {
@@ -24,29 +33,14 @@ struct TableProgram {
   const char* default_output;  ///< the Markdown file written, relative to the working directory
   std::function<int()> check;  ///< --check: recompute a subset, compare; the exit status
   std::function<int(const std::string& output)> write;  ///< write the table; the exit status
-  std::function<void(CLI::App&)> add_options = {};      ///< further options of the write mode
+  std::vector<TableOption> options = {};                ///< further options of the write mode
 };
 
 /// The main() of a table program: `program.name [OUTPUT] [--check] [further options]`. Parse
 /// errors exit as CLI11 says; an exception from check or write is printed as "name: message" and
-/// gives exit status 1.
-inline int table_main(int argc, char** argv, const TableProgram& program) {
-  CLI::App app{program.description};
-  std::string output = program.default_output;
-  bool check = false;
-  app.add_option("output", output, "Markdown file to write")->capture_default_str();
-  app.add_flag("--check", check,
-               "Recompute a fast subset of the rows and compare them with the reference at the "
-               "tests' tolerances (one line per failed row, exit status 1); writes nothing");
-  if (program.add_options) program.add_options(app);
-  CLI11_PARSE(app, argc, argv);
-  try {
-    return check ? program.check() : program.write(output);
-  } catch (const std::exception& e) {
-    std::cerr << program.name << ": " << e.what() << "\n";
-    return 1;
-  }
-}
+/// gives exit status 1. Compiled once (table_program.cpp) for every table: CLI11's parser costs
+/// several seconds of compilation in each source that uses it.
+int table_main(int argc, char** argv, const TableProgram& program);
 
 /// Writes `text` to `path` (creating its folder); throws coatfft::Error naming the path.
 using detail::write_text_file;

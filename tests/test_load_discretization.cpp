@@ -1,5 +1,5 @@
 // The error of the piecewise-constant load (loads/discretization_error.hpp) and the grid chosen
-// for a tolerance (loads/grid_refinement.hpp). On a homogeneous half-space DC-FFT with Love's
+// for a tolerance (model/grid_refinement.hpp). On a homogeneous half-space DC-FFT with Love's
 // coefficients is exact for cell-wise loads (Liu, Wang & Liu 2000), so its error against the
 // closed forms of Johnson (1985) (validation/hertz.hpp, accurate to ~3e-15) is the load's error
 // alone: the true value each estimate is compared with.
@@ -13,8 +13,8 @@
 #include "frf/frf.hpp"
 #include "layers/layer_stack.hpp"
 #include "loads/discretization_error.hpp"
-#include "loads/grid_refinement.hpp"
 #include "materials/catalog.hpp"
+#include "model/grid_refinement.hpp"
 #include "validation/hankel_displacement.hpp"
 #include "validation/hertz.hpp"
 

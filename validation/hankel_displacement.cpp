@@ -21,17 +21,6 @@ namespace {
 
 using std::numbers::pi;
 
-// Dimensionless load shape Phi(s), s = k a, with P^(k) = 2 pi amplitude a^2 Phi(ka)
-// (docs/theory.md §1.4: Phi_H = j1(s)/s; §1.5: Phi_U = J1(s)/s).
-double load_shape(AxisymmetricLoad load, double s) {
-  if (load == AxisymmetricLoad::hertz) {
-    if (s < 1e-4) return 1.0 / 3.0 - s * s / 30.0;  // next term s^4/840 < 1e-19
-    return gsl_sf_bessel_j1(s) / s;
-  }
-  if (s < 1e-4) return 0.5 - s * s / 16.0;  // next term s^4/384 < 1e-18
-  return gsl_sf_bessel_J1(s) / s;
-}
-
 constexpr std::size_t kLimit = 1000;
 
 // Adaptive Gauss-Kronrod (21 points) on [lo, hi]; the nodes are interior, so k = 0 is never hit.
@@ -234,14 +223,6 @@ double far_field(const Frf& frf, AxisymmetricLoad load, double amplitude, double
 
 }  // namespace
 
-double axisymmetric_load_transform(AxisymmetricLoad load, double amplitude, double a, double k) {
-  COATFFT_REQUIRE(std::isfinite(a) && a > 0, "axisymmetric_load_transform: a = ", a,
-                  " m, but a must be finite and > 0");
-  COATFFT_REQUIRE(std::isfinite(k) && k >= 0, "axisymmetric_load_transform: k = ", k,
-                  " rad/m, but k must be finite and >= 0");
-  return 2.0 * pi * amplitude * a * a * load_shape(load, k * a);
-}
-
 double hankel_displacement(const Frf& frf, AxisymmetricLoad load, double amplitude, double a,
                            double r, double rel_tol, HankelRoute route) {
   COATFFT_REQUIRE(std::isfinite(a) && a > 0, "hankel_displacement: a = ", a,
@@ -267,7 +248,7 @@ double hankel_displacement(const Frf& frf, AxisymmetricLoad load, double amplitu
   // u = amplitude a^2 \int_0^inf k H(k) Phi(ka) J0(kr) dk (the 2 pi of P^ cancels the 1/2pi).
   if (route == HankelRoute::split) {
     const std::function<double(double)> remainder = [&](double k) {
-      return (k * frf(k) - c_inf) * load_shape(load, k * a) * gsl_sf_bessel_J0(k * r);
+      return (k * frf(k) - c_inf) * axisymmetric_load_shape(load, k * a) * gsl_sf_bessel_J0(k * r);
     };
     const double rest = integrate_panels(remainder, k_converged, a, r, 1e-2 * rel_tol * scale,
                                          1e-2 * rel_tol, ws.get());
@@ -294,7 +275,7 @@ double hankel_load_integral(const std::function<double(double)>& g, double g_inf
   const double rho = r / a;
   const double K = std::max(k_converged, 500.0 / a * (rho > 0 ? std::max(1.0, 1.0 / rho) : 1.0));
   const std::function<double(double)> full = [&](double k) {
-    return g(k) * load_shape(load, k * a) * gsl_sf_bessel_Jn(order, k * r);
+    return g(k) * axisymmetric_load_shape(load, k * a) * gsl_sf_bessel_Jn(order, k * r);
   };
   const double head =
       integrate_panels(full, K, a, r, 1e-2 * rel_tol * scale, 1e-2 * rel_tol, ws.get());

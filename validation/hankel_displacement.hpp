@@ -6,11 +6,9 @@
 #include <functional>
 
 #include "../frf/frf.hpp"
+#include "../loads/axisymmetric_load.hpp"
 
 namespace coatfft {
-
-/// Axisymmetric pressures on the disk r < a: Hertz p0 sqrt(1 - r^2/a^2), or uniform p.
-enum class AxisymmetricLoad { hertz, uniform_disk };
 
 /// How the Hankel integral is evaluated (both target the same rel_tol).
 enum class HankelRoute {
@@ -23,10 +21,6 @@ enum class HankelRoute {
   /// independent cross-check of `split` that does not use the homogeneous closed forms.
   direct,
 };
-
-/// 2-D Fourier transform P^(k) [N] of the load at k >= 0 [rad/m]: Hertz 2 pi p0 a^2 j1(ka)/(ka),
-/// uniform disk 2 pi p a^2 J1(ka)/(ka). amplitude = p0 or p [Pa], a = load radius [m].
-double axisymmetric_load_transform(AxisymmetricLoad load, double amplitude, double a, double k);
 
 /// u_z(r) [m] at radius r >= 0 [m] for the load of `amplitude` [Pa] and radius a > 0 [m] on the
 /// body of FRF `frf`, to relative accuracy ~rel_tol (1e-14 <= rel_tol < 1e-2). Throws

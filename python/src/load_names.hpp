@@ -3,8 +3,8 @@
 // "centre", "cell_average". InvalidArgument (ValueError) for another name.
 #include <string_view>
 
+#include "loads/axisymmetric_load.hpp"
 #include "loads/sampling.hpp"
-#include "validation/hankel_displacement.hpp"
 
 namespace coatfft::python {
 

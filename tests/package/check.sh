@@ -43,8 +43,10 @@ case "${1:-}" in
       -DCMAKE_BUILD_TYPE=Release >/dev/null
     ;;
   subdirectory | subdirectory-configure)
-    # No build type: coatfft must not impose its own (the consumer's stays empty).
-    cmake -S "$here" -B "$work/consumer" "${generator[@]}" -DCOATFFT_SOURCE_DIR="$root" >/dev/null
+    # No build type: coatfft must not impose its own (the consumer's stays empty). The library
+    # is built once here: as a unity build.
+    cmake -S "$here" -B "$work/consumer" "${generator[@]}" -DCOATFFT_SOURCE_DIR="$root" \
+      -DCOATFFT_UNITY=ON >/dev/null
     [ "$1" = subdirectory ] || { echo "the add_subdirectory consumer configures"; exit 0; }
     ;;
   *)

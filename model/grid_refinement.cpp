@@ -1,4 +1,4 @@
-#include "loads/grid_refinement.hpp"
+#include "model/grid_refinement.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-// The .npy and CSV readers and writers of the CLI, and the checks on input files they share.
+// The scene layer's .npy and CSV readers and writers, and the checks on input files they share.
 #include <sys/stat.h>
 
 #include <catch2/catch.hpp>
@@ -22,7 +22,7 @@ using coatfft::Field;
 namespace {
 
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "coatfft_npy_tests";
+  const fs::path dir = fs::temp_directory_path() / "coatfft_scene_reader_tests";
   fs::create_directories(dir);
   return dir / name;
 }
@@ -46,7 +46,7 @@ fs::path npy_with_header(const std::string& name, std::string dict, int nb_value
 
 }  // namespace
 
-TEST_CASE("npy: write then read round-trips shape and values", "[cli][npy]") {
+TEST_CASE("npy: write then read round-trips shape and values", "[scene][npy]") {
   Field f(5, 3);  // nx = 5, ny = 3: stored as shape (3, 5)
   for (Eigen::Index j = 0; j < 3; ++j)
     for (Eigen::Index i = 0; i < 5; ++i)
@@ -59,7 +59,7 @@ TEST_CASE("npy: write then read round-trips shape and values", "[cli][npy]") {
   CHECK((g == f).all());
 }
 
-TEST_CASE("npy: reads NumPy's own header layout, row j is y_j", "[cli][npy]") {
+TEST_CASE("npy: reads NumPy's own header layout, row j is y_j", "[scene][npy]") {
   const auto path = npy_with_header(
       "numpy.npy", "{'descr': '<f8', 'fortran_order': False, 'shape': (3, 4), }", 12);
   const Field f = coatfft::scene::read_npy(path);
@@ -69,7 +69,7 @@ TEST_CASE("npy: reads NumPy's own header layout, row j is y_j", "[cli][npy]") {
   CHECK(f(0, 1) == 4.0);
 }
 
-TEST_CASE("npy: refuses what it cannot read, naming the file", "[cli][npy][bad_input]") {
+TEST_CASE("npy: refuses what it cannot read, naming the file", "[scene][npy][bad_input]") {
   using Catch::Contains;
   CHECK_THROWS_WITH(
       coatfft::scene::read_npy(npy_with_header(
@@ -93,7 +93,7 @@ TEST_CASE("npy: refuses what it cannot read, naming the file", "[cli][npy][bad_i
 }
 
 TEST_CASE("CSV matrix: comments, blanks and commas; ragged rows and words refused",
-          "[cli][npy][bad_input]") {
+          "[scene][npy][bad_input]") {
   std::ofstream(scratch("good.csv")) << "# heights\n1, 2 3\n\n4,5,6  # row 1\n";
   const Field f = coatfft::scene::read_csv_matrix(scratch("good.csv"));
   REQUIRE(f.rows() == 3);
@@ -152,7 +152,7 @@ std::string message_of(const std::function<void()>& call) {
 }  // namespace
 
 TEST_CASE("input files: only regular files are opened, sizes are checked first",
-          "[cli][npy][bad_input]") {
+          "[scene][npy][bad_input]") {
   using Catch::Contains;
   using coatfft::scene::read_input_file;
   std::ofstream(scratch("input.txt")) << "hello\n";
@@ -180,7 +180,7 @@ TEST_CASE("input files: only regular files are opened, sizes are checked first",
 }
 
 TEST_CASE("npy and CSV: FIFOs, directories and devices are refused without blocking",
-          "[cli][npy][bad_input]") {
+          "[scene][npy][bad_input]") {
   using Catch::Contains;
   using coatfft::scene::read_csv_matrix;
   using coatfft::scene::read_npy;
@@ -199,7 +199,7 @@ TEST_CASE("npy and CSV: FIFOs, directories and devices are refused without block
 }
 
 TEST_CASE("npy: sizes in the header are checked against the file before allocating",
-          "[cli][npy][bad_input]") {
+          "[scene][npy][bad_input]") {
   using Catch::Contains;
   using coatfft::scene::read_npy;
   const std::string dict = "{'descr': '<f8', 'fortran_order': False, 'shape': ";
@@ -228,7 +228,7 @@ TEST_CASE("npy: sizes in the header are checked against the file before allocati
 }
 
 TEST_CASE("npy: the header is parsed strictly and quoted as it is in the file",
-          "[cli][npy][bad_input]") {
+          "[scene][npy][bad_input]") {
   using Catch::Contains;
   using coatfft::scene::read_npy;
   const std::string dict = "{'descr': '<f8', 'fortran_order': False, 'shape': ";
@@ -271,7 +271,7 @@ TEST_CASE("npy: the header is parsed strictly and quoted as it is in the file",
 }
 
 TEST_CASE("CSV matrix: float64 range, 1-based line numbers, 0-based rows and columns",
-          "[cli][npy][bad_input]") {
+          "[scene][npy][bad_input]") {
   using Catch::Contains;
   using coatfft::scene::read_csv_matrix;
   std::ofstream(scratch("tiny.csv")) << "1e-400, -1e-400, 1e-310, +2.5\n4.9e-324, inf, -0, 7\n";

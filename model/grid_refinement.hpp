@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "../core/grid.hpp"
-#include "discretization_error.hpp"
+#include "../loads/discretization_error.hpp"
 
 namespace coatfft {
 

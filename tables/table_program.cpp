@@ -1,0 +1,28 @@
+#include "tables/table_program.hpp"
+
+#include <CLI/CLI.hpp>
+
+namespace coatfft::tables {
+
+int table_main(int argc, char** argv, const TableProgram& program) {
+  CLI::App app{program.description};
+  std::string output = program.default_output;
+  bool check = false;
+  app.add_option("output", output, "Markdown file to write")->capture_default_str();
+  app.add_flag("--check", check,
+               "Recompute a fast subset of the rows and compare them with the reference at the "
+               "tests' tolerances (one line per failed row, exit status 1); writes nothing");
+  for (const TableOption& option : program.options) {
+    if (option.text) app.add_option(option.name, *option.text, option.description);
+    if (option.flag) app.add_flag(option.name, *option.flag, option.description);
+  }
+  CLI11_PARSE(app, argc, argv);
+  try {
+    return check ? program.check() : program.write(output);
+  } catch (const std::exception& e) {
+    std::cerr << program.name << ": " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace coatfft::tables
