@@ -11,7 +11,7 @@
 namespace coatfft {
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
+using std::numbers::pi;
 
 // docs/theory.md (2.9.3). All lengths in units of the larger cell side, field point in the first
 // quadrant (the caller restores the parities). R = sqrt(X^2 + Y^2 + beta^2).
@@ -48,14 +48,14 @@ double corner_sum(F f, double x, double y, double a, double b) {
   return f(x + a, y + b) - f(x + a, y - b) - f(x - a, y + b) + f(x - a, y - b);
 }
 
-AngularCoefficients closed_form(double x, double y, double a, double b, double beta) {
+AngularCoefficients angular_closed_form(double x, double y, double a, double b, double beta) {
   const auto along_x = [beta](double X, double Y) { return first_antiderivative(X, Y, beta); };
   const auto along_y = [beta](double X, double Y) { return first_antiderivative(Y, X, beta); };
   const auto potential = [beta](double X, double Y) { return psi(X, Y, beta); };
   const auto logarithm = [beta](double X, double Y) { return log_antiderivative(X, Y, beta); };
-  return {(corner_sum(along_x, x, y, a, b) - corner_sum(along_y, x, y, a, b)) / kTwoPi,
+  return {(corner_sum(along_x, x, y, a, b) - corner_sum(along_y, x, y, a, b)) / (2.0 * pi),
           corner_sum(potential, x, y, a, b) / std::numbers::pi,
-          corner_sum(logarithm, x, y, a, b) / kTwoPi};
+          corner_sum(logarithm, x, y, a, b) / (2.0 * pi)};
 }
 
 // (2.9.6): \int d_x ln(R + beta) dY = atan(X Y (R - beta)/(X^2 R + Y^2 beta)) (0 at X = 0).
@@ -73,9 +73,9 @@ AngularCoefficients flat_closed_form(double x, double y, double a, double b, dou
   const auto inverse = [beta](double X, double Y) {
     return std::asinh(Y / std::sqrt(X * X + beta * beta));
   };
-  return {(corner_sum(along_x, x, y, a, b) - corner_sum(along_y, x, y, a, b)) / kTwoPi,
+  return {(corner_sum(along_x, x, y, a, b) - corner_sum(along_y, x, y, a, b)) / (2.0 * pi),
           corner_sum(logarithm, x, y, a, b) / std::numbers::pi,
-          -corner_sum(inverse, x, y, a, b) / kTwoPi};
+          -corner_sum(inverse, x, y, a, b) / (2.0 * pi)};
 }
 
 // The point kernels, analytic over the cell far from it: an N x N Gauss-Legendre product rule.
@@ -104,7 +104,7 @@ AngularCoefficients gauss_legendre_rule(double x, double y, double a, double b, 
       sum.sin2 += w * k.sin2;
       sum.cos1 += w * k.cos1;
     }
-  const double scale = a * b / kTwoPi;  // the weights sum to 2 per axis: (2a)(2b)/4
+  const double scale = a * b / (2.0 * pi);  // the weights sum to 2 per axis: (2a)(2b)/4
   return {scale * sum.cos2, scale * sum.sin2, scale * sum.cos1};
 }
 
@@ -141,7 +141,7 @@ AngularCoefficients evaluate(double x, double y, double dx, double dy, double be
   if (rho2 >= 64.0)
     c = far_field(rho2, xs, ys, a, b, bs, flat);
   else
-    c = flat ? flat_closed_form(xs, ys, a, b, bs) : closed_form(xs, ys, a, b, bs);
+    c = flat ? flat_closed_form(xs, ys, a, b, bs) : angular_closed_form(xs, ys, a, b, bs);
   // The 1/k family scales with the length d, the flat one is dimensionless.
   const double scale = flat ? 1.0 : d;
   const double sign_x = std::signbit(x) ? -1.0 : 1.0;

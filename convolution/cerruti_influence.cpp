@@ -65,13 +65,13 @@ double pair_angles(double x, double y, double a, double b) {
   return hi * difference + lo * (theta1 + theta2);
 }
 
-struct Pair {
+struct CerrutiPair {
   double xx, zx;
 };
 
 // Closed forms of xx and zx (mu = 1 Pa), x, y >= 0, lengths in units of the larger side (so that
 // the fourth powers of pair_angles stay far from overflow).
-Pair closed_form(double x, double y, double a, double b, double nu) {
+CerrutiPair cerruti_closed_form(double x, double y, double a, double b, double nu) {
   const double xx = (corner_xx(x + a, y + b, nu) - corner_xx(x + a, y - b, nu) -
                      corner_xx(x - a, y + b, nu) + corner_xx(x - a, y - b, nu)) /
                     (2.0 * std::numbers::pi);
@@ -87,7 +87,7 @@ Pair closed_form(double x, double y, double a, double b, double nu) {
 // proportional to x, so that zx keeps its relative accuracy near the axis x = 0 (no cancellation
 // of x - a t against x + a t) and vanishes there exactly.
 template <int N>
-Pair gauss_legendre_rule(double x, double y, double a, double b, double nu) {
+CerrutiPair gauss_legendre_rule(double x, double y, double a, double b, double nu) {
   const auto& rule = detail::gauss_legendre<N>();
   double sxx = 0.0;
   double szx = 0.0;
@@ -148,7 +148,7 @@ int rule_order(double r2) {
   return n;
 }
 
-Pair far_field(int n, double x, double y, double a, double b, double nu) {
+CerrutiPair far_field(int n, double x, double y, double a, double b, double nu) {
   switch (n) {
     case 6:
       return gauss_legendre_rule<6>(x, y, a, b, nu);
@@ -182,7 +182,8 @@ CerrutiCoefficients cerruti_influence(double x, double y, double dx, double dy,
   const double a = 0.5 * dx / d;
   const double b = 0.5 * dy / d;
   const int n = rule_order(xs * xs + ys * ys);
-  const Pair p = n == 0 ? closed_form(xs, ys, a, b, nu) : far_field(n, xs, ys, a, b, nu);
+  const CerrutiPair p =
+      n == 0 ? cerruti_closed_form(xs, ys, a, b, nu) : far_field(n, xs, ys, a, b, nu);
   const double yx = nu / (2.0 * std::numbers::pi) * corner_sum_yx(xs, ys, a, b);
   const double scale = d / material.shear_modulus();
   const double sign_x = std::signbit(x) ? -1.0 : 1.0;

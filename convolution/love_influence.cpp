@@ -20,7 +20,7 @@ double corner(double X, double Y) {
   return f;
 }
 
-double closed_form(double x, double y, double a, double b) {
+double love_closed_form(double x, double y, double a, double b) {
   return (corner(x + a, y + b) - corner(x + a, y - b) - corner(x - a, y + b) +
           corner(x - a, y - b)) /
          std::numbers::pi;
@@ -118,7 +118,7 @@ double love_influence(double x, double y, double dx, double dy) {
   const double a = 0.5 * dx;
   const double b = 0.5 * dy;
   const int n = rule_order(x * x + y * y, std::max(dx, dy));
-  if (n == 0) return closed_form(x, y, a, b);
+  if (n == 0) return love_closed_form(x, y, a, b);
   double v = 0.0;
   run_with_order(n, x, 0.0, 0, 1, y, a, b, &v);
   return v;
@@ -148,7 +148,7 @@ void love_influence_row(double y, double dx, double dy, std::ptrdiff_t count, do
     }
     if (n == 0) {
       for (std::ptrdiff_t k = i; k < end; ++k)
-        out[k] = closed_form(static_cast<double>(k) * dx, y, a, b);
+        out[k] = love_closed_form(static_cast<double>(k) * dx, y, a, b);
     } else {
       // x0 = 0, step dx: x = 0 + k dx is the x of love_influence(k dx, y, ...) exactly.
       run_with_order(n, 0.0, dx, static_cast<int>(i), static_cast<int>(end), y, a, b, out);

@@ -57,7 +57,7 @@ double split_rectangle_integral(double x, double y, double dx, double dy, double
 namespace {
 
 using std::numbers::pi;
-constexpr double eps = std::numeric_limits<double>::epsilon();
+constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 
 // ---- The remainder R(k) and the length scales of the FRF ------------------------------------
 
@@ -145,7 +145,7 @@ struct FrfSamples {
 };
 
 FrfSamples sample_frf(const Remainder& rem, double A, double c_max, double l_min, double l_max) {
-  const double tol_q = 64.0 * eps * c_max;
+  const double tol_q = 64.0 * kEpsilon * c_max;
   double k_a = 1e-6 / l_max;
   double k_b = 1e6 / l_min;
   // Extend until the ends are in the asymptotic regimes (k H -> C0 below, -> Cinf above).
@@ -202,7 +202,7 @@ struct Scan {
 Scan scan_frf(const Remainder& rem, double A, double c_max, double l_min, double l_max) {
   const FrfSamples s = sample_frf(rem, A, c_max, l_min, l_max);
   const std::size_t n = s.k.size();
-  const double tol_q = 64.0 * eps * c_max;
+  const double tol_q = 64.0 * kEpsilon * c_max;
   Scan scan;
   scan.remainder_zero = A == 0.0 && s.q_max <= tol_q;
   // k_hi: a decade past the last wavenumber where k H - Cinf is above rounding.
@@ -1048,8 +1048,8 @@ class ShortRangeSpectrum {
     for (int i = 1; i <= 4096; ++i)
       f_max = std::max(f_max, std::abs(p.remainder(p.k_r * i / 4096.0)));
     tol_ = p.tolerance * f_max;
-    // R carries rounding noise ~ eps c_max / k (k H and Cinf cancel): the check allows it.
-    noise_ = 64.0 * eps * p.c_max;
+    // R carries rounding noise ~ kEpsilon c_max / k (k H and Cinf cancel): the check allows it.
+    noise_ = 64.0 * kEpsilon * p.c_max;
     k1_ = p.sigma > 0.0 ? std::min(12.0 / p.sigma, k_table) : 0.0;
     if (k1_ > 0.0) lo_ = refined(0.0, k1_, 0.02 / p.sigma);
     if (k_table > k1_) hi_ = refined(k1_, k_table, (k_table - k1_) / 1024.0);

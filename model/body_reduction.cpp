@@ -25,7 +25,7 @@ using std::numbers::pi;
 // in k); beyond t_end the tail is bounded analytically.
 constexpr double t_exact = 200.0;
 constexpr double t_end = 1e8;
-constexpr double rel_tol = 1e-4;
+constexpr double kReferenceRelTol = 1e-4;
 // The scene's load is not the reference load: its piecewise-constant cells, and a shape only
 // approximated by the reference, move the true effect off the bound where the bound is tight (a
 // thick coating: the FRFs differ at small k only, where P > 0, and the bound is the centre's
@@ -52,11 +52,11 @@ double tail_bound(const ReferenceLoad& load, double kdh_end) {
   return kdh_end * 2 * pi * a * std::sqrt(2 / pi) * 2 / std::sqrt(t_end);
 }
 
-// Each panel to rel_tol of itself or `abs_tol` (a small fraction of u(0): the panels where the
-// FRFs agree to rounding need not be resolved).
+// Each panel to kReferenceRelTol of itself or `abs_tol` (a small fraction of u(0): the panels where
+// the FRFs agree to rounding need not be resolved).
 double integrate(const std::function<double(double)>& f, double a, double b, double abs_tol,
                  gsl_integration_workspace* ws) {
-  return gsl_qag(f, a, b, abs_tol, rel_tol, GSL_INTEG_GAUSS21, ws).value;
+  return gsl_qag(f, a, b, abs_tol, kReferenceRelTol, GSL_INTEG_GAUSS21, ws).value;
 }
 
 // The panels of the integral in t = k a: half-periods of P up to t_exact, then doubling.

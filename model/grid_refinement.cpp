@@ -49,7 +49,7 @@ std::ptrdiff_t window_cells(std::ptrdiff_t n, double d, double reach) {
 }
 
 // A cell count along the longer axis and its estimated load error.
-struct Point {
+struct RefinementPoint {
   std::ptrdiff_t n = 0;  // 0: none
   double estimate = 0.0;
 };
@@ -92,7 +92,7 @@ class Search {
   // The convergence order from two estimates, clamped to [0.5, 3] (measured 1 to 1.6); only
   // sizes a factor 2 apart are used: between neighbouring sizes the error is too noisy (10 to
   // 50 %, where the load's edge falls in the cells) to give an order.
-  void fit_order(const Point& coarse, const Point& fine) {
+  void fit_order(const RefinementPoint& coarse, const RefinementPoint& fine) {
     const double order = std::log(coarse.estimate / fine.estimate) /
                          std::log(static_cast<double>(fine.n) / static_cast<double>(coarse.n));
     order_ = std::isfinite(order) ? std::clamp(order, 0.5, 3.0) : 1.0;
@@ -102,18 +102,18 @@ class Search {
   // passing size, it interpolates log(estimate) in log(n), kept within the middle 60 % of the
   // bracket so that a noisy pair still shrinks it.
   double predicted_cells() const {
-    const auto log_n = [](const Point& p) { return std::log(static_cast<double>(p.n)); };
+    const auto log_n = [](const RefinementPoint& p) { return std::log(static_cast<double>(p.n)); };
     if (pass_.n > 0 && fail_.n > 0) {
       const double fall = std::log(fail_.estimate / pass_.estimate);
       const double t = fall > 0 ? std::log(fail_.estimate / target_) / fall : 0.5;
       return std::exp(log_n(fail_) + std::clamp(t, 0.2, 0.8) * (log_n(pass_) - log_n(fail_)));
     }
-    const Point& anchor = pass_.n > 0 ? pass_ : fail_;
+    const RefinementPoint& anchor = pass_.n > 0 ? pass_ : fail_;
     return static_cast<double>(anchor.n) * std::pow(anchor.estimate / target_, 1.0 / order_);
   }
 
-  const Point& pass() const { return pass_; }
-  const Point& fail() const { return fail_; }
+  const RefinementPoint& pass() const { return pass_; }
+  const RefinementPoint& fail() const { return fail_; }
   std::vector<GridTrial> tried;
 
  private:
@@ -141,7 +141,7 @@ class Search {
   AnalyticLoad load_;
   double target_;
   GridRefinementOptions options_;
-  Point pass_, fail_;
+  RefinementPoint pass_, fail_;
   double order_ = 1.0;
 };
 
@@ -208,7 +208,7 @@ GridChoice choose_grid_for_tolerance(double lx, double ly, const AnalyticLoad& l
     search.fit_order({n8, search.tried[0].estimate}, {n16, search.tried[1].estimate});
   }
   for (int trial = 0; trial < max_trials; ++trial) {
-    const Point pass = search.pass(), fail = search.fail();
+    const RefinementPoint pass = search.pass(), fail = search.fail();
     const std::ptrdiff_t lower = fail.n > 0 ? next_fast_size(fail.n) : n_min;
     const std::ptrdiff_t upper = pass.n > 0 ? previous_fast_size(pass.n) : max_cells;
     if (pass.n > 0 && (pass.n == n_min || lower > upper)) break;
@@ -221,7 +221,7 @@ GridChoice choose_grid_for_tolerance(double lx, double ly, const AnalyticLoad& l
     search.try_size(
         std::clamp(fast_fft_size(static_cast<std::ptrdiff_t>(std::ceil(wanted))), lower, upper));
   }
-  const Point pass = search.pass();
+  const RefinementPoint pass = search.pass();
   COATFFT_REQUIRE(pass.n > 0, "choose_grid_for_tolerance: tolerance = ", tolerance,
                   ": no grid found after ", max_trials, " trials");
   return GridChoice{search.grid(pass.n), pass.estimate, target, search.tried};

@@ -14,7 +14,7 @@ namespace coatfft {
 
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
+using std::numbers::pi;
 
 // The half spectrum of FFTW's r2c layout for a (nx, ny) Field (x fastest): (nx/2 + 1) x ny
 // complex entries, entry (i, j) at j (nx/2 + 1) + i, wavevector 2 pi (i/lx, s(j)/ly) with s(j)
@@ -34,8 +34,8 @@ std::ptrdiff_t signed_frequency(std::ptrdiff_t j, std::ptrdiff_t n) {
 }
 
 double wavenumber(const Grid& g, std::ptrdiff_t i, std::ptrdiff_t j) {
-  return std::hypot(kTwoPi * static_cast<double>(i) / g.lx(),
-                    kTwoPi * static_cast<double>(signed_frequency(j, g.ny())) / g.ly());
+  return std::hypot(2.0 * pi * static_cast<double>(i) / g.lx(),
+                    2.0 * pi * static_cast<double>(signed_frequency(j, g.ny())) / g.ly());
 }
 
 // A uniform number in [0, 1) from the top 53 bits: the same sequence with every standard
@@ -66,7 +66,7 @@ Cutoffs validate_spectrum(const Grid& g, const SelfAffineSpec& s) {
   COATFFT_REQUIRE(std::isfinite(lambda_r) && lambda_r > lambda_s,
                   "self-affine surface: the long cut-off ", lambda_r,
                   " m must be finite and above the short cut-off ", lambda_s, " m");
-  return {kTwoPi / lambda_r, kTwoPi / lambda_s};
+  return {2.0 * pi / lambda_r, 2.0 * pi / lambda_s};
 }
 
 // C(q)^(1/2) for C0 = 1.
@@ -125,7 +125,7 @@ void fill(const Grid& g, const SelfAffineSpec& s, const Cutoffs& c, HalfSpectrum
   const std::ptrdiff_t nx = g.nx(), ny = g.ny();
   for (std::ptrdiff_t j = 0; j < ny; ++j)
     for (std::ptrdiff_t i = 0; i < spec.hx; ++i) {
-      const double phase = kTwoPi * uniform(rng);
+      const double phase = 2.0 * pi * uniform(rng);
       const double a = amplitude(wavenumber(g, i, j), s.hurst, c);
       const bool own_column = i == 0 || i == nx / 2;
       if (own_column && (j == 0 || j == ny / 2)) {

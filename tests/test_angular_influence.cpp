@@ -20,7 +20,7 @@ using coatfft::AngularCoefficients;
 
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 // The point kernels of docs/theory.md (2.9.2) and, flat, (2.9.6), R = sqrt(X^2 + Y^2 + beta^2),
 // written from the Hankel transforms \int exp(-beta k) J_n(kr) k^m dk (m = 0, 1) directly.

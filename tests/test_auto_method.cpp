@@ -10,12 +10,11 @@
 #include "core/error.hpp"
 #include "loads/hertz_pressure.hpp"
 #include "model/auto_method.hpp"
+#include "tests/test_materials.hpp"
 
 using namespace coatfft;
 
 namespace {
-
-const Material steel(210e9, 0.3);
 
 LayerStack coated(double E, double h) {
   return LayerStack({Coating{Material(E, 0.3), h, Interface::bonded}}, steel);

@@ -16,6 +16,7 @@
 #include "core/error.hpp"
 #include "core/gsl_quadrature.hpp"
 #include "layers/layer_stack.hpp"
+#include "tests/test_support.hpp"
 #include "validation/axisymmetric_stress.hpp"
 
 using coatfft::AxisymmetricLoad;
@@ -156,14 +157,6 @@ std::array<double, 2> hertz_axis(double nu, double z) {
   const double szz = -kP / (1 + t * t);
   const double srr = -kP * ((1 + nu) * (1 - t * std::atan(1.0 / t)) - 0.5 / (1 + t * t));
   return {srr, szz};
-}
-
-// The maximum of f on [lo, hi] (f unimodal there) by Brent's method (Boost.Math), to about
-// 1e-8 relative in the abscissa: {where, value}.
-std::array<double, 2> maximise(const std::function<double(double)>& f, double lo, double hi) {
-  const auto [x, minus_f] =
-      boost::math::tools::brent_find_minima([&](double t) { return -f(t); }, lo, hi, 30);
-  return {x, -minus_f};
 }
 
 }  // namespace

@@ -10,13 +10,11 @@
 #include "loads/hertz_pressure.hpp"
 #include "loads/uniform_disk_pressure.hpp"
 #include "model/body_reduction.hpp"
+#include "tests/test_materials.hpp"
 
 using namespace coatfft;
 
 namespace {
-
-const Material steel(210e9, 0.3);
-const Material tin(400e9, 0.25);
 
 LayerStack coated(const Material& m, double h) {
   return LayerStack({Coating{m, h, Interface::bonded}}, steel);
@@ -34,7 +32,7 @@ double true_effect(const LayerStack& full, const LayerStack& reduced, const Fiel
   return (u_red - u_full).abs().maxCoeff() / u_full.abs().maxCoeff();
 }
 
-const Grid grid(64, 64, 3e-3, 3e-3);
+const Grid kGrid(64, 64, 3e-3, 3e-3);
 const ReferenceLoad hertz_1mm{AxisymmetricLoad::hertz, 1e-3};
 
 }  // namespace
@@ -46,8 +44,8 @@ TEST_CASE("a coating far thinner than the load is reduced to the substrate, with
   REQUIRE(r.kind == "substrate");
   REQUIRE(r.body.is_homogeneous());
   CHECK(r.body.substrate() == steel);
-  const Field p = hertz_pressure(grid, 1e9, 1e-3, Sampling::cell_average);
-  const double truth = true_effect(body, r.body, p, grid);
+  const Field p = hertz_pressure(kGrid, 1e9, 1e-3, Sampling::cell_average);
+  const double truth = true_effect(body, r.body, p, kGrid);
   INFO("estimated " << r.estimated_effect << ", true " << truth);
   // Measured: 6.4e-5 true, 5.0e-4 estimated (the bound takes |dH| |P| with no cancellation).
   CHECK(r.estimated_effect >= truth);
@@ -58,8 +56,8 @@ TEST_CASE("a coating far thinner than the load is reduced to the substrate, with
 TEST_CASE("a coating whose effect exceeds the budget is kept", "[reduction]") {
   // TiN 2 um changes u by 6.4e-4 of max |u| under this load: reducing it at 1e-4 would be wrong.
   const LayerStack body = coated(tin, 2e-6);
-  const Field p = hertz_pressure(grid, 1e9, 1e-3, Sampling::cell_average);
-  const double truth = true_effect(body, LayerStack(steel), p, grid);
+  const Field p = hertz_pressure(kGrid, 1e9, 1e-3, Sampling::cell_average);
+  const double truth = true_effect(body, LayerStack(steel), p, kGrid);
   REQUIRE(truth > 1e-4);
   const BodyReduction r = reduce_body(body, {hertz_1mm}, 1e-4);
   CHECK(r.kind == "none");
@@ -77,8 +75,8 @@ TEST_CASE("a coating thick against the domain becomes its half-space, with a bou
   const BodyReduction r = reduce_body(body, {hertz_1mm}, 0.05);
   REQUIRE(r.kind == "top_half_space");
   CHECK(r.body.substrate() == tin);
-  const Field p = hertz_pressure(grid, 1e9, 1e-3, Sampling::cell_average);
-  const double truth = true_effect(body, r.body, p, grid);
+  const Field p = hertz_pressure(kGrid, 1e9, 1e-3, Sampling::cell_average);
+  const double truth = true_effect(body, r.body, p, kGrid);
   INFO("estimated " << r.estimated_effect << ", true " << truth);
   CHECK(r.estimated_effect >= truth);  // 1.4e-2 true: the bound is tight here, with its margin
   CHECK(r.estimated_effect <= 2 * truth);
@@ -90,8 +88,8 @@ TEST_CASE("the effect bound holds for a uniform disk, and the largest over loads
   const LayerStack body = coated(tin, 0.2e-6);
   const ReferenceLoad disk{AxisymmetricLoad::uniform_disk, 1e-3};
   const double e_disk = reduction_effect(*make_frf(body), *make_frf(LayerStack(steel)), disk);
-  const Field p = uniform_disk_pressure(grid, 1e9, 1e-3, Sampling::cell_average);
-  const double truth = true_effect(body, LayerStack(steel), p, grid);
+  const Field p = uniform_disk_pressure(kGrid, 1e9, 1e-3, Sampling::cell_average);
+  const double truth = true_effect(body, LayerStack(steel), p, kGrid);
   INFO("estimated " << e_disk << ", true " << truth);
   CHECK(e_disk >= truth);
   // The disk's edge makes the thin coating's effect larger than under Hertz: with both loads the
@@ -173,9 +171,9 @@ TEST_CASE("the closed-form bound holds on the grid for an unresolved coating",
   OperatorOptions o;
   o.method = Method::frf_spectral;
   Field u_full, u_sub;
-  const Field p = hertz_pressure(grid, 1e9, 1e-3, Sampling::cell_average);
-  make_operator(grid, body, o).op->apply(p, u_full);
-  make_operator(grid, LayerStack(steel), o).op->apply(p, u_sub);
+  const Field p = hertz_pressure(kGrid, 1e9, 1e-3, Sampling::cell_average);
+  make_operator(kGrid, body, o).op->apply(p, u_full);
+  make_operator(kGrid, LayerStack(steel), o).op->apply(p, u_sub);
   const double truth = (u_sub - u_full).abs().maxCoeff() / u_full.abs().maxCoeff();
   INFO("estimated " << r.estimated_effect << ", lattice difference " << truth);
   CHECK(truth <= r.estimated_effect);
@@ -204,7 +202,7 @@ TEST_CASE("a coating at the resolvable limit still takes the accurate bound",
   // Where the closed form exceeds the budget, the effect bounds run against its lower bound of
   // u(0), with a bounded number of evaluations (docs/auto.md, section 2, "Work"): 1 nm under a
   // load one 47 um cell wide at 1e-6.
-  const ReferenceLoad cell{AxisymmetricLoad::hertz, grid.dx()};
+  const ReferenceLoad cell{AxisymmetricLoad::hertz, kGrid.dx()};
   const BodyReduction strict = reduce_body(coated(tin, 1e-9), {cell, hertz_1mm}, 1e-6);
   CHECK(strict.kind == "none");
   CHECK(strict.work.quadratures > 0);

@@ -24,7 +24,7 @@ using coatfft::Material;
 
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 // A material with mu = 1 Pa: the coefficients are then the length integrals of docs/theory.md
 // (1.5b)-(1.5d).
@@ -222,8 +222,8 @@ TEST_CASE("cerruti_influence equals a 2-D adaptive quadrature of Cerruti's point
 // cells it converges like (4 r/d)^(-60): exact to long-double rounding. The zx kernel is summed
 // in node pairs +-t as 2 x (x^2 - a^2 t^2 + Y^2)/(R1^2 R2^2) (pointwise equal to the two terms)
 // so that it keeps its relative accuracy near x = 0.
-std::array<long double, 2> long_double_rule(long double x, long double y, long double a,
-                                            long double b, long double nu) {
+std::array<long double, 2> cerruti_long_double_rule(long double x, long double y, long double a,
+                                                    long double b, long double nu) {
   const LongDoubleRule rule = long_double_gauss_legendre(30);
   const std::vector<long double>& t = rule.nodes;
   const std::vector<long double>& w = rule.weights;
@@ -267,7 +267,7 @@ TEST_CASE("cerruti_influence is exact on both sides of each far-field rule switc
           const double y = r * std::sin(angle);
           INFO("dx = " << cell.dx << ", dy = " << cell.dy << ", r/d = " << r / d
                        << ", angle = " << angle);
-          const auto reference = long_double_rule(x, y, 0.5L * cell.dx, 0.5L * cell.dy, nu);
+          const auto reference = cerruti_long_double_rule(x, y, 0.5L * cell.dx, 0.5L * cell.dy, nu);
           const CerrutiCoefficients c = cerruti_influence(x, y, cell.dx, cell.dy, m);
           const double tol = side < 1.0 && ratio == 8.0 ? 5e-13 : 2e-15;
           CHECK(c.xx == Approx(static_cast<double>(reference[0])).epsilon(tol).margin(0.0));

@@ -11,14 +11,13 @@
 #include "convolution/love_influence.hpp"
 #include "core/error.hpp"
 #include "loads/uniform_disk_pressure.hpp"
+#include "tests/test_materials.hpp"
 
 using namespace coatfft;
 
 namespace {
 
-const Material steel(210e9, 0.3);
-
-Field random_field(std::ptrdiff_t nx, std::ptrdiff_t ny, unsigned seed) {
+Field random_load(std::ptrdiff_t nx, std::ptrdiff_t ny, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   return Field::NullaryExpr(nx, ny, [&] { return u(rng); });
@@ -29,7 +28,7 @@ Field random_field(std::ptrdiff_t nx, std::ptrdiff_t ny, unsigned seed) {
 TEST_CASE("CerrutiOperator equals the direct double sum of the coefficients",
           "[cerruti_operator]") {
   const Grid g(6, 5, 1e-3, 0.7e-3);
-  const Field p = random_field(6, 5, 1), qx = random_field(6, 5, 2), qy = random_field(6, 5, 3);
+  const Field p = random_load(6, 5, 1), qx = random_load(6, 5, 2), qy = random_load(6, 5, 3);
   CerrutiOperator op(g, steel);
   std::array<Field, 3> u;
   op.apply(p, &qx, &qy, u);
@@ -61,8 +60,7 @@ TEST_CASE("CerrutiOperator satisfies Betti's reciprocity on the grid", "[cerruti
   // The work of a pressure on the displacements of a traction equals the traction's on those of
   // the pressure: sum p uz(q) = sum q . u(p), to rounding.
   const Grid g(33, 28, 2e-3, 1.5e-3);
-  const Field p = random_field(33, 28, 4), qx = random_field(33, 28, 5),
-              qy = random_field(33, 28, 6);
+  const Field p = random_load(33, 28, 4), qx = random_load(33, 28, 5), qy = random_load(33, 28, 6);
   const Field zero = Field::Zero(33, 28);
   CerrutiOperator op(g, steel);
   std::array<Field, 3> up, uq;

@@ -18,15 +18,11 @@
 #include "scene/npy.hpp"
 #include "scene/scene_run.hpp"
 #include "tests/cli_process.hpp"
+#include "tests/test_support.hpp"
 
 using namespace coatfft_test;
 
 namespace {
-
-std::string text_of(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 std::set<std::string> names_in(const fs::path& dir) {
   std::set<std::string> names;

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "tests/cli_process.hpp"
+#include "tests/test_support.hpp"
 
 using namespace coatfft_test;
 
@@ -23,11 +24,6 @@ fs::path fresh(const std::string& name) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
-}
-
-std::string text_of(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 bool has_partial(const fs::path& dir) {

@@ -21,17 +21,17 @@
 #include "layers/layer_stack.hpp"
 #include "materials/material.hpp"
 #include "surfaces/self_affine_surface.hpp"
+#include "tests/test_materials.hpp"
 
 using namespace coatfft;
 
 namespace {
 
-const Material steel(210e9, 0.3);
-const Material tin(600e9, 0.25);  // a stiff coating (TiN)
+const Material stiff_tin(600e9, 0.25);  // a stiff coating (TiN)
 
 LayerStack body(bool coated) {
   if (!coated) return LayerStack(steel);
-  return LayerStack({Coating{tin, 5e-6}}, steel);
+  return LayerStack({Coating{stiff_tin, 5e-6}}, steel);
 }
 
 std::unique_ptr<SurfaceOperator> surface_operator(const Grid& grid, const LayerStack& stack,

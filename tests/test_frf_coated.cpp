@@ -11,6 +11,7 @@
 #include "frf/coated_frf.hpp"
 #include "frf/half_space_frf.hpp"
 #include "materials/material.hpp"
+#include "tests/test_support.hpp"
 
 using coatfft::CoatedFrf;
 using coatfft::HalfSpaceFrf;
@@ -19,10 +20,6 @@ using coatfft::InvalidArgument;
 using coatfft::Material;
 
 namespace {
-
-double rel_err(double a, double ref) {
-  return std::abs(a - ref) / std::abs(ref);
-}
 
 std::vector<double> log_space(double lo, double hi, int n) {
   std::vector<double> v;

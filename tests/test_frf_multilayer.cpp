@@ -12,6 +12,7 @@
 #include "frf/half_space_frf.hpp"
 #include "frf/multilayer_frf.hpp"
 #include "layers/layer_stack.hpp"
+#include "tests/test_support.hpp"
 
 using coatfft::CoatedFrf;
 using coatfft::Coating;
@@ -21,11 +22,7 @@ using coatfft::LayerStack;
 using coatfft::Material;
 using coatfft::MultilayerFrf;
 
-namespace {
-double rel_err(double a, double ref) {
-  return std::abs(a - ref) / std::abs(ref);
-}
-}  // namespace
+namespace {}  // namespace
 
 TEST_CASE("Multilayer with one coating equals the closed form (200 random stacks)",
           "[frf][multilayer]") {

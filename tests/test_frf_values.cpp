@@ -16,6 +16,7 @@
 #include "frf/coated_frf.hpp"
 #include "frf/multilayer_frf.hpp"
 #include "layers/layer_stack.hpp"
+#include "tests/test_support.hpp"
 
 using coatfft::CoatedFrf;
 using coatfft::Interface;
@@ -59,10 +60,6 @@ std::vector<Row> read_rows() {
                     std::stod(f[7]), std::stod(f[8]), std::stod(f[9])});
   }
   return rows;
-}
-
-double rel_err(double a, double ref) {
-  return std::abs(a - ref) / std::abs(ref);
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 
 #include "core/error.hpp"
 #include "long_double_gauss_legendre.hpp"
+#include "tests/test_support.hpp"
 #include "validation/hertz_stress.hpp"
 
 using coatfft::hertz_sliding_stress;
@@ -24,8 +25,8 @@ namespace {
 using std::numbers::pi;
 using Six = std::array<double, 6>;  // xx, yy, zz, yz, xz, xy
 
-constexpr double kA = 1e-4;  // contact radius [m]
-constexpr double kP = 1e9;   // peak pressure p0 [Pa]
+constexpr double kContactRadius = 1e-4;  // contact radius [m]
+constexpr double kPeakPressure = 1e9;    // peak pressure p0 [Pa]
 
 Six six(const StressTensor& s) {
   return {s.xx, s.yy, s.zz, s.yz, s.xz, s.xy};
@@ -33,8 +34,9 @@ Six six(const StressTensor& s) {
 
 // Stresses in units of p0 at (x, y, z) in units of a.
 Six stress(double x, double y, double z, double nu, double mu) {
-  Six s = six(hertz_sliding_stress(x * kA, y * kA, z * kA, kP, kA, nu, mu));
-  for (double& v : s) v /= kP;
+  Six s = six(hertz_sliding_stress(x * kContactRadius, y * kContactRadius, z * kContactRadius,
+                                   kPeakPressure, kContactRadius, nu, mu));
+  for (double& v : s) v /= kPeakPressure;
   return s;
 }
 
@@ -70,17 +72,7 @@ TEST_CASE("Hertz stress: the axis against Johnson 3.45", "[hertz_stress]") {
   WARN("axis against Johnson 3.45, worst error (of p0): " << worst);
 }
 
-namespace {
-
-// The maximum of f on [lo, hi] (f unimodal there) by Brent's method (Boost.Math), to about
-// 1e-8 relative in the abscissa: {where, value}.
-std::array<double, 2> maximise(const std::function<double(double)>& f, double lo, double hi) {
-  const auto [x, minus_f] =
-      boost::math::tools::brent_find_minima([&](double t) { return -f(t); }, lo, hi, 30);
-  return {x, -minus_f};
-}
-
-}  // namespace
+namespace {}  // namespace
 
 TEST_CASE("Hertz stress: the largest shear stress on the axis (Johnson 1985)", "[hertz_stress]") {
   // Johnson (1985, section 4.2) quotes the maximum of (sigma_r - sigma_z)/2 on the axis as
@@ -140,7 +132,8 @@ TEST_CASE("Hertz stress: the frictionless surface stresses against Johnson 3.41-
         // The reference at the radius the function sees, (x a)/a: near r = a a rounding of r
         // moves sqrt(1 - r^2) by 1e-8.
         const double c = std::cos(theta), s = std::sin(theta), x = r * c, y = r * s;
-        const double xa = x * kA / kA, ya = y * kA / kA;
+        const double xa = x * kContactRadius / kContactRadius,
+                     ya = y * kContactRadius / kContactRadius;
         const double s2 = xa * xa + ya * ya, k = (1 - 2 * nu) / (3 * s2);
         double sr = k, st = -k;
         if (s2 < 1) {
@@ -393,17 +386,17 @@ TEST_CASE("Hertz stress: bad arguments", "[hertz_stress]") {
   const auto call = [](double x, double y, double z, double p0, double a, double nu, double mu) {
     return hertz_sliding_stress(x, y, z, p0, a, nu, mu);
   };
-  CHECK_NOTHROW(call(0, 0, 0, kP, kA, 0.3, 0.25));
-  CHECK_NOTHROW(call(0, 0, 0, kP, kA, 0.5, -0.25));
-  CHECK_THROWS_AS(call(0, 0, 0, kP, 0.0, 0.3, 0.25), InvalidArgument);
-  CHECK_THROWS_AS(call(0, 0, 0, kP, -kA, 0.3, 0.25), InvalidArgument);
-  CHECK_THROWS_AS(call(0, 0, 0, kP, inf, 0.3, 0.25), InvalidArgument);
-  CHECK_THROWS_AS(call(0, 0, -1e-12, kP, kA, 0.3, 0.25), InvalidArgument);
-  CHECK_THROWS_AS(call(0, 0, 0, kP, kA, 0.5000001, 0.25), InvalidArgument);
-  CHECK_THROWS_AS(call(0, 0, 0, kP, kA, -1.0, 0.25), InvalidArgument);
+  CHECK_NOTHROW(call(0, 0, 0, kPeakPressure, kContactRadius, 0.3, 0.25));
+  CHECK_NOTHROW(call(0, 0, 0, kPeakPressure, kContactRadius, 0.5, -0.25));
+  CHECK_THROWS_AS(call(0, 0, 0, kPeakPressure, 0.0, 0.3, 0.25), InvalidArgument);
+  CHECK_THROWS_AS(call(0, 0, 0, kPeakPressure, -kContactRadius, 0.3, 0.25), InvalidArgument);
+  CHECK_THROWS_AS(call(0, 0, 0, kPeakPressure, inf, 0.3, 0.25), InvalidArgument);
+  CHECK_THROWS_AS(call(0, 0, -1e-12, kPeakPressure, kContactRadius, 0.3, 0.25), InvalidArgument);
+  CHECK_THROWS_AS(call(0, 0, 0, kPeakPressure, kContactRadius, 0.5000001, 0.25), InvalidArgument);
+  CHECK_THROWS_AS(call(0, 0, 0, kPeakPressure, kContactRadius, -1.0, 0.25), InvalidArgument);
   for (int i = 0; i < 7; ++i) {
     for (double bad : {nan, inf, -inf}) {
-      std::array<double, 7> args{0.0, 0.0, 0.0, kP, kA, 0.3, 0.25};
+      std::array<double, 7> args{0.0, 0.0, 0.0, kPeakPressure, kContactRadius, 0.3, 0.25};
       args[static_cast<std::size_t>(i)] = bad;
       INFO("argument " << i << " = " << bad);
       CHECK_THROWS_AS(call(args[0], args[1], args[2], args[3], args[4], args[5], args[6]),

@@ -16,9 +16,10 @@ using namespace coatfft;
 namespace {
 
 const Grid grid(32, 24, 3e-3, 2.25e-3);
-const LayerStack steel(material_by_name("steel"));
-const LayerStack coated({Coating{material_by_name("titanium_nitride"), 20e-6, Interface::bonded}},
-                        material_by_name("steel"));
+const LayerStack steel_stack(material_by_name("steel"));
+const LayerStack coated_stack({Coating{material_by_name("titanium_nitride"), 20e-6,
+                                       Interface::bonded}},
+                              material_by_name("steel"));
 
 OperatorOptions with(Method method, double alpha = 2.0) {
   OperatorOptions o;
@@ -32,7 +33,7 @@ OperatorOptions with(Method method, double alpha = 2.0) {
 TEST_CASE("make_operator builds every method and reports it", "[make_operator]") {
   const Field p = hertz_pressure(grid, 1e9, 1e-3, Sampling::cell_average);
   for (const Method method : all_methods) {
-    const LayerStack& body = uses_love_coefficients(method) ? steel : coated;
+    const LayerStack& body = uses_love_coefficients(method) ? steel_stack : coated_stack;
     const double alpha = method == Method::frf_spectral ? 3.0 : 2.0;
     const BuiltOperator built = make_operator(grid, body, with(method, alpha));
     INFO(to_string(method));
@@ -63,8 +64,8 @@ TEST_CASE("make_operator: frf-split on a half-space is Love's DC-FFT", "[make_op
   // The split kernel of a homogeneous FRF is Love's coefficients exactly (docs/split_kernel.md);
   // the two operators differ by FFT rounding only (~eps log2(4 nx ny)).
   const Field p = hertz_pressure(grid, 1e9, 1e-3, Sampling::centre);
-  const Field love = make_operator(grid, steel, with(Method::dcfft)).op->apply(p);
-  const Field split = make_operator(grid, steel, with(Method::frf_split)).op->apply(p);
+  const Field love = make_operator(grid, steel_stack, with(Method::dcfft)).op->apply(p);
+  const Field split = make_operator(grid, steel_stack, with(Method::frf_split)).op->apply(p);
   CHECK(rel_linf(split, love) < 1e-13);
   // The same through the Frf overload (a user's FRF): the half-space FRF of the same material.
   const HalfSpaceFrf frf(material_by_name("steel"));
@@ -73,9 +74,9 @@ TEST_CASE("make_operator: frf-split on a half-space is Love's DC-FFT", "[make_op
 }
 
 TEST_CASE("make_operator refuses what a method cannot take", "[make_operator][bad_input]") {
-  CHECK_THROWS_WITH(make_operator(grid, coated, with(Method::dcfft)),
+  CHECK_THROWS_WITH(make_operator(grid, coated_stack, with(Method::dcfft)),
                     Catch::Contains("homogeneous half-space"));
-  CHECK_THROWS_WITH(make_operator(grid, coated, with(Method::direct)),
+  CHECK_THROWS_WITH(make_operator(grid, coated_stack, with(Method::direct)),
                     Catch::Contains("homogeneous half-space"));
   const HalfSpaceFrf frf(material_by_name("steel"));
   CHECK_THROWS_WITH(make_operator(grid, frf, with(Method::dcfft)), Catch::Contains("an FRF alone"));
@@ -95,7 +96,7 @@ TEST_CASE("make_operator refuses what a method cannot take", "[make_operator][ba
   o = with(Method::frf_spectral);
   for (const double tolerance : {0.0, 1.0, std::nan("")}) {
     o.g0_tolerance = tolerance;
-    CHECK_THROWS_AS(make_operator(grid, coated, o), InvalidArgument);
+    CHECK_THROWS_AS(make_operator(grid, coated_stack, o), InvalidArgument);
   }
 }
 

@@ -20,14 +20,14 @@
 #include "frf/frf.hpp"
 #include "frf/half_space_frf.hpp"
 #include "layers/layer_stack.hpp"
+#include "tests/test_materials.hpp"
 #include "validation/hertz_contact.hpp"
 
 using namespace coatfft;
 
 namespace {
 
-constexpr double pi = std::numbers::pi;
-const Material steel(210e9, 0.3);
+using std::numbers::pi;
 
 double sinc(double x) {
   return x == 0.0 ? 1.0 : std::sin(x) / x;
@@ -195,7 +195,6 @@ TEST_CASE("a contact far from the edges of a large period is the free one", "[pe
   // surface by a smooth field whose curvature over the contact falls like L^-3: the pressures
   // converge to the free solution (DC-FFT of frf-split's coefficients). Measured 1.2e-3 and
   // 1.5e-4 of the peak.
-  const Material tin(400e9, 0.25);
   const LayerStack body({Coating{tin, 20e-6, Interface::bonded}}, steel);
   const auto frf = make_frf(body);
   const double radius = 0.01, load = 5.0, cell = 6.25e-6;

@@ -12,14 +12,14 @@
 #include "convolution/dcfft_operator.hpp"
 #include "convolution/influence_kernel.hpp"
 #include "core/error.hpp"
+#include "tests/test_materials.hpp"
 #include "validation/hertz_contact.hpp"
 
 using namespace coatfft;
 
 namespace {
 
-const Material steel(210e9, 0.3);
-constexpr double kRadius = 0.01, kLoad = 20.0;
+constexpr double kSphereRadius = 0.01, kNormalLoad = 20.0;
 
 // The x coordinate of the pressure's centroid [m].
 double centroid_x(const Grid& g, const Field& p) {
@@ -32,29 +32,29 @@ double centroid_x(const Grid& g, const Field& p) {
 }  // namespace
 
 TEST_CASE("sliding contact: the coupling iterated to its fixed point", "[contact][sliding]") {
-  const double a =
-      hertz_sphere_for_load(kLoad, kRadius, steel.plane_strain_modulus()).contact_radius;
+  const double a = hertz_sphere_for_load(kNormalLoad, kSphereRadius, steel.plane_strain_modulus())
+                       .contact_radius;
   const Grid g(49, 49, 4 * a, 4 * a);
   DcfftOperator op(love_kernel(g, steel.plane_strain_modulus()));
   ContactSolver solver(op);
-  const Field h = height(g, Sphere{kRadius});
+  const Field h = height(g, Sphere{kSphereRadius});
   CerrutiOperator cerruti(g, steel);
   const TangentialCoupling coupling = [&](const Field& qx) {
     std::array<Field, 3> u;
     cerruti.apply(Field::Zero(qx.rows(), qx.cols()), &qx, nullptr, u);
     return u[2];
   };
-  const ContactResult plain = solver.solve(h, ContactControl::load, kLoad);
+  const ContactResult plain = solver.solve(h, ContactControl::load, kNormalLoad);
 
   SlidingReport r;
   const ContactResult none =
-      solve_sliding(solver, coupling, h, ContactControl::load, kLoad, {0.0, 1e-9, 30}, &r);
+      solve_sliding(solver, coupling, h, ContactControl::load, kNormalLoad, {0.0, 1e-9, 30}, &r);
   CHECK(r.solves == 1);
   CHECK((none.pressure == plain.pressure).all());
 
   const double mu = 0.25, beta = (1 - 2 * 0.3) / (2 * (1 - 0.3));
   const ContactResult slid =
-      solve_sliding(solver, coupling, h, ContactControl::load, kLoad, {mu, 1e-9, 30}, &r);
+      solve_sliding(solver, coupling, h, ContactControl::load, kNormalLoad, {mu, 1e-9, 30}, &r);
   INFO("solves " << r.solves << ", shift " << r.pressure_shift);
   CHECK(r.converged);
   CHECK(r.pressure_change <= 1e-9);
@@ -68,7 +68,7 @@ TEST_CASE("sliding contact: the coupling iterated to its fixed point", "[contact
   CHECK(r.centroid_shift == Approx(shift).epsilon(1e-12));
   CHECK(shift < -0.35 * beta * mu * a);  // towards the trailing side
   CHECK(shift > -0.6 * beta * mu * a);
-  CHECK(slid.load == Approx(kLoad).epsilon(1e-9));
+  CHECK(slid.load == Approx(kNormalLoad).epsilon(1e-9));
   // The displacement returned includes the tractions' share of the final pressure.
   CHECK((slid.displacement - (op.apply(slid.pressure) + coupling(mu * slid.pressure)))
             .abs()
@@ -79,14 +79,14 @@ TEST_CASE("sliding contact: the coupling iterated to its fixed point", "[contact
     return Field(Field::Zero(qx.rows(), qx.cols()));
   };
   const ContactResult same =
-      solve_sliding(solver, zero, h, ContactControl::load, kLoad, {mu, 1e-9, 30}, &r);
+      solve_sliding(solver, zero, h, ContactControl::load, kNormalLoad, {mu, 1e-9, 30}, &r);
   CHECK(r.solves == 2);
   CHECK(r.pressure_shift == 0.0);
 
   // Two solves cannot reach 1e-9 at a contraction of 0.07: the coupling, not the normal solver,
   // ran out, and the status names it.
   const ContactResult cut =
-      solve_sliding(solver, coupling, h, ContactControl::load, kLoad, {mu, 1e-9, 2}, &r);
+      solve_sliding(solver, coupling, h, ContactControl::load, kNormalLoad, {mu, 1e-9, 2}, &r);
   CHECK(r.solves == 2);
   CHECK_FALSE(r.converged);
   CHECK_FALSE(cut.converged);
@@ -94,8 +94,10 @@ TEST_CASE("sliding contact: the coupling iterated to its fixed point", "[contact
   CHECK(to_string(cut.status) == "coupling_limit");
   CHECK_THAT(cut.warning, Catch::Contains("friction coupling did not converge in 2 normal solves"));
 
-  CHECK_THROWS_AS(solve_sliding(solver, coupling, h, ContactControl::load, kLoad, {-0.1, 1e-9, 30}),
-                  InvalidArgument);
-  CHECK_THROWS_AS(solve_sliding(solver, coupling, h, ContactControl::load, kLoad, {mu, 0.0, 30}),
-                  InvalidArgument);
+  CHECK_THROWS_AS(
+      solve_sliding(solver, coupling, h, ContactControl::load, kNormalLoad, {-0.1, 1e-9, 30}),
+      InvalidArgument);
+  CHECK_THROWS_AS(
+      solve_sliding(solver, coupling, h, ContactControl::load, kNormalLoad, {mu, 0.0, 30}),
+      InvalidArgument);
 }

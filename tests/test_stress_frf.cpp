@@ -10,6 +10,7 @@
 #include "frf/layer_modes.hpp"
 #include "frf/stress_frf.hpp"
 #include "layers/layer_stack.hpp"
+#include "tests/test_materials.hpp"
 
 using namespace coatfft;
 using C = std::complex<double>;
@@ -18,8 +19,6 @@ namespace {
 
 constexpr C I{0.0, 1.0};
 
-const Material steel(210e9, 0.3);
-const Material tin(400e9, 0.25);
 const Material soft(2e9, 0.45);
 
 StressFrf frf_at(const LayerStack& s, double kx, double ky, double z,

@@ -13,13 +13,11 @@
 #include "stress/stress_invariants.hpp"
 #include "stress/stress_kernel.hpp"
 #include "stress/stress_operator.hpp"
+#include "tests/test_materials.hpp"
 
 using namespace coatfft;
 
 namespace {
-
-const Material steel(210e9, 0.3);
-const Material tin(400e9, 0.25);
 
 // sigma_zz [per unit pressure] at (x, y, z) under a unit pressure on the dx x dy rectangle centred
 // at the origin: the corner function of Holl (Love 1929), summed over the four corners.

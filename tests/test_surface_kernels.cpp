@@ -24,7 +24,7 @@ using namespace coatfft;
 
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 const Material substrate(100e9, 0.3);
 
 LayerStack coated(double e_ratio, double h) {

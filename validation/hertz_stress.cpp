@@ -134,12 +134,12 @@ Jet over_r2(const Jet& u, const Jet& /*r2 = t^2*/) {
 // Hamilton's auxiliaries at (x, y, z)/a; s_inv = 1/S, set to 0 at the contact edge on the surface
 // (S = 0), where every term it enters is multiplied by z, M or N, all zero there: the limit.
 template <class T>
-struct Point {
+struct FieldPoint {
   T x, y, x2, y2, r2, A, S, s_inv, M, N, phi;
   double z;
 };
 
-Point<double> plain_point(double x, double y, double z) {
+FieldPoint<double> plain_point(double x, double y, double z) {
   const double r2 = x * x + y * y, A = r2 + z * z - 1.0, S = std::hypot(A, 2.0 * z);
   // The root of the larger of S + A, S - A, the other from M N = z: no cancellation near z = 0.
   double M = 0.0, N = 0.0;
@@ -155,7 +155,7 @@ Point<double> plain_point(double x, double y, double z) {
 
 // The same as series in t along the ray (cx, cy), cx^2 + cy^2 = 1. S(0) = 1 + z^2 and
 // (S - A)(0) = 2: the roots and divisions are regular, also at z = 0 (M = z/N = 0).
-Point<Jet> series_point(double cx, double cy, double z) {
+FieldPoint<Jet> series_point(double cx, double cy, double z) {
   Jet x, y, r2;
   x.c[1] = cx;
   y.c[1] = cy;
@@ -169,7 +169,7 @@ Point<Jet> series_point(double cx, double cy, double z) {
 
 // Normal part (Hamilton & Goodman 1966; Hamilton 1983), units p0.
 template <class T>
-std::array<T, 6> normal_part(const Point<T>& p, double nu) {
+std::array<T, 6> normal_part(const FieldPoint<T>& p, double nu) {
   const double z = p.z;
   const T B =
       (1 - nu) * z * z * p.N - (1 - 2 * nu) / 3 * (p.N * (p.S + 2.0 * p.A) + 1.0) - nu * z * p.M;
@@ -196,7 +196,7 @@ std::array<T, 6> normal_part(const Point<T>& p, double nu) {
 // Tangential part (Hamilton 1983), units mu p0. Each r^-4 term is one numerator divided twice,
 // the angular factors x^2/r^2 as O(1) quotients.
 template <class T>
-T tangential_xx(const Point<T>& p, double nu) {
+T tangential_xx(const FieldPoint<T>& p, double nu) {
   const double z = p.z, z2 = z * z;
   const T c = 1.5 - 2.0 * over_r2(p.x2, p.r2);
   const T m = c * (nu * (p.S - 2.0 * p.A) + z2) + z2 * p.x2 * p.s_inv + 1.75 * nu * p.r2 -
@@ -208,7 +208,7 @@ T tangential_xx(const Point<T>& p, double nu) {
 }
 
 template <class T>
-T tangential_yy(const Point<T>& p, double nu) {
+T tangential_yy(const FieldPoint<T>& p, double nu) {
   const double z = p.z, z2 = z * z;
   const T c = 0.5 - 2.0 * over_r2(p.y2, p.r2);
   const T m = c * (nu * (p.S - 2.0 * p.A + p.r2) + z2) + z2 * p.y2 * p.s_inv + 0.75 * nu * p.r2;
@@ -219,7 +219,7 @@ T tangential_yy(const Point<T>& p, double nu) {
 }
 
 template <class T>
-T tangential_xy(const Point<T>& p, double nu) {
+T tangential_xy(const FieldPoint<T>& p, double nu) {
   const double z = p.z, z2 = z * z;
   const T c = 0.5 - 2.0 * over_r2(p.x2, p.r2);
   const T m = z2 * p.x2 * p.s_inv + nu * ((p.S - 2.0 * p.A) * c - 2.0 * p.x2 + 0.25 * p.r2) +
@@ -231,7 +231,7 @@ T tangential_xy(const Point<T>& p, double nu) {
 }
 
 template <class T>
-std::array<T, 6> tangential_part(const Point<T>& p, double nu) {
+std::array<T, 6> tangential_part(const FieldPoint<T>& p, double nu) {
   const double z = p.z, z2 = z * z;
   const T zz = 0.5 * z * over_r2(p.x * p.N * (1.0 - (p.r2 + (z2 + 1)) * p.s_inv), p.r2);
   const T yz_num = p.M * (0.5 + (0.5 * z2 - 1.5 - 0.5 * p.r2) * p.s_inv) +
@@ -264,14 +264,14 @@ StressTensor hertz_sliding_stress(double x, double y, double z, double p0, doubl
   std::array<double, 6> normal{}, tangential{};
   if (r < kJetRadius * std::sqrt(1.0 + za * za)) {
     // Any direction at r = 0: only the constant terms remain.
-    const Point<Jet> p = r > 0 ? series_point(xa / r, ya / r, za) : series_point(1.0, 0.0, za);
+    const FieldPoint<Jet> p = r > 0 ? series_point(xa / r, ya / r, za) : series_point(1.0, 0.0, za);
     const std::array<Jet, 6> n = normal_part(p, nu), t = tangential_part(p, nu);
     for (int k = 0; k < 6; ++k) {
       normal[k] = evaluate(n[k], r);
       tangential[k] = evaluate(t[k], r);
     }
   } else {
-    const Point<double> p = plain_point(xa, ya, za);
+    const FieldPoint<double> p = plain_point(xa, ya, za);
     normal = normal_part(p, nu);
     tangential = tangential_part(p, nu);
   }
