@@ -180,4 +180,17 @@ BuiltOperator make_operator(const InfluenceKernel& kernel, const OperatorOptions
                [&](OperatorReport&) { return kernel_operator(kernel, options); });
 }
 
+BuiltTangentialOperator make_tangential_operator(const Grid& grid, const LayerStack& body,
+                                                 const TangentialOptions& options) {
+  COATFFT_REQUIRE(options.threads >= 1 && options.threads <= max_threads,
+                  "threads = ", options.threads, " must be in 1..", max_threads);
+  const auto start = std::chrono::steady_clock::now();
+  SurfaceKernelOptions kernel = options.kernel;
+  kernel.lattice.threads = options.threads;
+  BuiltTangentialOperator built;
+  built.op = std::make_unique<CerrutiOperator>(grid, body, kernel, options.planning, &built.report);
+  built.setup_seconds = detail::seconds_since(start);
+  return built;
+}
+
 }  // namespace coatfft

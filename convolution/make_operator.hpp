@@ -1,8 +1,9 @@
 #pragma once
 // The one operator factory: a grid, a body (a LayerStack, or any Frf) and OperatorOptions in; the
-// SurfaceOperator that computes the surface displacement and a report of what was built out.
-// The CLI, the benchmarks, the validation tables and the tests all build operators here; nothing
-// else maps a Method to a class.
+// SurfaceOperator that computes the surface displacement and a report of what was built out; and
+// the tangential operator (the 3 x 3 surface response under pressure and tractions). The scene
+// layer, the benchmarks, the validation tables and the tests all build operators here; nothing
+// else maps a Method to a class. Each kind's memory estimate is in operator_memory.hpp.
 #include <cstddef>
 #include <memory>
 #include <optional>
@@ -11,11 +12,13 @@
 #include "../core/grid.hpp"
 #include "../frf/frf.hpp"
 #include "../layers/layer_stack.hpp"
+#include "cerruti_operator.hpp"
 #include "g0.hpp"
 #include "influence_kernel.hpp"
 #include "method.hpp"
 #include "planning.hpp"
 #include "split_frf_kernel.hpp"
+#include "surface_kernels.hpp"
 #include "surface_operator.hpp"
 
 namespace coatfft {
@@ -97,5 +100,31 @@ BuiltOperator make_operator(const Grid& grid, const Frf& frf, const OperatorOpti
 /// kernel: the operator for coefficients made outside the factory. Only `method`, `planning`
 /// and `threads` of `options` are used; the operator reports the kernel's method.
 BuiltOperator make_operator(const InfluenceKernel& kernel, const OperatorOptions& options = {});
+
+/// How to build the tangential operator (CerrutiOperator).
+struct TangentialOptions {
+  /// FFTW planner effort of its transforms.
+  Planning planning = Planning::estimate;
+  /// Threads of a layered body's remainder lattices, in 1..max_threads (replaces
+  /// kernel.lattice.threads); the results do not depend on it.
+  int threads = 1;
+  /// The kernels' options (convolution/surface_kernels.hpp).
+  SurfaceKernelOptions kernel;
+};
+
+/// What make_tangential_operator built.
+struct BuiltTangentialOperator {
+  std::unique_ptr<CerrutiOperator> op;
+  SurfaceKernelReport report;
+  double setup_seconds = 0.0;  ///< wall time of the kernels and the plans [s]
+};
+
+/// The surface displacements (u_x, u_y, u_z) of `body` under a pressure and tangential tractions
+/// on `grid`: closed-form cell coefficients for a homogeneous body, the split of docs/theory.md
+/// 2.9 for a bonded stack. Throws InvalidArgument for a frictionless interface (no finite
+/// in-plane compliance), for threads out of range and where the remainders' lattice would exceed
+/// options.kernel.lattice.max_evaluations. Its memory: estimated_cerruti_bytes.
+BuiltTangentialOperator make_tangential_operator(const Grid& grid, const LayerStack& body,
+                                                 const TangentialOptions& options = {});
 
 }  // namespace coatfft

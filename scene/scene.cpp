@@ -20,6 +20,7 @@
 #include "scene/csv.hpp"
 #include "scene/frf_table_file.hpp"
 #include "scene/input_file.hpp"
+#include "scene/method_request.hpp"
 #include "scene/npy.hpp"
 #include "stress/stress_kernel.hpp"
 #include "stress/stress_operator.hpp"
@@ -391,10 +392,10 @@ Field read_height_map(const std::filesystem::path& file) {
 }
 
 // `stack_body`: the body the operator is built from when it is a stack, nullptr for a table.
-ContactSpec read_contact(const toml::table& table, const Grid& grid, const LayerStack* stack_body,
-                         const std::filesystem::path& scene_dir) {
-  SectionReader reader(table, "contact");
-  ContactSpec spec;
+// [contact] indenter and its keys: the shape, checked against the grid (a height map's shape and
+// values; a cylinder's length, a punch's radius within the domain).
+void read_indenter(SectionReader& reader, const Grid& grid, const std::filesystem::path& scene_dir,
+                   ContactSpec& spec) {
   spec.indenter_name = reader.choice(
       "indenter", "", {"sphere", "paraboloid", "cylinder", "flat_punch", "height_map"});
   const std::string& kind = spec.indenter_name;
@@ -428,6 +429,10 @@ ContactSpec read_contact(const toml::table& table, const Grid& grid, const Layer
         COATFFT_REQUIRE(std::isfinite(h(i, j)), file.string(), ": row ", j, ", column ", i,
                         ": height ", h(i, j), " is not finite");
   }
+}
+
+// [contact] load or approach, and the solver's keys (tolerance, max_iterations, friction).
+void read_contact_control(SectionReader& reader, ContactSpec& spec) {
   COATFFT_REQUIRE(reader.has("load") != reader.has("approach"),
                   "[contact] give exactly one of load (N) and approach (m)");
   if (reader.has("load")) spec.load = positive(reader, "load");
@@ -446,79 +451,64 @@ ContactSpec read_contact(const toml::table& table, const Grid& grid, const Layer
   spec.friction = reader.number("friction", 0.0);
   COATFFT_REQUIRE(spec.friction >= 0.0 && spec.friction <= 10.0, reader.where("friction"), " = ",
                   spec.friction, " must be in [0, 10]");
-  if (reader.has("indenter_material") || reader.has("indenter_E") || reader.has("indenter_nu")) {
-    COATFFT_REQUIRE(stack_body != nullptr,
-                    "[contact] an elastic indenter needs a homogeneous body given by [substrate] "
-                    "(composite modulus); with a table body ([frf]) the indenter must be rigid");
-    COATFFT_REQUIRE(stack_body->is_homogeneous(),
-                    "[contact] an elastic indenter needs a homogeneous body (composite modulus); "
-                    "for a coated body the indenter must be rigid");
-    if (reader.has("indenter_material")) {
-      spec.indenter_material = material_by_name(reader.string("indenter_material"));
-    } else {
-      spec.indenter_material = material_from_moduli(reader, "indenter_E", "indenter_nu");
-    }
-  }
+}
+
+// [contact] indenter_material, or indenter_E and indenter_nu: an elastic indenter, through the
+// composite modulus of a homogeneous body.
+void read_elastic_indenter(SectionReader& reader, const LayerStack* stack_body, ContactSpec& spec) {
+  if (!reader.has("indenter_material") && !reader.has("indenter_E") && !reader.has("indenter_nu"))
+    return;
+  COATFFT_REQUIRE(stack_body != nullptr,
+                  "[contact] an elastic indenter needs a homogeneous body given by [substrate] "
+                  "(composite modulus); with a table body ([frf]) the indenter must be rigid");
+  COATFFT_REQUIRE(stack_body->is_homogeneous(),
+                  "[contact] an elastic indenter needs a homogeneous body (composite modulus); "
+                  "for a coated body the indenter must be rigid");
+  if (reader.has("indenter_material"))
+    spec.indenter_material = material_by_name(reader.string("indenter_material"));
+  else
+    spec.indenter_material = material_from_moduli(reader, "indenter_E", "indenter_nu");
+}
+
+ContactSpec read_contact(const toml::table& table, const Grid& grid, const LayerStack* stack_body,
+                         const std::filesystem::path& scene_dir) {
+  SectionReader reader(table, "contact");
+  ContactSpec spec;
+  read_indenter(reader, grid, scene_dir, spec);
+  read_contact_control(reader, spec);
+  read_elastic_indenter(reader, stack_body, spec);
   // Catch geometry errors (a sphere smaller than the domain) before any work is done.
   in_section("contact", [&] { check_indenter(grid, spec.indenter); });
   reader.finish();
   return spec;
 }
 
-// Keys that would be ignored by the chosen method are refused: a user who sets alpha for dcfft
-// believes it does something.
-void refuse_keys_not_applying(const SectionReader& reader, const MethodSpec& spec) {
-  const Method method = spec.options.method;
-  const std::string name = spec.automatic ? "auto" : std::string(to_string(method));
-  const bool pipeline =
-      !spec.automatic && (method == Method::frf_spectral || method == Method::frf_dcfft);
-  for (const char* key : {"alpha", "g0", "g0_tol"})
-    COATFFT_REQUIRE(pipeline || !reader.has(key), reader.where(key),
-                    ": applies only to the FRF "
-                    "pipelines \"frf-spectral\" and \"frf-dcfft\", not to name = \"",
-                    name, "\"", spec.automatic ? " (which chooses them)" : "");
-  COATFFT_REQUIRE(spec.automatic || !reader.has("tolerance"), reader.where("tolerance"),
-                  ": applies only to name = \"auto\", not to name = \"", name, "\"");
-  for (const char* key : {"planning", "wisdom"})
-    COATFFT_REQUIRE(spec.automatic || method != Method::direct || !reader.has(key),
-                    reader.where(key),
-                    ": FFTW settings do not apply to name = \"direct\", which uses no FFT");
-}
-
+// [method]: its keys into a MethodRequest, checked by method_from_request as Python's keywords are.
 MethodSpec read_method(const toml::table& root, const std::filesystem::path& scene_dir) {
   SectionReader reader(section(root, "method", false), "method");
-  MethodSpec spec;
-  OperatorOptions& o = spec.options;
-  spec.automatic = reader.string("name", "auto") == "auto";
-  if (!spec.automatic) {
-    o.method = reader.named("name", o.method, [](std::string_view name) {
-      try {
-        return parse_method(name);
-      } catch (const InvalidArgument& e) {
-        throw InvalidArgument(detail::concat(e.what(), " or \"auto\""));
-      }
-    });
-  }
-  refuse_keys_not_applying(reader, spec);
-  if (spec.automatic) {
-    spec.tolerance = reader.number("tolerance", spec.tolerance);
-    COATFFT_REQUIRE(spec.tolerance >= 1e-12 && spec.tolerance <= 0.1, reader.where("tolerance"),
-                    " = ", spec.tolerance, " must be in [1e-12, 0.1]");
-    // The threads the choice may use: all the machine's, unless the scene caps them.
-    o.threads = std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, max_threads);
-  }
-  o.alpha = reader.number("alpha", o.alpha);
-  // omitted is not a user's choice: a load-controlled contact makes it (report_approach).
-  o.g0 = reader.named("g0", o.g0, [](std::string_view name) {
-    return detail::parse_name(name, std::array{G0Method::regularized, G0Method::quadrature});
-  });
-  o.g0_tolerance = reader.number("g0_tol", o.g0_tolerance);
-  o.planning = reader.named("planning", o.planning, parse_planning);
-  const auto threads = reader.integer("threads", o.threads);
-  COATFFT_REQUIRE(threads >= 1 && threads <= max_threads, reader.where("threads"), " = ", threads,
-                  " must be in 1..", max_threads);
-  o.threads = static_cast<int>(threads);
-  if (reader.has("wisdom")) {
+  MethodRequest request;
+  request.name = reader.string("name", "auto");
+  const auto number = [&](const char* key) -> std::optional<double> {
+    return reader.has(key) ? std::optional(reader.number(key)) : std::nullopt;
+  };
+  const auto text = [&](const char* key) -> std::optional<std::string> {
+    return reader.has(key) ? std::optional(reader.string(key)) : std::nullopt;
+  };
+  request.tolerance = number("tolerance");
+  request.alpha = number("alpha");
+  request.g0 = text("g0");
+  request.g0_tol = number("g0_tol");
+  request.planning = text("planning");
+  if (reader.has("threads")) request.threads = reader.integer("threads");
+  request.wisdom = reader.has("wisdom");
+  // omitted is not a scene's choice: the program makes it where the level of the displacement
+  // does not matter (a load-controlled contact that does not report its approach).
+  COATFFT_REQUIRE(request.g0 != "omitted", reader.where("g0"),
+                  " = \"omitted\" is set by the program itself (a load-controlled [contact] with "
+                  "report_approach = false); use \"regularized\" or \"quadrature\"");
+  MethodSpec spec = method_from_request(
+      request, {[&](std::string_view key) { return reader.where(key); }, "name"});
+  if (request.wisdom) {
     spec.wisdom = reader.string("wisdom");
     if (spec.wisdom.is_relative()) spec.wisdom = scene_dir / spec.wisdom;
   }

@@ -11,6 +11,7 @@
 #include "contact/sliding_contact.hpp"
 #include "convolution/cerruti_operator.hpp"
 #include "convolution/fftw_wisdom.hpp"
+#include "convolution/make_operator.hpp"
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
 #include "scene/a_posteriori.hpp"
@@ -195,9 +196,9 @@ void add_contact_summary(nlohmann::json& summary, const Scene& scene, const Cont
 // sliding contact's coupling and the in-plane displacements.
 std::shared_ptr<CerrutiOperator> surface_response(const Grid& grid, const LayerStack& body,
                                                   int threads) {
-  SurfaceKernelOptions options;
-  options.lattice.threads = threads;
-  return std::make_shared<CerrutiOperator>(grid, body, options);
+  TangentialOptions options;
+  options.threads = threads;
+  return make_tangential_operator(grid, body, options).op;
 }
 
 // The in-plane surface displacements of a bonded body (the operator `op` of surface_response), and

@@ -500,7 +500,8 @@ double centroid(const Grid& g, const Field& p) {
 
 // One contact per friction coefficient on `body`: the normal operator of make_operator (Love's
 // DC-FFT, or frf-split for a coated body) and the coupling u_z under q_x = mu p of
-// CerrutiOperator, as the command line builds them (scene/scene_run.cpp); n^2 cells over 4a.
+// make_tangential_operator, as the command line builds them (scene/scene_run.cpp); n^2 cells
+// over 4a.
 std::vector<SlidingRow> sliding_rows(const LayerStack& body, const std::vector<double>& mus,
                                      std::ptrdiff_t n = 65) {
   const Grid g(n, n, 4 * kContactRadius, 4 * kContactRadius);
@@ -509,7 +510,10 @@ std::vector<SlidingRow> sliding_rows(const LayerStack& body, const std::vector<d
   options.threads = kThreads;
   const BuiltOperator normal = make_operator(g, body, options);
   ContactSolver solver(*normal.op);
-  CerrutiOperator tangential(g, body, kernel_options());
+  TangentialOptions tangential_options;
+  tangential_options.threads = kThreads;
+  const BuiltTangentialOperator built = make_tangential_operator(g, body, tangential_options);
+  CerrutiOperator& tangential = *built.op;
   const TangentialCoupling coupling = [&](const Field& qx) {
     std::array<Field, 3> u;
     tangential.apply(Field::Zero(g.nx(), g.ny()), &qx, nullptr, u);

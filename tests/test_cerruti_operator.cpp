@@ -9,6 +9,7 @@
 #include "convolution/cerruti_influence.hpp"
 #include "convolution/cerruti_operator.hpp"
 #include "convolution/love_influence.hpp"
+#include "convolution/make_operator.hpp"
 #include "core/error.hpp"
 #include "loads/uniform_disk_pressure.hpp"
 #include "tests/test_materials.hpp"
@@ -112,4 +113,31 @@ TEST_CASE("CerrutiOperator refuses bad loads", "[cerruti_operator]") {
   CHECK_THROWS_AS(op.apply(Field::Zero(8, 7), nullptr, nullptr, u), InvalidArgument);
   p(1, 1) = INFINITY;
   CHECK_THROWS_AS(op.apply(p, nullptr, nullptr, u), InvalidArgument);
+}
+
+TEST_CASE("make_tangential_operator builds the operator a coated body's constructor builds",
+          "[cerruti_operator][make_operator]") {
+  // The factory adds threads and timing, nothing to the numbers: its displacements equal the
+  // constructor's bitwise, on any thread count (the lattice sums do not depend on it).
+  const Grid g(9, 7, 1e-3, 0.8e-3);
+  const LayerStack body({Coating{tin, 50e-6, Interface::bonded}}, steel);
+  const Field p = random_load(9, 7, 4), qx = random_load(9, 7, 5), qy = random_load(9, 7, 6);
+  CerrutiOperator direct(g, body, SurfaceKernelOptions{});
+  std::array<Field, 3> expected, u;
+  direct.apply(p, &qx, &qy, expected);
+  for (int threads : {1, 2}) {
+    TangentialOptions options;
+    options.threads = threads;
+    const BuiltTangentialOperator built = make_tangential_operator(g, body, options);
+    built.op->apply(p, &qx, &qy, u);
+    for (int d = 0; d < 3; ++d) CHECK((u[d] == expected[d]).all());
+    CHECK(built.report.beta == 50e-6);  // the top coating's thickness
+    CHECK(built.setup_seconds > 0.0);
+  }
+  TangentialOptions bad;
+  bad.threads = 0;
+  CHECK_THROWS_WITH(make_tangential_operator(g, body, bad),
+                    Catch::Contains("threads = 0 must be in 1.."));
+  const LayerStack sliding({Coating{tin, 50e-6, Interface::frictionless}}, steel);
+  CHECK_THROWS_AS(make_tangential_operator(g, sliding), InvalidArgument);
 }

@@ -17,6 +17,7 @@
 #include "core/threads.hpp"
 #include "operator.hpp"
 #include "scene/automatic_method.hpp"
+#include "scene/method_request.hpp"
 #include "scene/operator_from_scene.hpp"
 #include "scene/scene.hpp"
 #include "without_gil.hpp"
@@ -57,74 +58,35 @@ struct MethodKeywords {
   std::optional<int> threads;
 };
 
-// The keyword `name` refused for `method`, with the scene reader's reasons: a user who sets a
-// keyword believes it does something.
-void refuse_if(bool given, const char* name, const std::string& method, const char* why) {
-  COATFFT_REQUIRE(!given, "make_operator: ", name, " applies only to ", why, ", not to method = \"",
-                  method, "\"");
-}
-
-// The value of a named keyword, its error message naming it ("make_operator: planning = ...").
-template <typename Parse>
-auto parse_keyword(const char* name, const std::string& value, Parse&& parse) {
-  try {
-    return parse(value);
-  } catch (const InvalidArgument& e) {
-    throw InvalidArgument(detail::concat("make_operator: ", name, " = ", e.what()));
-  }
-}
-
-Planning planning_keyword(const MethodKeywords& k) {
-  return parse_keyword("planning", k.planning.value_or("estimate"), parse_planning);
-}
-
-int threads_keyword(const MethodKeywords& k, int otherwise) {
-  const int threads = k.threads.value_or(otherwise);
-  COATFFT_REQUIRE(threads >= 1 && threads <= max_threads, "make_operator: threads = ", threads,
-                  " must be in 1..", max_threads);
-  return threads;
-}
-
-void refuse_keywords_not_applying(const MethodKeywords& k, Method method) {
-  const bool pipeline = samples_frf_lattice(method);
-  for (const auto& [given, name] : {std::pair{k.tolerance.has_value(), "tolerance"},
-                                    std::pair{k.load_radius.has_value(), "load_radius"},
+// The keywords of make_operator as a MethodRequest, checked by the one check a scene's [method]
+// goes through (scene/method_request.hpp). load_radius and applications, the cost model's inputs
+// that a scene derives from its load, are Python's own keywords of method = "auto".
+scene::MethodSpec method_spec(const MethodKeywords& k) {
+  for (const auto& [given, name] : {std::pair{k.load_radius.has_value(), "load_radius"},
                                     std::pair{k.applications.has_value(), "applications"}})
-    refuse_if(given, name, k.method, "method = \"auto\"");
-  for (const auto& [given, name] :
-       {std::pair{k.alpha.has_value(), "alpha"}, std::pair{k.g0.has_value(), "g0"},
-        std::pair{k.g0_tol.has_value(), "g0_tol"}})
-    refuse_if(given && !pipeline, name, k.method, "\"frf-spectral\" and \"frf-dcfft\"");
-  refuse_if(k.planning && method == Method::direct, "planning", k.method,
-            "the methods that use FFTW (direct uses no FFT)");
+    COATFFT_REQUIRE(k.method == "auto" || !given, "make_operator: ", name,
+                    ": applies only to method = \"auto\", not to method = \"", k.method, "\"");
+  scene::MethodRequest r;
+  r.name = k.method;
+  r.tolerance = k.tolerance;
+  r.alpha = k.alpha;
+  r.g0 = k.g0;
+  r.g0_tol = k.g0_tol;
+  r.planning = k.planning;
+  if (k.threads) r.threads = *k.threads;
+  const auto where = [](std::string_view key) {
+    return detail::concat("make_operator: ", key == "name" ? std::string_view("method") : key);
+  };
+  return scene::method_from_request(r, {where, "method"});
 }
 
 OperatorOptions named_options(const Grid& grid, const MethodKeywords& k) {
-  OperatorOptions o;
-  o.method = parse_keyword("method", k.method, [](const std::string& name) {
-    try {
-      return parse_method(name);
-    } catch (const InvalidArgument& e) {
-      throw InvalidArgument(detail::concat(e.what(), " or \"auto\""));
-    }
-  });
-  refuse_keywords_not_applying(k, o.method);
+  const OperatorOptions o = method_spec(k).options;
   COATFFT_REQUIRE(o.method != Method::direct || grid.nb_cells() <= scene::max_direct_cells,
                   "make_operator: method = \"direct\" on ", grid.nx(), " x ", grid.ny(),
                   " cells: direct summation is limited to ", scene::max_direct_cells,
                   " cells (its cost grows as (nx ny)^2); use \"dcfft\", which gives the same "
                   "result");
-  o.alpha = k.alpha.value_or(o.alpha);
-  if (k.g0)
-    o.g0 = parse_keyword("g0", *k.g0, [](const std::string& name) {
-      return detail::parse_name(
-          name, std::array{G0Method::regularized, G0Method::quadrature, G0Method::omitted});
-    });
-  o.g0_tolerance = k.g0_tol.value_or(o.g0_tolerance);
-  COATFFT_REQUIRE(o.g0_tolerance > 0 && o.g0_tolerance < 1,
-                  "make_operator: g0_tol = ", o.g0_tolerance, " must be in (0, 1)");
-  o.planning = planning_keyword(k);
-  o.threads = threads_keyword(k, 1);
   check_operator_options(grid, o);
   return o;
 }
@@ -135,22 +97,15 @@ bool first_operator = true;
 
 scene::AutomaticChoice automatic_choice(const Grid& grid, const Body& body,
                                         const MethodKeywords& k) {
-  for (const auto& [given, name] :
-       {std::pair{k.alpha.has_value(), "alpha"}, std::pair{k.g0.has_value(), "g0"},
-        std::pair{k.g0_tol.has_value(), "g0_tol"}})
-    refuse_if(given, name, "auto", "the named methods \"frf-spectral\" and \"frf-dcfft\"");
+  const scene::MethodSpec spec = method_spec(k);
   AutoRequest request;
-  request.tolerance = k.tolerance.value_or(request.tolerance);
-  COATFFT_REQUIRE(request.tolerance >= 1e-12 && request.tolerance <= 0.1,
-                  "make_operator: tolerance = ", request.tolerance, " must be in [1e-12, 0.1]");
+  request.tolerance = spec.tolerance;
   request.applications = k.applications.value_or(1.0);
   COATFFT_REQUIRE(request.applications >= 1 && std::isfinite(request.applications),
                   "make_operator: applications = ", request.applications,
                   " must be finite and >= 1");
-  // The threads the choice may use: all the machine's, unless capped (as a scene's [method]).
-  const int cores = static_cast<int>(std::thread::hardware_concurrency());
-  request.max_threads = threads_keyword(k, std::clamp(cores, 1, max_threads));
-  request.planning = planning_keyword(k);
+  request.max_threads = spec.options.threads;
+  request.planning = spec.options.planning;
   request.first_in_process = first_operator;
   std::vector<ReferenceLoad> loads = scene::unknown_load_references(grid);
   if (k.load_radius) {
@@ -209,12 +164,15 @@ OperatorOptions periodic_options(const Grid& grid, const Body& body, const Metho
         std::pair{k.applications.has_value(), "applications"},
         std::pair{k.alpha.has_value(), "alpha"}, std::pair{k.g0.has_value(), "g0"},
         std::pair{k.g0_tol.has_value(), "g0_tol"}})
-    refuse_if(given, name, "auto", "free boundaries (boundary = \"free\")");
+    COATFFT_REQUIRE(!given, "make_operator: ", name,
+                    ": applies only to free boundaries (boundary = \"free\"), not to method = "
+                    "\"auto\" on a periodic one");
+  const scene::MethodSpec spec = method_spec(k);
   OperatorOptions o;
   o.boundary = Boundary::periodic;
   o.method = body.stack ? exact_method(*body.stack) : Method::frf_split;
-  o.planning = planning_keyword(k);
-  o.threads = threads_keyword(k, 1);
+  o.planning = spec.options.planning;
+  o.threads = k.threads ? spec.options.threads : 1;
   return o;
 }
 

@@ -317,7 +317,7 @@ NAMED = ["direct", "dcfft", "frf-spectral", "frf-dcfft", "frf-split"]
 @pytest.mark.parametrize("keyword, value", [("tolerance", 1e-3), ("load_radius", 1e-4)])
 def test_auto_keywords_refused_by_named_methods(method, keyword, value):
     body = STEEL if method in ("direct", "dcfft") else STACK
-    raises(ValueError, rf'make_operator: {keyword} applies only to method = "auto", not to '
+    raises(ValueError, rf'make_operator: {keyword}: applies only to method = "auto", not to '
            rf'method = "{method}"',
            lambda: coatfft.make_operator(GRID, body, method=method, **{keyword: value}))
 
@@ -327,9 +327,10 @@ def test_auto_keywords_refused_by_named_methods(method, keyword, value):
                                             ("g0_tol", 1e-8)])
 def test_pipeline_keywords_refused_by_other_methods(method, keyword, value):
     body = STEEL if method in ("direct", "dcfft") else STACK
-    named = "the named methods " if method == "auto" else ""
-    raises(ValueError, rf'make_operator: {keyword} applies only to {named}"frf-spectral" and '
-           rf'"frf-dcfft", not to method = "{method}"',
+    chooses = r" \(which chooses them\)" if method == "auto" else ""
+    # The one check of a scene's [method] keys and of these keywords (scene/method_request.hpp).
+    raises(ValueError, rf'make_operator: {keyword}: applies only to the FRF pipelines '
+           rf'"frf-spectral" and "frf-dcfft", not to method = "{method}"{chooses}',
            lambda: coatfft.make_operator(GRID, body, method=method, **{keyword: value}))
 
 
@@ -376,11 +377,11 @@ def test_option_values_refused():
 def test_keywords_that_do_not_apply_are_refused():
     # As a scene's [method]: a keyword the method does not use is refused, not ignored.
     for method in ("direct", "dcfft", "frf-split"):
-        raises(ValueError, rf'make_operator: applications applies only to method = "auto", not '
+        raises(ValueError, rf'make_operator: applications: applies only to method = "auto", not '
                rf'to method = "{method}"',
                lambda: coatfft.make_operator(GRID, STEEL, method=method, applications=100.0))
-    raises(ValueError, r'make_operator: planning applies only to the methods that use FFTW '
-           r'\(direct uses no FFT\), not to method = "direct"',
+    raises(ValueError, r'make_operator: planning: FFTW settings do not apply to method = '
+           r'"direct", which uses no FFT',
            lambda: coatfft.make_operator(GRID, STEEL, method="direct", planning="measure"))
 
 
