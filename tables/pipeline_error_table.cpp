@@ -578,11 +578,8 @@ int write_table(const std::string& out_path) {
      << section_notes[2] << section3(coated)
      << "\n## 4. The thin domain: 4 mm x 40 um on 64^2 cells, dx/dy = 100\n\n"
      << section_notes[3] << s4 << "\n## 5. Cost of the prediction\n\n"
-     << section_notes[4] << s5 << "\nRun time " << format_number("%.0f", seconds_since(start))
-     << " s.\n";
-  tables::write_text_file(out_path, md.str());
-  std::cout << "wrote " << out_path << "\n";
-  return 0;
+     << section_notes[4] << s5;
+  return tables::write_table_file(out_path, md.str(), start);
 }
 
 }  // namespace

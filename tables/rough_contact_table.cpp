@@ -172,10 +172,7 @@ int write_table(const std::string& output) {
         "modulus at the asperities and carries the load on less area, a soft one the "
         "opposite.\n"
      << write_resolution_table() << write_body_table();
-  md << "\nRun time " << format_number("%.0f", detail::seconds_since(start)) << " s.\n";
-  tables::write_text_file(output, md.str());
-  std::cout << "wrote " << output << "\n";
-  return 0;
+  return tables::write_table_file(output, md.str(), start);
 }
 
 }  // namespace

@@ -332,10 +332,9 @@ double reference_change(const LayerStack& body, double h, double rel_tol) {
     const auto coarse = axisymmetric_stress_at(body, AxisymmetricLoad::hertz, p0, a, r, z,
                                                InterfaceSide::below, rel_tol);
     for (std::size_t k = 0; k < r.size(); ++k)
-      worst = std::max({worst, std::abs(fine[k].srr - coarse[k].srr),
-                        std::abs(fine[k].stt - coarse[k].stt),
-                        std::abs(fine[k].szz - coarse[k].szz),
-                        std::abs(fine[k].srz - coarse[k].srz)});
+      worst = std::max(
+          {worst, std::abs(fine[k].srr - coarse[k].srr), std::abs(fine[k].stt - coarse[k].stt),
+           std::abs(fine[k].szz - coarse[k].szz), std::abs(fine[k].srz - coarse[k].srz)});
   }
   return worst;
 }
@@ -388,10 +387,7 @@ int write_table(const std::string& output) {
         "cell centre, the domain [-2a, 2a]^2 and a bit), cell-averaged loads.\n"
      << section_max_shear() << section_homogeneous() << section_alpha() << section_sliding()
      << section_coated(32) << section_hard() << section_reference();
-  md << "\nRun time " << format_number("%.0f", detail::seconds_since(start)) << " s.\n";
-  tables::write_text_file(output, md.str());
-  std::cout << "wrote " << output << "\n";
-  return 0;
+  return tables::write_table_file(output, md.str(), start);
 }
 
 }  // namespace

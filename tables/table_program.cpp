@@ -1,6 +1,9 @@
 #include "tables/table_program.hpp"
 
 #include <CLI/CLI.hpp>
+#include <cstdio>
+
+#include "core/detail/timing.hpp"
 
 namespace coatfft::tables {
 
@@ -23,6 +26,15 @@ int table_main(int argc, char** argv, const TableProgram& program) {
     std::cerr << program.name << ": " << e.what() << "\n";
     return 1;
   }
+}
+
+int write_table_file(const std::string& output, const std::string& markdown,
+                     std::chrono::steady_clock::time_point start) {
+  char run_time[64];
+  std::snprintf(run_time, sizeof run_time, "\nRun time %.0f s.\n", detail::seconds_since(start));
+  write_text_file(output, markdown + run_time);
+  std::cout << "wrote " << output << "\n";
+  return 0;
 }
 
 }  // namespace coatfft::tables

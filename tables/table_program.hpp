@@ -5,6 +5,7 @@
 // recomputes a fast subset of its rows and compares them with the independent reference at the
 // tolerances the table promises; it is registered with ctest (tables/CMakeLists.txt), so a table
 // and its test are one code path.
+#include <chrono>
 #include <exception>
 #include <functional>
 #include <iostream>
@@ -44,6 +45,11 @@ int table_main(int argc, char** argv, const TableProgram& program);
 
 /// Writes `text` to `path` (creating its folder); throws coatfft::Error naming the path.
 using detail::write_text_file;
+
+/// The end of a table's write mode: `markdown`, with a last line "Run time N s." measured from
+/// `start`, written to `output`, and "wrote OUTPUT" on standard output. Returns 0, the exit status.
+int write_table_file(const std::string& output, const std::string& markdown,
+                     std::chrono::steady_clock::time_point start);
 
 /// The comparisons of a --check run.
 class Checks {

@@ -685,10 +685,7 @@ int write_table(const std::string& output) {
         "[-2a, 2a]^2 and a bit), cell-averaged loads of radius a = 1 mm.\n"
      << section_half_space() << section_coated() << section_same_material() << section_hard()
      << section_sliding();
-  md << "\nRun time " << format_number("%.0f", detail::seconds_since(start)) << " s.\n";
-  tables::write_text_file(output, md.str());
-  std::cout << "wrote " << output << "\n";
-  return 0;
+  return tables::write_table_file(output, md.str(), start);
 }
 
 }  // namespace
