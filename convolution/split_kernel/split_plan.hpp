@@ -80,6 +80,7 @@ struct SplitPlan {
   bool stencil = false;  // far cells by point values and the cell-average stencil
 };
 
+// Gauss-Legendre points per panel of the long range's Hankel transform (hankel_panel_edges).
 inline constexpr int hankel_panel_nodes = 16;
 
 // Largest number of lattice entries (doubles) of the short-range fold: 2^27, 1 GiB.
