@@ -55,6 +55,8 @@ function(coatfft_check_public_headers)
     list(APPEND sources ${source})
   endforeach()
   add_library(coatfft_header_check OBJECT ${sources})
+  # Each header on its own, whatever COATFFT_UNITY says: a batch would hide what one lacks.
+  set_target_properties(coatfft_header_check PROPERTIES UNITY_BUILD OFF)
   target_link_libraries(coatfft_header_check PRIVATE coatfft)
   coatfft_target_warnings(coatfft_header_check)
 endfunction()

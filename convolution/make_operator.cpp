@@ -182,8 +182,6 @@ BuiltOperator make_operator(const InfluenceKernel& kernel, const OperatorOptions
 
 BuiltTangentialOperator make_tangential_operator(const Grid& grid, const LayerStack& body,
                                                  const TangentialOptions& options) {
-  COATFFT_REQUIRE(options.threads >= 1 && options.threads <= max_threads,
-                  "threads = ", options.threads, " must be in 1..", max_threads);
   const auto start = std::chrono::steady_clock::now();
   SurfaceKernelOptions kernel = options.kernel;
   kernel.lattice.threads = options.threads;

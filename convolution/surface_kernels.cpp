@@ -153,7 +153,8 @@ SurfaceKernels surface_kernels(const Grid& grid, const LayerStack& stack,
                                const SurfaceKernelOptions& options, SurfaceKernelReport* report) {
   const auto start = std::chrono::steady_clock::now();
   COATFFT_REQUIRE(options.lattice.threads >= 1 && options.lattice.threads <= max_threads,
-                  "surface kernels: threads must be in [1, ", max_threads, "]");
+                  "surface kernels: threads = ", options.lattice.threads, " must be in 1..",
+                  max_threads);
   SurfaceKernelReport r;
   SurfaceKernels k = stack.is_homogeneous()
                          ? half_space(grid, stack.substrate(), options.lattice.threads)

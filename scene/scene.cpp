@@ -11,7 +11,6 @@
 
 #include "convolution/surface_kernels.hpp"
 #include "core/detail/brief.hpp"
-#include "core/detail/parse_name.hpp"
 #include "core/detail/shorten.hpp"
 #include "core/error.hpp"
 #include "core/threads.hpp"
@@ -103,18 +102,6 @@ class SectionReader {
       values.push_back(element.value<std::string>().value());
     }
     return values;
-  }
-  /// The enumerator named by the string at `key` (`fallback` when absent), by `parse` (which
-  /// throws InvalidArgument "\"x\" is not one of ..." for an unknown name).
-  template <typename Enum, typename Parse>
-  Enum named(std::string_view key, Enum fallback, Parse&& parse) {
-    if (!has(key)) return fallback;
-    const std::string value = string(key);
-    try {
-      return parse(value);
-    } catch (const InvalidArgument& e) {
-      throw InvalidArgument(detail::concat(where(key), " = ", e.what()));
-    }
   }
   std::string choice(std::string_view key, std::string fallback,
                      std::initializer_list<std::string_view> allowed) {

@@ -12,7 +12,7 @@
 #include "bindings.hpp"
 #include "bodies.hpp"
 #include "convolution/operator_memory.hpp"
-#include "core/detail/parse_name.hpp"
+#include "core/error.hpp"
 #include "core/memory.hpp"
 #include "core/threads.hpp"
 #include "operator.hpp"

@@ -10,7 +10,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "bodies.hpp"
-#include "convolution/cerruti_operator.hpp"
+#include "convolution/make_operator.hpp"
 #include "convolution/operator_memory.hpp"
 #include "core/error.hpp"
 #include "core/memory.hpp"
@@ -121,12 +121,11 @@ py::tuple surface_displacements(py::handle body_object, const Grid& grid,
                   detail::concat("grid ", grid.nx(), " x ", grid.ny())},
                  std::nullopt, "surface_displacements", "", "use fewer cells");
   const SurfaceLoads loads = surface_loads("surface_displacements", grid, pressure, qx, qy);
-  SurfaceKernelOptions options;
-  options.lattice.threads = threads;
+  TangentialOptions options;
+  options.threads = threads;
   std::array<Field, 3> u;
   without_gil([&] {
-    CerrutiOperator op(grid, stack, options);
-    op.apply(loads.p, loads.x(), loads.y(), u);
+    make_tangential_operator(grid, stack, options).op->apply(loads.p, loads.x(), loads.y(), u);
   });
   return py::make_tuple(array_from_field(std::move(u[0])), array_from_field(std::move(u[1])),
                         array_from_field(std::move(u[2])));
