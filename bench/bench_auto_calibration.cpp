@@ -15,7 +15,7 @@
 
 #include "bench/bench_report.hpp"
 #include "bench/command_line.hpp"
-#include "convolution/make_operator.hpp"
+#include "convolution/operators/make_operator.hpp"
 #include "core/detail/timing.hpp"
 #include "frf/frf.hpp"
 #include "loads/hertz_pressure.hpp"

@@ -20,8 +20,8 @@
 
 #include "bench/command_line.hpp"
 #include "bench/sweep_cases.hpp"
-#include "convolution/g0.hpp"
-#include "convolution/make_operator.hpp"
+#include "convolution/kernels/g0.hpp"
+#include "convolution/operators/make_operator.hpp"
 #include "loads/hertz_pressure.hpp"
 
 namespace {

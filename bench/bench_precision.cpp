@@ -1,10 +1,10 @@
-// Single against double precision for the periodic operator (convolution/periodic_operator.hpp):
-// the time of one application (median of repeats, warm) in each precision and the ratio, under
-// FFTW_ESTIMATE and FFTW_MEASURE plans (the latter on one and two threads), and the
-// single-precision error: the largest difference
-// from the double application relative to the largest displacement, on the displacement of a
-// random (uniform [0, 1]) pressure, steel, N = 512 ... 4096. Prints `# key = value` headers and
-// CSV rows, and writes the same to bench/results/precision.csv (or OUTPUT).
+// Single against double precision for the periodic operator
+// (convolution/operators/periodic_operator.hpp): the time of one application (median of repeats,
+// warm) in each precision and the ratio, under FFTW_ESTIMATE and FFTW_MEASURE plans (the latter on
+// one and two threads), and the single-precision error: the largest difference from the double
+// application relative to the largest displacement, on the displacement of a random (uniform [0,
+// 1]) pressure, steel, N = 512 ... 4096. Prints `# key = value` headers and CSV rows, and writes
+// the same to bench/results/precision.csv (or OUTPUT).
 //   bench_precision [OUTPUT] [--sizes N ...]
 #include <chrono>
 #include <exception>
@@ -16,8 +16,8 @@
 
 #include "bench/bench_report.hpp"
 #include "bench/command_line.hpp"
-#include "convolution/periodic_kernel.hpp"
-#include "convolution/periodic_operator.hpp"
+#include "convolution/kernels/periodic_kernel.hpp"
+#include "convolution/operators/periodic_operator.hpp"
 #include "core/detail/timing.hpp"
 #include "frf/half_space_frf.hpp"
 

@@ -17,8 +17,8 @@
 
 #include "bench/bench_report.hpp"
 #include "bench/command_line.hpp"
-#include "convolution/make_operator.hpp"
 #include "convolution/method.hpp"
+#include "convolution/operators/make_operator.hpp"
 #include "core/detail/timing.hpp"
 #include "core/grid.hpp"
 #include "layers/layer_stack.hpp"

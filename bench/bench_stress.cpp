@@ -2,14 +2,15 @@
 // one run: DC-FFT (Love's coefficients, the pruned padded transforms of DcfftOperator) and
 // StressOperator with 1 and 8 planes under a pressure, and 1 plane under a pressure and two
 // tractions, on N x N grids of a TiN-coated steel body; and the whole surface response of that
-// body, (u_x, u_y, u_z) under (p, q_x, q_y) by CerrutiOperator (convolution/surface_kernels.hpp).
-// Also each operator's setup time and memory_bytes, and this process's peak RSS after the largest
-// 8-plane operator.
-// Prints "# key = value" headers and CSV rows, and writes them to bench/results/stress.csv.
+// body, (u_x, u_y, u_z) under (p, q_x, q_y) by CerrutiOperator
+// (convolution/kernels/traction_kernels.hpp). Also each operator's setup time and memory_bytes, and
+// this process's peak RSS after the largest 8-plane operator. Prints "# key = value" headers and
+// CSV rows, and writes them to bench/results/stress.csv.
 //   bench_stress [OUTPUT] [--max-n N]
 #include <chrono>
 #include <functional>
 #include <iostream>
+#include <memory>
 #include <random>
 #include <sstream>
 #include <string>
@@ -17,9 +18,9 @@
 
 #include "bench/bench_report.hpp"
 #include "bench/command_line.hpp"
-#include "convolution/cerruti_operator.hpp"
-#include "convolution/influence_kernel.hpp"
-#include "convolution/make_operator.hpp"
+#include "convolution/kernels/influence_kernel.hpp"
+#include "convolution/operators/cerruti_operator.hpp"
+#include "convolution/operators/make_operator.hpp"
 #include "core/detail/timing.hpp"
 #include "stress/stress_operator.hpp"
 
@@ -72,15 +73,17 @@ std::vector<Row> measure(std::ptrdiff_t n) {
   const double surface_ms = median_ms([&] { surface.op->apply(p, u); });
   std::vector<Row> rows{{n, "surface dcfft", 0, surface_setup, surface_ms, 1.0, 0.0}};
 
-  SurfaceKernelOptions kernel_options;
+  TangentialOptions response_options;
+  response_options.planning = Planning::measure;
   t0 = Clock::now();
-  CerrutiOperator response(grid, body, kernel_options, Planning::measure);
+  const std::unique_ptr<CerrutiOperator> response =
+      make_tangential_operator(grid, body, response_options).op;
   const double response_setup = detail::seconds_since(t0);
   std::array<Field, 3> displacements;
-  const double response_ms = median_ms([&] { response.apply(p, &qx, &qy, displacements); });
+  const double response_ms = median_ms([&] { response->apply(p, &qx, &qy, displacements); });
   rows.push_back({n, "surface 3x3 p qx qy", 0, response_setup, response_ms,
                   response_ms / surface_ms,
-                  static_cast<double>(response.memory_bytes()) / (1 << 20)});
+                  static_cast<double>(response->memory_bytes()) / (1 << 20)});
 
   const std::vector<double> eight{1e-4, 2e-4, 3e-4, 4e-4, 5e-4, 6e-4, 7e-4, 8e-4};
   for (auto [what, planes, tangential] :
@@ -90,13 +93,13 @@ std::vector<Row> measure(std::ptrdiff_t n) {
     o.planning = Planning::measure;
     const std::vector<double> depths(eight.begin(), eight.begin() + planes);
     t0 = Clock::now();
-    StressOperator op(grid, body, depths, o);
+    const auto op = make_stress_operator(grid, body, depths, o);
     const double setup = detail::seconds_since(t0);
     std::vector<PlaneStress> s;
     const double ms =
-        median_ms([&] { op.apply(p, tangential ? &qx : nullptr, tangential ? &qy : nullptr, s); });
+        median_ms([&] { op->apply(p, tangential ? &qx : nullptr, tangential ? &qy : nullptr, s); });
     rows.push_back({n, what, planes, setup, ms, ms / planes / surface_ms,
-                    static_cast<double>(op.memory_bytes()) / (1 << 20)});
+                    static_cast<double>(op->memory_bytes()) / (1 << 20)});
   }
   return rows;
 }

@@ -26,9 +26,9 @@
 #include "bench/command_line.hpp"
 #include "bench/sweep_cases.hpp"
 #include "bench/sweep_row.hpp"
-#include "convolution/g0.hpp"
+#include "convolution/fft/planning.hpp"
+#include "convolution/kernels/g0.hpp"
 #include "convolution/method.hpp"
-#include "convolution/planning.hpp"
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
 

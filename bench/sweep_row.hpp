@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "bench/sweep_cases.hpp"
-#include "convolution/g0.hpp"
-#include "convolution/make_operator.hpp"
+#include "convolution/fft/planning.hpp"
+#include "convolution/kernels/g0.hpp"
 #include "convolution/method.hpp"
-#include "convolution/planning.hpp"
+#include "convolution/operators/make_operator.hpp"
 #include "core/error.hpp"
 #include "core/types.hpp"
 

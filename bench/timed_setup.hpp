@@ -2,7 +2,7 @@
 // An operator built for a benchmark, with its setup split into the parts the benchmarks report:
 // influence coefficients (or kernel samples), g(0), and the operator's own construction (FFTW
 // plans and the kernel transform), all read off make_operator's report.
-#include "convolution/make_operator.hpp"
+#include "convolution/operators/make_operator.hpp"
 #include "core/grid.hpp"
 #include "layers/layer_stack.hpp"
 

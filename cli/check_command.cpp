@@ -4,7 +4,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "convolution/pipeline_error.hpp"
+#include "convolution/operators/pipeline_error.hpp"
 #include "core/error.hpp"
 #include "frf/frf.hpp"
 #include "frf/tabulated_frf.hpp"

@@ -3,7 +3,7 @@
 #include <iostream>
 #include <string>
 
-#include "convolution/fftw_wisdom.hpp"
+#include "convolution/fft/fftw_wisdom.hpp"
 #include "core/error.hpp"
 #include "scene/input_file.hpp"
 #include "scene/operator_from_scene.hpp"

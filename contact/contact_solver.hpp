@@ -12,7 +12,7 @@
 #include <string>
 #include <string_view>
 
-#include "../convolution/surface_operator.hpp"
+#include "../convolution/operators/surface_operator.hpp"
 #include "../core/types.hpp"
 
 namespace coatfft {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "convolution/g0.hpp"
+#include "convolution/kernels/g0.hpp"
 
 namespace coatfft::detail {
 

@@ -4,7 +4,7 @@
 // The half-space compliance is 2/(E* k) (docs/conventions.md), so sigma K ~ identity, and the
 // condition number of the preconditioned contact block stays nearly independent of N. The scale of
 // sigma is irrelevant: the conjugate-gradient step length absorbs it.
-#include "convolution/fftw_plan.hpp"
+#include "convolution/fft/fftw_plan.hpp"
 #include "core/grid.hpp"
 #include "core/types.hpp"
 

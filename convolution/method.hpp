@@ -1,7 +1,8 @@
 #pragma once
 // The displacement methods of coatfft, listed once. Scene files, summary.json, the benchmarks and
-// the validation tables name them by to_string(); make_operator (convolution/make_operator.hpp)
-// is the one place that maps a Method to the class that runs it.
+// the validation tables name them by to_string(); make_operator
+// (convolution/operators/make_operator.hpp) is the one place that maps a Method to the class that
+// runs it.
 #include <array>
 #include <string_view>
 

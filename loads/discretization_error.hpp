@@ -3,7 +3,7 @@
 // displacements, so the displacement of a continuous analytic load (Hertz, uniform disk) is
 // computed as that of its cell-wise samples. This estimates how far the two differ, with the
 // scene's own operator (docs/theory.md 4.7).
-#include "../convolution/surface_operator.hpp"
+#include "../convolution/operators/surface_operator.hpp"
 #include "../core/grid.hpp"
 #include "../core/types.hpp"
 #include "sampling.hpp"

@@ -6,8 +6,8 @@
 #include <memory>
 #include <tuple>
 
-#include "convolution/dcfft_operator.hpp"
-#include "convolution/pipeline_error.hpp"
+#include "convolution/operators/dcfft_operator.hpp"
+#include "convolution/operators/pipeline_error.hpp"
 #include "core/detail/brief.hpp"
 #include "core/error.hpp"
 #include "core/fft_size.hpp"
@@ -102,9 +102,10 @@ MethodCandidate split_candidate(const Context& x, double split_tolerance) {
 
 // frf-spectral and frf-dcfft at alpha ~ 2 (a larger alpha costs alpha^2 more per application of
 // frf-spectral, and more setup of frf-dcfft, for an error falling only like 1/alpha). Their
-// error is a periodisation error that only a proxy run predicts (convolution/pipeline_error.hpp),
-// so it is evaluated only where the method, prediction included, would be the cheapest.
-// lattice_cost: their cost at `alpha`, without the error prediction.
+// error is a periodisation error that only a proxy run predicts
+// (convolution/operators/pipeline_error.hpp), so it is evaluated only where the method, prediction
+// included, would be the cheapest. lattice_cost: their cost at `alpha`, without the error
+// prediction.
 MethodCandidate lattice_cost(const Context& x, Method method, double alpha) {
   MethodCandidate c{method, kInfinity, 0, 0, 0, false, ""};
   const auto mx =
@@ -165,7 +166,7 @@ MethodCandidate predict(Context x, const OperatorOptions& o) {
     case Method::frf_split:
       return split_candidate(x, o.split.tolerance);
     default: {
-      // The error is not the model's: convolution/pipeline_error.hpp predicts it.
+      // The error is not the model's: convolution/operators/pipeline_error.hpp predicts it.
       MethodCandidate c = lattice_cost(x, o.method, o.alpha);
       c.admissible = true;
       finish(c, x.request);

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "../convolution/make_operator.hpp"
+#include "../convolution/operators/make_operator.hpp"
 #include "../core/grid.hpp"
 #include "../frf/frf.hpp"
 #include "../layers/layer_stack.hpp"
@@ -56,7 +56,7 @@ MethodChoice choose_method(const Grid& grid, const Frf& frf, const AutoRequest& 
 
 /// The model's prediction for a method named with its `options` (what `coatfft check` reports
 /// for a named method): costs, and the error where the model has one (Love's methods,
-/// frf-split; +inf for the lattice pipelines, whose error convolution/pipeline_error.hpp
+/// frf-split; +inf for the lattice pipelines, whose error convolution/operators/pipeline_error.hpp
 /// predicts). Love's methods on a layered body are reported not admissible.
 MethodCandidate predict_method(const Grid& grid, const LayerStack& body,
                                const OperatorOptions& options, double applications,

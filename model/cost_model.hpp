@@ -7,7 +7,7 @@
 // on the examples).
 #include <cstddef>
 
-#include "../convolution/split_frf_kernel.hpp"
+#include "../convolution/kernels/split_frf_kernel.hpp"
 #include "../core/grid.hpp"
 
 namespace coatfft {

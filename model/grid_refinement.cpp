@@ -7,7 +7,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "convolution/make_operator.hpp"
+#include "convolution/operators/make_operator.hpp"
 #include "core/error.hpp"
 #include "core/fft_size.hpp"
 #include "frf/frf.hpp"

@@ -9,7 +9,7 @@
 #include <sstream>
 #include <utility>
 
-#include "convolution/make_operator.hpp"
+#include "convolution/operators/make_operator.hpp"
 #include "core/error.hpp"
 #include "frf/tabulated_frf.hpp"
 #include "loads/hertz_pressure.hpp"

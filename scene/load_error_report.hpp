@@ -4,7 +4,7 @@
 // application; and "refinement", what [grid] refine = "auto" chose.
 #include <nlohmann/json.hpp>
 
-#include "convolution/surface_operator.hpp"
+#include "convolution/operators/surface_operator.hpp"
 #include "scene/scene.hpp"
 
 namespace coatfft::scene {

@@ -4,9 +4,9 @@
 #include <array>
 #include <thread>
 
-#include "convolution/g0.hpp"
+#include "convolution/fft/planning.hpp"
+#include "convolution/kernels/g0.hpp"
 #include "convolution/method.hpp"
-#include "convolution/planning.hpp"
 #include "core/detail/parse_name.hpp"
 #include "core/error.hpp"
 #include "core/threads.hpp"

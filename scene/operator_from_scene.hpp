@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "convolution/make_operator.hpp"
+#include "convolution/operators/make_operator.hpp"
 #include "scene/scene.hpp"
 
 namespace coatfft::scene {

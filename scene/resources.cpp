@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "convolution/operator_memory.hpp"
+#include "convolution/operators/operator_memory.hpp"
 #include "core/detail/shorten.hpp"
 #include "core/error.hpp"
 #include "scene/scene_stress.hpp"

@@ -18,7 +18,7 @@ inline constexpr long max_frf_points = 10000000;  ///< coatfft frf --points
 
 /// An upper estimate of the peak memory of `coatfft run` on `scene`: the grid's fields (4 for a
 /// known pressure, 12 for a contact: iterates, directions, gap), the operators' own
-/// (convolution/operator_memory.hpp, estimated_stress_bytes) and the program's
+/// (convolution/operators/operator_memory.hpp, estimated_stress_bytes) and the program's
 /// (docs/scene_format.md gives the formula). `drivers` names the scene keys that drive it.
 MemoryNeed estimate_memory(const Scene& scene);
 

@@ -9,7 +9,7 @@
 #include <thread>
 #include <vector>
 
-#include "convolution/surface_kernels.hpp"
+#include "convolution/kernels/traction_kernels.hpp"
 #include "core/detail/brief.hpp"
 #include "core/detail/shorten.hpp"
 #include "core/error.hpp"
@@ -637,14 +637,15 @@ ShearSpec read_shear(const toml::table& root, const std::filesystem::path& scene
   return spec;
 }
 
-bool surface_kernels_affordable(const Scene& scene) {
-  return surface_kernel_evaluations(scene.grid, *scene.body) <= LatticeOptions{}.max_evaluations;
+bool traction_kernels_affordable(const Scene& scene) {
+  return traction_kernel_evaluations(scene.grid, *scene.body) <= LatticeOptions{}.max_evaluations;
 }
 
 // Tangential tractions act on the surface displacements of any bonded layer stack
-// (convolution/surface_kernels.hpp) and on the stresses. An [frf] table gives no tangential
-// response, and on a body with a frictionless interface a net tangential force has no equilibrium
-// (the coating slides; docs/theory.md 2.3). The layered kernels' cost is checked before any work.
+// (convolution/kernels/traction_kernels.hpp) and on the stresses. An [frf] table gives no
+// tangential response, and on a body with a frictionless interface a net tangential force has no
+// equilibrium (the coating slides; docs/theory.md 2.3). The layered kernels' cost is checked before
+// any work.
 void check_tangential(const Scene& scene, const char* key) {
   COATFFT_REQUIRE(!scene.frf && scene.body, key,
                   " needs a body of [substrate] and [[coating]]: an [frf] table gives no "
@@ -654,19 +655,19 @@ void check_tangential(const Scene& scene, const char* key) {
                     ": tangential tractions on a body with a frictionless interface (below "
                     "coating ",
                     i + 1, ") are not supported: a net tangential force has no equilibrium there");
-  COATFFT_REQUIRE(surface_kernels_affordable(scene), key, ": the top coating (",
+  COATFFT_REQUIRE(traction_kernels_affordable(scene), key, ": the top coating (",
                   detail::brief(scene.body->coatings().front().thickness),
                   " m) is so thin against the ", detail::brief(scene.grid.lx()), " x ",
-                  detail::brief(scene.grid.ly()), " m domain that its surface kernels need about ",
-                  detail::brief(surface_kernel_evaluations(scene.grid, *scene.body)),
+                  detail::brief(scene.grid.ly()), " m domain that its traction kernels need about ",
+                  detail::brief(traction_kernel_evaluations(scene.grid, *scene.body)),
                   " FRF evaluations (limit ", detail::brief(LatticeOptions{}.max_evaluations),
                   "; the cost grows like (L/h)^2)");
 }
 
-// [grid] boundary = "periodic": the periodic operator of convolution/periodic_kernel.hpp, built
-// from the body's FRF (docs/theory.md 4.8). It replaces dcfft (homogeneous) and frf-split (any
-// body); "auto" takes the one of them the body allows. The other methods compute free surfaces,
-// and so do the stresses and the tangential tractions so far: refused.
+// [grid] boundary = "periodic": the periodic operator of convolution/kernels/periodic_kernel.hpp,
+// built from the body's FRF (docs/theory.md 4.8). It replaces dcfft (homogeneous) and frf-split
+// (any body); "auto" takes the one of them the body allows. The other methods compute free
+// surfaces, and so do the stresses and the tangential tractions so far: refused.
 void check_periodic(Scene& scene) {
   MethodSpec& m = scene.method;
   m.options.boundary = Boundary::periodic;
@@ -792,10 +793,10 @@ Scene read_scene(const std::filesystem::path& path) {
     scene.periodic = grid.periodic;
     if (scene.periodic) check_periodic(scene);
     // The in-plane surface displacements (ux.npy, uy.npy), with tangential tractions or stresses,
-    // of a bonded body whose surface kernels are affordable (checked above when tractions act).
+    // of a bonded body whose traction kernels are affordable (checked above when tractions act).
     scene.output.in_plane =
         (scene.stress || scene.shear || (scene.contact && scene.contact->friction > 0.0)) &&
-        !scene.frf && scene.body && scene.body->all_bonded() && surface_kernels_affordable(scene);
+        !scene.frf && scene.body && scene.body->all_bonded() && traction_kernels_affordable(scene);
     // g(0) only shifts every displacement by one constant, which a load-controlled contact
     // absorbs in its approach; when that approach is not reported, g(0) is not computed at all.
     if (scene.contact && !scene.contact->report_approach)

@@ -10,13 +10,13 @@
 #include <vector>
 
 #include "contact/indenter.hpp"
-#include "convolution/make_operator.hpp"
+#include "convolution/operators/make_operator.hpp"
 #include "core/grid.hpp"
 #include "frf/frf.hpp"
 #include "frf/layer_modes.hpp"
 #include "layers/layer_stack.hpp"
-#include "model/grid_refinement.hpp"
 #include "loads/sampling.hpp"
+#include "model/grid_refinement.hpp"
 #include "validation/hankel_displacement.hpp"
 
 namespace coatfft::scene {
@@ -97,7 +97,7 @@ struct OutputSpec {
   /// stress_section.npy and von_mises_section.npy: set by [stress] section
   bool stress_section = false;
   /// ux.npy and uy.npy: set by [stress], [shear] or [contact] friction on a bonded body (not an
-  /// [frf] table) whose surface kernels are affordable (convolution/surface_kernels.hpp)
+  /// [frf] table) whose traction kernels are affordable (convolution/kernels/traction_kernels.hpp)
   bool in_plane = false;
 };
 

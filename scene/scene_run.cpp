@@ -9,9 +9,9 @@
 #include "contact/contact_solver.hpp"
 #include "contact/indenter.hpp"
 #include "contact/sliding_contact.hpp"
-#include "convolution/cerruti_operator.hpp"
-#include "convolution/fftw_wisdom.hpp"
-#include "convolution/make_operator.hpp"
+#include "convolution/fft/fftw_wisdom.hpp"
+#include "convolution/operators/cerruti_operator.hpp"
+#include "convolution/operators/make_operator.hpp"
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
 #include "scene/a_posteriori.hpp"
@@ -192,16 +192,16 @@ void add_contact_summary(nlohmann::json& summary, const Scene& scene, const Cont
   if (nlohmann::json hertz = hertz_json(scene); !hertz.is_null()) summary["hertz"] = hertz;
 }
 
-// The surface response of the scene's body (convolution/surface_kernels.hpp), built once for the
-// sliding contact's coupling and the in-plane displacements.
-std::shared_ptr<CerrutiOperator> surface_response(const Grid& grid, const LayerStack& body,
-                                                  int threads) {
+// The surface response of the scene's body (convolution/kernels/traction_kernels.hpp), built once
+// for the sliding contact's coupling and the in-plane displacements.
+std::shared_ptr<CerrutiOperator> traction_operator(const Grid& grid, const LayerStack& body,
+                                                   int threads) {
   TangentialOptions options;
   options.threads = threads;
   return make_tangential_operator(grid, body, options).op;
 }
 
-// The in-plane surface displacements of a bonded body (the operator `op` of surface_response), and
+// The in-plane surface displacements of a bonded body (the operator `op` of traction_operator), and
 // the normal displacement of the tractions: added to uz in a known-load scene; in a contact, where
 // the sliding solve has included it already (contact/sliding_contact.hpp), only reported (summary
 // "tangential_uz": its largest value over the largest uz).
@@ -221,11 +221,12 @@ void add_in_plane(CerrutiOperator& op, const Tractions& q, SceneRun& run) {
 }
 
 // The normal displacement of q_x relative to the indenter: the body's (any bonded stack,
-// convolution/surface_kernels.hpp) less an elastic indenter's, whose surface receives -q_x.
+// convolution/kernels/traction_kernels.hpp) less an elastic indenter's, whose surface receives
+// -q_x.
 TangentialCoupling tangential_coupling(std::shared_ptr<CerrutiOperator> on_body,
                                        const std::optional<Material>& indenter, int threads) {
   std::shared_ptr<CerrutiOperator> on_indenter;
-  if (indenter) on_indenter = surface_response(on_body->grid(), LayerStack(*indenter), threads);
+  if (indenter) on_indenter = traction_operator(on_body->grid(), LayerStack(*indenter), threads);
   return [on_body, on_indenter](const Field& qx) {
     const Field zero = Field::Zero(qx.rows(), qx.cols());
     std::array<Field, 3> u;
@@ -267,7 +268,7 @@ ContactResult solve_scene_contact(ContactSolver& solver, const Scene& scene,
   return result;
 }
 
-// `surface`: the body's surface response (surface_response) when the scene writes ux.npy, for
+// `surface`: the body's surface response (traction_operator) when the scene writes ux.npy, for
 // the friction coupling; built before an elastic indenter's composite modulus replaces the body
 // for the normal compliance.
 SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat,
@@ -359,7 +360,7 @@ SceneRun compute_scene(PreparedScene prepared, const SceneRunOptions& options) {
   std::shared_ptr<CerrutiOperator> surface;
   if (scene_copy.output.in_plane) {
     progress.stage("setting up the surface response to tractions");
-    surface = surface_response(scene_copy.grid, *body, threads);
+    surface = traction_operator(scene_copy.grid, *body, threads);
   }
   SceneRun run =
       prepared.scene.contact
@@ -381,7 +382,7 @@ SceneRun compute_scene(PreparedScene prepared, const SceneRunOptions& options) {
     run.summary["warnings"].push_back(
         body->all_bonded()
             ? "ux.npy and uy.npy are not written: the top coating is too thin against the domain "
-              "for its surface kernels (convolution/surface_kernels.hpp)"
+              "for its traction kernels (convolution/kernels/traction_kernels.hpp)"
             : "ux.npy and uy.npy are not written: a body with a frictionless interface has no "
               "finite in-plane surface response (the coating slides)");
   }

@@ -63,10 +63,10 @@ StressRun compute_stress(const StressSpec& spec, const LayerStack& body, const G
   options.kernel.threads = threads;
   options.side = spec.side;
   options.tangential = q.qx || q.qy;
-  StressOperator op(grid, body, depths, options);
+  const std::unique_ptr<StressOperator> op = make_stress_operator(grid, body, depths, options);
   const auto apply_start = std::chrono::steady_clock::now();
   std::vector<PlaneStress> planes;
-  op.apply(pressure, q.qx ? &*q.qx : nullptr, q.qy ? &*q.qy : nullptr, planes);
+  op->apply(pressure, q.qx ? &*q.qx : nullptr, q.qy ? &*q.qy : nullptr, planes);
   const double apply_seconds = detail::seconds_since(apply_start);
 
   StressRun run;
@@ -97,9 +97,9 @@ StressRun compute_stress(const StressSpec& spec, const LayerStack& body, const G
   }
   nlohmann::json warnings = nlohmann::json::array();
   for (std::size_t p = 0; p < depths.size(); ++p)
-    if (op.kernel_reports()[p].alias_capped)
+    if (op->kernel_reports()[p].alias_capped)
       warnings.push_back(detail::concat("the alias series of the plane at z = ", depths[p],
-                                        " m was cut at order ", op.kernel_reports()[p].alias_order,
+                                        " m was cut at order ", op->kernel_reports()[p].alias_order,
                                         ": its stresses near the loads' edges are approximate"));
   run.summary = {{"warnings", warnings},
                  {"depths", spec.depths},
@@ -110,7 +110,7 @@ StressRun compute_stress(const StressSpec& spec, const LayerStack& body, const G
                  {"interfaces", interfaces},
                  {"planes", depths.size()},
                  {"tangential", options.tangential},
-                 {"setup_seconds", op.setup_seconds()},
+                 {"setup_seconds", op->setup_seconds()},
                  {"apply_seconds", apply_seconds},
                  {"seconds", detail::seconds_since(start)}};
   if (spec.section)

@@ -5,8 +5,9 @@
    or tests/.
 2. The scene layer (scene/) includes nothing of cli/ or python/: both front ends stand on it.
 3. Neither front end includes the other: python/ nothing of cli/, cli/ nothing of python/.
-4. Kernels never include operators: in the library, a file whose name says kernel, influence or
-   lattice includes no *_operator.hpp (an operator is built on kernels, not the reverse).
+4. Kernels never include operators: nothing in convolution/fft/ or convolution/kernels/, and no
+   library file whose name says kernel, influence or lattice, includes convolution/operators/ or
+   any *_operator.hpp (an operator is built on kernels, not the reverse).
 
 Prints each broken rule with its file and line; exits 1 when there is one.
 Usage: check_dependencies.py [source root]   (default: the repository of this script)
@@ -46,8 +47,11 @@ def main(root):
                 where = f"{source.relative_to(root)}:{number}"
                 if folder in forbidden:
                     broken.append(f"{where}: {top}/ must not include {folder}/ ({include})")
-                kernel = re.search(r"kernel|influence|lattice", source.name)
-                if top in LIBRARY and kernel and include.endswith("_operator.hpp"):
+                below = source.relative_to(root).parts[:2] in (("convolution", "fft"),
+                                                              ("convolution", "kernels"))
+                kernel = below or re.search(r"kernel|influence|lattice", source.name)
+                operator = "operators/" in include or include.endswith("_operator.hpp")
+                if top in LIBRARY and kernel and operator:
                     broken.append(f"{where}: a kernel includes an operator ({include})")
     for line in broken:
         print(line)

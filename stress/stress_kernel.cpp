@@ -9,9 +9,9 @@
 #include <numbers>
 #include <vector>
 
-#include "convolution/ewald_window.hpp"
-#include "convolution/lattice_coefficients.hpp"
-#include "convolution/parity_transform.hpp"
+#include "convolution/fft/parity_transform.hpp"
+#include "convolution/kernels/ewald_window.hpp"
+#include "convolution/kernels/lattice_coefficients.hpp"
 #include "core/detail/parallel_for.hpp"
 #include "core/detail/sinc.hpp"
 #include "core/detail/timing.hpp"

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <string>
 #include <utility>
 
@@ -103,6 +104,12 @@ void StressOperator::apply(const Field& pressure, const Field* qx, const Field* 
   stress.resize(depths_.size());
   for (std::size_t p = 0; p < depths_.size(); ++p)
     for (int c = 0; c < 6; ++c) std::swap(stress[p][c], fields_[6 * p + c]);
+}
+
+std::unique_ptr<StressOperator> make_stress_operator(const Grid& grid, const LayerStack& body,
+                                                     std::vector<double> depths,
+                                                     const StressOperatorOptions& options) {
+  return std::make_unique<StressOperator>(grid, body, std::move(depths), options);
 }
 
 }  // namespace coatfft

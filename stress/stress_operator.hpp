@@ -7,11 +7,12 @@
 // costs about three surface applications (docs/stress.md).
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <span>
 #include <vector>
 
-#include "../convolution/parity_convolution.hpp"
-#include "../convolution/planning.hpp"
+#include "../convolution/fft/parity_convolution.hpp"
+#include "../convolution/fft/planning.hpp"
 #include "../core/grid.hpp"
 #include "../core/types.hpp"
 #include "../frf/stress_frf.hpp"
@@ -81,5 +82,13 @@ class StressOperator {
   std::vector<StressKernelReport> reports_;
   double setup_seconds_ = 0.0;
 };
+
+/// The factory of the stress operator, the counterpart of make_operator and
+/// make_tangential_operator (convolution/operators/make_operator.hpp), which it cannot sit beside:
+/// stresses build on convolution/. The front ends build every stress operator through it, after
+/// the memory check of estimated_stress_bytes. Throws as the constructor does.
+std::unique_ptr<StressOperator> make_stress_operator(const Grid& grid, const LayerStack& body,
+                                                     std::vector<double> depths,
+                                                     const StressOperatorOptions& options = {});
 
 }  // namespace coatfft

@@ -7,7 +7,7 @@
 #include <random>
 #include <string_view>
 
-#include "convolution/fftw_plan.hpp"
+#include "convolution/fft/fftw_plan.hpp"
 #include "core/error.hpp"
 
 namespace coatfft {

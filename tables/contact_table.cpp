@@ -28,8 +28,8 @@
 
 #include "contact/contact_solver.hpp"
 #include "contact/indenter.hpp"
-#include "convolution/influence_kernel.hpp"
-#include "convolution/make_operator.hpp"
+#include "convolution/kernels/influence_kernel.hpp"
+#include "convolution/operators/make_operator.hpp"
 #include "core/grid.hpp"
 #include "core/types.hpp"
 #include "layers/layer_stack.hpp"

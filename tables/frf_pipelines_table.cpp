@@ -27,8 +27,8 @@
 #include <string>
 #include <vector>
 
-#include "convolution/g0.hpp"
-#include "convolution/make_operator.hpp"
+#include "convolution/kernels/g0.hpp"
+#include "convolution/operators/make_operator.hpp"
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
 #include "core/grid.hpp"

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "convolution/make_operator.hpp"
+#include "convolution/operators/make_operator.hpp"
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
 #include "core/grid.hpp"

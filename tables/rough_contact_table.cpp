@@ -1,7 +1,7 @@
 // Rough contact on periodic surfaces: the real contact area against the load for a self-affine
 // surface (surfaces/self_affine_surface.hpp) pressed on a homogeneous and on coated bodies by a
-// rigid flat, periodic boundaries (convolution/periodic_operator.hpp), load control. In the
-// near-linear regime of small loads, A/A0 = kappa p_m/(E* g), g the rms slope; published kappa
+// rigid flat, periodic boundaries (convolution/operators/periodic_operator.hpp), load control. In
+// the near-linear regime of small loads, A/A0 = kappa p_m/(E* g), g the rms slope; published kappa
 // is about 2 (Persson 2001: sqrt(8/pi) = 1.6 at vanishing load; Hyun et al. 2004: 1.9-2.2 for
 // H = 0.3-0.8 on finely resolved surfaces). Writes docs/validation_rough_contact.md.
 //
@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "contact/contact_solver.hpp"
-#include "convolution/make_operator.hpp"
+#include "convolution/operators/make_operator.hpp"
 #include "core/detail/timing.hpp"
 #include "frf/frf.hpp"
 #include "layers/layer_stack.hpp"

@@ -1,9 +1,9 @@
-// Validation of the frf-split influence coefficients (convolution/split_frf_kernel.hpp) on coated
-// and layered bodies under a Hertz pressure: DC-FFT with the split kernel against the continuous
-// Hankel-integral displacement (validation/hankel_displacement.hpp), over a sweep of modulus ratio,
-// thickness, Poisson's ratio, interface and two-coating stacks, with frf-dcfft of Spinu (2021)
-// (alpha = 2 and 4) alongside. Writes docs/validation_split_kernel.md (--quick: a reduced sweep
-// and no further sections).
+// Validation of the frf-split influence coefficients (convolution/kernels/split_frf_kernel.hpp) on
+// coated and layered bodies under a Hertz pressure: DC-FFT with the split kernel against the
+// continuous Hankel-integral displacement (validation/hankel_displacement.hpp), over a sweep of
+// modulus ratio, thickness, Poisson's ratio, interface and two-coating stacks, with frf-dcfft of
+// Spinu (2021) (alpha = 2 and 4) alongside. Writes docs/validation_split_kernel.md (--quick: a
+// reduced sweep and no further sections).
 //
 // The discrete problem: cell-averaged Hertz pressure (exact cell forces), cell size a/32, N = 129
 // (L = 4.03 a, the load well inside, the origin a cell centre, r = 2a the last cell). DC-FFT on a
@@ -30,10 +30,10 @@
 #include <utility>
 #include <vector>
 
-#include "convolution/g0.hpp"
-#include "convolution/influence_kernel.hpp"
-#include "convolution/make_operator.hpp"
-#include "convolution/split_frf_kernel.hpp"
+#include "convolution/kernels/g0.hpp"
+#include "convolution/kernels/influence_kernel.hpp"
+#include "convolution/kernels/split_frf_kernel.hpp"
+#include "convolution/operators/make_operator.hpp"
 #include "core/detail/timing.hpp"
 #include "core/grid.hpp"
 #include "core/types.hpp"

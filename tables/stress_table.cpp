@@ -56,9 +56,8 @@ std::vector<PlaneStress> stresses(const Grid& g, const LayerStack& body, const F
   o.kernel.alpha = alpha;
   o.kernel.threads = 2;
   o.tangential = qx != nullptr;
-  StressOperator op(g, body, depths, o);
   std::vector<PlaneStress> s;
-  op.apply(p, qx, nullptr, s);
+  make_stress_operator(g, body, depths, o)->apply(p, qx, nullptr, s);
   return s;
 }
 

@@ -8,9 +8,9 @@
 #include <functional>
 #include <numbers>
 
-#include "convolution/angular_influence.hpp"
-#include "convolution/cerruti_influence.hpp"
-#include "convolution/love_influence.hpp"
+#include "convolution/kernels/angular_influence.hpp"
+#include "convolution/kernels/cerruti_influence.hpp"
+#include "convolution/kernels/love_influence.hpp"
 #include "core/error.hpp"
 #include "core/gsl_quadrature.hpp"
 #include "materials/material.hpp"

@@ -5,7 +5,7 @@
 // an independent computation from the Fourier bound of the estimate.
 #include <catch2/catch.hpp>
 
-#include "convolution/make_operator.hpp"
+#include "convolution/operators/make_operator.hpp"
 #include "core/error.hpp"
 #include "loads/hertz_pressure.hpp"
 #include "loads/uniform_disk_pressure.hpp"

@@ -12,7 +12,7 @@
 #include <numbers>
 #include <vector>
 
-#include "convolution/cerruti_influence.hpp"
+#include "convolution/kernels/cerruti_influence.hpp"
 #include "core/error.hpp"
 #include "core/gsl_quadrature.hpp"
 #include "long_double_gauss_legendre.hpp"

@@ -6,10 +6,10 @@
 #include <cmath>
 #include <random>
 
-#include "convolution/cerruti_influence.hpp"
-#include "convolution/cerruti_operator.hpp"
-#include "convolution/love_influence.hpp"
-#include "convolution/make_operator.hpp"
+#include "convolution/kernels/cerruti_influence.hpp"
+#include "convolution/kernels/love_influence.hpp"
+#include "convolution/operators/cerruti_operator.hpp"
+#include "convolution/operators/make_operator.hpp"
 #include "core/error.hpp"
 #include "loads/uniform_disk_pressure.hpp"
 #include "tests/test_materials.hpp"
@@ -122,7 +122,7 @@ TEST_CASE("make_tangential_operator builds the operator a coated body's construc
   const Grid g(9, 7, 1e-3, 0.8e-3);
   const LayerStack body({Coating{tin, 50e-6, Interface::bonded}}, steel);
   const Field p = random_load(9, 7, 4), qx = random_load(9, 7, 5), qy = random_load(9, 7, 6);
-  CerrutiOperator direct(g, body, SurfaceKernelOptions{});
+  CerrutiOperator direct(g, body, TractionKernelOptions{});
   std::array<Field, 3> expected, u;
   direct.apply(p, &qx, &qy, expected);
   for (int threads : {1, 2}) {

@@ -102,7 +102,8 @@ TEST_CASE("[stress] writes the stress files with their shapes and summary keys",
 
 TEST_CASE("[stress] on a coated body reports the interface's largest shear", "[cli_stress]") {
   const fs::path out = run_scene_ok(kCoatedStress, "stress_coated");
-  // The in-plane surface displacements of the layered body (convolution/surface_kernels.hpp).
+  // The in-plane surface displacements of the layered body
+  // (convolution/kernels/traction_kernels.hpp).
   CHECK(npy_shape(out / "ux.npy") == "(20, 24)");
   CHECK(npy_shape(out / "uy.npy") == "(20, 24)");
   const nlohmann::json s = read_summary(out)["stress"];
@@ -201,7 +202,7 @@ TEST_CASE("[stress], [shear] and friction refuse bad scenes with one line", "[cl
   };
   for (const BadCase& c : shear_cases) check_refused(with_shear, c);
   // [shear] with a frictionless interface; on a coating so thin against the domain that its
-  // surface kernels would need about 1e11 FRF evaluations; friction on a frictionless interface.
+  // traction kernels would need about 1e11 FRF evaluations; friction on a frictionless interface.
   check_refused(kCoatedStress + "[shear]\nkind = \"proportional\"\nmu = 0.2\n",
                 {"shear_frictionless", "thickness = 2e-4",
                  "thickness = 2e-4\ninterface = \"frictionless\"", "frictionless"});

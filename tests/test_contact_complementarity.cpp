@@ -14,9 +14,9 @@
 
 #include "contact/complementarity.hpp"
 #include "contact/contact_solver.hpp"
-#include "convolution/make_operator.hpp"
-#include "convolution/periodic_kernel.hpp"
-#include "convolution/periodic_operator.hpp"
+#include "convolution/kernels/periodic_kernel.hpp"
+#include "convolution/operators/make_operator.hpp"
+#include "convolution/operators/periodic_operator.hpp"
 #include "frf/frf.hpp"
 #include "layers/layer_stack.hpp"
 #include "materials/material.hpp"

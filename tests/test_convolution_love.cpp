@@ -12,10 +12,10 @@
 #include <numbers>
 #include <vector>
 
-#include "convolution/dcfft_operator.hpp"
-#include "convolution/direct_operator.hpp"
-#include "convolution/influence_kernel.hpp"
-#include "convolution/love_influence.hpp"
+#include "convolution/kernels/influence_kernel.hpp"
+#include "convolution/kernels/love_influence.hpp"
+#include "convolution/operators/dcfft_operator.hpp"
+#include "convolution/operators/direct_operator.hpp"
 #include "core/error.hpp"
 #include "core/grid.hpp"
 #include "core/norms.hpp"
@@ -258,7 +258,8 @@ TEST_CASE("love_influence_row equals love_influence along a row through every ru
 }
 
 // The kernel's spectrum on DC-FFT's padded lattice by the cosine sum of the definition in
-// convolution/influence_kernel.hpp, over every wrapped offset: O((nx ny)^2), independent of FFTW.
+// convolution/kernels/influence_kernel.hpp, over every wrapped offset: O((nx ny)^2), independent of
+// FFTW.
 coatfft::Field cosine_sum_spectrum(const coatfft::InfluenceKernel& k) {
   const std::ptrdiff_t nx = k.grid().nx(), ny = k.grid().ny();
   coatfft::Field s = coatfft::Field::Zero(nx + 1, ny + 1);

@@ -256,7 +256,7 @@ TEST_CASE(
     if (c[0] == 32 && c[1] == 32) scale = p.uz + q.uz;
   }
   // The load's discretisation at a/16: 1.2e-3 of u_x(0) under the traction alone and 3e-4 of
-  // u_z(0) under the pressure for this kind of coating (tests/test_surface_kernels.cpp); here
+  // u_z(0) under the pressure for this kind of coating (tests/test_traction_kernels.cpp); here
   // measured 6.7e-4 of u_z(0).
   INFO("worst " << worst / scale);
   CHECK(worst < 1e-3 * scale);

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "convolution/make_operator.hpp"
+#include "convolution/operators/make_operator.hpp"
 #include "core/error.hpp"
 #include "core/grid.hpp"
 #include "frf/frf.hpp"

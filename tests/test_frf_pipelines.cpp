@@ -3,11 +3,11 @@
 #include <complex>
 #include <numbers>
 
-#include "convolution/dcfft_operator.hpp"
-#include "convolution/frf_influence_kernel.hpp"
-#include "convolution/frf_spectral_operator.hpp"
-#include "convolution/influence_kernel.hpp"
-#include "convolution/make_operator.hpp"
+#include "convolution/kernels/frf_influence_kernel.hpp"
+#include "convolution/kernels/influence_kernel.hpp"
+#include "convolution/operators/dcfft_operator.hpp"
+#include "convolution/operators/frf_spectral_operator.hpp"
+#include "convolution/operators/make_operator.hpp"
 #include "core/error.hpp"
 #include "core/grid.hpp"
 #include "core/norms.hpp"

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "convolution/g0.hpp"
+#include "convolution/kernels/g0.hpp"
 #include "core/error.hpp"
 #include "layers/layer_stack.hpp"
 #include "materials/material.hpp"

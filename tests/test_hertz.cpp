@@ -8,8 +8,8 @@
 #include <functional>
 #include <numbers>
 
-#include "convolution/dcfft_operator.hpp"
-#include "convolution/influence_kernel.hpp"
+#include "convolution/kernels/influence_kernel.hpp"
+#include "convolution/operators/dcfft_operator.hpp"
 #include "core/error.hpp"
 #include "materials/catalog.hpp"
 #include "validation/hertz.hpp"

@@ -10,7 +10,7 @@
 
 #include "contact/contact_solver.hpp"
 #include "contact/indenter.hpp"
-#include "convolution/make_operator.hpp"
+#include "convolution/operators/make_operator.hpp"
 #include "core/detail/parallel_for.hpp"
 #include "core/detail/timing.hpp"
 #include "core/interrupt.hpp"

@@ -8,7 +8,7 @@
 #include <map>
 #include <string>
 
-#include "convolution/make_operator.hpp"
+#include "convolution/operators/make_operator.hpp"
 #include "core/error.hpp"
 #include "frf/frf.hpp"
 #include "layers/layer_stack.hpp"

@@ -4,8 +4,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "convolution/dcfft_operator.hpp"
-#include "convolution/influence_kernel.hpp"
+#include "convolution/kernels/influence_kernel.hpp"
+#include "convolution/operators/dcfft_operator.hpp"
 #include "loads/hertz_pressure.hpp"
 #include "validation/hertz.hpp"
 

@@ -3,7 +3,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "convolution/make_operator.hpp"
+#include "convolution/operators/make_operator.hpp"
 #include "core/error.hpp"
 #include "core/norms.hpp"
 #include "frf/half_space_frf.hpp"

@@ -1,21 +1,21 @@
-// Periodic surfaces (convolution/periodic_kernel.hpp, periodic_operator.hpp) against independent
-// references: the exact eigenvalues of the periodic operator (the FRF times the cell's transform
-// summed over 400^2 aliases, by brute force instead of Ewald's split), Westergaard's wavy contact
-// (Johnson 1985, section 13.2), a coating of the substrate's material, and a Hertz contact in a
-// large period against the free (DC-FFT) solution.
+// Periodic surfaces (convolution/kernels/periodic_kernel.hpp, periodic_operator.hpp) against
+// independent references: the exact eigenvalues of the periodic operator (the FRF times the cell's
+// transform summed over 400^2 aliases, by brute force instead of Ewald's split), Westergaard's wavy
+// contact (Johnson 1985, section 13.2), a coating of the substrate's material, and a Hertz contact
+// in a large period against the free (DC-FFT) solution.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
 
 #include "contact/contact_solver.hpp"
 #include "contact/indenter.hpp"
-#include "convolution/dcfft_operator.hpp"
-#include "convolution/influence_kernel.hpp"
-#include "convolution/make_operator.hpp"
-#include "convolution/operator_memory.hpp"
-#include "convolution/periodic_kernel.hpp"
-#include "convolution/periodic_operator.hpp"
-#include "convolution/split_frf_kernel.hpp"
+#include "convolution/kernels/influence_kernel.hpp"
+#include "convolution/kernels/periodic_kernel.hpp"
+#include "convolution/kernels/split_frf_kernel.hpp"
+#include "convolution/operators/dcfft_operator.hpp"
+#include "convolution/operators/make_operator.hpp"
+#include "convolution/operators/operator_memory.hpp"
+#include "convolution/operators/periodic_operator.hpp"
 #include "core/error.hpp"
 #include "frf/frf.hpp"
 #include "frf/half_space_frf.hpp"

@@ -1,15 +1,15 @@
-// The error model of the FRF pipelines (convolution/pipeline_error.hpp, docs/theory.md 4.6): the
-// prediction is the error measured on the grid itself when the grid is its own proxy, close to
-// it on larger grids, flags the anisotropic cells of a thin domain, falls with alpha, and stays
-// cheap on extreme grids.
+// The error model of the FRF pipelines (convolution/operators/pipeline_error.hpp,
+// docs/theory.md 4.6): the prediction is the error measured on the grid itself when the grid is its
+// own proxy, close to it on larger grids, flags the anisotropic cells of a thin domain, falls with
+// alpha, and stays cheap on extreme grids.
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <memory>
 #include <numbers>
 
-#include "convolution/make_operator.hpp"
-#include "convolution/pipeline_error.hpp"
+#include "convolution/operators/make_operator.hpp"
+#include "convolution/operators/pipeline_error.hpp"
 #include "core/error.hpp"
 #include "frf/half_space_frf.hpp"
 #include "layers/layer_stack.hpp"

@@ -8,9 +8,9 @@
 
 #include "contact/indenter.hpp"
 #include "contact/sliding_contact.hpp"
-#include "convolution/cerruti_operator.hpp"
-#include "convolution/dcfft_operator.hpp"
-#include "convolution/influence_kernel.hpp"
+#include "convolution/kernels/influence_kernel.hpp"
+#include "convolution/operators/cerruti_operator.hpp"
+#include "convolution/operators/dcfft_operator.hpp"
 #include "core/error.hpp"
 #include "tests/test_materials.hpp"
 #include "validation/hertz_contact.hpp"

@@ -1,4 +1,4 @@
-// frf-split influence coefficients (convolution/split_frf_kernel.hpp): the closed-form cell
+// frf-split influence coefficients (convolution/kernels/split_frf_kernel.hpp): the closed-form cell
 // integral, the homogeneous limits (exactly Love), the remainder machinery against closed forms,
 // and coated Hertz displacements against the continuous Hankel reference.
 #include <catch2/catch.hpp>
@@ -8,12 +8,12 @@
 #include <utility>
 #include <vector>
 
-#include "convolution/cell_average_stencil.hpp"
-#include "convolution/dcfft_operator.hpp"
-#include "convolution/direct_operator.hpp"
-#include "convolution/influence_kernel.hpp"
-#include "convolution/love_influence.hpp"
-#include "convolution/split_frf_kernel.hpp"
+#include "convolution/kernels/cell_average_stencil.hpp"
+#include "convolution/kernels/influence_kernel.hpp"
+#include "convolution/kernels/love_influence.hpp"
+#include "convolution/kernels/split_frf_kernel.hpp"
+#include "convolution/operators/dcfft_operator.hpp"
+#include "convolution/operators/direct_operator.hpp"
 #include "core/error.hpp"
 #include "core/grid.hpp"
 #include "frf/coated_frf.hpp"

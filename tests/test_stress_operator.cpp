@@ -82,13 +82,13 @@ TEST_CASE("stress operator equals the direct double sum of its coefficients", "[
   StressOperatorOptions o;
   o.tangential = true;
   o.kernel.alpha = 2;
-  StressOperator op(g, stack, depths, o);
+  const auto op = make_stress_operator(g, stack, depths, o);  // the factory's product
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   std::array<Field, 3> loads;
   for (Field& f : loads) f = Field::NullaryExpr(7, 5, [&] { return u(rng); });
   std::vector<PlaneStress> s;
-  op.apply(loads[0], &loads[1], &loads[2], s);
+  op->apply(loads[0], &loads[1], &loads[2], s);
   REQUIRE(s.size() == 3);
   StressKernelOptions ko;
   ko.alpha = 2;
@@ -137,20 +137,20 @@ TEST_CASE("stress operator refuses bad input", "[stress_operator]") {
   const LayerStack sliding({{tin, 1e-4, Interface::frictionless}}, steel);
   StressOperatorOptions tangential;
   tangential.tangential = true;
-  CHECK_THROWS_AS(StressOperator(g, sliding, {1e-4}, tangential), InvalidArgument);
-  CHECK_THROWS_AS(StressOperator(g, LayerStack(steel), {}, {}), InvalidArgument);
-  CHECK_THROWS_AS(StressOperator(g, LayerStack(steel), {-1e-4}, {}), InvalidArgument);
+  CHECK_THROWS_AS(make_stress_operator(g, sliding, {1e-4}, tangential), InvalidArgument);
+  CHECK_THROWS_AS(make_stress_operator(g, LayerStack(steel), {}, {}), InvalidArgument);
+  CHECK_THROWS_AS(make_stress_operator(g, LayerStack(steel), {-1e-4}, {}), InvalidArgument);
   // z = 0 (the alias series does not decay) and a plane too shallow for the budget: the quarter
   // disk |k| < k_cut = c/z, c = ln(1e12) + 2 ln(1 + ln(1e12)) + 3, over the lattice cell
   // (pi/L)^2: c^2/(4 pi) (L/z)^2 = 1.11e10 at L/z = 1e4 (plus the band, 3e5).
-  CHECK_THROWS_AS(StressOperator(g, LayerStack(steel), {0.0}, {}), InvalidArgument);
-  CHECK_THROWS_AS(StressOperator(g, LayerStack(steel), {1e-7}, {}), InvalidArgument);
+  CHECK_THROWS_AS(make_stress_operator(g, LayerStack(steel), {0.0}, {}), InvalidArgument);
+  CHECK_THROWS_AS(make_stress_operator(g, LayerStack(steel), {1e-7}, {}), InvalidArgument);
   const double z[1] = {1e-7};
   const double c = std::log(1e12) + 2 * std::log1p(std::log(1e12)) + 3;
   CHECK(stress_kernel_evaluations(g, z) == Approx(c * c / (4 * M_PI) * 1e8).epsilon(1e-4));
   StressOperatorOptions bad_alpha;
   bad_alpha.kernel.alpha = 1;
-  CHECK_THROWS_AS(StressOperator(g, LayerStack(steel), {1e-4}, bad_alpha), InvalidArgument);
+  CHECK_THROWS_AS(make_stress_operator(g, LayerStack(steel), {1e-4}, bad_alpha), InvalidArgument);
   StressOperator op(g, LayerStack(steel), {1e-4}, {});
   std::vector<PlaneStress> s;
   Field p = Field::Zero(8, 8);

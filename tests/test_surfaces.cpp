@@ -9,7 +9,7 @@
 #include <optional>
 #include <vector>
 
-#include "convolution/fftw_plan.hpp"
+#include "convolution/fft/fftw_plan.hpp"
 #include "core/error.hpp"
 #include "surfaces/self_affine_surface.hpp"
 

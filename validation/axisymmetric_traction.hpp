@@ -1,7 +1,7 @@
 #pragma once
 // Continuous reference for the 3 x 3 surface response of any bonded layer stack: the surface
 // displacements under an axisymmetric load acting as a pressure or as a traction q_x, by Hankel
-// integrals of the surface FRFs of docs/theory.md 2.9 (frf/surface_response.hpp). With
+// integrals of the surface FRFs of docs/theory.md 2.9 (frf/traction_response.hpp). With
 // Q^(k) = 2 pi \int_0^a q(s) J0(k s) s ds and the field point at (r cos phi, r sin phi):
 //   under q_x:  u_x = (1/2pi) \int [S J0(kr) - D cos 2phi J2(kr)] Q^ k dk,
 //               u_y = -(1/2pi) sin 2phi \int D J2(kr) Q^ k dk,
@@ -9,8 +9,8 @@
 //   under p:    u_x = -(1/2pi) cos phi \int C J1(kr) P^ k dk, u_y likewise with sin phi,
 //               u_z = (1/2pi) \int H_zz J0(kr) P^ k dk
 // (the angular factors of the FRFs turn into J_n by \int_0^2pi e^{i n theta} e^{i k r cos(theta -
-// phi)} dtheta = 2 pi i^n J_n(kr) e^{i n phi}). It checks the layered surface kernels
-// (convolution/surface_kernels.hpp), where no closed form exists.
+// phi)} dtheta = 2 pi i^n J_n(kr) e^{i n phi}). It checks the layered traction kernels
+// (convolution/kernels/traction_kernels.hpp), where no closed form exists.
 #include "../layers/layer_stack.hpp"
 #include "hankel_displacement.hpp"
 

@@ -1,5 +1,6 @@
-// make_operator and Operator: the library's operator factory (convolution/make_operator.hpp) with
-// the scene's [method] options as keywords, and name = "auto" (docs/auto.md) as the default.
+// make_operator and Operator: the library's operator factory
+// (convolution/operators/make_operator.hpp) with the scene's [method] options as keywords, and name
+// = "auto" (docs/auto.md) as the default.
 #include <pybind11/stl.h>
 
 #include <algorithm>
@@ -11,7 +12,7 @@
 
 #include "bindings.hpp"
 #include "bodies.hpp"
-#include "convolution/operator_memory.hpp"
+#include "convolution/operators/operator_memory.hpp"
 #include "core/error.hpp"
 #include "core/memory.hpp"
 #include "core/threads.hpp"

@@ -1,7 +1,7 @@
 // stresses and von_mises: the stresses on planes inside a body (stress/stress_operator.hpp) under
 // a pressure and tangential tractions, as arrays of the layout of the program's stress.npy; and
 // surface_displacements, the surface's (u_x, u_y, u_z) under the same loads
-// (convolution/cerruti_operator.hpp), as the program's ux.npy, uy.npy and uz.npy.
+// (convolution/operators/cerruti_operator.hpp), as the program's ux.npy, uy.npy and uz.npy.
 #include <pybind11/stl.h>
 
 #include <optional>
@@ -10,8 +10,8 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "bodies.hpp"
-#include "convolution/make_operator.hpp"
-#include "convolution/operator_memory.hpp"
+#include "convolution/operators/make_operator.hpp"
+#include "convolution/operators/operator_memory.hpp"
 #include "core/error.hpp"
 #include "core/memory.hpp"
 #include "stress/stress_invariants.hpp"
@@ -96,9 +96,9 @@ py::array_t<double> stresses(py::handle body_object, const Grid& grid,
   const SurfaceLoads loads = surface_loads("stresses", grid, pressure, qx, qy);
   std::vector<double> values;
   without_gil([&] {
-    StressOperator op(grid, stack, depths, options);
     std::vector<PlaneStress> planes;
-    op.apply(loads.p, loads.x(), loads.y(), planes);
+    make_stress_operator(grid, stack, depths, options)
+        ->apply(loads.p, loads.x(), loads.y(), planes);
     values.reserve(planes.size() * 6 * static_cast<std::size_t>(grid.nb_cells()));
     for (const PlaneStress& plane : planes)
       for (const Field& c : plane) values.insert(values.end(), c.data(), c.data() + c.size());

@@ -10,7 +10,7 @@
 #include <string_view>
 
 #include "arrays.hpp"
-#include "convolution/make_operator.hpp"
+#include "convolution/operators/make_operator.hpp"
 
 namespace coatfft::python {
 

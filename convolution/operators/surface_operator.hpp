@@ -1,0 +1,42 @@
+#pragma once
+// The one interface every displacement operator implements: surface normal displacement from a
+// piecewise-constant surface pressure on a Grid. Contact solvers, the CLI and the benchmarks see
+// only this. An operator is a plan: everything that depends on sizes is built in the constructor;
+// apply() only computes. Not safe to call apply() on one instance from two threads at once.
+#include <string>
+
+#include "../../core/grid.hpp"
+#include "../../core/types.hpp"
+#include "../method.hpp"
+
+namespace coatfft {
+
+class SurfaceOperator {
+ public:
+  virtual ~SurfaceOperator() = default;
+  SurfaceOperator() = default;
+  SurfaceOperator(const SurfaceOperator&) = delete;
+  SurfaceOperator& operator=(const SurfaceOperator&) = delete;
+
+  /// The grid of the pressure and displacement fields.
+  virtual const Grid& grid() const = 0;
+  /// u = displacement [m, positive into the body] from p = pressure [Pa, positive compressive],
+  /// both Fields of shape (nx, ny). `u` is resized if needed; it must not alias `p`.
+  virtual void apply(const Field& pressure, Field& displacement) = 0;
+  /// The method this operator runs (DC-FFT on a split kernel reports frf-split, not dcfft).
+  virtual Method method() const = 0;
+  /// Its name as used in scene files and summary.json ("dcfft", "frf-split", ...).
+  std::string name() const { return std::string(to_string(method())); }
+  /// Whether the surface repeats over the grid's period (no domain edge); false for the free
+  /// surfaces of a half-space.
+  virtual bool periodic() const { return false; }
+
+  /// Allocating convenience form.
+  Field apply(const Field& pressure) {
+    Field u;
+    apply(pressure, u);
+    return u;
+  }
+};
+
+}  // namespace coatfft
