@@ -41,6 +41,48 @@ struct Body {
 };
 
 constexpr double length = 4e-3;  // domain side [m]
+constexpr int applies_per_rep = 3;
+
+// Hertz's pressure, p0 = 1 GPa on a = 1 mm, at the cell centres of `grid`.
+Field hertz_field(const Grid& grid) {
+  Field p(grid.nx(), grid.ny());
+  for (std::ptrdiff_t j = 0; j < grid.ny(); ++j)
+    for (std::ptrdiff_t i = 0; i < grid.nx(); ++i) {
+      const double r2 = (grid.x(i) * grid.x(i) + grid.y(j) * grid.y(j)) / 1e-6;
+      p(i, j) = r2 < 1.0 ? 1e9 * std::sqrt(1.0 - r2) : 0.0;
+    }
+  return p;
+}
+
+// One CSV row: the medians of `reps` setups of `method` for `body` on `grid` and of the
+// applications after each.
+std::string measure_row(const Body& body, Method method, const Grid& grid, const Field& p,
+                        int threads, double alpha, int reps) {
+  OperatorOptions options;
+  options.method = method;
+  options.alpha = alpha;
+  options.g0 = G0Method::regularized;
+  options.g0_tolerance = default_g0_tolerance;
+  options.threads = threads;
+  std::vector<double> kernel_s, g0_s, transform_s, setup_s, apply_s;
+  Field u;
+  for (int r = 0; r < reps; ++r) {
+    const bench::TimedSetup s = bench::timed_setup(grid, body.stack, options);
+    kernel_s.push_back(s.kernel_s);
+    g0_s.push_back(s.g0_s);
+    transform_s.push_back(s.transform_s);
+    setup_s.push_back(s.kernel_s + s.g0_s + s.transform_s);
+    for (int a = 0; a < applies_per_rep; ++a)
+      apply_s.push_back(detail::time_applications(*s.built.op, p, u, 1));
+  }
+  std::ostringstream row;
+  const double st = median(setup_s);
+  const double ap = median(apply_s);
+  row << body.name << ',' << to_string(method) << ',' << grid.nx() << ',' << threads << ','
+      << median(kernel_s) << ',' << median(g0_s) << ',' << median(transform_s) << ',' << st << ','
+      << ap << ',' << st / ap << '\n';
+  return row.str();
+}
 
 }  // namespace
 
@@ -63,7 +105,6 @@ int main(int argc, char** argv) {
   app.add("--methods", method_names, "Methods (default: all but direct)").comma_separated();
   if (const auto status = app.parse(argc, argv)) return *status;
   try {
-    constexpr int applies_per_rep = 3;
     std::vector<Method> methods;
     for (const std::string& name : method_names) methods.push_back(parse_method(name));
     if (methods.empty())  // direct summation is O(N^4): not at these sizes
@@ -89,42 +130,15 @@ int main(int argc, char** argv) {
 
     for (const std::ptrdiff_t n : sizes) {
       const Grid grid(n, n, length, length);
-      Field p(n, n);
-      for (std::ptrdiff_t j = 0; j < n; ++j)
-        for (std::ptrdiff_t i = 0; i < n; ++i) {
-          const double r2 = (grid.x(i) * grid.x(i) + grid.y(j) * grid.y(j)) / 1e-6;
-          p(i, j) = r2 < 1.0 ? 1e9 * std::sqrt(1.0 - r2) : 0.0;
-        }
-      Field u;
+      const Field p = hertz_field(grid);
       for (const Body& body : bodies)
         for (const int threads : thread_list)
           for (const Method method : methods) {
             // Love's coefficients: homogeneous bodies only.
             if (uses_love_coefficients(method) && !body.stack.is_homogeneous()) continue;
-            OperatorOptions options;
-            options.method = method;
-            options.alpha = alpha;
-            options.g0 = G0Method::regularized;
-            options.g0_tolerance = default_g0_tolerance;
-            options.threads = threads;
-            std::vector<double> kernel_s, g0_s, transform_s, setup_s, apply_s;
-            for (int r = 0; r < reps; ++r) {
-              const bench::TimedSetup s = bench::timed_setup(grid, body.stack, options);
-              kernel_s.push_back(s.kernel_s);
-              g0_s.push_back(s.g0_s);
-              transform_s.push_back(s.transform_s);
-              setup_s.push_back(s.kernel_s + s.g0_s + s.transform_s);
-              for (int a = 0; a < applies_per_rep; ++a)
-                apply_s.push_back(detail::time_applications(*s.built.op, p, u, 1));
-            }
-            std::ostringstream row;
-            const double st = median(setup_s);
-            const double ap = median(apply_s);
-            row << body.name << ',' << to_string(method) << ',' << n << ',' << threads << ','
-                << median(kernel_s) << ',' << median(g0_s) << ',' << median(transform_s) << ','
-                << st << ',' << ap << ',' << st / ap << '\n';
-            std::cout << row.str() << std::flush;
-            csv << row.str();
+            const std::string row = measure_row(body, method, grid, p, threads, alpha, reps);
+            std::cout << row << std::flush;
+            csv << row;
           }
     }
     coatfft::bench::write_text_file(out_path, csv.str());

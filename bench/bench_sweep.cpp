@@ -115,8 +115,8 @@ std::vector<sweep::RowSpec> plan_rows(const SweepConfig& cfg, const sweep::Sweep
   return rows;
 }
 
-int sweep_main(const SweepConfig& cfg) {
-  const auto t_start = std::chrono::steady_clock::now();
+// The "# key = value" header and the CSV column line of sweep.csv.
+std::string sweep_header(const SweepConfig& cfg) {
   std::ostringstream header;
   header << "# bench = bench_sweep (speed against error)\n"
          << "# mode = " << cfg.mode << "\n";
@@ -141,13 +141,50 @@ int sweep_main(const SweepConfig& cfg) {
              << "\n";
   header << "case,method,N,alpha,g0,g0_tol,sampling,setup_s,apply_s_median,peak_rss_mb,max_err,"
             "rms_err,coeff_s\n";
-  std::cout << header.str() << std::flush;
+  return header.str();
+}
+
+// One row in a child process (its own peak RSS), measured against `ref`: the CSV line, or a
+// "# failed: ..." line when the child failed (counted in `failures`).
+std::string run_row(const SweepConfig& cfg, const sweep::SweepCase& c, const sweep::RowSpec& row,
+                    std::ptrdiff_t n, const sweep::Reference& ref, const std::string& tmp,
+                    int& failures) {
+  std::vector<std::string> argv = sweep::row_arguments(row, cfg.run, tmp);
+  argv.insert(argv.begin(), cfg.row_program);
+  const coatfft::bench::ChildOutcome child = coatfft::bench::run_child(argv);
+  const std::string method(to_string(row.method));
+  if (child.exit_code != 0) {
+    ++failures;
+    return "# failed: " + row.case_name + "," + method + "," + std::to_string(n) + "," +
+           fmt(row.alpha) + "," + sweep::g0_label(row) + " (exit code " +
+           std::to_string(child.exit_code) + ")\n";
+  }
+  sweep::RowTiming timing;
+  const Field u = sweep::read_row_result(tmp, n, timing);
+  const Field diff = (u - ref.u) / ref.u_centre;
+  const double max_err = diff.abs().maxCoeff();
+  const double rms_err = std::sqrt(diff.square().mean());
+  COATFFT_REQUIRE(std::isfinite(max_err) && std::isfinite(rms_err), "non-finite error for ", method,
+                  " N = ", n);
+  std::ostringstream line;
+  line << row.case_name << ',' << method << ',' << n << ',' << fmt(row.alpha) << ','
+       << sweep::g0_label(row) << ',' << fmt(row.g0_tol) << ',' << sweep::to_string(c.sampling)
+       << ',' << fmt(timing.setup_s) << ',' << fmt(timing.apply_s_median) << ','
+       << fmt(child.peak_rss_mb) << ',' << fmt(max_err) << ',' << fmt(rms_err) << ','
+       << fmt(timing.coeff_s) << '\n';
+  return line.str();
+}
+
+int sweep_main(const SweepConfig& cfg) {
+  const auto t_start = std::chrono::steady_clock::now();
+  const std::string header = sweep_header(cfg);
+  std::cout << header << std::flush;
 
   const std::filesystem::path out_path(cfg.output);
   if (out_path.has_parent_path()) std::filesystem::create_directories(out_path.parent_path());
   std::ofstream out(cfg.output);
   COATFFT_REQUIRE(out.good(), "cannot write ", cfg.output);
-  out << header.str() << std::flush;
+  out << header << std::flush;
 
   const std::string tmp =
       (std::filesystem::temp_directory_path() / ("bench_sweep_" + std::to_string(getpid())))
@@ -167,35 +204,9 @@ int sweep_main(const SweepConfig& cfg) {
       std::cerr << "[" << fmt(seconds_since(t_start)) << " s] " << c.name << " N = " << n
                 << ": reference in " << fmt(seconds_since(t_ref)) << " s\n";
       for (const sweep::RowSpec& row : rows) {
-        std::vector<std::string> argv = sweep::row_arguments(row, cfg.run, tmp);
-        argv.insert(argv.begin(), cfg.row_program);
-        const coatfft::bench::ChildOutcome child = coatfft::bench::run_child(argv);
-        const std::string method(to_string(row.method));
-        if (child.exit_code != 0) {
-          ++failures;
-          const std::string line = "# failed: " + row.case_name + "," + method + "," +
-                                   std::to_string(n) + "," + fmt(row.alpha) + "," +
-                                   sweep::g0_label(row) + " (exit code " +
-                                   std::to_string(child.exit_code) + ")\n";
-          std::cout << line;
-          out << line << std::flush;
-          continue;
-        }
-        sweep::RowTiming timing;
-        const Field u = sweep::read_row_result(tmp, n, timing);
-        const Field diff = (u - ref.u) / ref.u_centre;
-        const double max_err = diff.abs().maxCoeff();
-        const double rms_err = std::sqrt(diff.square().mean());
-        COATFFT_REQUIRE(std::isfinite(max_err) && std::isfinite(rms_err), "non-finite error for ",
-                        method, " N = ", n);
-        std::ostringstream line;
-        line << row.case_name << ',' << method << ',' << n << ',' << fmt(row.alpha) << ','
-             << sweep::g0_label(row) << ',' << fmt(row.g0_tol) << ','
-             << sweep::to_string(c.sampling) << ',' << fmt(timing.setup_s) << ','
-             << fmt(timing.apply_s_median) << ',' << fmt(child.peak_rss_mb) << ',' << fmt(max_err)
-             << ',' << fmt(rms_err) << ',' << fmt(timing.coeff_s) << '\n';
-        std::cout << line.str() << std::flush;
-        out << line.str() << std::flush;
+        const std::string line = run_row(cfg, c, row, n, ref, tmp, failures);
+        std::cout << line << std::flush;
+        out << line << std::flush;
       }
     }
   }

@@ -281,9 +281,9 @@ void coated_section(std::ostringstream& md) {
   md << "| substrate half-space, Hertz | 1 | 1 | 1 | 1 |\n";
 }
 
-// --check: see the top of the file.
-int check() {
-  tables::Checks checks("contact_table");
+// --check, the homogeneous rows: Hertz's sphere under load and approach control and the flat
+// punch, at N = 64 and 128, each error within its discretisation bound.
+void check_homogeneous(tables::Checks& checks) {
   const auto pct_of = [](double x) { return format_number("%+.3g", 100 * x) + " %"; };
   for (const std::ptrdiff_t n : {64, 128}) {
     const HertzRow r = hertz_row(n);
@@ -313,7 +313,11 @@ int check() {
                   "W error " + pct_of(punch.load_error) +
                       " beyond 0.25 dx/a = " + pct_of(0.25 / punch.cells_per_radius));
   }
+}
 
+// --check, the coated sphere: each solve converged, and each coating against its limits (the
+// substrate's own material, the coating's half-space when thick, the bare substrate when thin).
+void check_coated(tables::Checks& checks) {
   const HertzSphere ref = bare_hertz();
   const CoatedSolve bare = on_love(kSteel);
   const CoatedSolve same = on_split_kernel(coated_steel(1.0, 1.0));
@@ -371,6 +375,13 @@ int check() {
   checks.expect(relative(bare.pressure, 1.0) < 0.01,
                 "coated sphere | substrate half-space, numerical",
                 "max p / p0 = " + fixed(bare.pressure) + " not within 1 % of Hertz 1");
+}
+
+// --check: see the top of the file.
+int check() {
+  tables::Checks checks("contact_table");
+  check_homogeneous(checks);
+  check_coated(checks);
   return checks.finish();
 }
 

@@ -192,56 +192,73 @@ int check() {
   return checks.finish();
 }
 
-int write_table(const std::string& out_path) {
-  const std::vector<std::ptrdiff_t> sizes = {64, 1024};
-  const auto start = std::chrono::steady_clock::now();
-  const std::vector<HardBody> hard = bodies();
-  bool all_finite = true;
+// What the sweep over sizes, bodies and methods found: the table sections per N, the worst max
+// |error| per (method, N) over the bodies, the methods in order of appearance and the skipped
+// ones.
+struct HardResults {
   std::ostringstream sections;
-  // Worst max |error| per (method, N) over the bodies, for the summary.
   std::map<std::string, std::map<std::ptrdiff_t, double>> worst;
   std::vector<std::string> method_order;
   std::vector<std::string> skipped;
+  bool all_finite = true;
+};
+
+// One row: method `m` on `body` (the Hertz problem `pb` on `grid`), or the row of its failure.
+void add_row(HardResults& out, const Grid& grid, const HardBody& body, const HertzProblem& pb,
+             const MethodChoice& m) {
+  const std::ptrdiff_t n = grid.nx();
+  const std::string name = label(m);
+  MethodResult r;
+  try {
+    r = run_method(grid, body.frf, pb, m);
+  } catch (const std::exception& e) {
+    out.all_finite = false;
+    out.sections << "| " << body.label << " | " << name << " | **failed: " << e.what() << "** |\n";
+    std::cout << body.label << " " << name << " failed: " << e.what() << "\n";
+    return;
+  }
+  out.all_finite = out.all_finite && r.finite;
+  const double w = r.max_abs_error();
+  if (std::find(out.method_order.begin(), out.method_order.end(), name) == out.method_order.end())
+    out.method_order.push_back(name);
+  out.worst[name][n] = std::max(out.worst[name][n], w);
+  std::ostringstream line;
+  line << "| " << body.label << " | " << name << " | " << (r.finite ? "yes" : "**no**");
+  for (const double e : r.errors) line << " | " << format_number("%+.2e", e);
+  line << " | " << format_number("%.2e", w) << " | "
+       << (m.alpha > 0 ? format_number("%.3f", m.alpha * w) : std::string()) << " | "
+       << format_number("%.3g", r.setup_seconds) << " |\n";
+  out.sections << line.str();
+  std::cout << "N = " << n << " " << line.str() << std::flush;
+}
+
+// Every hard body with every FRF method on N x N grids for N in `sizes`.
+void run_hard_cases(const std::vector<std::ptrdiff_t>& sizes, HardResults& out) {
+  const std::vector<HardBody> hard = bodies();
   for (const std::ptrdiff_t n : sizes) {
     const Grid grid(n, n, length * a, length * a);
-    const std::vector<MethodChoice> chosen = methods(n, {2.0, 4.0, 16.0}, &skipped);
-    sections << "\n## N = " << n << " (dx = a/" << format_number("%g", n / length) << ")\n\n";
-    sections << "Probe cells (centres nearest (r, 0)) at r/a =";
+    const std::vector<MethodChoice> chosen = methods(n, {2.0, 4.0, 16.0}, &out.skipped);
+    out.sections << "\n## N = " << n << " (dx = a/" << format_number("%g", n / length) << ")\n\n";
+    out.sections << "Probe cells (centres nearest (r, 0)) at r/a =";
     for (const double r : radii)
-      sections << " " << format_number("%.5f", nearest_cell(grid, r * a, 0.0).r / a);
-    sections << ".\n\n";
-    sections << "| body | method | finite | r~0 | r~0.5a | r~2a | max | alpha x max | setup [s] |\n"
-                "|---|---|---|---|---|---|---|---|---|\n";
+      out.sections << " " << format_number("%.5f", nearest_cell(grid, r * a, 0.0).r / a);
+    out.sections << ".\n\n";
+    out.sections
+        << "| body | method | finite | r~0 | r~0.5a | r~2a | max | alpha x max | setup [s] |\n"
+           "|---|---|---|---|---|---|---|---|---|\n";
     for (const HardBody& body : hard) {
       const HertzProblem pb = hertz_problem(grid, body.frf);
-      for (const MethodChoice& m : chosen) {
-        const std::string name = label(m);
-        MethodResult r;
-        try {
-          r = run_method(grid, body.frf, pb, m);
-        } catch (const std::exception& e) {
-          all_finite = false;
-          sections << "| " << body.label << " | " << name << " | **failed: " << e.what()
-                   << "** |\n";
-          std::cout << body.label << " " << name << " failed: " << e.what() << "\n";
-          continue;
-        }
-        all_finite = all_finite && r.finite;
-        const double w = r.max_abs_error();
-        if (std::find(method_order.begin(), method_order.end(), name) == method_order.end())
-          method_order.push_back(name);
-        worst[name][n] = std::max(worst[name][n], w);
-        std::ostringstream line;
-        line << "| " << body.label << " | " << name << " | " << (r.finite ? "yes" : "**no**");
-        for (const double e : r.errors) line << " | " << format_number("%+.2e", e);
-        line << " | " << format_number("%.2e", w) << " | "
-             << (m.alpha > 0 ? format_number("%.3f", m.alpha * w) : std::string()) << " | "
-             << format_number("%.3g", r.setup_seconds) << " |\n";
-        sections << line.str();
-        std::cout << "N = " << n << " " << line.str() << std::flush;
-      }
+      for (const MethodChoice& m : chosen) add_row(out, grid, body, pb, m);
     }
   }
+}
+
+int write_table(const std::string& out_path) {
+  const std::vector<std::ptrdiff_t> sizes = {64, 1024};
+  const auto start = std::chrono::steady_clock::now();
+  HardResults results;
+  run_hard_cases(sizes, results);
+  auto& [sections, worst, method_order, skipped, all_finite] = results;
   const double total = detail::seconds_since(start);
 
   std::ostringstream md;
