@@ -7,6 +7,7 @@
 #include "convolution/fft/planning.hpp"
 #include "convolution/kernels/g0.hpp"
 #include "convolution/method.hpp"
+#include "convolution/operators/make_operator.hpp"
 #include "core/detail/parse_name.hpp"
 #include "core/error.hpp"
 #include "core/threads.hpp"
@@ -47,7 +48,30 @@ void refuse_keys_not_applying(const MethodRequest& r, const KeyNames& keys, bool
                     ": FFTW settings do not apply to ", quoted, ", which uses no FFT");
 }
 
+// A periodic boundary takes the exact periodic operator (convolution/operators/make_operator.hpp,
+// docs/theory.md 4.8), which convolves the periodic coefficients as dcfft and frf-split do.
+void check_periodic_request(const MethodRequest& r, const KeyNames& keys, MethodSpec& spec) {
+  spec.options.boundary = Boundary::periodic;
+  if (spec.automatic) {
+    COATFFT_REQUIRE(!r.tolerance, keys.where("tolerance"),
+                    ": applies only to free boundaries: on a periodic one ", keys.name,
+                    " = \"auto\" takes the body's exact method (dcfft or frf-split)");
+    spec.automatic = false;
+    spec.auto_periodic = true;
+    return;
+  }
+  const Method method = spec.options.method;
+  COATFFT_REQUIRE(method == Method::dcfft || method == Method::frf_split, keys.where("name"),
+                  " = \"", to_string(method),
+                  "\" computes free (non-periodic) surfaces: on a periodic boundary use "
+                  "\"frf-split\" (any body), \"dcfft\" (homogeneous) or \"auto\"");
+}
+
 }  // namespace
+
+void resolve_periodic_method(MethodSpec& spec, const LayerStack* body) {
+  if (spec.auto_periodic) spec.options.method = body ? exact_method(*body) : Method::frf_split;
+}
 
 MethodSpec method_from_request(const MethodRequest& r, const KeyNames& keys) {
   MethodSpec spec;
@@ -83,6 +107,7 @@ MethodSpec method_from_request(const MethodRequest& r, const KeyNames& keys) {
   COATFFT_REQUIRE(threads >= 1 && threads <= max_threads, keys.where("threads"), " = ", threads,
                   " must be in 1..", max_threads);
   o.threads = static_cast<int>(threads);
+  if (r.periodic) check_periodic_request(r, keys, spec);
   return spec;
 }
 

@@ -23,6 +23,9 @@ struct MethodRequest {
   std::optional<std::string> planning;  ///< every method but direct
   std::optional<std::int64_t> threads;  ///< any method; for auto, the most the choice may use
   bool wisdom = false;                  ///< a wisdom file is named: every method but direct
+  /// The boundary is periodic (a scene's [grid] boundary, Python's `boundary`): only the exact
+  /// periodic operator applies (dcfft, frf-split, or "auto", which takes the body's).
+  bool periodic = false;
 };
 
 /// How a front end names a key in its messages.
@@ -38,7 +41,15 @@ struct KeyNames {
 /// method, g(0) or planning name; a key that does not apply to the method ("alpha" for dcfft,
 /// "tolerance" for a named method, "planning" for direct, ...); a tolerance outside [1e-12, 0.1], a
 /// g(0) tolerance outside (0, 1), threads outside 1..max_threads. g0 = "omitted" is accepted here:
-/// a scene refuses it on its own ground (its displacements would lose their level).
+/// a scene refuses it on its own ground (its displacements would lose their level). On a periodic
+/// boundary also a named method other than dcfft and frf-split, and "tolerance" with "auto"
+/// (the automatic choice's error model is of free surfaces; "auto" takes the body's exact method,
+/// set by resolve_periodic_method once the body is known).
 MethodSpec method_from_request(const MethodRequest& request, const KeyNames& keys);
+
+/// A periodic "auto" (MethodSpec::auto_periodic) resolved to the exact method of `body`
+/// (exact_method: dcfft for a homogeneous body, frf-split otherwise), or frf-split for a body
+/// given by its FRF alone (null `body`). Other specs are left as they are.
+void resolve_periodic_method(MethodSpec& spec, const LayerStack* body);
 
 }  // namespace coatfft::scene

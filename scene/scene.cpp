@@ -471,9 +471,11 @@ ContactSpec read_contact(const toml::table& table, const Grid& grid, const Layer
 }
 
 // [method]: its keys into a MethodRequest, checked by method_from_request as Python's keywords are.
-MethodSpec read_method(const toml::table& root, const std::filesystem::path& scene_dir) {
+MethodSpec read_method(const toml::table& root, const std::filesystem::path& scene_dir,
+                       bool periodic) {
   SectionReader reader(section(root, "method", false), "method");
   MethodRequest request;
+  request.periodic = periodic;
   request.name = reader.string("name", "auto");
   const auto number = [&](const char* key) -> std::optional<double> {
     return reader.has(key) ? std::optional(reader.number(key)) : std::nullopt;
@@ -665,23 +667,10 @@ void check_tangential(const Scene& scene, const char* key) {
 }
 
 // [grid] boundary = "periodic": the periodic operator of convolution/kernels/periodic_kernel.hpp,
-// built from the body's FRF (docs/theory.md 4.8). It replaces dcfft (homogeneous) and frf-split
-// (any body); "auto" takes the one of them the body allows. The other methods compute free
-// surfaces, and so do the stresses and the tangential tractions so far: refused.
-void check_periodic(Scene& scene) {
-  MethodSpec& m = scene.method;
-  m.options.boundary = Boundary::periodic;
-  if (m.automatic) {
-    m.automatic = false;
-    m.auto_periodic = true;
-    m.options.method = scene.frf ? Method::frf_split : exact_method(*scene.body);
-  }
-  const Method method = m.options.method;
-  COATFFT_REQUIRE(
-      method == Method::dcfft || method == Method::frf_split, "[method] name = \"",
-      to_string(method),
-      "\" computes free (non-periodic) surfaces: with [grid] boundary "
-      "= \"periodic\" use \"frf-split\" (any body), \"dcfft\" (homogeneous) or \"auto\"");
+// built from the body's FRF (docs/theory.md 4.8); its method is checked with the other [method]
+// keys (method_from_request). The stresses and the tangential tractions compute free bodies only
+// so far: refused.
+void check_periodic(const Scene& scene) {
   COATFFT_REQUIRE(!scene.stress,
                   "[stress] computes free (non-periodic) bodies only so far: "
                   "remove it or use [grid] boundary = \"free\"");
@@ -701,7 +690,8 @@ void read_frf(const toml::table& root, const std::filesystem::path& scene_dir, S
   if (reader.has("c_inf")) c_inf = positive(reader, "c_inf");
   reader.finish();
   const Method method = scene.method.options.method;
-  COATFFT_REQUIRE(scene.method.automatic || !uses_love_coefficients(method), "[method] name = \"",
+  const bool chosen = scene.method.automatic || scene.method.auto_periodic;
+  COATFFT_REQUIRE(chosen || !uses_love_coefficients(method), "[method] name = \"",
                   to_string(method),
                   "\" uses Love's coefficients of a homogeneous material, which a table body "
                   "([frf]) does not give; use \"frf-split\", \"frf-dcfft\" or \"frf-spectral\"");
@@ -750,11 +740,12 @@ Scene read_scene(const std::filesystem::path& path) {
     Scene scene{grid.grid.value_or(Grid(1, 1, grid.lx, grid.ly)),
                 read_optional_body(root),
                 std::nullopt,
-                read_method(root, scene_dir),
+                read_method(root, scene_dir, grid.periodic),
                 std::nullopt,
                 {},
                 {}};
     if (root.contains("frf")) read_frf(root, scene_dir, scene);
+    resolve_periodic_method(scene.method, scene.body && !scene.frf ? &*scene.body : nullptr);
     if (grid.tolerance_total) scene.grid = refine_grid(root, grid, scene);
     in_section("method", [&] { check_operator_options(scene.grid, scene.method.options); });
     // Direct summation costs (nx ny)^2 operations per application: hours beyond this size.

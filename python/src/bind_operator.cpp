@@ -63,11 +63,17 @@ struct MethodKeywords {
 // goes through (scene/method_request.hpp). load_radius and applications, the cost model's inputs
 // that a scene derives from its load, are Python's own keywords of method = "auto".
 scene::MethodSpec method_spec(const MethodKeywords& k) {
+  const bool periodic = k.boundary == "periodic";
   for (const auto& [given, name] : {std::pair{k.load_radius.has_value(), "load_radius"},
-                                    std::pair{k.applications.has_value(), "applications"}})
+                                    std::pair{k.applications.has_value(), "applications"}}) {
     COATFFT_REQUIRE(k.method == "auto" || !given, "make_operator: ", name,
                     ": applies only to method = \"auto\", not to method = \"", k.method, "\"");
+    COATFFT_REQUIRE(!periodic || !given, "make_operator: ", name,
+                    ": applies only to free boundaries: on a periodic one method = \"auto\" "
+                    "takes the body's exact method (dcfft or frf-split)");
+  }
   scene::MethodRequest r;
+  r.periodic = periodic;
   r.name = k.method;
   r.tolerance = k.tolerance;
   r.alpha = k.alpha;
@@ -149,32 +155,14 @@ void require_operator_memory(const Grid& grid, const OperatorOptions& options) {
                                                         : "use fewer cells");
 }
 
-// boundary = "periodic" (docs/python.md): the exact periodic operator, for "dcfft" or "frf-split";
-// "auto" takes the one the body allows, as a scene's [grid] boundary = "periodic" does. The
-// automatic choice's tolerance model is that of free surfaces: its keywords are refused.
+// boundary = "periodic" (docs/python.md): the exact periodic operator, "dcfft" or "frf-split";
+// "auto" takes the one the body allows. The keywords go through the check a scene's [method]
+// on [grid] boundary = "periodic" goes through (scene::method_from_request).
 OperatorOptions periodic_options(const Grid& grid, const Body& body, const MethodKeywords& k) {
-  if (k.method != "auto") {
-    OperatorOptions o = named_options(grid, k);
-    o.boundary = Boundary::periodic;
-    check_operator_options(grid, o);
-    return o;
-  }
-  for (const auto& [given, name] :
-       {std::pair{k.tolerance.has_value(), "tolerance"},
-        std::pair{k.load_radius.has_value(), "load_radius"},
-        std::pair{k.applications.has_value(), "applications"},
-        std::pair{k.alpha.has_value(), "alpha"}, std::pair{k.g0.has_value(), "g0"},
-        std::pair{k.g0_tol.has_value(), "g0_tol"}})
-    COATFFT_REQUIRE(!given, "make_operator: ", name,
-                    ": applies only to free boundaries (boundary = \"free\"), not to method = "
-                    "\"auto\" on a periodic one");
-  const scene::MethodSpec spec = method_spec(k);
-  OperatorOptions o;
-  o.boundary = Boundary::periodic;
-  o.method = body.stack ? exact_method(*body.stack) : Method::frf_split;
-  o.planning = spec.options.planning;
-  o.threads = k.threads ? spec.options.threads : 1;
-  return o;
+  scene::MethodSpec spec = method_spec(k);
+  scene::resolve_periodic_method(spec, body.stack ? &*body.stack : nullptr);
+  check_operator_options(grid, spec.options);
+  return spec.options;
 }
 
 std::unique_ptr<Operator> make_operator_py(const Grid& grid, py::handle body_object,

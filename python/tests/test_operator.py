@@ -399,3 +399,9 @@ def test_periodic_boundary_refusals(steel):
         coatfft.make_operator(grid, steel, boundary="closed")
     with pytest.raises(ValueError, match="tolerance: applies only to free boundaries"):
         coatfft.make_operator(grid, steel, boundary="periodic", tolerance=1e-3)
+    for keyword in ("load_radius", "applications"):
+        with pytest.raises(ValueError, match=f"{keyword}: applies only to free boundaries"):
+            coatfft.make_operator(grid, steel, boundary="periodic", **{keyword: 1e-4})
+    # A named method on a periodic boundary takes the keys it takes on a free one.
+    with pytest.raises(ValueError, match='alpha: applies only to the FRF pipelines'):
+        coatfft.make_operator(grid, steel, method="dcfft", boundary="periodic", alpha=2.0)
