@@ -44,9 +44,10 @@ std::vector<std::string> output_names(const scene::OutputSpec& spec) {
   names.push_back("summary.json");
   if (spec.gap) names.push_back("gap.npy");
   if (spec.in_plane) names.insert(names.end(), {"ux.npy", "uy.npy"});
-  if (spec.stress) names.insert(names.end(), {"stress.npy", "von_mises.npy"});
-  if (spec.stress_section)
-    names.insert(names.end(), {"stress_section.npy", "von_mises_section.npy"});
+  if (spec.stress) names.push_back("stress.npy");
+  if (spec.von_mises) names.push_back("von_mises.npy");
+  if (spec.stress_section) names.push_back("stress_section.npy");
+  if (spec.von_mises_section) names.push_back("von_mises_section.npy");
   return names;
 }
 
@@ -61,20 +62,20 @@ std::string joined(const std::vector<std::string>& names) {
 void write_stress_outputs(StagedOutput& out, const scene::OutputSpec& spec, const Grid& grid,
                           const scene::StressRun& s) {
   const auto nx = static_cast<std::size_t>(grid.nx()), ny = static_cast<std::size_t>(grid.ny());
-  if (spec.stress) {
-    const std::size_t n = s.von_mises.size() / (nx * ny);
+  const std::size_t n = s.von_mises.size() / (nx * ny);
+  if (spec.stress)
     scene::write_npy_array(out.path("stress.npy"), std::vector<std::size_t>{n, 6, ny, nx},
                            s.stress);
+  if (spec.von_mises)
     scene::write_npy_array(out.path("von_mises.npy"), std::vector<std::size_t>{n, ny, nx},
                            s.von_mises);
-  }
-  if (spec.stress_section) {
-    const std::size_t nz = s.section_von_mises.size() / nx;
+  const std::size_t nz = s.section_von_mises.size() / nx;
+  if (spec.stress_section)
     scene::write_npy_array(out.path("stress_section.npy"), std::vector<std::size_t>{nz, 6, nx},
                            s.section);
+  if (spec.von_mises_section)
     scene::write_npy_array(out.path("von_mises_section.npy"), std::vector<std::size_t>{nz, nx},
                            s.section_von_mises);
-  }
 }
 
 // Writes the requested outputs only: the CSV text, the costliest of them (a 2048^2 grid makes

@@ -44,7 +44,7 @@ MemoryNeed estimate_memory(const Scene& scene) {
   if (scene.method.options.method == Method::frf_dcfft && !scene.periodic)
     need.drivers += detail::concat(", [method] alpha = ", scene.method.options.alpha);
   if (scene.stress && scene.body) {
-    const std::size_t planes = stress_plane_depths(*scene.stress, *scene.body).size();
+    const std::size_t planes = stress_planes(*scene.stress, *scene.body).depths.size();
     const bool tangential = scene.shear || (scene.contact && scene.contact->friction > 0.0);
     need.bytes += estimated_stress_bytes(grid, planes, scene.stress->alpha, tangential);
     need.drivers +=

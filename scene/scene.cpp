@@ -511,12 +511,16 @@ struct OutputField {
   std::string_view name;
   bool OutputSpec::*flag;
 };
-constexpr std::array<OutputField, 5> output_fields{
+constexpr std::array<OutputField, 9> output_fields{
     {{"uz", &OutputSpec::uz},
      {"pressure", &OutputSpec::pressure},
      {"gap", &OutputSpec::gap},
      {"displacement_csv", &OutputSpec::displacement_csv},
-     {"summary", nullptr}}};
+     {"summary", nullptr},
+     {"stress", &OutputSpec::stress},
+     {"von_mises", &OutputSpec::von_mises},
+     {"stress_section", &OutputSpec::stress_section},
+     {"von_mises_section", &OutputSpec::von_mises_section}}};
 
 // Sets the flag of one name of [output] fields, refusing an unknown name and "gap" for a scene
 // that has none.
@@ -545,7 +549,9 @@ OutputSpec read_output(const toml::table& root, bool contact) {
     COATFFT_REQUIRE(!names.empty(), reader.where("fields"),
                     " = []: name at least one output (summary.json is always written: "
                     "fields = [\"summary\"] writes only it)");
-    spec = OutputSpec{false, false, false, false, false, false, false};
+    spec = OutputSpec{};
+    spec.uz = spec.pressure = spec.displacement_csv = false;
+    spec.listed = true;
     std::set<std::string> seen;
     for (const std::string& name : names) {
       select_output(spec, name, reader, contact);  // a known name from here on
@@ -555,6 +561,25 @@ OutputSpec read_output(const toml::table& root, bool contact) {
   }
   reader.finish();
   return spec;
+}
+
+// The stress files: by default every one [stress] computes; an [output] fields list names those
+// it wants, each of something [stress] computes (`spec` is empty without [stress]).
+void check_stress_outputs(OutputSpec& output, const StressSpec& spec) {
+  const bool planes = !spec.depths.empty();
+  if (!output.listed) {
+    output.stress = output.von_mises = planes;
+    output.stress_section = output.von_mises_section = spec.section;
+    return;
+  }
+  for (const auto& [wanted, name] :
+       {std::pair{output.stress, "stress"}, {output.von_mises, "von_mises"}})
+    COATFFT_REQUIRE(!wanted || planes, "[output] fields: \"", name,
+                    "\" needs planes: give [stress] depths");
+  for (const auto& [wanted, name] : {std::pair{output.stress_section, "stress_section"},
+                                     {output.von_mises_section, "von_mises_section"}})
+    COATFFT_REQUIRE(!wanted || spec.section, "[output] fields: \"", name,
+                    "\" needs the section: give [stress] section = \"xz\"");
 }
 
 // [stress]: planes at depth and the section y = 0. The stress kernels need the layers themselves
@@ -595,7 +620,7 @@ StressSpec read_stress(const toml::table& root, const Scene& scene) {
   spec.alpha = static_cast<int>(alpha);
   {
     // The kernels' cost, estimated before any work (stress/stress_kernel.hpp).
-    const std::vector<double> planes = stress_plane_depths(spec, *scene.body);
+    const std::vector<double> planes = stress_planes(spec, *scene.body).depths;
     StressKernelOptions kernel;
     kernel.alpha = spec.alpha;
     if (!planes.empty()) {
@@ -609,9 +634,11 @@ StressSpec read_stress(const toml::table& root, const Scene& scene) {
   }
   COATFFT_REQUIRE(!spec.depths.empty() || spec.section,
                   "[stress] give depths = [...] or section = \"xz\" (or both)");
-  COATFFT_REQUIRE(spec.depths.size() + std::size_t(spec.nz) <= StressOperator::max_planes,
-                  "[stress] asks for ", spec.depths.size() + std::size_t(spec.nz),
-                  " planes; at most ", StressOperator::max_planes);
+  const std::size_t interface_planes = 2 * scene.body->interface_depths().size();
+  COATFFT_REQUIRE(
+      spec.depths.size() + std::size_t(spec.nz) + interface_planes <= StressOperator::max_planes,
+      "[stress] asks for ", spec.depths.size() + std::size_t(spec.nz), " planes (and ",
+      interface_planes, " on the interfaces' two sides); at most ", StressOperator::max_planes);
   reader.finish();
   return spec;
 }
@@ -765,11 +792,8 @@ Scene read_scene(const std::filesystem::path& path) {
                             scene.frf ? nullptr : &*scene.body, scene_dir);
       });
     scene.output = read_output(root, scene.contact.has_value());
-    if (root.contains("stress")) {
-      scene.stress = read_stress(root, scene);
-      scene.output.stress = !scene.stress->depths.empty();
-      scene.output.stress_section = scene.stress->section;
-    }
+    if (root.contains("stress")) scene.stress = read_stress(root, scene);
+    check_stress_outputs(scene.output, scene.stress.value_or(StressSpec{}));
     if (root.contains("shear")) {
       COATFFT_REQUIRE(scene.pressure.has_value(),
                       "[shear] goes with a known [pressure]; a "
@@ -807,13 +831,17 @@ LayerStack read_scene_body(const std::filesystem::path& path) {
   return with_file_name(path, [&] { return read_body(parse_scene_text(text, path)); });
 }
 
-std::vector<double> stress_plane_depths(const StressSpec& spec, const LayerStack& body) {
-  std::vector<double> depths = spec.depths;
-  for (int k = 1; k <= spec.nz; ++k) depths.push_back(spec.depth_max * k / spec.nz);
+StressPlanes stress_planes(const StressSpec& spec, const LayerStack& body) {
+  StressPlanes planes{spec.depths, {}};
+  for (int k = 1; k <= spec.nz; ++k) planes.depths.push_back(spec.depth_max * k / spec.nz);
+  planes.sides.assign(planes.depths.size(), spec.side);
   // The interfaces' own depths, which LayerStack::locate places on them exactly.
-  const std::vector<double>& interfaces = body.interface_depths();
-  depths.insert(depths.end(), interfaces.begin(), interfaces.end());
-  return depths;
+  for (const double z : body.interface_depths())
+    for (const InterfaceSide side : {InterfaceSide::above, InterfaceSide::below}) {
+      planes.depths.push_back(z);
+      planes.sides.push_back(side);
+    }
+  return planes;
 }
 
 std::shared_ptr<const Frf> body_frf(const Scene& scene) {

@@ -92,13 +92,17 @@ struct OutputSpec {
   bool pressure = true;          ///< pressure.npy
   bool gap = false;              ///< gap.npy: a [contact] scene only (its default there is true)
   bool displacement_csv = true;  ///< displacement.csv
-  /// stress.npy and von_mises.npy: set by [stress] depths (not an [output] field name)
+  /// stress.npy, von_mises.npy: by default those of [stress] depths
   bool stress = false;
-  /// stress_section.npy and von_mises_section.npy: set by [stress] section
+  bool von_mises = false;
+  /// stress_section.npy, von_mises_section.npy: by default those of [stress] section
   bool stress_section = false;
+  bool von_mises_section = false;
   /// ux.npy and uy.npy: set by [stress], [shear] or [contact] friction on a bonded body (not an
   /// [frf] table) whose traction kernels are affordable (convolution/kernels/traction_kernels.hpp)
   bool in_plane = false;
+  /// [output] fields was given: only the files it names are written.
+  bool listed = false;
 };
 
 /// [shear]: known tangential tractions that the surface receives, with a [pressure]: q = friction
@@ -156,9 +160,16 @@ struct Scene {
   bool periodic = false;
 };
 
-/// The depths of every plane a [stress] scene computes: the depths, then the section's rows,
-/// then each interface of the body (for its largest shear stress).
-std::vector<double> stress_plane_depths(const StressSpec& spec, const LayerStack& body);
+/// Every plane a [stress] scene computes, with the medium of each on an interface.
+struct StressPlanes {
+  std::vector<double> depths;
+  std::vector<InterfaceSide> sides;
+};
+
+/// The planes of `spec` in `body`: the depths, then the section's rows (both in the medium
+/// spec.side names where on an interface), then each interface of the body seen from above and
+/// from below (its largest shear stress, and the maxima of the media on both of its sides).
+StressPlanes stress_planes(const StressSpec& spec, const LayerStack& body);
 
 /// The FRF of the scene's body: the [frf] table, or make_frf of [substrate] and [[coating]].
 std::shared_ptr<const Frf> body_frf(const Scene& scene);

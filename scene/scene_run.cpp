@@ -369,7 +369,7 @@ SceneRun compute_scene(PreparedScene prepared, const SceneRunOptions& options) {
           : compute_pressure(prepared.scene, prepared.automatic, options.repeat, progress);
   const Tractions q = scene_tractions(scene_copy, run.pressure);
   if (stress) {
-    progress.stage("stresses on " + std::to_string(stress_plane_depths(*stress, *body).size()) +
+    progress.stage("stresses on " + std::to_string(stress_planes(*stress, *body).depths.size()) +
                    " planes");
     run.stress = compute_stress(*stress, *body, run.grid, run.pressure, q, threads);
     run.summary["stress"] = run.stress->summary;

@@ -52,63 +52,115 @@ void check_finite(const PlaneStress& s, double z) {
                     " m are not finite (an overflowing load?)");
 }
 
+// The largest von Mises, principal tensile and Tresca stresses of a set of points.
+struct Peaks {
+  Peak mises, tensile, tresca;
+  void take(const StressVector& s, double x, double y, double z) {
+    mises.take(von_mises(s), x, y, z);
+    tensile.take(principal_stresses(s)[0], x, y, z);
+    tresca.take(coatfft::tresca(s), x, y, z);
+  }
+  void take(const PlaneStress& plane, const Grid& grid, double z) {
+    for (std::ptrdiff_t j = 0; j < grid.ny(); ++j)
+      for (std::ptrdiff_t i = 0; i < grid.nx(); ++i) take(at(plane, i, j), grid.x(i), grid.y(j), z);
+  }
+};
+
+// "coating 1" (top) ... "substrate": a medium as the scene's sections name it.
+std::string medium_name(const LayerStack& body, std::size_t layer) {
+  return layer < body.coatings().size() ? detail::concat("coating ", layer + 1) : "substrate";
+}
+
+// summary.json's stress.layers: per medium, top first, the maxima over every plane in it (an
+// interface's planes count on both of its sides).
+nlohmann::json layer_maxima(const LayerStack& body, const Grid& grid, const StressPlanes& planes,
+                            const std::vector<PlaneStress>& stress) {
+  std::vector<Peaks> per_layer(body.coatings().size() + 1);
+  std::vector<bool> seen(per_layer.size(), false);
+  for (std::size_t p = 0; p < stress.size(); ++p) {
+    const std::size_t layer = body.locate(planes.depths[p], planes.sides[p]).layer;
+    per_layer[layer].take(stress[p], grid, planes.depths[p]);
+    seen[layer] = true;
+  }
+  nlohmann::json layers = nlohmann::json::array();
+  for (std::size_t l = 0; l < per_layer.size(); ++l) {
+    if (!seen[l]) continue;  // a medium no plane reaches (never: each meets an interface plane)
+    layers.push_back({{"medium", medium_name(body, l)},
+                      {"max_von_mises", per_layer[l].mises.json()},
+                      {"max_principal_tensile", per_layer[l].tensile.json()},
+                      {"max_tresca", per_layer[l].tresca.json()}});
+  }
+  return layers;
+}
+
+// summary.json's stress.interfaces: the largest shear stress on each interface (continuous
+// across it: taken on the side spec.side names).
+nlohmann::json interface_shear(const StressSpec& spec, const Grid& grid, const StressPlanes& planes,
+                               const std::vector<PlaneStress>& stress) {
+  nlohmann::json interfaces = nlohmann::json::array();
+  const std::size_t first = spec.depths.size() + std::size_t(spec.nz);
+  for (std::size_t p = first; p < stress.size(); ++p) {
+    if (planes.sides[p] != spec.side) continue;
+    Peak shear;
+    const PlaneStress& s = stress[p];
+    for (std::ptrdiff_t j = 0; j < grid.ny(); ++j)
+      for (std::ptrdiff_t i = 0; i < grid.nx(); ++i)
+        shear.take(std::hypot(s[s_xz](i, j), s[s_yz](i, j)), grid.x(i), grid.y(j),
+                   planes.depths[p]);
+    interfaces.push_back({{"depth", planes.depths[p]}, {"max_shear", shear.json(false)}});
+  }
+  return interfaces;
+}
+
+nlohmann::json alias_warnings(const StressOperator& op) {
+  nlohmann::json warnings = nlohmann::json::array();
+  for (std::size_t p = 0; p < op.depths().size(); ++p)
+    if (op.kernel_reports()[p].alias_capped)
+      warnings.push_back(detail::concat("the alias series of the plane at z = ", op.depths()[p],
+                                        " m was cut at order ", op.kernel_reports()[p].alias_order,
+                                        ": its stresses near the loads' edges are approximate"));
+  return warnings;
+}
+
 }  // namespace
 
 StressRun compute_stress(const StressSpec& spec, const LayerStack& body, const Grid& grid,
                          const Field& pressure, const Tractions& q, int threads) {
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<double> depths = stress_plane_depths(spec, body);
+  const StressPlanes planes = stress_planes(spec, body);
   StressOperatorOptions options;
   options.kernel.alpha = spec.alpha;
   options.kernel.threads = threads;
-  options.side = spec.side;
+  options.sides = planes.sides;
   options.tangential = q.qx || q.qy;
-  const std::unique_ptr<StressOperator> op = make_stress_operator(grid, body, depths, options);
+  const std::unique_ptr<StressOperator> op =
+      make_stress_operator(grid, body, planes.depths, options);
   const auto apply_start = std::chrono::steady_clock::now();
-  std::vector<PlaneStress> planes;
-  op->apply(pressure, q.qx ? &*q.qx : nullptr, q.qy ? &*q.qy : nullptr, planes);
+  std::vector<PlaneStress> stress;
+  op->apply(pressure, q.qx ? &*q.qx : nullptr, q.qy ? &*q.qy : nullptr, stress);
   const double apply_seconds = detail::seconds_since(apply_start);
+  for (std::size_t p = 0; p < stress.size(); ++p) check_finite(stress[p], planes.depths[p]);
 
   StressRun run;
-  Peak mises, tensile;
+  Peaks peaks;  // over the planes asked for, as before the media had their own
   const std::size_t n_requested = spec.depths.size() + std::size_t(spec.nz);
   for (std::size_t p = 0; p < n_requested; ++p) {
-    check_finite(planes[p], depths[p]);
-    for (std::ptrdiff_t j = 0; j < grid.ny(); ++j)
-      for (std::ptrdiff_t i = 0; i < grid.nx(); ++i) {
-        const StressVector s = at(planes[p], i, j);
-        mises.take(von_mises(s), grid.x(i), grid.y(j), depths[p]);
-        tensile.take(principal_stresses(s)[0], grid.x(i), grid.y(j), depths[p]);
-      }
+    peaks.take(stress[p], grid, planes.depths[p]);
     if (p < spec.depths.size())
-      append_plane(planes[p], run.stress, run.von_mises);
+      append_plane(stress[p], run.stress, run.von_mises);
     else
-      append_row(planes[p], grid.centre_j(), run.section, run.section_von_mises);
+      append_row(stress[p], grid.centre_j(), run.section, run.section_von_mises);
   }
-  nlohmann::json interfaces = nlohmann::json::array();
-  for (std::size_t p = n_requested; p < depths.size(); ++p) {
-    check_finite(planes[p], depths[p]);
-    Peak shear;
-    const PlaneStress& s = planes[p];
-    for (std::ptrdiff_t j = 0; j < grid.ny(); ++j)
-      for (std::ptrdiff_t i = 0; i < grid.nx(); ++i)
-        shear.take(std::hypot(s[s_xz](i, j), s[s_yz](i, j)), grid.x(i), grid.y(j), depths[p]);
-    interfaces.push_back({{"depth", depths[p]}, {"max_shear", shear.json(false)}});
-  }
-  nlohmann::json warnings = nlohmann::json::array();
-  for (std::size_t p = 0; p < depths.size(); ++p)
-    if (op->kernel_reports()[p].alias_capped)
-      warnings.push_back(detail::concat("the alias series of the plane at z = ", depths[p],
-                                        " m was cut at order ", op->kernel_reports()[p].alias_order,
-                                        ": its stresses near the loads' edges are approximate"));
-  run.summary = {{"warnings", warnings},
+  run.summary = {{"warnings", alias_warnings(*op)},
                  {"depths", spec.depths},
                  {"at_interface", spec.side == InterfaceSide::below ? "below" : "above"},
                  {"alpha", spec.alpha},
-                 {"max_von_mises", mises.json()},
-                 {"max_principal_tensile", tensile.json()},
-                 {"interfaces", interfaces},
-                 {"planes", depths.size()},
+                 {"max_von_mises", peaks.mises.json()},
+                 {"max_principal_tensile", peaks.tensile.json()},
+                 {"max_tresca", peaks.tresca.json()},
+                 {"layers", layer_maxima(body, grid, planes, stress)},
+                 {"interfaces", interface_shear(spec, grid, planes, stress)},
+                 {"planes", planes.depths.size()},
                  {"tangential", options.tangential},
                  {"setup_seconds", op->setup_seconds()},
                  {"apply_seconds", apply_seconds},

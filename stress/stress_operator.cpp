@@ -65,17 +65,26 @@ StressOperator::StressOperator(const Grid& grid, const LayerStack& stack,
       convolution_(grid, options.tangential ? 3 : 1, options.planning) {
   const auto start = std::chrono::steady_clock::now();
   require_stress_depths(depths_);
+  COATFFT_REQUIRE(options.sides.empty() || options.sides.size() == depths_.size(),
+                  "stress operator: ", options.sides.size(), " sides given for ", depths_.size(),
+                  " depths");
   if (tangential_) refuse_sliding_tangential(stack);
-  // The planes' kernels are made in groups: one FRF solve per wavevector serves a group, and
-  // a group's lattice quarters (six per plane) bound the memory.
+  const auto side = [&](std::size_t p) {
+    return options.sides.empty() ? options.side : options.sides[p];
+  };
+  // The planes' kernels are made in groups of consecutive planes on the same side: one FRF
+  // solve per wavevector serves a group, and a group's lattice quarters (six per plane) bound
+  // the memory.
   constexpr std::size_t kGroup = 8;
   const int nb_loads = convolution_.nb_loads();
-  for (std::size_t first = 0; first < depths_.size(); first += kGroup) {
-    const std::size_t count = std::min(kGroup, depths_.size() - first);
+  for (std::size_t first = 0, count = 0; first < depths_.size(); first += count) {
+    count = 1;
+    while (count < kGroup && first + count < depths_.size() && side(first + count) == side(first))
+      ++count;
     std::vector<StressKernelReport> reports;
     std::vector<StressPlaneKernel> kernels =
         stress_plane_kernels(grid, stack, std::span<const double>(depths_).subspan(first, count),
-                             options.side, tangential_, options.kernel, &reports);
+                             side(first), tangential_, options.kernel, &reports);
     for (StressPlaneKernel& kernel : kernels)
       for (int c = 0; c < 6; ++c) {
         std::vector<ParityKernel> per_load;

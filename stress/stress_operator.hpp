@@ -28,6 +28,9 @@ struct StressOperatorOptions {
   StressKernelOptions kernel;  ///< how each plane's coefficients are made
   /// Medium of a depth on an interface (within LayerStack::locate's tolerance of its depth).
   InterfaceSide side = InterfaceSide::below;
+  /// The medium of each depth in turn, where planes differ (an interface seen from both sides):
+  /// empty, or one per depth, replacing `side`.
+  std::vector<InterfaceSide> sides = {};
   /// Whether the tractions q_x, q_y are loads too (their kernels cost twice the pressure's).
   bool tangential = false;
   Planning planning = Planning::estimate;

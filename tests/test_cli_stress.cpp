@@ -84,6 +84,11 @@ TEST_CASE("[stress] writes the stress files with their shapes and summary keys",
     for (const char* k : {"value", "x", "y", "z"}) CHECK(s[key].contains(k));
   CHECK(s["interfaces"].empty());  // a homogeneous body
   CHECK(s["planes"] == 6);
+  // One medium, which holds every plane: its maxima are the body's.
+  REQUIRE(s["layers"].size() == 1);
+  CHECK(s["layers"][0]["medium"] == "substrate");
+  for (const char* key : {"max_von_mises", "max_principal_tensile", "max_tresca"})
+    CHECK(s["layers"][0][key] == s[key]);
 
   // The section row at z = 2.5e-4 (k = 1 of 4) is the row j = 16 (y = 0) of the first plane.
   const std::vector<double> plane = npy_values(out / "stress.npy");
@@ -116,6 +121,32 @@ TEST_CASE("[stress] on a coated body reports the interface's largest shear", "[c
   for (int c = 0; c < n; ++c)
     shear = std::max(shear, std::hypot(plane[(6 + 4) * n + c], plane[(6 + 3) * n + c]));
   CHECK(s["interfaces"][0]["max_shear"]["value"].get<double>() == Approx(shear).epsilon(1e-12));
+  // The interface plane asked for lies below it, in the substrate, whose maximum is at least
+  // that plane's; the coating's maxima include the same interface seen from above.
+  REQUIRE(s["layers"].size() == 2);
+  CHECK(s["layers"][0]["medium"] == "coating 1");
+  CHECK(s["layers"][1]["medium"] == "substrate");
+  const std::vector<double> vm = npy_values(out / "von_mises.npy");
+  const double interface_vm = *std::max_element(vm.begin() + n, vm.begin() + 2 * n);
+  CHECK(s["layers"][1]["max_von_mises"]["value"].get<double>() >= interface_vm);
+  CHECK(s["planes"] == s["depths"].size() + 2);
+}
+
+TEST_CASE("[output] fields chooses the stress files", "[cli_stress]") {
+  const fs::path out =
+      run_scene_ok(kStress + "[output]\nfields = [\"summary\", \"von_mises\"]\n", "stress_fields");
+  CHECK(fs::exists(out / "von_mises.npy"));
+  CHECK(fs::exists(out / "summary.json"));
+  for (const char* absent : {"stress.npy", "stress_section.npy", "von_mises_section.npy", "uz.npy",
+                             "pressure.npy", "displacement.csv"})
+    CHECK_FALSE(fs::exists(out / absent));
+  // The summary holds the maxima whichever files are written.
+  CHECK(read_summary(out)["stress"]["layers"].size() == 1);
+  const std::string no_section = kStress + "[output]\nfields = [\"stress_section\"]\n";
+  check_refused(no_section, {"fields_section", "section = \"xz\"\ndepth_max = 1.0e-3\nnz = 4\n", "",
+                             "give [stress] section"});
+  check_refused(std::string(kGoodScene) + "[output]\nfields = [\"stress\"]\n",
+                {"fields_no_stress", "", "", "give [stress] depths"});
 }
 
 TEST_CASE("[stress] on a frictionless interface writes no ux.npy and says why", "[cli_stress]") {

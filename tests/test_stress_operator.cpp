@@ -219,6 +219,39 @@ TEST_CASE("stress operator: interface conditions and a coating of the substrate'
     for (int c = 0; c < 6; ++c) CHECK((same[d][c] - half[d][c]).abs().maxCoeff() < 1e-13);
 }
 
+TEST_CASE("stress operator: planes on different sides in one operator are those of one side each",
+          "[stress_operator]") {
+  // Bitwise: a plane's kernel does not depend on the planes it is grouped with. Ten planes make
+  // groups cut both by a change of side and by the group size (8).
+  const Grid g(12, 10, 3e-3, 2.5e-3);
+  const Field p = hertz_pressure(g, 1.0, 1e-3, Sampling::cell_average);
+  const double h = 2e-4;
+  const LayerStack bonded({{tin, h, Interface::bonded}}, steel);
+  std::vector<double> depths{h, h};
+  std::vector<InterfaceSide> sides{InterfaceSide::above, InterfaceSide::below};
+  for (int k = 1; k <= 8; ++k) {
+    depths.push_back(k * 1e-4);
+    sides.push_back(InterfaceSide::above);
+  }
+  StressOperatorOptions o;
+  o.kernel.alpha = 4;
+  o.sides = sides;
+  std::vector<PlaneStress> mixed;
+  make_stress_operator(g, bonded, depths, o)->apply(p, nullptr, nullptr, mixed);
+  for (std::size_t d = 0; d < depths.size(); ++d) {
+    StressOperatorOptions one;
+    one.kernel.alpha = 4;
+    one.side = sides[d];
+    std::vector<PlaneStress> single;
+    make_stress_operator(g, bonded, {depths[d]}, one)->apply(p, nullptr, nullptr, single);
+    for (int c = 0; c < 6; ++c) CHECK((mixed[d][c] - single[0][c]).abs().maxCoeff() == 0.0);
+  }
+  // The interface from above and from below: sigma_xx jumps with the moduli.
+  CHECK((mixed[0][s_xx] - mixed[1][s_xx]).abs().maxCoeff() > 1e-2);
+  o.sides.pop_back();
+  CHECK_THROWS_AS(make_stress_operator(g, bonded, depths, o), InvalidArgument);
+}
+
 TEST_CASE("stress operator: a typed depth equal to a running-sum interface is that interface",
           "[stress_operator][interface]") {
   // 10 um + 20 um = 3.0000000000000004e-5: the typed 30e-6 lies one ulp above the interface, in
