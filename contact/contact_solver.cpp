@@ -52,9 +52,10 @@ void append(std::string& text, const std::string& more) {
 // (initial_pressure.hpp): close to the solution, the contact set settles in a few iterations.
 class PolonskyKeerIteration {
  public:
+  // `start`, when not null, is the pressure to start from (a warm start: start_from).
   PolonskyKeerIteration(SurfaceOperator& op, detail::FourierPreconditioner* preconditioner,
                         const Field& h, ContactControl control, double value,
-                        bool update_by_linearity);
+                        bool update_by_linearity, const Field* start);
 
   // One iteration; the status once the iteration has ended, nothing while it goes on.
   std::optional<ContactStatus> iterate(double tolerance);
@@ -73,7 +74,8 @@ class PolonskyKeerIteration {
     double norm;               // sum of g^2 over the working set
   };
 
-  void start();
+  void start(const Field* warm);
+  void start_from(const Field& warm);
   void start_uniform();
   void start_hertzian();
   void scale_to_approach();
@@ -114,7 +116,7 @@ class PolonskyKeerIteration {
 PolonskyKeerIteration::PolonskyKeerIteration(SurfaceOperator& op,
                                              detail::FourierPreconditioner* preconditioner,
                                              const Field& h, ContactControl control, double value,
-                                             bool update_by_linearity)
+                                             bool update_by_linearity, const Field* start_pressure)
     : op_(op),
       preconditioner_(preconditioner),
       h_(h),
@@ -132,16 +134,31 @@ PolonskyKeerIteration::PolonskyKeerIteration(SurfaceOperator& op,
       p_old_(h.rows(), h.cols()),
       z_(h.rows(), h.cols()),
       update_by_linearity_(update_by_linearity) {
-  start();
+  start(start_pressure);
 }
 
 // The initial pressure.
-void PolonskyKeerIteration::start() {
-  if (update_by_linearity_) {
+void PolonskyKeerIteration::start(const Field* warm) {
+  if (warm && (warm->max(0.0).sum() > 0)) {
+    start_from(*warm);
+  } else if (update_by_linearity_) {
     start_hertzian();
   } else {
     start_uniform();
   }
+}
+
+// A warm start (a sweep, ContactSolver::solve_sweep): the pressure of a neighbouring solve,
+// scaled to this one's load or approach (one application). Its contact set is close to this
+// one's, which is what the iteration spends its recomputations on.
+void PolonskyKeerIteration::start_from(const Field& warm) {
+  p_ = warm.max(0.0);
+  if (!load_control_) {
+    scale_to_approach();
+    return;
+  }
+  p_ *= value_ / (p_.sum() * cell_area_);
+  recompute_displacement();
 }
 
 // Polonsky & Keer's start: under load control the load spread uniformly over the whole domain;
@@ -553,16 +570,23 @@ ContactSolver::ContactSolver(SurfaceOperator& op, ContactOptions options)
 
 ContactSolver::~ContactSolver() = default;
 
+void ContactSolver::check_value(ContactControl control, double value) const {
+  if (control == ContactControl::load)
+    COATFFT_REQUIRE(std::isfinite(value) && value > 0, "ContactSolver: load = ", value,
+                    " N, but the total load must be finite and > 0");
+  else
+    COATFFT_REQUIRE(std::isfinite(value), "ContactSolver: approach = ", value,
+                    " m, but it must be finite");
+}
+
 ContactResult ContactSolver::solve_load(const Field& height, double load) {
-  COATFFT_REQUIRE(std::isfinite(load) && load > 0, "ContactSolver: load = ", load,
-                  " N, but the total load must be finite and > 0");
-  return run(height, ContactControl::load, load);
+  check_value(ContactControl::load, load);
+  return run(height, ContactControl::load, load, nullptr);
 }
 
 ContactResult ContactSolver::solve_approach(const Field& height, double approach) {
-  COATFFT_REQUIRE(std::isfinite(approach), "ContactSolver: approach = ", approach,
-                  " m, but it must be finite");
-  return run(height, ContactControl::approach, approach);
+  check_value(ContactControl::approach, approach);
+  return run(height, ContactControl::approach, approach, nullptr);
 }
 
 ContactResult ContactSolver::solve(const Field& height, ContactControl control, double value) {
@@ -570,7 +594,30 @@ ContactResult ContactSolver::solve(const Field& height, ContactControl control, 
                                          : solve_approach(height, value);
 }
 
-ContactResult ContactSolver::run(const Field& h, ContactControl control, double value) {
+std::vector<ContactResult> ContactSolver::solve_sweep(const Field& height, ContactControl control,
+                                                      std::vector<double> values) {
+  COATFFT_REQUIRE(!values.empty(), "ContactSolver: a sweep needs at least one value");
+  for (const double value : values) check_value(control, value);  // all before any work
+  std::sort(values.begin(), values.end());
+  std::vector<ContactResult> results;
+  Field start;
+  for (const double value : values) {
+    const std::size_t k = results.size();
+    if (k >= 2) {
+      // The secant through the last two solutions: exact while the contact set holds (p is then
+      // linear in the load and in the approach).
+      const double t = (value - values[k - 1]) / (values[k - 1] - values[k - 2]);
+      start = results[k - 1].pressure + t * (results[k - 1].pressure - results[k - 2].pressure);
+    } else if (k == 1) {
+      start = results[0].pressure;
+    }
+    results.push_back(run(height, control, value, k == 0 ? nullptr : &start));
+  }
+  return results;
+}
+
+ContactResult ContactSolver::run(const Field& h, ContactControl control, double value,
+                                 const Field* start) {
   const Grid& grid = op_.grid();
   COATFFT_REQUIRE(h.rows() == grid.nx() && h.cols() == grid.ny(),
                   "ContactSolver: height field of shape (", h.rows(), ", ", h.cols(),
@@ -598,7 +645,7 @@ ContactResult ContactSolver::run(const Field& h, ContactControl control, double 
                   h.maxCoeff() - h.minCoeff(),
                   " m are too far apart for double precision; rescale their units");
   PolonskyKeerIteration iteration(op_, preconditioner_.get(), s == 1.0 ? h : h_scaled, control,
-                                  value / s, options_.update_by_linearity);
+                                  value / s, options_.update_by_linearity, start);
   ContactStatus status = ContactStatus::iteration_limit;
   int iterations = 0;
   while (iterations < options_.max_iterations) {

@@ -11,6 +11,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "../convolution/operators/surface_operator.hpp"
 #include "../core/types.hpp"
@@ -151,12 +152,23 @@ class ContactSolver {
   /// Interrupted when asked to stop; the solver and its operator can then solve again.
   ContactResult solve(const Field& height, ContactControl control, double value);
 
+  /// A sweep on one operator: the solves of `values` (each checked as solve checks it, all
+  /// before the first solve) in ascending order, each started from the solutions before it
+  /// (the first from the usual start, the second from the first's pressure, the others from the
+  /// secant through the last two), scaled to its own value (one application). The results, one per
+  /// value, in ascending order of value, each as solve would return it (its operator_applications
+  /// its own). A neighbouring solution's contact set is close to the next one's, so a sweep costs
+  /// fewer applications than the same solves started cold (bench/bench_load_sweep.cpp).
+  std::vector<ContactResult> solve_sweep(const Field& height, ContactControl control,
+                                         std::vector<double> values);
+
   const ContactOptions& options() const { return options_; }
   /// The grid of the operator the solver is bound to.
   const Grid& grid() const { return op_.grid(); }
 
  private:
-  ContactResult run(const Field& height, ContactControl control, double value);
+  void check_value(ContactControl control, double value) const;
+  ContactResult run(const Field& height, ContactControl control, double value, const Field* start);
 
   SurfaceOperator& op_;
   ContactOptions options_;
