@@ -2,6 +2,7 @@
 #include <pybind11/stl.h>
 
 #include <optional>
+#include <vector>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
@@ -56,12 +57,9 @@ PyContactResult to_python(ContactResult&& r) {
   return out;
 }
 
-PyContactResult solve_contact(Operator& op, const DoubleArray& height, std::optional<double> load,
-                              std::optional<double> approach, double tolerance, int max_iterations,
-                              bool preconditioned) {
-  COATFFT_REQUIRE(load.has_value() != approach.has_value(),
-                  "solve_contact: give exactly one of load [N] and approach [m]");
-  const Field h = field_from_array(height, op.grid(), "solve_contact: height");
+// The solver's options for a solve on `op` (`what` names the function in messages).
+ContactOptions contact_options(const Operator& op, bool approach_control, double tolerance,
+                               int max_iterations, bool preconditioned, const char* what) {
   ContactOptions options;
   options.tolerance = tolerance;
   options.max_iterations = max_iterations;
@@ -71,16 +69,49 @@ PyContactResult solve_contact(Operator& op, const DoubleArray& height, std::opti
   // control that level is what the approach is measured against: the solve would converge to a
   // wrong load, so it is refused.
   options.compute_approach = op.has_g0();
-  COATFFT_REQUIRE(options.compute_approach || !approach,
-                  "solve_contact: approach control needs the displacement's level, but the "
+  COATFFT_REQUIRE(options.compute_approach || !approach_control, what,
+                  ": approach control needs the displacement's level, but the "
                   "operator was built with g0 = \"omitted\"; build it with g0 = \"regularized\" "
                   "or \"quadrature\", or give a load");
+  return options;
+}
+
+PyContactResult solve_contact(Operator& op, const DoubleArray& height, std::optional<double> load,
+                              std::optional<double> approach, double tolerance, int max_iterations,
+                              bool preconditioned) {
+  COATFFT_REQUIRE(load.has_value() != approach.has_value(),
+                  "solve_contact: give exactly one of load [N] and approach [m]");
+  const Field h = field_from_array(height, op.grid(), "solve_contact: height");
+  const ContactOptions options = contact_options(op, approach.has_value(), tolerance,
+                                                 max_iterations, preconditioned, "solve_contact");
   ContactResult result = without_gil([&] {
     const auto guard = op.lock();
     ContactSolver solver(op.op(), options);
     return load ? solver.solve_load(h, *load) : solver.solve_approach(h, *approach);
   });
   return to_python(std::move(result));
+}
+
+// ContactSolver::solve_sweep: the results in ascending order of the values.
+std::vector<PyContactResult> solve_sweep(Operator& op, const DoubleArray& height,
+                                         std::optional<std::vector<double>> loads,
+                                         std::optional<std::vector<double>> approaches,
+                                         double tolerance, int max_iterations,
+                                         bool preconditioned) {
+  COATFFT_REQUIRE(loads.has_value() != approaches.has_value(),
+                  "solve_sweep: give exactly one of loads [N] and approaches [m]");
+  const Field h = field_from_array(height, op.grid(), "solve_sweep: height");
+  const ContactOptions options = contact_options(op, approaches.has_value(), tolerance,
+                                                 max_iterations, preconditioned, "solve_sweep");
+  std::vector<ContactResult> results = without_gil([&] {
+    const auto guard = op.lock();
+    ContactSolver solver(op.op(), options);
+    return loads ? solver.solve_sweep(h, ContactControl::load, *loads)
+                 : solver.solve_sweep(h, ContactControl::approach, *approaches);
+  });
+  std::vector<PyContactResult> out;
+  for (ContactResult& r : results) out.push_back(to_python(std::move(r)));
+  return out;
 }
 
 }  // namespace
@@ -119,6 +150,13 @@ void bind_contact(py::module_& m) {
         "preconditioned"_a = true,
         "Frictionless normal contact of a rigid indenter of initial separation `height` [m] "
         "(ny, nx) on the operator's body, under a total load [N] or an approach [m].");
+  m.def("solve_sweep", &solve_sweep, "op"_a, "height"_a, py::kw_only(), "loads"_a = py::none(),
+        "approaches"_a = py::none(), "tolerance"_a = 1e-10, "max_iterations"_a = 1000,
+        "preconditioned"_a = true,
+        "solve_contact at every load [N] (or approach [m]) of a list, on one operator: a list "
+        "of ContactResult in ascending order of the values, each solve started from the ones "
+        "before it (fewer operator applications than separate solves; docs/contact.md, "
+        "'Sweeps').");
 }
 
 }  // namespace coatfft::python

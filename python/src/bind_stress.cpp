@@ -4,6 +4,8 @@
 // (convolution/operators/cerruti_operator.hpp), as the program's ux.npy, uy.npy and uz.npy.
 #include <pybind11/stl.h>
 
+#include <algorithm>
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -131,27 +133,52 @@ py::tuple surface_displacements(py::handle body_object, const Grid& grid,
                         array_from_field(std::move(u[2])));
 }
 
-// von Mises of every tensor of an array whose third axis from the end holds the six components.
-py::array_t<double> von_mises_of(const DoubleArray& stress) {
+// `f` of every tensor of an array whose third axis from the end holds the six components, as
+// stresses() returns them: that axis replaced by `width` values per point (removed for width 0:
+// one value). f(tensor, values) writes max(width, 1) values.
+template <class F>
+py::array_t<double> per_tensor(const DoubleArray& stress, const char* name, int width, F f) {
   const py::ssize_t nd = stress.ndim();
-  COATFFT_REQUIRE(nd >= 3 && stress.shape(nd - 3) == 6,
-                  "von_mises: the array needs the six components (xx, yy, zz, yz, xz, xy) on its "
+  COATFFT_REQUIRE(nd >= 3 && stress.shape(nd - 3) == 6, name,
+                  ": the array needs the six components (xx, yy, zz, yz, xz, xy) on its "
                   "third axis from the end, as stresses() returns them");
   std::vector<py::ssize_t> shape(stress.shape(), stress.shape() + nd);
   const py::ssize_t points = shape[nd - 2] * shape[nd - 1];
   py::ssize_t outer = 1;
   for (py::ssize_t a = 0; a < nd - 3; ++a) outer *= shape[a];
-  shape.erase(shape.begin() + (nd - 3));
+  if (width == 0)
+    shape.erase(shape.begin() + (nd - 3));
+  else
+    shape[nd - 3] = width;
+  const int values = std::max(width, 1);
   py::array_t<double> out(shape);
   const double* s = stress.data();
   double* v = out.mutable_data();
+  std::array<double, 3> result{};
   for (py::ssize_t o = 0; o < outer; ++o)
     for (py::ssize_t q = 0; q < points; ++q) {
       StressVector t;
       for (int c = 0; c < 6; ++c) t[c] = s[(o * 6 + c) * points + q];
-      v[o * points + q] = von_mises(t);
+      f(t, result);
+      for (int c = 0; c < values; ++c) v[(o * values + c) * points + q] = result[c];
     }
   return out;
+}
+
+py::array_t<double> von_mises_of(const DoubleArray& stress) {
+  return per_tensor(stress, "von_mises", 0,
+                    [](const StressVector& t, std::array<double, 3>& r) { r[0] = von_mises(t); });
+}
+
+py::array_t<double> principal_stresses_of(const DoubleArray& stress) {
+  return per_tensor(
+      stress, "principal_stresses", 3,
+      [](const StressVector& t, std::array<double, 3>& r) { r = principal_stresses(t); });
+}
+
+py::array_t<double> tresca_of(const DoubleArray& stress) {
+  return per_tensor(stress, "tresca", 0,
+                    [](const StressVector& t, std::array<double, 3>& r) { r[0] = tresca(t); });
 }
 
 }  // namespace
@@ -172,6 +199,13 @@ void bind_stress(py::module_& m) {
         "`grid`, uz into the body (docs/stress.md, 'Surface displacements').");
   m.def("von_mises", &von_mises_of, py::arg("stress"),
         "von Mises stress [Pa] of an array of stresses(), the component axis removed.");
+  m.def("principal_stresses", &principal_stresses_of, py::arg("stress"),
+        "The principal stresses [Pa], largest first (tension positive), of an array of "
+        "stresses(): the component axis (6) replaced by the three values, e.g. (n_depths, 3, ny, "
+        "nx).");
+  m.def("tresca", &tresca_of, py::arg("stress"),
+        "Tresca's maximum shear stress (s1 - s3)/2 [Pa] of an array of stresses(), the component "
+        "axis removed.");
 }
 
 }  // namespace coatfft::python
