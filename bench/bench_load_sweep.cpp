@@ -19,6 +19,7 @@
 
 #include "bench/bench_report.hpp"
 #include "bench/command_line.hpp"
+#include "bench/rough_gap.hpp"
 #include "contact/contact_solver.hpp"
 #include "convolution/operators/make_operator.hpp"
 #include "core/detail/timing.hpp"
@@ -32,25 +33,13 @@ using namespace coatfft;
 using Clock = std::chrono::steady_clock;
 
 const Material kSweepSteel(210e9, 0.3);
-constexpr double kSweepSlope = 0.05;   // rms slope
+constexpr double kSweepSlope = bench::rough_rms_slope;
 constexpr double kSweepLength = 1e-3;  // period [m]
 
 struct SweepBody {
   std::string label;
   LayerStack stack;
 };
-
-// The gap of a rigid flat on the rough surface: max(z) - z (peaks touch first).
-Field flat_on_rough(const Grid& g) {
-  SelfAffineSpec spec;
-  spec.hurst = 0.8;
-  spec.rms_slope = kSweepSlope;
-  spec.short_cutoff = 16 * g.dx();
-  spec.long_cutoff = kSweepLength / 4;
-  spec.seed = 2004;
-  const Field z = self_affine_surface(g, spec);
-  return z.maxCoeff() - z;
-}
 
 // `count` loads [N] spaced geometrically between mean pressures that give about 1 % and 30 %
 // contact area on steel.
@@ -70,7 +59,7 @@ std::string measure(std::ptrdiff_t n, const SweepBody& body, const std::vector<d
   o.method = exact_method(body.stack);
   o.boundary = Boundary::periodic;
   const BuiltOperator built = make_operator(g, body.stack, o);
-  const Field gap = flat_on_rough(g);
+  const Field gap = bench::rough_gap(g);
   ContactSolver solver(*built.op);
   std::vector<ContactResult> cold;
   std::vector<double> cold_ms;

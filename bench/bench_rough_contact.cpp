@@ -19,6 +19,7 @@
 
 #include "bench/bench_report.hpp"
 #include "bench/command_line.hpp"
+#include "bench/rough_gap.hpp"
 #include "contact/contact_solver.hpp"
 #include "convolution/kernels/periodic_kernel.hpp"
 #include "convolution/operators/make_operator.hpp"
@@ -35,10 +36,10 @@ using namespace coatfft;
 using Clock = std::chrono::steady_clock;
 
 const Material kSteel(210e9, 0.3);
-constexpr double kSlope = 0.05;        // rms slope
-constexpr double kLength = 1e-3;       // period [m]
-constexpr double kLoad = 0.1 / 2.2;    // p_m / (E* g): about 10 % contact area on steel
-constexpr int kShortCutoffCells = 16;  // shortest wavelength [cells]
+constexpr double kSlope = bench::rough_rms_slope;
+constexpr double kLength = 1e-3;     // period [m]
+constexpr double kLoad = 0.1 / 2.2;  // p_m / (E* g): about 10 % contact area on steel
+constexpr int kShortCutoffCells = bench::rough_short_cutoff_cells;
 
 struct Body {
   std::string label;
@@ -49,17 +50,6 @@ std::vector<Body> bodies() {
   return {{"steel", LayerStack(kSteel)},
           {"TiN 5 um on steel",
            LayerStack({{Material(400e9, 0.25), 5e-6, Interface::bonded}}, kSteel)}};
-}
-
-Field rough_gap(const Grid& g) {
-  SelfAffineSpec spec;
-  spec.hurst = 0.8;
-  spec.rms_slope = kSlope;
-  spec.short_cutoff = kShortCutoffCells * g.dx();
-  spec.long_cutoff = kLength / 4;
-  spec.seed = 2004;
-  const Field z = self_affine_surface(g, spec);
-  return z.maxCoeff() - z;
 }
 
 double ms_since(Clock::time_point start) {
@@ -150,7 +140,7 @@ int main(int argc, char** argv) {
     std::cout << out.str() << std::flush;
     for (const std::ptrdiff_t n : sizes) {
       const Grid g(n, n, kLength, kLength);
-      const Field gap = rough_gap(g);
+      const Field gap = bench::rough_gap(g);
       for (const Body& body : bodies()) {
         const auto frf = make_frf(body.stack);
         PeriodicKernelOptions o;

@@ -43,6 +43,7 @@ std::vector<std::string> output_names(const scene::OutputSpec& spec) {
   if (spec.displacement_csv) names.push_back("displacement.csv");
   names.push_back("summary.json");
   if (spec.gap) names.push_back("gap.npy");
+  if (spec.sweep) names.push_back("sweep.csv");
   if (spec.in_plane) names.insert(names.end(), {"ux.npy", "uy.npy"});
   if (spec.stress) names.push_back("stress.npy");
   if (spec.von_mises) names.push_back("von_mises.npy");
@@ -78,14 +79,38 @@ void write_stress_outputs(StagedOutput& out, const scene::OutputSpec& spec, cons
                            s.section_von_mises);
 }
 
+// The fields of a sweep, one per value, as one array (n_values, ny, nx).
+void write_stacked(const std::filesystem::path& path, const std::vector<Field>& fields) {
+  std::vector<double> values;
+  for (const Field& f : fields) values.insert(values.end(), f.data(), f.data() + f.size());
+  const std::size_t shape[3] = {fields.size(), static_cast<std::size_t>(fields.front().cols()),
+                                static_cast<std::size_t>(fields.front().rows())};
+  scene::write_npy_array(path, shape, values);
+}
+
+// A sweep's uz.npy, pressure.npy and gap.npy, stacked, and sweep.csv.
+void write_sweep_outputs(StagedOutput& out, const scene::OutputSpec& spec,
+                         const scene::SceneRun& run) {
+  if (spec.uz) write_stacked(out.path("uz.npy"), run.sweep->uz);
+  if (spec.pressure) write_stacked(out.path("pressure.npy"), run.sweep->pressure);
+  if (spec.gap) write_stacked(out.path("gap.npy"), run.sweep->gap);
+  std::ofstream csv(out.path("sweep.csv"));
+  csv << scene::sweep_csv(run.summary["sweep"]);
+  COATFFT_REQUIRE(csv.good(), "failed writing sweep.csv");
+}
+
 // Writes the requested outputs only: the CSV text, the costliest of them (a 2048^2 grid makes
 // hundreds of megabytes of decimal text), is not even formatted when it is not asked for.
 void write_outputs(StagedOutput& out, const scene::OutputSpec& spec, const scene::SceneRun& run,
                    Progress& progress) {
   progress.stage("writing " + joined(output_names(spec)));
-  if (spec.uz) scene::write_npy(out.path("uz.npy"), run.uz);
-  if (spec.pressure) scene::write_npy(out.path("pressure.npy"), run.pressure);
-  if (spec.gap && run.gap) scene::write_npy(out.path("gap.npy"), *run.gap);
+  if (run.sweep) {
+    write_sweep_outputs(out, spec, run);
+  } else {
+    if (spec.uz) scene::write_npy(out.path("uz.npy"), run.uz);
+    if (spec.pressure) scene::write_npy(out.path("pressure.npy"), run.pressure);
+    if (spec.gap && run.gap) scene::write_npy(out.path("gap.npy"), *run.gap);
+  }
   if (run.stress) write_stress_outputs(out, spec, run.grid, *run.stress);
   if (spec.in_plane && run.ux && run.uy) {
     scene::write_npy(out.path("ux.npy"), *run.ux);

@@ -41,6 +41,12 @@ MemoryNeed estimate_memory(const Scene& scene) {
   // The fields on the grid: 4 for a known pressure; 12 for a contact (iterates, directions, gap)
   // and its preconditioner (a real field, its half spectrum and the multiplier).
   need.bytes += scene.contact ? (12.0 * 8.0 + 20.0) * cells : 4.0 * 8.0 * cells;
+  if (scene.contact && !scene.contact->sweep.empty()) {
+    // A sweep keeps pressure, displacement and gap of every value, and writes them stacked.
+    const double values = static_cast<double>(scene.contact->sweep.size());
+    need.bytes += 2 * 3.0 * 8.0 * cells * values;
+    need.drivers += detail::concat(", a sweep of ", scene.contact->sweep.size(), " values");
+  }
   if (scene.method.options.method == Method::frf_dcfft && !scene.periodic)
     need.drivers += detail::concat(", [method] alpha = ", scene.method.options.alpha);
   if (scene.stress && scene.body) {

@@ -36,6 +36,10 @@ class SectionReader {
       : table_(table), name_(std::move(name)) {}
 
   bool has(std::string_view key) const { return table_.contains(key); }
+  bool is_array(std::string_view key) const {
+    const toml::node* node = table_.get(key);
+    return node != nullptr && node->is_array();
+  }
 
   double number(std::string_view key) {
     const toml::node& node = require(key);
@@ -84,7 +88,7 @@ class SectionReader {
                       " must be a list of numbers, got an entry of type ", describe(e));
       const double v = e.is_integer() ? static_cast<double>(e.as_integer()->get())
                                       : e.as_floating_point()->get();
-      COATFFT_REQUIRE(std::isfinite(v), where(key), " holds ", v, ": every depth must be finite");
+      COATFFT_REQUIRE(std::isfinite(v), where(key), " holds ", v, ": every entry must be finite");
       values.push_back(v);
     }
     return values;
@@ -418,12 +422,26 @@ void read_indenter(SectionReader& reader, const Grid& grid, const std::filesyste
   }
 }
 
+// [contact] load or approach: one value, or a list (a sweep, its values solved in ascending
+// order on one operator: ContactSolver::solve_sweep); the smallest value for a list.
+double control_value(SectionReader& reader, const char* key, ContactSpec& spec) {
+  if (!reader.is_array(key)) return positive(reader, key);
+  std::vector<double> values = reader.numbers(key);
+  COATFFT_REQUIRE(!values.empty() && values.size() <= max_sweep_values, reader.where(key),
+                  " lists ", values.size(), " values: a sweep takes 1 to ", max_sweep_values);
+  for (const double v : values)
+    COATFFT_REQUIRE(v > 0, reader.where(key), " holds ", v, ": every value must be > 0");
+  std::sort(values.begin(), values.end());
+  spec.sweep = values;
+  return values.front();
+}
+
 // [contact] load or approach, and the solver's keys (tolerance, max_iterations, friction).
 void read_contact_control(SectionReader& reader, ContactSpec& spec) {
   COATFFT_REQUIRE(reader.has("load") != reader.has("approach"),
                   "[contact] give exactly one of load (N) and approach (m)");
-  if (reader.has("load")) spec.load = positive(reader, "load");
-  if (reader.has("approach")) spec.approach = positive(reader, "approach");
+  if (reader.has("load")) spec.load = control_value(reader, "load", spec);
+  if (reader.has("approach")) spec.approach = control_value(reader, "approach", spec);
   spec.report_approach = reader.boolean("report_approach", spec.report_approach);
   COATFFT_REQUIRE(spec.report_approach || spec.load, reader.where("report_approach"),
                   " = false: under approach control the approach is the input and is always "
@@ -580,6 +598,24 @@ void check_stress_outputs(OutputSpec& output, const StressSpec& spec) {
                                      {output.von_mises_section, "von_mises_section"}})
     COATFFT_REQUIRE(!wanted || spec.section, "[output] fields: \"", name,
                     "\" needs the section: give [stress] section = \"xz\"");
+}
+
+// A [contact] sweep solves the normal contact at each value and writes its fields stacked, one
+// per value, with sweep.csv; the stresses and friction take one load so far, and displacement.csv
+// (x, y, uz lines) holds one field.
+void check_sweep(Scene& scene) {
+  COATFFT_REQUIRE(!scene.stress,
+                  "[stress] takes one load: a [contact] sweep (a list of loads or "
+                  "approaches) solves the normal contact only so far");
+  COATFFT_REQUIRE(scene.contact->friction == 0.0,
+                  "[contact] friction takes one load: a sweep (a list of loads or approaches) "
+                  "solves the frictionless contact only so far");
+  OutputSpec& output = scene.output;
+  COATFFT_REQUIRE(!(output.listed && output.displacement_csv),
+                  "[output] fields: \"displacement_csv\" holds one field: a [contact] sweep writes "
+                  "uz.npy, pressure.npy and gap.npy stacked, one per value, and sweep.csv");
+  output.displacement_csv = false;
+  output.sweep = true;
 }
 
 // [stress]: planes at depth and the section y = 0. The stress kernels need the layers themselves
@@ -805,6 +841,7 @@ Scene read_scene(const std::filesystem::path& path) {
     }
     if (scene.contact && scene.contact->friction > 0.0)
       check_tangential(scene, "[contact] friction");
+    if (scene.contact && !scene.contact->sweep.empty()) check_sweep(scene);
     scene.periodic = grid.periodic;
     if (scene.periodic) check_periodic(scene);
     // The in-plane surface displacements (ux.npy, uy.npy), with tangential tractions or stresses,

@@ -70,6 +70,9 @@ struct ContactSpec {
   std::filesystem::path height_file;  ///< the file of a height_map indenter
   std::optional<double> load;         ///< total normal load [N] (load control), or
   std::optional<double> approach;     ///< rigid-body approach [m] (approach control)
+  /// load or approach given as a list (a sweep): its values, ascending; load or approach then
+  /// holds the smallest. Empty for one value.
+  std::vector<double> sweep;
   double tolerance = 1e-10;
   int max_iterations = 1000;
   /// Report the rigid-body approach (load control). false: the approach is not computed, and an
@@ -103,6 +106,8 @@ struct OutputSpec {
   bool in_plane = false;
   /// [output] fields was given: only the files it names are written.
   bool listed = false;
+  /// sweep.csv, and uz.npy, pressure.npy, gap.npy stacked one per value: a [contact] sweep
+  bool sweep = false;
 };
 
 /// [shear]: known tangential tractions that the surface receives, with a [pressure]: q = friction
@@ -127,6 +132,10 @@ struct StressSpec {
   int nz = 0;                                 ///< the section's rows, at depth_max k/nz, k = 1..nz
   int alpha = 16;  ///< period of the kernels' sampling lattice over the domain (docs/stress.md)
 };
+
+/// The most values of a [contact] sweep (a guard against runaway input: each is a solve and a
+/// field of each output).
+inline constexpr std::size_t max_sweep_values = 256;
 
 /// The most cells along an axis that [grid] refine = "auto" chooses.
 inline constexpr std::ptrdiff_t max_refined_cells = 1024;

@@ -1,10 +1,14 @@
 #include "scene/scene_run.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <limits>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <variant>
+#include <vector>
 
 #include "contact/contact_solver.hpp"
 #include "contact/indenter.hpp"
@@ -268,6 +272,52 @@ ContactResult solve_scene_contact(ContactSolver& solver, const Scene& scene,
   return result;
 }
 
+// One value of a sweep: a row of sweep.csv and of summary.json's "sweep".
+nlohmann::json sweep_row(const Grid& grid, const ContactResult& r) {
+  return {{"load", r.load},
+          {"approach", r.approach ? nlohmann::json(*r.approach) : nlohmann::json()},
+          {"area_fraction", r.contact_area / (grid.lx() * grid.ly())},
+          {"max_pressure", r.max_pressure},
+          {"mean_gap", r.gap.mean()},
+          {"iterations", r.iterations},
+          {"operator_applications", r.operator_applications},
+          {"converged", r.converged},
+          {"max_penetration", r.max_penetration}};
+}
+
+// The solves of a [contact] scene: its one value, or each value of its sweep (ascending).
+std::vector<ContactResult> solve_contacts(ContactSolver& solver, const Scene& scene,
+                                          const std::shared_ptr<CerrutiOperator>& surface,
+                                          const Field& height_field, nlohmann::json& coupling) {
+  const ContactSpec& spec = *scene.contact;
+  if (spec.sweep.empty()) {
+    std::vector<ContactResult> one;
+    one.push_back(solve_scene_contact(solver, scene, surface, height_field, coupling));
+    return one;
+  }
+  const ContactControl control = spec.load ? ContactControl::load : ContactControl::approach;
+  return solver.solve_sweep(height_field, control, spec.sweep);
+}
+
+// A sweep's outputs: every value's fields, stacked by the writer, and its rows; the summary's
+// other contact keys are the largest value's, and it converged when every value did.
+void add_sweep(SceneRun& run, std::vector<ContactResult>& results) {
+  nlohmann::json rows = nlohmann::json::array();
+  SweepFields fields;
+  bool converged = true;
+  for (ContactResult& r : results) {
+    rows.push_back(sweep_row(run.grid, r));
+    converged = converged && r.converged;
+    fields.pressure.push_back(std::move(r.pressure));
+    fields.uz.push_back(std::move(r.displacement));
+    fields.gap.push_back(std::move(r.gap));
+  }
+  run.summary["sweep"] = rows;
+  run.summary["converged"] = converged;
+  run.status = converged ? RunStatus::ok : RunStatus::not_converged;
+  run.sweep = std::move(fields);
+}
+
 // `surface`: the body's surface response (traction_operator) when the scene writes ux.npy, for
 // the friction coupling; built before an elastic indenter's composite modulus replaces the body
 // for the normal compliance.
@@ -288,14 +338,18 @@ SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat,
   BuiltOperator built = operator_from_scene(scene);
 
   ContactSolver solver(*built.op, solver_options(spec, scene.method.options.threads, progress));
-  progress.stage(spec.load ? "solving the contact (load control)"
-                           : "solving the contact (approach control)");
+  progress.stage(detail::concat("solving the contact (", spec.load ? "load" : "approach",
+                                " control", spec.sweep.empty() ? "" : ", a sweep", ")"));
   const auto start = Clock::now();
   nlohmann::json coupling;
-  ContactResult result = solve_scene_contact(solver, scene, surface, height_field, coupling);
+  std::vector<ContactResult> results =
+      solve_contacts(solver, scene, surface, height_field, coupling);
   const double solve_seconds = seconds_since(start);
   // touches_boundary is false on a periodic surface (no edge: contact/contact_solver.hpp).
-  COATFFT_REQUIRE(!result.touches_boundary,
+  const bool touches = std::any_of(results.begin(), results.end(),
+                                   [](const ContactResult& r) { return r.touches_boundary; });
+  ContactResult result = results.back();  // the largest value's: the summary's contact keys
+  COATFFT_REQUIRE(!touches,
                   "[contact] the contact reaches the domain edge (pressure > 0 on a border cell): "
                   "the domain is too small for this contact; enlarge [grid] lx and ly (and nx, ny "
                   "to keep the cell size) or lower the load");
@@ -308,12 +362,14 @@ SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat,
   add_contact_summary(summary, scene, result, solve_seconds);
   if (!coupling.is_null()) summary["friction_coupling"] = coupling;
   // The solver computes the gap in any case; the CLI saves it only when [output] asks for it.
-  return {scene.grid,
-          std::move(result.pressure),
-          std::move(result.displacement),
-          std::move(result.gap),
-          std::move(summary),
-          result.converged ? RunStatus::ok : RunStatus::not_converged};
+  SceneRun run{scene.grid,
+               std::move(result.pressure),
+               std::move(result.displacement),
+               std::move(result.gap),
+               std::move(summary),
+               result.converged ? RunStatus::ok : RunStatus::not_converged};
+  if (!spec.sweep.empty()) add_sweep(run, results);
+  return run;
 }
 
 // run_scene's FFTW wisdom: the scene's wisdom file is imported when it exists. Building and
@@ -387,6 +443,22 @@ SceneRun compute_scene(PreparedScene prepared, const SceneRunOptions& options) {
               "finite in-plane surface response (the coating slides)");
   }
   return run;
+}
+
+std::string sweep_csv(const nlohmann::json& rows) {
+  std::ostringstream csv;
+  csv.precision(std::numeric_limits<double>::max_digits10);
+  csv << "load,approach,area_fraction,max_pressure,mean_gap,iterations,operator_applications,"
+         "converged,max_penetration\n";
+  for (const nlohmann::json& r : rows) {
+    csv << r["load"].get<double>() << ',';
+    if (!r["approach"].is_null()) csv << r["approach"].get<double>();
+    csv << ',' << r["area_fraction"].get<double>() << ',' << r["max_pressure"].get<double>() << ','
+        << r["mean_gap"].get<double>() << ',' << r["iterations"].get<int>() << ','
+        << r["operator_applications"].get<int>() << ',' << (r["converged"].get<bool>() ? 1 : 0)
+        << ',' << r["max_penetration"].get<double>() << '\n';
+  }
+  return csv.str();
 }
 
 SceneRun run_scene(const fs::path& scene_file, const SceneRunOptions& options) {

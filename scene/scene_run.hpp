@@ -10,6 +10,8 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "core/grid.hpp"
 #include "core/types.hpp"
@@ -24,6 +26,11 @@ namespace coatfft::scene {
 enum class RunStatus { ok, not_converged };
 
 /// What a run of a scene computes: the fields and summary.json's object.
+/// The fields of a [contact] sweep, one per value in ascending order, each (nx, ny).
+struct SweepFields {
+  std::vector<Field> pressure, uz, gap;
+};
+
 struct SceneRun {
   Grid grid;
   Field pressure;            ///< [Pa], shape (nx, ny): the scene's load or the contact pressure
@@ -37,7 +44,15 @@ struct SceneRun {
   std::optional<StressRun> stress = std::nullopt;  ///< [stress] scenes only
   /// The in-plane surface displacements [m] of a [stress] scene on a homogeneous body.
   std::optional<Field> ux = std::nullopt, uy = std::nullopt;
+  /// A [contact] sweep: every value's fields (pressure, uz and gap above are the largest
+  /// value's), and summary["sweep"] its rows (sweep_csv).
+  std::optional<SweepFields> sweep = std::nullopt;
 };
+
+/// sweep.csv of a sweep's rows (summary.json's "sweep"): a header line, then per value load,
+/// approach (empty when not reported), area_fraction, max_pressure, mean_gap, iterations,
+/// operator_applications, converged (1 or 0), max_penetration, at full precision.
+std::string sweep_csv(const nlohmann::json& rows);
 
 struct SceneRunOptions {
   int repeat = 1;  ///< operator applications timed; apply_seconds is their median

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -16,6 +17,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 namespace coatfft_test {
 
@@ -121,6 +123,26 @@ inline fs::path run_scene_ok(const std::string& base, const std::string& name,
 }
 
 // The summary.json of an output folder.
+// The raw shape tuple of a .npy header, e.g. "(2, 6, 33, 33)".
+inline std::string npy_shape(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::string header(256, '\0');
+  in.read(header.data(), 256);
+  const auto b = header.find("'shape': (");
+  const auto e = header.find(')', b);
+  return header.substr(b + 9, e - b - 8);
+}
+
+// The values of a float64 .npy file, in file order.
+inline std::vector<double> npy_values(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::string all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t start = all.find('\n') + 1;
+  std::vector<double> v((all.size() - start) / 8);
+  std::memcpy(v.data(), all.data() + start, v.size() * 8);
+  return v;
+}
+
 inline nlohmann::json read_summary(const fs::path& out) {
   nlohmann::json summary;
   std::ifstream(out / "summary.json") >> summary;

@@ -45,25 +45,6 @@ depths = [1e-4, 2e-4]
 alpha = 4
 )";
 
-// The raw shape tuple of a .npy header, e.g. "(2, 6, 33, 33)".
-std::string npy_shape(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::string header(256, '\0');
-  in.read(header.data(), 256);
-  const auto b = header.find("'shape': (");
-  const auto e = header.find(')', b);
-  return header.substr(b + 9, e - b - 8);
-}
-
-std::vector<double> npy_values(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::string all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::size_t start = all.find('\n') + 1;
-  std::vector<double> v((all.size() - start) / 8);
-  std::memcpy(v.data(), all.data() + start, v.size() * 8);
-  return v;
-}
-
 }  // namespace
 
 TEST_CASE("[stress] writes the stress files with their shapes and summary keys", "[cli_stress]") {

@@ -3,8 +3,10 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <optional>
+#include <vector>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
@@ -43,13 +45,29 @@ void add_stress_arrays(const Grid& grid, const scene::StressRun& s, py::dict& ou
   }
 }
 
+// A sweep's fields, one per value: (n_values, ny, nx), as the program's stacked .npy files.
+py::array_t<double> stacked(const std::vector<Field>& fields) {
+  const auto nx = static_cast<py::ssize_t>(fields.front().rows());
+  const auto ny = static_cast<py::ssize_t>(fields.front().cols());
+  py::array_t<double> a(std::vector<py::ssize_t>{static_cast<py::ssize_t>(fields.size()), ny, nx});
+  double* data = a.mutable_data();
+  for (const Field& f : fields) data = std::copy(f.data(), f.data() + f.size(), data);
+  return a;
+}
+
 // The path as a str or any os.PathLike (pathlib.Path), as Python's own file functions take it.
 py::dict run_scene(const std::filesystem::path& path) {
   scene::SceneRun run = without_gil([&] { return scene::run_scene(path); });
   py::dict out;
-  out["uz"] = array_from_field(std::move(run.uz));
-  out["pressure"] = array_from_field(std::move(run.pressure));
-  if (run.gap) out["gap"] = array_from_field(std::move(*run.gap));
+  if (run.sweep) {
+    out["uz"] = stacked(run.sweep->uz);
+    out["pressure"] = stacked(run.sweep->pressure);
+    out["gap"] = stacked(run.sweep->gap);
+  } else {
+    out["uz"] = array_from_field(std::move(run.uz));
+    out["pressure"] = array_from_field(std::move(run.pressure));
+    if (run.gap) out["gap"] = array_from_field(std::move(*run.gap));
+  }
   if (run.stress) add_stress_arrays(run.grid, *run.stress, out);
   if (run.ux) out["ux"] = array_from_field(std::move(*run.ux));
   if (run.uy) out["uy"] = array_from_field(std::move(*run.uy));

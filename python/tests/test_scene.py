@@ -258,3 +258,21 @@ def test_validate_frf_equals_the_program(coatfft_exe, tmp_path, with_load):
         assert reference == check["reference"]
         # The program appends "(estimated)" or "(given)" to a table's limits.
         assert detail.startswith(check["detail"])
+
+
+def test_run_scene_of_a_sweep_equals_the_program(coatfft_exe, tmp_path):
+    # [contact] load as a list: the fields stacked one per value (ascending), as the program's
+    # .npy files, and the sweep's rows in the summary.
+    scene = tmp_path / "sweep.toml"
+    scene.write_text('[grid]\nnx = 32\nny = 32\nlx = 3.0e-3\nly = 3.0e-3\nboundary = "periodic"\n'
+                     '[substrate]\nmaterial = "steel"\n'
+                     '[contact]\nindenter = "paraboloid"\nradius = 0.01\nload = [20.0, 10.0]\n')
+    out = tmp_path / "out"
+    done = subprocess.run([coatfft_exe, "run", str(scene), "-o", str(out), "--quiet"],
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    run = coatfft.run_scene(str(scene))
+    for name in ("pressure", "uz", "gap"):
+        assert run[name].shape == (2, 32, 32)
+        np.testing.assert_array_equal(run[name], np.load(out / f"{name}.npy"))
+    assert [row["load"] for row in run["summary"]["sweep"]] == pytest.approx([10.0, 20.0])
