@@ -597,27 +597,29 @@ ContactResult ContactSolver::solve(const Field& height, ContactControl control, 
 std::vector<ContactResult> ContactSolver::solve_sweep(const Field& height, ContactControl control,
                                                       std::vector<double> values) {
   COATFFT_REQUIRE(!values.empty(), "ContactSolver: a sweep needs at least one value");
-  for (const double value : values) check_value(control, value);  // all before any work
+  for (const double value : values) {  // all before any work
+    check_value(control, value);
+    check_problem(height, control, value);
+  }
   std::sort(values.begin(), values.end());
   std::vector<ContactResult> results;
   Field start;
   for (const double value : values) {
     const std::size_t k = results.size();
-    if (k >= 2) {
+    if (k >= 2 && values[k - 1] > values[k - 2]) {
       // The secant through the last two solutions: exact while the contact set holds (p is then
-      // linear in the load and in the approach).
+      // linear in the load and in the approach). A repeated value starts from its twin.
       const double t = (value - values[k - 1]) / (values[k - 1] - values[k - 2]);
       start = results[k - 1].pressure + t * (results[k - 1].pressure - results[k - 2].pressure);
-    } else if (k == 1) {
-      start = results[0].pressure;
+    } else if (k >= 1) {
+      start = results[k - 1].pressure;
     }
     results.push_back(run(height, control, value, k == 0 ? nullptr : &start));
   }
   return results;
 }
 
-ContactResult ContactSolver::run(const Field& h, ContactControl control, double value,
-                                 const Field* start) {
+void ContactSolver::check_problem(const Field& h, ContactControl control, double value) const {
   const Grid& grid = op_.grid();
   COATFFT_REQUIRE(h.rows() == grid.nx() && h.cols() == grid.ny(),
                   "ContactSolver: height field of shape (", h.rows(), ", ", h.cols(),
@@ -636,6 +638,11 @@ ContactResult ContactSolver::run(const Field& h, ContactControl control, double 
                     " m, but on a periodic surface it must stay below mean(height) = ", h_mean,
                     " m (the displacement has zero mean: no contact solves a larger approach)");
   }
+}
+
+ContactResult ContactSolver::run(const Field& h, ContactControl control, double value,
+                                 const Field* start) {
+  check_problem(h, control, value);
   int scale_applications = 0;
   const double s =
       control == ContactControl::load ? load_scale(op_, h, value, scale_applications) : 1.0;

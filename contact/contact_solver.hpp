@@ -168,6 +168,8 @@ class ContactSolver {
 
  private:
   void check_value(ContactControl control, double value) const;
+  // The height field against the operator's grid, and an approach against the heights.
+  void check_problem(const Field& height, ContactControl control, double value) const;
   ContactResult run(const Field& height, ContactControl control, double value, const Field* start);
 
   SurfaceOperator& op_;

@@ -78,7 +78,17 @@ TEST_CASE("solve_sweep under approach control, and its refusals", "[contact_swee
     CHECK((sweep[k].pressure - cold.pressure).abs().maxCoeff() < 1e-8 * cold.max_pressure);
     CHECK(*sweep[k].approach == Approx(approaches[k]).epsilon(1e-14));
   }
-  // Every value is checked before the first solve.
+  // A repeated value is solved twice, to the same solution.
+  const std::vector<ContactResult> twice =
+      solver.solve_sweep(gap, ContactControl::load, {20.0, 10.0, 10.0, 20.0});
+  REQUIRE(twice.size() == 4);
+  for (const ContactResult& r : twice) CHECK(r.converged);
+  CHECK((twice[1].pressure - twice[0].pressure).abs().maxCoeff() < 1e-8 * twice[0].max_pressure);
+  CHECK((twice[3].pressure - twice[2].pressure).abs().maxCoeff() < 1e-8 * twice[2].max_pressure);
+  // Every value is checked before the first solve, an approach against the heights too.
+  CHECK_THROWS_AS(
+      solver.solve_sweep(gap, ContactControl::approach, {0.1 * mean, 2 * gap.maxCoeff()}),
+      InvalidArgument);
   CHECK_THROWS_AS(solver.solve_sweep(gap, ContactControl::load, {}), InvalidArgument);
   CHECK_THROWS_AS(solver.solve_sweep(gap, ContactControl::load, {10.0, -1.0}), InvalidArgument);
   CHECK_THROWS_AS(solver.solve_sweep(gap, ContactControl::load, {10.0, NAN}), InvalidArgument);
