@@ -191,7 +191,16 @@ TEST_CASE("example coated_hertz_stress.toml: the stresses against their Hankel r
           "[examples]") {
   const Scene scene = example_scene("coated_hertz_stress");
   REQUIRE(scene.stress);
-  const Run run = run_example("coated_hertz_stress");
+  // The example with 4 section rows for its 40, its only change: the planes checked below do not
+  // depend on them, and the rows make 40 of its 45 planes' cost.
+  std::ifstream in(kScenes / "coated_hertz_stress.toml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto rows = text.find("nz = 40");
+  REQUIRE(rows != std::string::npos);
+  text.replace(rows, 7, "nz = 4");
+  const fs::path copy = scratch("coated_hertz_stress_4_rows.toml");
+  std::ofstream(copy) << text;
+  const Run run = run_scene(copy, "coated_hertz_stress");
   const auto& spec = *scene.stress;
   const coatfft::Grid& g = scene.grid;
   const std::vector<double> stress = npy_data(run.out / "stress.npy");
@@ -224,8 +233,8 @@ TEST_CASE("example coated_hertz_stress.toml: the stresses against their Hankel r
   CHECK(worst[0] < 1.2e-2 * 1e9);
   CHECK(worst[1] < 5e-3 * 1e9);
   CHECK(worst[2] < 5e-4 * 1e9);
-  // 3 depths, 40 section rows, the interface from both sides.
-  CHECK(run.summary["stress"]["planes"] == 45);
+  // 3 depths, 4 section rows, the interface from both sides.
+  CHECK(run.summary["stress"]["planes"] == 9);
 }
 
 TEST_CASE(

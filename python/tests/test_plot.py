@@ -45,8 +45,6 @@ def test_every_kind_of_output_folder(coatfft_exe, tmp_path, kind):
     assert pictures == expected
     for name in pictures:
         assert (out / "plots" / name).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
-    # Drawn again into the same folder: its own pictures are replaced.
-    assert coatfft.plot.main([str(out)]) == 0
 
 
 def test_as_a_program(coatfft_exe, tmp_path):
@@ -57,6 +55,8 @@ def test_as_a_program(coatfft_exe, tmp_path):
     drawn = plot(out, "--to", tmp_path / "pictures", "--unit", "GPa")
     assert drawn.returncode == 0, drawn.stderr
     assert sorted(p.name for p in (tmp_path / "pictures").iterdir()) == ["gap.png", "pressure.png"]
+    # Drawn again into the same folder: its own pictures are replaced.
+    assert coatfft.plot.main([str(out), "--to", str(tmp_path / "pictures")]) == 0
 
 
 def test_refusals(tmp_path, capsys):
