@@ -52,7 +52,7 @@ void append(std::string& text, const std::string& more) {
 // (initial_pressure.hpp): close to the solution, the contact set settles in a few iterations.
 class PolonskyKeerIteration {
  public:
-  // `start`, when not null, is the pressure to start from (a warm start: start_from).
+  // `start`, when not null, is the pressure to start from (a warm start: start_from_pressure).
   PolonskyKeerIteration(SurfaceOperator& op, detail::FourierPreconditioner* preconditioner,
                         const Field& h, ContactControl control, double value,
                         bool update_by_linearity, const Field* start);
@@ -75,7 +75,7 @@ class PolonskyKeerIteration {
   };
 
   void start(const Field* warm);
-  void start_from(const Field& warm);
+  void start_from_pressure();
   void start_uniform();
   void start_hertzian();
   void scale_to_approach();
@@ -139,20 +139,24 @@ PolonskyKeerIteration::PolonskyKeerIteration(SurfaceOperator& op,
 
 // The initial pressure.
 void PolonskyKeerIteration::start(const Field* warm) {
-  if (warm && (warm->max(0.0).sum() > 0)) {
-    start_from(*warm);
-  } else if (update_by_linearity_) {
+  if (warm) {
+    p_ = warm->max(0.0);
+    if (p_.sum() > 0) {
+      start_from_pressure();
+      return;
+    }
+  }
+  if (update_by_linearity_) {
     start_hertzian();
   } else {
     start_uniform();
   }
 }
 
-// A warm start (a sweep, ContactSolver::solve_sweep): the pressure of a neighbouring solve,
-// scaled to this one's load or approach (one application). Its contact set is close to this
-// one's, which is what the iteration spends its recomputations on.
-void PolonskyKeerIteration::start_from(const Field& warm) {
-  p_ = warm.max(0.0);
+// A warm start (a sweep, ContactSolver::solve_sweep): p_ holds the pressure of a neighbouring
+// solve, scaled here to this one's load or approach (one application). Its contact set is close
+// to this one's, which is what the iteration spends its recomputations on.
+void PolonskyKeerIteration::start_from_pressure() {
   if (!load_control_) {
     scale_to_approach();
     return;

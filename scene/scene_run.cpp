@@ -348,7 +348,8 @@ SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat,
   // touches_boundary is false on a periodic surface (no edge: contact/contact_solver.hpp).
   const bool touches = std::any_of(results.begin(), results.end(),
                                    [](const ContactResult& r) { return r.touches_boundary; });
-  ContactResult result = results.back();  // the largest value's: the summary's contact keys
+  // The largest value's: the summary's contact keys (a sweep keeps every value's fields too).
+  ContactResult result = spec.sweep.empty() ? std::move(results.back()) : results.back();
   COATFFT_REQUIRE(!touches,
                   "[contact] the contact reaches the domain edge (pressure > 0 on a border cell): "
                   "the domain is too small for this contact; enlarge [grid] lx and ly (and nx, ny "
