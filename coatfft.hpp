@@ -65,3 +65,4 @@
 #include "validation/hertz.hpp"
 #include "validation/hertz_contact.hpp"
 #include "validation/hertz_stress.hpp"
+#include "validation/sinusoidal_stress.hpp"

@@ -646,10 +646,16 @@ StressSpec read_stress(const toml::table& root, const Scene& scene) {
                     " = ", nz, " must be in [1, ", StressOperator::max_planes, "]");
     spec.nz = static_cast<int>(nz);
   }
+  // A periodic surface's kernels lie on the period's own lattice: alpha, the free surface's
+  // sampling period, would be ignored there, so it is refused.
+  spec.periodic = scene.periodic;
+  COATFFT_REQUIRE(!spec.periodic || !reader.has("alpha"), reader.where("alpha"),
+                  " sets the sampling lattice of a free surface's kernels; with [grid] boundary = "
+                  "\"periodic\" they lie on the period's own lattice: remove it");
   const std::int64_t alpha = reader.integer("alpha", 16);
   COATFFT_REQUIRE(alpha >= 2 && alpha <= 32, reader.where("alpha"), " = ", alpha,
                   " must be an integer in [2, 32]");
-  COATFFT_REQUIRE(alpha * std::max(scene.grid.nx(), scene.grid.ny()) <= 16384,
+  COATFFT_REQUIRE(spec.periodic || alpha * std::max(scene.grid.nx(), scene.grid.ny()) <= 16384,
                   reader.where("alpha"), " = ", alpha, " times ",
                   std::max(scene.grid.nx(), scene.grid.ny()),
                   " cells exceeds the 16384-point sampling lattice; lower alpha");
@@ -661,7 +667,8 @@ StressSpec read_stress(const toml::table& root, const Scene& scene) {
     kernel.alpha = spec.alpha;
     if (!planes.empty()) {
       const double z = *std::min_element(planes.begin(), planes.end());
-      const double n = stress_kernel_evaluations(scene.grid, planes, kernel);
+      const double n = spec.periodic ? periodic_stress_evaluations(scene.grid, planes, kernel)
+                                     : stress_kernel_evaluations(scene.grid, planes, kernel);
       COATFFT_REQUIRE(n <= kernel.max_evaluations, "[stress] the plane at z = ", z,
                       " m is too shallow for a ", scene.grid.lx(), " x ", scene.grid.ly(),
                       " m domain: its kernel needs about ", n, " FRF evaluations (limit ",
@@ -730,12 +737,9 @@ void check_tangential(const Scene& scene, const char* key) {
 
 // [grid] boundary = "periodic": the periodic operator of convolution/kernels/periodic_kernel.hpp,
 // built from the body's FRF (docs/theory.md 4.8); its method is checked with the other [method]
-// keys (method_from_request). The stresses and the tangential tractions compute free bodies only
-// so far: refused.
+// keys (method_from_request), its stresses by read_stress. The tangential tractions act on free
+// bodies only so far: refused.
 void check_periodic(const Scene& scene) {
-  COATFFT_REQUIRE(!scene.stress,
-                  "[stress] computes free (non-periodic) bodies only so far: "
-                  "remove it or use [grid] boundary = \"free\"");
   COATFFT_REQUIRE(!scene.shear && !(scene.contact && scene.contact->friction > 0.0),
                   "tangential tractions ([shear], [contact] friction) act on free (non-periodic) "
                   "surfaces only so far: use [grid] boundary = \"free\"");
@@ -806,6 +810,7 @@ Scene read_scene(const std::filesystem::path& path) {
                 std::nullopt,
                 {},
                 {}};
+    scene.periodic = grid.periodic;
     if (root.contains("frf")) read_frf(root, scene_dir, scene);
     resolve_periodic_method(scene.method, scene.body && !scene.frf ? &*scene.body : nullptr);
     if (grid.tolerance_total) scene.grid = refine_grid(root, grid, scene);
@@ -841,13 +846,14 @@ Scene read_scene(const std::filesystem::path& path) {
     if (scene.contact && scene.contact->friction > 0.0)
       check_tangential(scene, "[contact] friction");
     if (scene.contact && !scene.contact->sweep.empty()) check_sweep(scene);
-    scene.periodic = grid.periodic;
     if (scene.periodic) check_periodic(scene);
     // The in-plane surface displacements (ux.npy, uy.npy), with tangential tractions or stresses,
-    // of a bonded body whose traction kernels are affordable (checked above when tractions act).
+    // of a free bonded body whose traction kernels are affordable (checked above when tractions
+    // act).
     scene.output.in_plane =
         (scene.stress || scene.shear || (scene.contact && scene.contact->friction > 0.0)) &&
-        !scene.frf && scene.body && scene.body->all_bonded() && traction_kernels_affordable(scene);
+        !scene.periodic && !scene.frf && scene.body && scene.body->all_bonded() &&
+        traction_kernels_affordable(scene);
     // g(0) only shifts every displacement by one constant, which a load-controlled contact
     // absorbs in its approach; when that approach is not reported, g(0) is not computed at all.
     if (scene.contact && !scene.contact->report_approach)

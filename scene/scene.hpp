@@ -131,6 +131,7 @@ struct StressSpec {
   double depth_max = 0.0;                     ///< the section's deepest row [m]
   int nz = 0;                                 ///< the section's rows, at depth_max k/nz, k = 1..nz
   int alpha = 16;  ///< period of the kernels' sampling lattice over the domain (docs/stress.md)
+  bool periodic = false;  ///< [grid] boundary = "periodic": the kernels on the period's lattice
 };
 
 /// The most values of a [contact] sweep (a guard against runaway input: each is a solve and a

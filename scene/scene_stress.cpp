@@ -131,6 +131,7 @@ StressRun compute_stress(const StressSpec& spec, const LayerStack& body, const G
   StressOperatorOptions options;
   options.kernel.alpha = spec.alpha;
   options.kernel.threads = threads;
+  options.periodic = spec.periodic;
   options.sides = planes.sides;
   options.tangential = q.qx || q.qy;
   const std::unique_ptr<StressOperator> op =
@@ -154,7 +155,8 @@ StressRun compute_stress(const StressSpec& spec, const LayerStack& body, const G
   run.summary = {{"warnings", alias_warnings(*op)},
                  {"depths", spec.depths},
                  {"at_interface", spec.side == InterfaceSide::below ? "below" : "above"},
-                 {"alpha", spec.alpha},
+                 {"alpha", spec.periodic ? nlohmann::json() : nlohmann::json(spec.alpha)},
+                 {"periodic", spec.periodic},
                  {"max_von_mises", peaks.mises.json()},
                  {"max_principal_tensile", peaks.tensile.json()},
                  {"max_tresca", peaks.tresca.json()},

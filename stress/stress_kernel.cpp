@@ -125,10 +125,10 @@ StressLattice make_lattice(const Grid& grid, std::span<const double> depths,
   return l;
 }
 
-// Refused beyond options.max_evaluations (or at z = 0), before any work.
-void refuse_costly(const Grid& grid, std::span<const double> depths, const StressKernelOptions& o) {
+// Refused beyond options.max_evaluations (or at z = 0), before any work; `estimate` the cost.
+void refuse_costly(const Grid& grid, std::span<const double> depths, const StressKernelOptions& o,
+                   double estimate) {
   const double z = *std::min_element(depths.begin(), depths.end());
-  const double estimate = stress_kernel_evaluations(grid, depths, o);
   if (z == 0.0 || estimate > o.max_evaluations)
     throw InvalidArgument(detail::concat(
         "stress kernel: the plane at z = ", z, " m is so shallow against the domain (", grid.lx(),
@@ -292,7 +292,7 @@ std::vector<StressPlaneKernel> stress_plane_kernels(const Grid& grid, const Laye
           }
         }
   };
-  refuse_costly(grid, depths, options);
+  refuse_costly(grid, depths, options, stress_kernel_evaluations(grid, depths, options));
   if (options.alpha == 2) {
     add(make_lattice(grid, depths, options, 2, Part::whole, 0.0, &r));
   } else {
@@ -309,6 +309,49 @@ std::vector<StressPlaneKernel> stress_plane_kernels(const Grid& grid, const Laye
   }
   if (reports) *reports = r;
   return kernels;
+}
+
+double periodic_stress_evaluations(const Grid& grid, std::span<const double> depths,
+                                   const StressKernelOptions& options) {
+  validate(grid, depths, options);
+  const double z = *std::min_element(depths.begin(), depths.end());
+  if (z == 0.0) return std::numeric_limits<double>::infinity();
+  const double k_cut = exponential_cut_off(z, options.tolerance);
+  const double cell = (2.0 * pi / grid.lx()) * (2.0 * pi / grid.ly());
+  const double quarter = (grid.nx() / 2 + 1.0) * (grid.ny() / 2 + 1.0);
+  return std::max(0.25 * pi * k_cut * k_cut / cell, quarter);
+}
+
+std::vector<StressPlaneSpectrum> periodic_stress_spectra(const Grid& grid, const LayerStack& stack,
+                                                         std::span<const double> depths,
+                                                         InterfaceSide side, bool tangential,
+                                                         const StressKernelOptions& options,
+                                                         std::vector<StressKernelReport>* reports) {
+  const auto start = std::chrono::steady_clock::now();
+  validate(grid, depths, options);
+  COATFFT_REQUIRE(grid.nx() % 2 == 0 && grid.ny() % 2 == 0,
+                  "stress kernel: a periodic grid needs nx and ny even");
+  refuse_costly(grid, depths, options, periodic_stress_evaluations(grid, depths, options));
+  std::vector<StressKernelReport> r(depths.size());
+  const int nb_loads = tangential ? 3 : 1;
+  const LayerModes modes(stack);
+  const std::vector<StressFrf> at_zero =
+      limit_at_zero(modes, grid, depths, stack.total_thickness(), side);
+  // The period's own lattice (alpha = 1): its quarters are the spectra themselves.
+  const StressLattice lattice = make_lattice(grid, depths, options, 1, Part::whole, 0.0, &r);
+  long long evaluations = 0;
+  std::vector<Quarters> g = sample_quarters({modes, lattice, depths, side, nb_loads, at_zero},
+                                            options.threads, evaluations);
+  std::vector<StressPlaneSpectrum> spectra(depths.size());
+  const double seconds = detail::seconds_since(start);
+  for (std::size_t d = 0; d < depths.size(); ++d) {
+    spectra[d].depth = depths[d];
+    spectra[d].quarters = std::move(g[d]);
+    r[d].frf_evaluations = evaluations;
+    r[d].seconds = seconds;
+  }
+  if (reports) *reports = r;
+  return spectra;
 }
 
 StressPlaneKernel stress_plane_kernel(const Grid& grid, const LayerStack& stack, double depth,

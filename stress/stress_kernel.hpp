@@ -73,6 +73,31 @@ std::vector<StressPlaneKernel> stress_plane_kernels(
 double stress_kernel_evaluations(const Grid& grid, std::span<const double> depths,
                                  const StressKernelOptions& options = {});
 
+/// The kernels of a periodic surface's planes, given by their spectra on the period's own lattice
+/// k = 2 pi (i/lx, j/ly), 0 <= i <= nx/2, 0 <= j <= ny/2: quarters[c][l](i, j) = i^(odd_x + odd_y)
+/// F(k) (real; the parity of stress_frf_odd(c, l)), F the FRF of docs/theory.md 2.7 times the
+/// cell's transform with every alias k + 2 pi (p/dx, q/dy) folded in: exact for cell-wise
+/// constant loads repeated over the periods, nothing periodised twice (no alpha). The k = 0 entry
+/// is the FRF's mean over the directions (stress_frf_at_zero): the mean stress under the mean
+/// loads, that at depth under the centre of a uniformly loaded disc much wider than the depth
+/// (docs/stress.md, "Periodic surfaces"). Arguments, errors and reports as stress_plane_kernels;
+/// options.alpha is not used.
+struct StressPlaneSpectrum {
+  double depth = 0.0;
+  std::array<std::array<Field, 3>, 6> quarters;
+};
+
+std::vector<StressPlaneSpectrum> periodic_stress_spectra(
+    const Grid& grid, const LayerStack& stack, std::span<const double> depths, InterfaceSide side,
+    bool tangential, const StressKernelOptions& options = {},
+    std::vector<StressKernelReport>* reports = nullptr);
+
+/// About how many LayerModes solves periodic_stress_spectra makes for `depths`: the quarter disk
+/// |k| <= k_cut of the shallowest plane over the period's lattice cell, at least the lattice
+/// quarter; +inf for z = 0.
+double periodic_stress_evaluations(const Grid& grid, std::span<const double> depths,
+                                   const StressKernelOptions& options = {});
+
 StressPlaneKernel stress_plane_kernel(const Grid& grid, const LayerStack& stack, double depth,
                                       InterfaceSide side, bool tangential,
                                       const StressKernelOptions& options = {},

@@ -27,6 +27,18 @@ void refuse_sliding_tangential(const LayerStack& stack) {
           "there");
 }
 
+// Stress component c's kernels, one per load, with their parities: ParityKernel (coefficients)
+// or ParitySpectrum (spectra), each {field, odd_x, odd_y}. The fields are moved from.
+template <typename Kernel>
+std::vector<Kernel> per_load(std::array<Field, 3>& fields, int c, int nb_loads) {
+  std::vector<Kernel> kernels;
+  for (int l = 0; l < nb_loads; ++l) {
+    const auto odd = stress_frf_odd(c, l);
+    kernels.push_back({std::move(fields[l]), odd[0], odd[1]});
+  }
+  return kernels;
+}
+
 }  // namespace
 
 void require_stress_depths(const std::vector<double>& depths) {
@@ -41,12 +53,18 @@ void require_stress_depths(const std::vector<double>& depths) {
           "z = 0 is not computed)"));
 }
 
-double estimated_stress_bytes(const Grid& grid, std::size_t planes, int alpha, bool tangential) {
+double estimated_stress_bytes(const Grid& grid, std::size_t planes, int alpha, bool tangential,
+                              bool periodic) {
   const double n = static_cast<double>(planes);
   const double loads = tangential ? 3.0 : 1.0;
+  const double cells = double(grid.nx()) * double(grid.ny());
+  if (periodic) {
+    // Per plane: six spectrum quarters per load and the six output fields; the load spectra.
+    const double quarter = (grid.nx() / 2 + 1.0) * (grid.ny() / 2 + 1.0);
+    return 8.0 * (n * (6 * loads * quarter + 7 * cells) + 4 * loads * quarter);
+  }
   const double hx = double(fast_even_fft_size(2 * grid.nx() - 1)) / 2 + 1;
   const double hy = double(fast_even_fft_size(2 * grid.ny() - 1)) / 2 + 1;
-  const double cells = double(grid.nx()) * double(grid.ny());
   // Per plane: six spectrum quarters per load and the six output fields (plus von Mises on
   // output); while a group of up to 8 planes is built: six quarters of DC-FFT's lattice and six
   // of the long-range band, about (34 alpha)^2 entries (sqrt(45) 32 alpha/(2 pi) per side); the
@@ -62,7 +80,7 @@ StressOperator::StressOperator(const Grid& grid, const LayerStack& stack,
                                std::vector<double> depths, const StressOperatorOptions& options)
     : depths_(std::move(depths)),
       tangential_(options.tangential),
-      convolution_(grid, options.tangential ? 3 : 1, options.planning) {
+      convolution_(grid, options.tangential ? 3 : 1, options.planning, options.periodic) {
   const auto start = std::chrono::steady_clock::now();
   require_stress_depths(depths_);
   COATFFT_REQUIRE(options.sides.empty() || options.sides.size() == depths_.size(),
@@ -76,27 +94,35 @@ StressOperator::StressOperator(const Grid& grid, const LayerStack& stack,
   // solve per wavevector serves a group, and a group's lattice quarters (six per plane) bound
   // the memory.
   constexpr std::size_t kGroup = 8;
-  const int nb_loads = convolution_.nb_loads();
   for (std::size_t first = 0, count = 0; first < depths_.size(); first += count) {
     count = 1;
     while (count < kGroup && first + count < depths_.size() && side(first + count) == side(first))
       ++count;
-    std::vector<StressKernelReport> reports;
-    std::vector<StressPlaneKernel> kernels =
-        stress_plane_kernels(grid, stack, std::span<const double>(depths_).subspan(first, count),
-                             side(first), tangential_, options.kernel, &reports);
-    for (StressPlaneKernel& kernel : kernels)
-      for (int c = 0; c < 6; ++c) {
-        std::vector<ParityKernel> per_load;
-        for (int l = 0; l < nb_loads; ++l) {
-          const auto odd = stress_frf_odd(c, l);
-          per_load.push_back({std::move(kernel.coefficients[c][l]), odd[0], odd[1]});
-        }
-        convolution_.add_output(per_load);
-      }
-    reports_.insert(reports_.end(), reports.begin(), reports.end());
+    add_planes(grid, stack, first, count, side(first), options);
   }
   setup_seconds_ = detail::seconds_since(start);
+}
+
+// The six outputs of each plane first..first + count - 1: from the coefficients of a free
+// surface, or from the spectra of a periodic one.
+void StressOperator::add_planes(const Grid& grid, const LayerStack& stack, std::size_t first,
+                                std::size_t count, InterfaceSide side,
+                                const StressOperatorOptions& options) {
+  const int nb_loads = convolution_.nb_loads();
+  const auto depths = std::span<const double>(depths_).subspan(first, count);
+  std::vector<StressKernelReport> reports;
+  if (options.periodic) {
+    for (StressPlaneSpectrum& plane :
+         periodic_stress_spectra(grid, stack, depths, side, tangential_, options.kernel, &reports))
+      for (int c = 0; c < 6; ++c)
+        convolution_.add_spectral_output(per_load<ParitySpectrum>(plane.quarters[c], c, nb_loads));
+  } else {
+    for (StressPlaneKernel& kernel :
+         stress_plane_kernels(grid, stack, depths, side, tangential_, options.kernel, &reports))
+      for (int c = 0; c < 6; ++c)
+        convolution_.add_output(per_load<ParityKernel>(kernel.coefficients[c], c, nb_loads));
+  }
+  reports_.insert(reports_.end(), reports.begin(), reports.end());
 }
 
 void StressOperator::apply(const Field& pressure, const Field* qx, const Field* qy,

@@ -2,7 +2,9 @@
 // Stresses on planes z = const inside a layered body under surface loads: the linear convolution
 // of the cell-integrated loads with each plane's influence coefficients (stress/stress_kernel.hpp),
 // computed exactly (to rounding) as a circular one on a zero-padded grid, as DC-FFT does for the
-// surface displacement (Liu, Wang & Liu 2000). Everything is planned in the constructor; apply()
+// surface displacement (Liu, Wang & Liu 2000). On a periodic surface, the circular convolution
+// over the period with the planes' spectra on its own lattice (no padding), exact for loads
+// repeated over the periods. Everything is planned in the constructor; apply()
 // transforms each load once, then per plane multiplies and runs six inverse transforms: a plane
 // costs about three surface applications (docs/stress.md).
 #include <array>
@@ -33,6 +35,9 @@ struct StressOperatorOptions {
   std::vector<InterfaceSide> sides = {};
   /// Whether the tractions q_x, q_y are loads too (their kernels cost twice the pressure's).
   bool tangential = false;
+  /// The surface repeats over the grid's domain (nx, ny even): periodic_stress_spectra's
+  /// kernels, kernel.alpha unused.
+  bool periodic = false;
   Planning planning = Planning::estimate;
 };
 
@@ -44,7 +49,8 @@ void require_stress_depths(const std::vector<double>& depths);
 /// An upper estimate of the bytes a StressOperator of `planes` planes on `grid` takes while
 /// built and applied (its spectra, a group's kernel construction, the output fields), for a
 /// memory check before any allocation (core/memory.hpp); `alpha` as StressKernelOptions::alpha.
-double estimated_stress_bytes(const Grid& grid, std::size_t planes, int alpha, bool tangential);
+double estimated_stress_bytes(const Grid& grid, std::size_t planes, int alpha, bool tangential,
+                              bool periodic = false);
 
 class StressOperator {
  public:
@@ -64,6 +70,7 @@ class StressOperator {
   const Grid& grid() const { return convolution_.grid(); }
   const std::vector<double>& depths() const { return depths_; }
   bool tangential() const { return tangential_; }
+  bool periodic() const { return convolution_.periodic(); }
 
   /// The stresses on every plane under the pressure (compression positive) and, for a
   /// tangential operator, the tractions q_x, q_y the surface receives (null: zero), each
@@ -84,6 +91,9 @@ class StressOperator {
   std::vector<Field> fields_;      // apply()'s outputs before they are moved into planes
   std::vector<StressKernelReport> reports_;
   double setup_seconds_ = 0.0;
+
+  void add_planes(const Grid& grid, const LayerStack& stack, std::size_t first, std::size_t count,
+                  InterfaceSide side, const StressOperatorOptions& options);
 };
 
 /// The factory of the stress operator, the counterpart of make_operator and

@@ -124,6 +124,33 @@ TEST_CASE("a light rough periodic contact converges only on a solution", "[cli_p
   CHECK(s["max_penetration"].get<double>() >= 0.0);
 }
 
+TEST_CASE("a periodic scene's stresses balance its mean pressure on every plane",
+          "[cli_periodic]") {
+  // On a periodic surface the mean of sigma_zz over any plane is minus the mean pressure
+  // (equilibrium of the slab above it), and the means of the shear stresses are zero; a free
+  // surface's window has no such balance. The in-plane surface displacements (free surfaces
+  // only so far) are not written.
+  const fs::path out =
+      run_scene_ok(kPeriodicHertz + "[stress]\ndepths = [2.5e-4, 1e-3]\n", "periodic_stress");
+  const nlohmann::json s = read_summary(out);
+  CHECK(s["stress"]["periodic"] == true);
+  CHECK(s["stress"]["alpha"].is_null());
+  CHECK_FALSE(fs::exists(out / "ux.npy"));
+  REQUIRE(npy_shape(out / "stress.npy") == "(2, 6, 64, 64)");
+  const std::vector<double> stress = npy_values(out / "stress.npy");
+  const double mean_p = s["total_load"].get<double>() / (3e-3 * 3e-3);
+  const std::size_t plane = 64 * 64;
+  for (std::size_t d = 0; d < 2; ++d) {
+    const auto mean = [&](int c) {
+      double sum = 0.0;
+      for (std::size_t n = 0; n < plane; ++n) sum += stress[(6 * d + c) * plane + n];
+      return sum / plane;
+    };
+    CHECK(std::abs(mean(2) + mean_p) < 1e-12 * 1e9);  // sigma_zz; p0 = 1 GPa
+    for (int c : {3, 4, 5}) CHECK(std::abs(mean(c)) < 1e-12 * 1e9);
+  }
+}
+
 TEST_CASE("periodic scenes refuse what they do not support", "[cli_periodic]") {
   const BadCase cases[] = {
       {"periodic_spectral", "material = \"steel\"",
@@ -131,7 +158,8 @@ TEST_CASE("periodic scenes refuse what they do not support", "[cli_periodic]") {
       {"periodic_odd", "nx = 64", "nx = 63", "even"},
       {"periodic_refine", "nx = 64\nny = 64", "refine = \"auto\"\ntolerance_total = 0.01",
        "refine"},
-      {"periodic_stress", "a = 1.0e-3", "a = 1.0e-3\n[stress]\ndepths = [5e-4]", "[stress]"},
+      {"periodic_stress_alpha", "a = 1.0e-3", "a = 1.0e-3\n[stress]\ndepths = [5e-4]\nalpha = 8",
+       "alpha"},
       {"periodic_shear", "a = 1.0e-3", "a = 1.0e-3\n[shear]\nkind = \"proportional\"\nmu = 0.2",
        "tangential"},
       {"periodic_boundary", "boundary = \"periodic\"", "boundary = \"open\"", "boundary"},

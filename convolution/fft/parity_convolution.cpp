@@ -40,13 +40,17 @@ Field padded_spectrum(const Field& coefficients, std::ptrdiff_t hx, std::ptrdiff
 
 }  // namespace
 
-ParityConvolution::ParityConvolution(const Grid& grid, int nb_loads, Planning planning)
-    : grid_(grid), nb_loads_(nb_loads) {
+ParityConvolution::ParityConvolution(const Grid& grid, int nb_loads, Planning planning,
+                                     bool periodic)
+    : grid_(grid), nb_loads_(nb_loads), periodic_(periodic) {
   if (nb_loads < 1 || nb_loads > 3) throw InvalidArgument("parity convolution: 1 to 3 loads");
+  COATFFT_REQUIRE(!periodic || (grid.nx() % 2 == 0 && grid.ny() % 2 == 0),
+                  "parity convolution: a periodic grid needs nx and ny even");
   // Any period >= 2n - 1 keeps the offsets -(n - 1)..n - 1 apart (DC-FFT); even, for the parity
-  // transforms, and 7-smooth, for FFTW (core/fft_size.hpp).
-  mx_ = fast_even_fft_size(2 * grid_.nx() - 1);
-  my_ = fast_even_fft_size(2 * grid_.ny() - 1);
+  // transforms, and 7-smooth, for FFTW (core/fft_size.hpp). A periodic surface's period is the
+  // grid's own.
+  mx_ = periodic ? grid_.nx() : fast_even_fft_size(2 * grid_.nx() - 1);
+  my_ = periodic ? grid_.ny() : fast_even_fft_size(2 * grid_.ny() - 1);
   hx_ = mx_ / 2 + 1;
   hy_ = my_ / 2 + 1;
   plan_transforms(planning);
@@ -59,6 +63,8 @@ ParityConvolution& ParityConvolution::operator=(ParityConvolution&&) noexcept = 
 void ParityConvolution::add_output(std::span<const ParityKernel> kernels) {
   if (static_cast<int>(kernels.size()) != nb_loads_)
     throw InvalidArgument("parity convolution: one kernel per load");
+  COATFFT_REQUIRE(!periodic_,
+                  "parity convolution: a periodic convolution's kernels are given by spectra");
   const double scale = 1.0 / (static_cast<double>(mx_) * static_cast<double>(my_));
   std::vector<Field> spectra;
   std::vector<std::array<bool, 2>> odd;
@@ -71,6 +77,25 @@ void ParityConvolution::add_output(std::span<const ParityKernel> kernels) {
     odd.push_back({k.odd_x, k.odd_y});
   }
   spectra_.push_back(std::move(spectra));
+  odd_.push_back(std::move(odd));
+}
+
+void ParityConvolution::add_spectral_output(std::span<const ParitySpectrum> spectra) {
+  COATFFT_REQUIRE(static_cast<int>(spectra.size()) == nb_loads_,
+                  "parity convolution: one spectrum per load");
+  const double scale = 1.0 / (static_cast<double>(mx_) * static_cast<double>(my_));
+  std::vector<Field> stored;
+  std::vector<std::array<bool, 2>> odd;
+  for (const ParitySpectrum& s : spectra) {
+    COATFFT_REQUIRE(s.quarter.size() == 0 || (s.quarter.rows() == hx_ && s.quarter.cols() == hy_),
+                    "parity convolution: a spectrum's shape is not the lattice quarter (", hx_,
+                    ", ", hy_, ")");
+    COATFFT_REQUIRE(s.quarter.allFinite(), "parity convolution: a spectrum holds NaN or Inf");
+    // Transposed to (hy, hx) as add_output's, FFTW's 1/(mx my) folded in.
+    stored.push_back(s.quarter.size() == 0 ? Field() : Field(scale * s.quarter.transpose()));
+    odd.push_back({s.odd_x, s.odd_y});
+  }
+  spectra_.push_back(std::move(stored));
   odd_.push_back(std::move(odd));
 }
 

@@ -2,7 +2,9 @@
 // Linear convolutions of up to three loads with influence coefficients that are even or odd along
 // each axis (the stress kernels of a plane, Cerruti's and Love's surface coefficients), each
 // output the sum over the loads, computed exactly (to rounding) as circular convolutions on a
-// zero-padded grid, as DC-FFT does (Liu, Wang & Liu 2000). A kernel's spectrum is then real or
+// zero-padded grid, as DC-FFT does (Liu, Wang & Liu 2000); or, for a periodic surface, circular
+// convolutions on the grid itself, whose kernels are given by their spectra on the period's
+// lattice. A kernel's spectrum is then real or
 // imaginary and is stored as a real quarter (convolution/fft/parity_transform.hpp); the loads are
 // transformed once per apply, and each output costs one pruned inverse transform: half a
 // surface application.
@@ -27,10 +29,22 @@ struct ParityKernel {
   bool odd_y = false;
 };
 
+/// A kernel given by its spectrum on the convolution's lattice: `quarter` (lattice_quarter())
+/// holds G(kx, ky) = i^(odd_x + odd_y) F(kx, ky) for 0 <= kx, ky up to Nyquist, F the spectrum of
+/// the coefficients (forward transform exp(-i k.x), real G by the parity); F at -kx, -ky follows
+/// from the parity. An empty quarter is a zero kernel.
+struct ParitySpectrum {
+  Field quarter;
+  bool odd_x = false;
+  bool odd_y = false;
+};
+
 class ParityConvolution {
  public:
-  /// Plans the transforms of `nb_loads` (1..3) loads on `grid`.
-  ParityConvolution(const Grid& grid, int nb_loads, Planning planning = Planning::estimate);
+  /// Plans the transforms of `nb_loads` (1..3) loads on `grid`: linear convolutions (on a padded
+  /// lattice), or circular ones over the grid's period when `periodic` (nx, ny even).
+  ParityConvolution(const Grid& grid, int nb_loads, Planning planning = Planning::estimate,
+                    bool periodic = false);
   ~ParityConvolution();
   ParityConvolution(ParityConvolution&&) noexcept;
   ParityConvolution& operator=(ParityConvolution&&) noexcept;
@@ -38,6 +52,14 @@ class ParityConvolution {
   /// Adds an output: the sum over the loads l of kernels[l] convolved with load l (kernels has
   /// nb_loads entries, each empty or of shape (nx, ny)). Throws InvalidArgument otherwise.
   void add_output(std::span<const ParityKernel> kernels);
+  /// Adds an output given by its kernels' spectra (one per load, each empty or of shape
+  /// lattice_quarter()); the only way to give a periodic convolution its kernels.
+  void add_spectral_output(std::span<const ParitySpectrum> spectra);
+
+  /// The quarter (mx/2 + 1, my/2 + 1) of the lattice the spectra are given on: (mx, my) the
+  /// padded lengths, or (nx, ny) for a periodic convolution.
+  std::array<std::ptrdiff_t, 2> lattice_quarter() const { return {hx_, hy_}; }
+  bool periodic() const { return periodic_; }
 
   const Grid& grid() const { return grid_; }
   int nb_loads() const { return nb_loads_; }
@@ -60,6 +82,7 @@ class ParityConvolution {
 
   Grid grid_;
   int nb_loads_;
+  bool periodic_;
   std::ptrdiff_t mx_, my_, hx_, hy_;  // padded lengths, mx/2 + 1, my/2 + 1
   // spectra_[output][load]: the padded spectrum quarter of the coefficients, transposed to
   // (hy, hx), real: the spectrum is (-i)^(odd_x + odd_y) times it (parity_transform); empty for

@@ -71,12 +71,27 @@ std::vector<double> depth_list(const DoubleArray& depths) {
 }
 
 // The program's memory refusal (core/memory.hpp) for `planes` planes and their output array.
-void require_stress_memory(const Grid& grid, std::size_t planes, int alpha, bool tangential) {
+void require_stress_memory(const Grid& grid, std::size_t planes, const StressOperatorOptions& o) {
   const double out = 6.0 * 8.0 * static_cast<double>(planes) * static_cast<double>(grid.nb_cells());
-  require_memory({estimated_stress_bytes(grid, planes, alpha, tangential) + out,
-                  detail::concat("grid ", grid.nx(), " x ", grid.ny(), ", ", planes,
-                                 " planes at alpha = ", alpha)},
+  const int alpha = o.kernel.alpha;
+  require_memory({estimated_stress_bytes(grid, planes, alpha, o.tangential, o.periodic) + out,
+                  o.periodic ? detail::concat("grid ", grid.nx(), " x ", grid.ny(), ", ", planes,
+                                              " periodic planes")
+                             : detail::concat("grid ", grid.nx(), " x ", grid.ny(), ", ", planes,
+                                              " planes at alpha = ", alpha)},
                  std::nullopt, "stresses", "", "use fewer cells or fewer depths");
+}
+
+// boundary = "free" or "periodic", as [grid] boundary; alpha, the free surface's sampling period,
+// is refused on a periodic one (the program's [stress] alpha likewise).
+bool periodic_stress(const std::string& boundary, const std::optional<int>& alpha) {
+  COATFFT_REQUIRE(boundary == "free" || boundary == "periodic", "stresses: boundary = \"", boundary,
+                  "\" is not one of \"free\", \"periodic\"");
+  const bool periodic = boundary == "periodic";
+  COATFFT_REQUIRE(!periodic || !alpha,
+                  "stresses: alpha sets the sampling lattice of a free surface's kernels; with "
+                  "boundary = \"periodic\" they lie on the period's own lattice: leave it out");
+  return periodic;
 }
 
 // (n_depths, 6, ny, nx) [Pa], components xx, yy, zz, yz, xz, xy, as stress.npy.
@@ -84,17 +99,18 @@ py::array_t<double> stresses(py::handle body_object, const Grid& grid,
                              const DoubleArray& depth_array, const DoubleArray& pressure,
                              const std::optional<DoubleArray>& qx,
                              const std::optional<DoubleArray>& qy, const std::string& at_interface,
-                             int alpha, int threads) {
+                             const std::string& boundary, std::optional<int> alpha, int threads) {
   const LayerStack stack =
       layers_of(body_object, "stresses", "the fields at depth need the layers");
   const std::vector<double> depths = depth_list(depth_array);
   StressOperatorOptions options;
   options.side = parse_side(at_interface);
-  options.kernel.alpha = alpha;
+  options.periodic = periodic_stress(boundary, alpha);
+  options.kernel.alpha = alpha.value_or(options.kernel.alpha);
   options.kernel.threads = threads;
   options.tangential = qx || qy;
   // Before the loads are copied: a grid too large is refused before anything is allocated.
-  require_stress_memory(grid, depths.size(), alpha, options.tangential);
+  require_stress_memory(grid, depths.size(), options);
   const SurfaceLoads loads = surface_loads("stresses", grid, pressure, qx, qy);
   std::vector<double> values;
   without_gil([&] {
@@ -186,11 +202,15 @@ py::array_t<double> tresca_of(const DoubleArray& stress) {
 void bind_stress(py::module_& m) {
   m.def("stresses", &stresses, py::arg("body"), py::arg("grid"), py::arg("depths"),
         py::arg("pressure"), py::arg("qx") = py::none(), py::arg("qy") = py::none(), py::kw_only(),
-        py::arg("at_interface") = "below", py::arg("alpha") = 16, py::arg("threads") = 1,
+        py::arg("at_interface") = "below", py::arg("boundary") = "free",
+        py::arg("alpha") = py::none(), py::arg("threads") = 1,
         "Stresses [Pa] on the planes z = depths [m] inside `body` (a LayerStack or Material) "
         "under the pressure (compression positive) and the tractions qx, qy the surface "
         "receives, each (ny, nx) [Pa] of `grid`: an array (n_depths, 6, ny, nx), components xx, "
-        "yy, zz, yz, xz, xy, tension positive, z into the body (docs/stress.md).");
+        "yy, zz, yz, xz, xy, tension positive, z into the body (docs/stress.md). boundary = "
+        "\"periodic\": the loads repeat over the grid's domain (nx, ny even; the mean stress "
+        "is that under a wide uniformly loaded disc, docs/stress.md); alpha (default 16) is the "
+        "free surface's sampling period.");
   m.def("surface_displacements", &surface_displacements, py::arg("body"), py::arg("grid"),
         py::arg("pressure"), py::arg("qx") = py::none(), py::arg("qy") = py::none(), py::kw_only(),
         py::arg("threads") = 1,

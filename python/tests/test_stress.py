@@ -74,6 +74,43 @@ def test_equals_the_program(coatfft_exe, tmp_path, steel, tin):
     np.testing.assert_array_equal(coatfft.von_mises(s), run["von_mises"])
 
 
+def test_periodic_equals_the_program(coatfft_exe, tmp_path, steel, tin):
+    # A periodic coated scene with [stress]: run_scene, the program and stresses(...,
+    # boundary="periodic") give the same planes bitwise.
+    text = (
+        "[grid]\nnx = 32\nny = 32\nlx = 1e-3\nly = 1e-3\nboundary = \"periodic\"\n"
+        "[substrate]\nmaterial = \"steel\"\n[[coating]]\nmaterial = \"titanium_nitride\"\n"
+        "thickness = 1e-4\n[pressure]\nkind = \"hertz\"\np0 = 1e9\na = 2e-4\n"
+        "[stress]\ndepths = [1e-4, 2e-4]\n")
+    scene = tmp_path / "periodic_stress.toml"
+    scene.write_text(text)
+    out = tmp_path / "out"
+    done = subprocess.run([coatfft_exe, "run", str(scene), "-o", str(out), "--quiet"],
+                          capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    run = coatfft.run_scene(str(scene))
+    np.testing.assert_array_equal(run["stress"], np.load(out / "stress.npy"))
+    assert run["summary"]["stress"]["periodic"] is True
+    grid = coatfft.Grid(32, 32, 1e-3, 1e-3)
+    body = coatfft.LayerStack(steel, [coatfft.Coating(tin, 1e-4)])
+    s = coatfft.stresses(body, grid, [1e-4, 2e-4], run["pressure"], boundary="periodic")
+    np.testing.assert_array_equal(s, run["stress"])
+    # Equilibrium of the slab above each plane: mean sigma_zz = -mean pressure.
+    np.testing.assert_allclose(s[:, 2].mean(axis=(1, 2)), -run["pressure"].mean(), rtol=1e-12)
+
+
+def test_periodic_errors(steel):
+    grid, p = hertz_case(17)
+    even = coatfft.Grid(16, 16, 1e-3, 1e-3)
+    q = np.zeros((16, 16))
+    with pytest.raises(ValueError, match="alpha"):
+        coatfft.stresses(steel, even, [1e-4], q, boundary="periodic", alpha=8)
+    with pytest.raises(ValueError, match="boundary"):
+        coatfft.stresses(steel, even, [1e-4], q, boundary="open")
+    with pytest.raises(ValueError, match="even"):
+        coatfft.stresses(steel, grid, [1e-4], p, boundary="periodic")
+
+
 def test_tractions_are_linear(steel):
     grid, p = hertz_case(33)
     base = coatfft.stresses(steel, grid, [3e-4], p, alpha=4)
