@@ -17,6 +17,7 @@
 #include "convolution/kernels/lattice_coefficients.hpp"
 #include "convolution/kernels/love_influence.hpp"
 #include "convolution/kernels/periodic_kernel.hpp"
+#include "convolution/kernels/periodic_traction_kernels.hpp"
 #include "convolution/kernels/split_frf_kernel.hpp"
 #include "convolution/kernels/traction_kernels.hpp"
 #include "convolution/method.hpp"

@@ -29,11 +29,15 @@ struct ParityConvolution::Transforms {
 
 namespace {
 
-// The padded spectrum quarter of one coefficient quarter, with FFTW's 1/(mx my) folded in.
+// The spectrum quarter (hx, hy) of one coefficient quarter, with FFTW's 1/(mx my) folded in:
+// zero-padded, or, for periodic coefficients (nx, ny), their offsets 0..nx/2, 0..ny/2 (the rest
+// follows by the parity).
 Field padded_spectrum(const Field& coefficients, std::ptrdiff_t hx, std::ptrdiff_t hy,
                       std::array<bool, 2> odd, double scale) {
   Field quarter = Field::Zero(hx, hy);
-  quarter.topLeftCorner(coefficients.rows(), coefficients.cols()) = coefficients;
+  const std::ptrdiff_t rows = std::min(hx, coefficients.rows());
+  const std::ptrdiff_t cols = std::min(hy, coefficients.cols());
+  quarter.topLeftCorner(rows, cols) = coefficients.topLeftCorner(rows, cols);
   // Transposed to (hy, hx): apply() reads it along ky.
   return scale * parity_transform(quarter, odd[0], odd[1]).transpose();
 }
@@ -63,8 +67,6 @@ ParityConvolution& ParityConvolution::operator=(ParityConvolution&&) noexcept = 
 void ParityConvolution::add_output(std::span<const ParityKernel> kernels) {
   if (static_cast<int>(kernels.size()) != nb_loads_)
     throw InvalidArgument("parity convolution: one kernel per load");
-  COATFFT_REQUIRE(!periodic_,
-                  "parity convolution: a periodic convolution's kernels are given by spectra");
   const double scale = 1.0 / (static_cast<double>(mx_) * static_cast<double>(my_));
   std::vector<Field> spectra;
   std::vector<std::array<bool, 2>> odd;

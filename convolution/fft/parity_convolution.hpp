@@ -3,8 +3,8 @@
 // each axis (the stress kernels of a plane, Cerruti's and Love's surface coefficients), each
 // output the sum over the loads, computed exactly (to rounding) as circular convolutions on a
 // zero-padded grid, as DC-FFT does (Liu, Wang & Liu 2000); or, for a periodic surface, circular
-// convolutions on the grid itself, whose kernels are given by their spectra on the period's
-// lattice. A kernel's spectrum is then real or
+// convolutions on the grid itself, whose kernels are given by their periodic coefficients or
+// by their spectra on the period's lattice. A kernel's spectrum is then real or
 // imaginary and is stored as a real quarter (convolution/fft/parity_transform.hpp); the loads are
 // transformed once per apply, and each output costs one pruned inverse transform: half a
 // surface application.
@@ -50,10 +50,12 @@ class ParityConvolution {
   ParityConvolution& operator=(ParityConvolution&&) noexcept;
 
   /// Adds an output: the sum over the loads l of kernels[l] convolved with load l (kernels has
-  /// nb_loads entries, each empty or of shape (nx, ny)). Throws InvalidArgument otherwise.
+  /// nb_loads entries, each empty or of shape (nx, ny)). Throws InvalidArgument otherwise. For a
+  /// periodic convolution a kernel's (nx, ny) entries are its periodic coefficients at the
+  /// offsets (i dx, j dy) modulo the period (those past nx/2, ny/2 follow from the parity).
   void add_output(std::span<const ParityKernel> kernels);
   /// Adds an output given by its kernels' spectra (one per load, each empty or of shape
-  /// lattice_quarter()); the only way to give a periodic convolution its kernels.
+  /// lattice_quarter()).
   void add_spectral_output(std::span<const ParitySpectrum> spectra);
 
   /// The quarter (mx/2 + 1, my/2 + 1) of the lattice the spectra are given on: (mx, my) the

@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "convolution/fft/fftw_plan.hpp"
+#include "convolution/kernels/ewald_cell.hpp"
 #include "convolution/kernels/love_influence.hpp"
 #include "core/detail/brief.hpp"
-#include "core/detail/gauss_legendre.hpp"
 #include "core/detail/parallel_for.hpp"
 #include "core/detail/sinc.hpp"
 #include "core/error.hpp"
@@ -31,43 +31,20 @@ double erf_over_r(double alpha, double r) {
   return std::erf(t) / r;
 }
 
-// \iint_cell erf(alpha R)/(2 pi R) by an N x N Gauss-Legendre rule (the integrand is entire).
-template <int N>
-double erf_cell_integral(double alpha, double x, double y, double dx, double dy) {
-  const auto& rule = detail::gauss_legendre<N>();
-  double s = 0.0;
-  for (int p = 0; p < N; ++p)
-    for (int q = 0; q < N; ++q)
-      s +=
-          rule.weights[p] * rule.weights[q] *
-          erf_over_r(alpha, std::hypot(x - 0.5 * dx * rule.nodes[p], y - 0.5 * dy * rule.nodes[q]));
-  return 0.25 * dx * dy * s / (2.0 * pi);
-}
-
 // The Ewald split's real-space part, per unit C: the cell integral of erfc(alpha R)/(2 pi R)
 // summed over the 3 x 3 nearest images of the offset (x, y), |x| <= lx/2, |y| <= ly/2 (the next
 // images are >= 1.5 min(lx, ly) = 9/alpha away: erfc(9) = 4e-37). Love's cell integral of 1/(pi R)
-// (E* = 1) is twice that of 1/(2 pi R).
-// The rule's order follows the smooth part's variation over a cell, t = alpha max(dx, dy): an
-// m-point rule errs by about (t/2)^(2m) of the integral, below 1e-16 with 2 points for t <= 1e-4
-// and 4 points for t <= 0.02 (large grids: t = 6/n), 8 up to t = 1, 16 beyond.
+// (E* = 1) is twice that of 1/(2 pi R); the smooth erf(alpha R)/(2 pi R) is entire.
 double real_space(const Grid& g, double alpha, double x, double y) {
-  const double t = alpha * std::max(g.dx(), g.dy());
+  const auto smooth = [alpha](double u, double v) {
+    return erf_over_r(alpha, std::hypot(u, v)) / (2.0 * pi);
+  };
   double sum = 0.0;
   for (int a = -1; a <= 1; ++a)
     for (int b = -1; b <= 1; ++b) {
       const double X = x + a * g.lx(), Y = y + b * g.ly();
-      double smooth = 0.0;
-      if (t <= 1e-4) {
-        smooth = erf_cell_integral<2>(alpha, X, Y, g.dx(), g.dy());
-      } else if (t <= 0.02) {
-        smooth = erf_cell_integral<4>(alpha, X, Y, g.dx(), g.dy());
-      } else if (t <= 1.0) {
-        smooth = erf_cell_integral<8>(alpha, X, Y, g.dx(), g.dy());
-      } else {
-        smooth = erf_cell_integral<16>(alpha, X, Y, g.dx(), g.dy());
-      }
-      sum += 0.5 * love_influence(X, Y, g.dx(), g.dy()) - smooth;
+      sum += 0.5 * love_influence(X, Y, g.dx(), g.dy()) -
+             detail::smooth_cell_integral(smooth, alpha, X, Y, g.dx(), g.dy());
     }
   return sum;
 }

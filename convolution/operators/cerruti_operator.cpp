@@ -3,6 +3,8 @@
 #include <utility>
 #include <vector>
 
+#include "convolution/kernels/periodic_traction_kernels.hpp"
+
 namespace coatfft {
 
 CerrutiOperator::CerrutiOperator(const Grid& grid, const Material& material, Planning planning)
@@ -12,7 +14,16 @@ CerrutiOperator::CerrutiOperator(const Grid& grid, const LayerStack& stack,
                                  const TractionKernelOptions& options, Planning planning,
                                  TractionKernelReport* report)
     : convolution_(grid, 3, planning) {
-  const TractionKernels c = traction_kernels(grid, stack, options, report);
+  add_outputs(traction_kernels(grid, stack, options, report));
+}
+
+CerrutiOperator::CerrutiOperator(const Grid& grid, const LayerStack& stack,
+                                 const PeriodicKernelOptions& options, Planning planning)
+    : convolution_(grid, 3, planning, true) {
+  add_outputs(periodic_traction_kernels(grid, stack, options));
+}
+
+void CerrutiOperator::add_outputs(const TractionKernels& c) {
   // By reciprocity (Betti), u_x at A under a pressure on the cell at B is u_z at B under a unit
   // q_x at A: K_xp(d) = K_zx(-d) = -zx(d), since zx is odd in x; likewise K_yp = -zy. The
   // same holds for any elastic body, layered ones included.

@@ -13,6 +13,7 @@
 #include "../../layers/layer_stack.hpp"
 #include "../../materials/material.hpp"
 #include "../fft/parity_convolution.hpp"
+#include "../kernels/periodic_kernel.hpp"
 #include "../kernels/traction_kernels.hpp"
 
 namespace coatfft {
@@ -26,8 +27,14 @@ class CerrutiOperator {
   /// for a frictionless interface among them); `report`, when given, receives their diagnostics.
   CerrutiOperator(const Grid& grid, const LayerStack& stack, const TractionKernelOptions& options,
                   Planning planning = Planning::estimate, TractionKernelReport* report = nullptr);
+  /// Plans the nine periodic kernels of any bonded `stack` on the periodic surface `grid`
+  /// (periodic_traction_kernels: its errors): circular convolutions over the period, every
+  /// displacement with zero mean.
+  CerrutiOperator(const Grid& grid, const LayerStack& stack, const PeriodicKernelOptions& options,
+                  Planning planning = Planning::estimate);
 
   const Grid& grid() const { return convolution_.grid(); }
+  bool periodic() const { return convolution_.periodic(); }
 
   /// u = (u_x, u_y, u_z) [m] (each (nx, ny); u_z into the body) under the pressure (compression
   /// positive) and the tractions q_x, q_y the surface receives (null: zero), each (nx, ny) [Pa]
@@ -41,6 +48,8 @@ class CerrutiOperator {
  private:
   ParityConvolution convolution_;  // outputs u_x, u_y, u_z; loads p, q_x, q_y
   std::vector<Field> fields_;
+
+  void add_outputs(const TractionKernels& c);
 };
 
 }  // namespace coatfft

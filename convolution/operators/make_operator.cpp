@@ -1,5 +1,6 @@
 #include "convolution/operators/make_operator.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <utility>
@@ -186,7 +187,16 @@ BuiltTangentialOperator make_tangential_operator(const Grid& grid, const LayerSt
   TractionKernelOptions kernel = options.kernel;
   kernel.lattice.threads = options.threads;
   BuiltTangentialOperator built;
-  built.op = std::make_unique<CerrutiOperator>(grid, body, kernel, options.planning, &built.report);
+  if (options.periodic) {
+    PeriodicKernelOptions periodic;
+    periodic.tolerance = std::min(kernel.tolerance, 1e-6);
+    periodic.max_evaluations = kernel.lattice.max_evaluations;
+    periodic.threads = options.threads;
+    built.op = std::make_unique<CerrutiOperator>(grid, body, periodic, options.planning);
+  } else {
+    built.op =
+        std::make_unique<CerrutiOperator>(grid, body, kernel, options.planning, &built.report);
+  }
   built.setup_seconds = detail::seconds_since(start);
   return built;
 }

@@ -110,6 +110,9 @@ struct TangentialOptions {
   int threads = 1;
   /// The kernels' options (convolution/kernels/traction_kernels.hpp).
   TractionKernelOptions kernel;
+  /// The surface repeats over the grid's domain (nx, ny even): periodic_traction_kernels, with
+  /// `kernel.tolerance` as their tolerance (at most 1e-6) and `threads`.
+  bool periodic = false;
 };
 
 /// What make_tangential_operator built.
@@ -121,7 +124,8 @@ struct BuiltTangentialOperator {
 
 /// The surface displacements (u_x, u_y, u_z) of `body` under a pressure and tangential tractions
 /// on `grid`: closed-form cell coefficients for a homogeneous body, the split of docs/theory.md
-/// 2.9 for a bonded stack. Throws InvalidArgument for a frictionless interface (no finite
+/// 2.9 for a bonded stack; on a periodic surface, the periodic kernels (zero-mean
+/// displacements). Throws InvalidArgument for a frictionless interface (no finite
 /// in-plane compliance), for threads out of range and where the remainders' lattice would exceed
 /// options.kernel.lattice.max_evaluations. Its memory: estimated_cerruti_bytes.
 BuiltTangentialOperator make_tangential_operator(const Grid& grid, const LayerStack& body,

@@ -1,0 +1,158 @@
+// The 3 x 3 surface response of a periodic surface (periodic_traction_kernels) against its
+// definition: the kernels' discrete transform at a lattice wavevector k is the FRF times the
+// cell's transform summed over every alias k + 2 pi (p/dx, q/dy), the sum the Ewald split
+// computes in closed form. Along a lattice axis (k_y = 0) the aliases form one alternating series
+// (the cell's transform flips sign from one alias to the next), summed here directly to 1e-9 of
+// its size; an oblique wavevector's double series converges only like 1/P and is checked to that
+// precision. Bodies: a homogeneous half-space (Cerruti's FRFs, frf/traction_response.hpp) and a
+// TiN coating two cells thick, whose remainders need the lattice.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <random>
+
+#include "convolution/kernels/periodic_traction_kernels.hpp"
+#include "convolution/operators/make_operator.hpp"
+#include "core/detail/sinc.hpp"
+#include "core/error.hpp"
+#include "frf/traction_response.hpp"
+#include "tests/test_materials.hpp"
+
+using namespace coatfft;
+using std::numbers::pi;
+
+namespace {
+
+using Complex = std::complex<double>;
+
+// The discrete transform sum_d K(d) exp(-i k.d) of a periodic kernel at lattice point (m, n).
+Complex transform(const Grid& g, const Field& k, int m, int n) {
+  Complex s = 0.0;
+  for (std::ptrdiff_t j = 0; j < g.ny(); ++j)
+    for (std::ptrdiff_t i = 0; i < g.nx(); ++i)
+      s += k(i, j) * std::polar(1.0, -2.0 * pi * (double(m * i) / g.nx() + double(n * j) / g.ny()));
+  return s;
+}
+
+// The FRFs of the six kernels at (kx, ky), in TractionKernels' order zp, xx, yy, yx, zx, zy.
+std::array<Complex, 6> frfs(const TractionResponse& r, double kx, double ky) {
+  const double k = std::hypot(kx, ky), c = kx / k, s = ky / k;
+  const TractionFrfs f = r(k);
+  const Complex i(0.0, 1.0);
+  return {f.zz,
+          f.s + f.d * (c * c - s * s),
+          f.s - f.d * (c * c - s * s),
+          f.d * 2.0 * c * s,
+          -i * f.c * c,
+          -i * f.c * s};
+}
+
+// The alias series of the six transforms at lattice point (m, n), |p| <= P, |q| <= Q.
+std::array<Complex, 6> alias_sum(const Grid& g, const TractionResponse& r, int m, int n, int P,
+                                 int Q) {
+  std::array<Complex, 6> sum{};
+  for (int p = -P; p <= P; ++p)
+    for (int q = -Q; q <= Q; ++q) {
+      const double kx = 2 * pi * (double(m) / g.lx() + double(p) / g.dx());
+      const double ky = 2 * pi * (double(n) / g.ly() + double(q) / g.dy());
+      const double cell = detail::sinc(0.5 * kx * g.dx()) * detail::sinc(0.5 * ky * g.dy());
+      if (cell == 0.0) continue;
+      const auto f = frfs(r, kx, ky);
+      for (int c = 0; c < 6; ++c) sum[c] += cell * f[c];
+    }
+  return sum;
+}
+
+void check_axis_modes(const Grid& g, const LayerStack& body) {
+  const TractionKernels k = periodic_traction_kernels(g, body);
+  const TractionResponse r(body);
+  const Field* fields[6] = {&k.zp, &k.xx, &k.yy, &k.yx, &k.zx, &k.zy};
+  const double scale = r.at_infinity().s * g.dx();  // a cell's displacement per unit load
+  // Along x (k_y = 0) and along y (k_x = 0): one alternating series each; its partial sums'
+  // mean at P and P + 1 errs by about the term's change, (1/P)^3 of it.
+  for (auto [m, n] : {std::pair{1, 0}, {3, 0}, {g.nx() / 2 - 1, 0}, {0, 1}, {0, g.ny() / 2 - 1}}) {
+    const int P = 4000;
+    const bool along_x = n == 0;
+    auto a = alias_sum(g, r, m, n, along_x ? P : 0, along_x ? 0 : P);
+    const auto b = alias_sum(g, r, m, n, along_x ? P + 1 : 0, along_x ? 0 : P + 1);
+    for (int c = 0; c < 6; ++c) {
+      const Complex reference = 0.5 * (a[c] + b[c]);
+      INFO("mode (" << m << ", " << n << "), kernel " << c);
+      CHECK(std::abs(transform(g, *fields[c], m, n) - reference) < 1e-9 * scale);
+    }
+  }
+  // An oblique wavevector: the double series to |p|, |q| <= 400, within about 1/400 of its
+  // terms' size (the sign flips make it far closer).
+  const auto a = alias_sum(g, r, 2, 1, 400, 400);
+  for (int c = 0; c < 6; ++c) {
+    INFO("oblique mode, kernel " << c);
+    CHECK(std::abs(transform(g, *fields[c], 2, 1) - a[c]) < 1e-4 * scale);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("periodic traction kernels of a half-space are their aliased FRFs",
+          "[periodic_traction]") {
+  check_axis_modes(Grid(16, 12, 1e-3, 0.6e-3), LayerStack(steel));
+}
+
+TEST_CASE("periodic traction kernels of a coated body are their aliased FRFs",
+          "[periodic_traction]") {
+  const Grid g(16, 12, 1e-3, 0.6e-3);
+  check_axis_modes(g, LayerStack({{tin, 2 * g.dx()}}, steel));
+}
+
+TEST_CASE("periodic traction kernels: parities, zero means, refusals", "[periodic_traction]") {
+  const Grid g(12, 10, 1e-3, 0.8e-3);
+  const TractionKernels k = periodic_traction_kernels(g, LayerStack({{tin, 1e-4}}, steel));
+  for (const Field* f : {&k.zp, &k.xx, &k.yy, &k.yx, &k.zx, &k.zy})
+    CHECK(std::abs(f->sum()) < 1e-12 * f->abs().maxCoeff() * f->size());
+  for (std::ptrdiff_t j = 0; j < g.ny(); ++j)
+    for (std::ptrdiff_t i = 0; i < g.nx(); ++i) {
+      const std::ptrdiff_t mi = (g.nx() - i) % g.nx(), mj = (g.ny() - j) % g.ny();
+      CHECK(k.xx(mi, j) == Approx(k.xx(i, j)).margin(1e-20));
+      CHECK(k.zx(mi, j) == Approx(-k.zx(i, j)).margin(1e-20));
+      CHECK(k.zy(i, mj) == Approx(-k.zy(i, j)).margin(1e-20));
+      CHECK(k.yx(mi, j) == Approx(-k.yx(i, j)).margin(1e-20));
+    }
+  CHECK_THROWS_AS(periodic_traction_kernels(Grid(11, 10, 1e-3, 1e-3), LayerStack(steel)),
+                  InvalidArgument);
+  const LayerStack sliding({{tin, 1e-4, Interface::frictionless}}, steel);
+  CHECK_THROWS_AS(periodic_traction_kernels(g, sliding), InvalidArgument);
+}
+
+TEST_CASE("the periodic tangential operator is the circular convolution of its kernels",
+          "[periodic_traction]") {
+  // Random loads on a small period: every displacement against the direct double sum over the
+  // period of the kernels (offsets modulo the period), to rounding.
+  const Grid g(8, 6, 0.4e-3, 0.3e-3);
+  const LayerStack body({{tin, 0.05e-3}}, steel);
+  TangentialOptions options;
+  options.periodic = true;
+  const BuiltTangentialOperator built = make_tangential_operator(g, body, options);
+  REQUIRE(built.op->periodic());
+  const TractionKernels k = periodic_traction_kernels(g, body);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::array<Field, 3> load;
+  for (Field& f : load) f = Field::NullaryExpr(g.nx(), g.ny(), [&] { return u(rng); });
+  std::array<Field, 3> out;
+  built.op->apply(load[0], &load[1], &load[2], out);
+  // kernel[d][l]: u_d under load l (p, q_x, q_y); u_x, u_y under p by reciprocity.
+  const Field xp = -k.zx, yp = -k.zy;
+  const Field* kernel[3][3] = {{&xp, &k.xx, &k.yx}, {&yp, &k.yx, &k.yy}, {&k.zp, &k.zx, &k.zy}};
+  const double scale = k.xx.abs().maxCoeff();
+  for (int d = 0; d < 3; ++d)
+    for (std::ptrdiff_t j = 0; j < g.ny(); ++j)
+      for (std::ptrdiff_t i = 0; i < g.nx(); ++i) {
+        double sum = 0.0;
+        for (int l = 0; l < 3; ++l)
+          for (std::ptrdiff_t b = 0; b < g.ny(); ++b)
+            for (std::ptrdiff_t a = 0; a < g.nx(); ++a)
+              sum += (*kernel[d][l])((i - a + g.nx()) % g.nx(), (j - b + g.ny()) % g.ny()) *
+                     load[l](a, b);
+        CHECK(std::abs(out[d](i, j) - sum) < 1e-13 * scale * 48);
+      }
+}
