@@ -9,6 +9,7 @@
 #include <thread>
 #include <vector>
 
+#include "convolution/kernels/periodic_traction_kernels.hpp"
 #include "convolution/kernels/traction_kernels.hpp"
 #include "core/detail/brief.hpp"
 #include "core/detail/shorten.hpp"
@@ -708,8 +709,14 @@ ShearSpec read_shear(const toml::table& root, const std::filesystem::path& scene
   return spec;
 }
 
+// The traction kernels' cost (free or periodic surface), estimated before any work.
+double traction_evaluations(const Scene& scene) {
+  return scene.periodic ? periodic_traction_kernel_evaluations(scene.grid, *scene.body)
+                        : traction_kernel_evaluations(scene.grid, *scene.body);
+}
+
 bool traction_kernels_affordable(const Scene& scene) {
-  return traction_kernel_evaluations(scene.grid, *scene.body) <= LatticeOptions{}.max_evaluations;
+  return traction_evaluations(scene) <= LatticeOptions{}.max_evaluations;
 }
 
 // Tangential tractions act on the surface displacements of any bonded layer stack
@@ -730,19 +737,9 @@ void check_tangential(const Scene& scene, const char* key) {
                   detail::brief(scene.body->coatings().front().thickness),
                   " m) is so thin against the ", detail::brief(scene.grid.lx()), " x ",
                   detail::brief(scene.grid.ly()), " m domain that its traction kernels need about ",
-                  detail::brief(traction_kernel_evaluations(scene.grid, *scene.body)),
-                  " FRF evaluations (limit ", detail::brief(LatticeOptions{}.max_evaluations),
+                  detail::brief(traction_evaluations(scene)), " FRF evaluations (limit ",
+                  detail::brief(LatticeOptions{}.max_evaluations),
                   "; the cost grows like (L/h)^2)");
-}
-
-// [grid] boundary = "periodic": the periodic operator of convolution/kernels/periodic_kernel.hpp,
-// built from the body's FRF (docs/theory.md 4.8); its method is checked with the other [method]
-// keys (method_from_request), its stresses by read_stress. The tangential tractions act on free
-// bodies only so far: refused.
-void check_periodic(const Scene& scene) {
-  COATFFT_REQUIRE(!scene.shear && !(scene.contact && scene.contact->friction > 0.0),
-                  "tangential tractions ([shear], [contact] friction) act on free (non-periodic) "
-                  "surfaces only so far: use [grid] boundary = \"free\"");
 }
 
 // [frf]: the body as a table of its FRF. Love's coefficients (direct, dcfft) need a material,
@@ -846,14 +843,12 @@ Scene read_scene(const std::filesystem::path& path) {
     if (scene.contact && scene.contact->friction > 0.0)
       check_tangential(scene, "[contact] friction");
     if (scene.contact && !scene.contact->sweep.empty()) check_sweep(scene);
-    if (scene.periodic) check_periodic(scene);
     // The in-plane surface displacements (ux.npy, uy.npy), with tangential tractions or stresses,
-    // of a free bonded body whose traction kernels are affordable (checked above when tractions
-    // act).
+    // of a bonded body whose traction kernels are affordable (checked above when tractions act):
+    // on a periodic surface its periodic kernels.
     scene.output.in_plane =
         (scene.stress || scene.shear || (scene.contact && scene.contact->friction > 0.0)) &&
-        !scene.periodic && !scene.frf && scene.body && scene.body->all_bonded() &&
-        traction_kernels_affordable(scene);
+        !scene.frf && scene.body && scene.body->all_bonded() && traction_kernels_affordable(scene);
     // g(0) only shifts every displacement by one constant, which a load-controlled contact
     // absorbs in its approach; when that approach is not reported, g(0) is not computed at all.
     if (scene.contact && !scene.contact->report_approach)

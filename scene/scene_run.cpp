@@ -199,9 +199,10 @@ void add_contact_summary(nlohmann::json& summary, const Scene& scene, const Cont
 // The surface response of the scene's body (convolution/kernels/traction_kernels.hpp), built once
 // for the sliding contact's coupling and the in-plane displacements.
 std::shared_ptr<CerrutiOperator> traction_operator(const Grid& grid, const LayerStack& body,
-                                                   int threads) {
+                                                   int threads, bool periodic) {
   TangentialOptions options;
   options.threads = threads;
+  options.periodic = periodic;
   return make_tangential_operator(grid, body, options).op;
 }
 
@@ -230,7 +231,9 @@ void add_in_plane(CerrutiOperator& op, const Tractions& q, SceneRun& run) {
 TangentialCoupling tangential_coupling(std::shared_ptr<CerrutiOperator> on_body,
                                        const std::optional<Material>& indenter, int threads) {
   std::shared_ptr<CerrutiOperator> on_indenter;
-  if (indenter) on_indenter = traction_operator(on_body->grid(), LayerStack(*indenter), threads);
+  if (indenter)
+    on_indenter =
+        traction_operator(on_body->grid(), LayerStack(*indenter), threads, on_body->periodic());
   return [on_body, on_indenter](const Field& qx) {
     const Field zero = Field::Zero(qx.rows(), qx.cols());
     std::array<Field, 3> u;
@@ -417,7 +420,7 @@ SceneRun compute_scene(PreparedScene prepared, const SceneRunOptions& options) {
   std::shared_ptr<CerrutiOperator> surface;
   if (scene_copy.output.in_plane) {
     progress.stage("setting up the surface response to tractions");
-    surface = traction_operator(scene_copy.grid, *body, threads);
+    surface = traction_operator(scene_copy.grid, *body, threads, scene_copy.periodic);
   }
   SceneRun run =
       prepared.scene.contact

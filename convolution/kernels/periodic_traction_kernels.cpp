@@ -107,6 +107,22 @@ double remainder_cut(const Grid& g, const TractionResponse& r, double tolerance)
   throw InvalidArgument("periodic traction kernels: k D(k), k C(k) do not approach their limits");
 }
 
+// The aliased lattice points within the remainders' reach k_rest: about half a disk of lattice
+// cells (as periodic_influence_kernel's).
+double remainder_evaluations(const Grid& g, double k_rest) {
+  if (k_rest == 0.0) return 0.0;
+  return 0.5 * pi * (k_rest * g.lx() / (2.0 * pi) + 2.0) * (k_rest * g.ly() / (2.0 * pi) + 2.0);
+}
+
+TractionResponse bonded_response(const LayerStack& stack) {
+  TractionResponse response(stack);
+  COATFFT_REQUIRE(response.bonded(),
+                  "periodic traction kernels: tangential tractions need every interface bonded (a "
+                  "coating over a frictionless interface has no equilibrium under a net "
+                  "tangential force)");
+  return response;
+}
+
 Lattice make_lattice(const Grid& g, const TractionResponse& r, double alpha,
                      const PeriodicKernelOptions& o) {
   Lattice l{g.nx() / 2 + 1,
@@ -120,8 +136,8 @@ Lattice make_lattice(const Grid& g, const TractionResponse& r, double alpha,
   const double k_max = std::max(l.k_ewald, l.k_rest);
   l.px = static_cast<int>(std::ceil(k_max * g.dx() / (2.0 * pi))) + 1;
   l.py = static_cast<int>(std::ceil(k_max * g.dy() / (2.0 * pi))) + 1;
-  const double evaluations = 0.5 * pi * (l.k_rest / l.dkx + 2.0) * (l.k_rest / l.dky + 2.0);
-  COATFFT_REQUIRE(l.k_rest == 0.0 || evaluations <= o.max_evaluations,
+  const double evaluations = remainder_evaluations(g, l.k_rest);
+  COATFFT_REQUIRE(evaluations <= o.max_evaluations,
                   "periodic traction kernels: the remainders reach k = ", detail::brief(l.k_rest),
                   " rad/m, so far against the cells that about ", detail::brief(evaluations),
                   " FRF evaluations are needed (limit ", detail::brief(o.max_evaluations), ")");
@@ -230,11 +246,7 @@ TractionKernels periodic_traction_kernels(const Grid& g, const LayerStack& stack
                   "periodic traction kernels: tolerance must be in (0, 1e-6]");
   COATFFT_REQUIRE(o.threads >= 1 && o.threads <= max_threads,
                   "periodic traction kernels: threads must be in [1, ", max_threads, "]");
-  const TractionResponse response(stack);
-  COATFFT_REQUIRE(response.bonded(),
-                  "periodic traction kernels: tangential tractions need every interface bonded (a "
-                  "coating over a frictionless interface has no equilibrium under a net "
-                  "tangential force)");
+  const TractionResponse response = bonded_response(stack);
   // As periodic_influence_kernel's: the short range within the nearest images, the lattice part
   // within about 13 alpha.
   const double alpha = 6.0 / std::min(g.lx(), g.ly());
@@ -246,6 +258,12 @@ TractionKernels periodic_traction_kernels(const Grid& g, const LayerStack& stack
   // k = 0 is left out: the short-range parts' integrals over the plane go with the mean.
   for (Field& f : a) f -= f.mean();
   return {zp, s + a[0], s - a[0], std::move(a[1]), std::move(a[2]), std::move(a[3])};
+}
+
+double periodic_traction_kernel_evaluations(const Grid& grid, const LayerStack& stack,
+                                            const PeriodicKernelOptions& options) {
+  return remainder_evaluations(grid,
+                               remainder_cut(grid, bonded_response(stack), options.tolerance));
 }
 
 }  // namespace coatfft

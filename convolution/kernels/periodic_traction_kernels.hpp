@@ -32,4 +32,11 @@ namespace coatfft {
 TractionKernels periodic_traction_kernels(const Grid& grid, const LayerStack& stack,
                                           const PeriodicKernelOptions& options = {});
 
+/// About how many FRF evaluations the angular remainders' lattice of periodic_traction_kernels
+/// takes (0 for a homogeneous body; about 9 (L/h_top)^2 for a top coating h_top thick), to refuse
+/// before any work what would exceed options.max_evaluations. InvalidArgument for a stack with a
+/// frictionless interface.
+double periodic_traction_kernel_evaluations(const Grid& grid, const LayerStack& stack,
+                                            const PeriodicKernelOptions& options = {});
+
 }  // namespace coatfft

@@ -82,12 +82,17 @@ void require_stress_memory(const Grid& grid, std::size_t planes, const StressOpe
                  std::nullopt, "stresses", "", "use fewer cells or fewer depths");
 }
 
-// boundary = "free" or "periodic", as [grid] boundary; alpha, the free surface's sampling period,
-// is refused on a periodic one (the program's [stress] alpha likewise).
-bool periodic_stress(const std::string& boundary, const std::optional<int>& alpha) {
-  COATFFT_REQUIRE(boundary == "free" || boundary == "periodic", "stresses: boundary = \"", boundary,
+// boundary = "free" or "periodic", as [grid] boundary: whether it is periodic.
+bool is_periodic(const std::string& boundary, const char* what) {
+  COATFFT_REQUIRE(boundary == "free" || boundary == "periodic", what, ": boundary = \"", boundary,
                   "\" is not one of \"free\", \"periodic\"");
-  const bool periodic = boundary == "periodic";
+  return boundary == "periodic";
+}
+
+// The stresses' boundary; alpha, the free surface's sampling period, is refused on a periodic one
+// (the program's [stress] alpha likewise).
+bool periodic_stress(const std::string& boundary, const std::optional<int>& alpha) {
+  const bool periodic = is_periodic(boundary, "stresses");
   COATFFT_REQUIRE(!periodic || !alpha,
                   "stresses: alpha sets the sampling lattice of a free surface's kernels; with "
                   "boundary = \"periodic\" they lie on the period's own lattice: leave it out");
@@ -131,15 +136,17 @@ py::array_t<double> stresses(py::handle body_object, const Grid& grid,
 // (ux, uy, uz) [m], each (ny, nx), of any bonded body under p, q_x, q_y.
 py::tuple surface_displacements(py::handle body_object, const Grid& grid,
                                 const DoubleArray& pressure, const std::optional<DoubleArray>& qx,
-                                const std::optional<DoubleArray>& qy, int threads) {
+                                const std::optional<DoubleArray>& qy, const std::string& boundary,
+                                int threads) {
   const LayerStack stack =
       layers_of(body_object, "surface_displacements", "the tangential response needs the layers");
+  TangentialOptions options;
+  options.periodic = is_periodic(boundary, "surface_displacements");
   // The operator, the loads' copies and the three outputs, before anything is allocated.
   require_memory({estimated_cerruti_bytes(grid) + 6.0 * 8.0 * static_cast<double>(grid.nb_cells()),
                   detail::concat("grid ", grid.nx(), " x ", grid.ny())},
                  std::nullopt, "surface_displacements", "", "use fewer cells");
   const SurfaceLoads loads = surface_loads("surface_displacements", grid, pressure, qx, qy);
-  TangentialOptions options;
   options.threads = threads;
   std::array<Field, 3> u;
   without_gil([&] {
@@ -213,10 +220,12 @@ void bind_stress(py::module_& m) {
         "free surface's sampling period.");
   m.def("surface_displacements", &surface_displacements, py::arg("body"), py::arg("grid"),
         py::arg("pressure"), py::arg("qx") = py::none(), py::arg("qy") = py::none(), py::kw_only(),
-        py::arg("threads") = 1,
+        py::arg("boundary") = "free", py::arg("threads") = 1,
         "Surface displacements (ux, uy, uz) [m], each (ny, nx), of `body` (a LayerStack with "
         "bonded interfaces, or a Material) under the pressure and the tractions qx, qy [Pa] of "
-        "`grid`, uz into the body (docs/stress.md, 'Surface displacements').");
+        "`grid`, uz into the body (docs/stress.md, 'Surface displacements'). boundary = "
+        "\"periodic\": the loads repeat over the grid's domain (nx, ny even); every displacement "
+        "then has zero mean over the period.");
   m.def("von_mises", &von_mises_of, py::arg("stress"),
         "von Mises stress [Pa] of an array of stresses(), the component axis removed.");
   m.def("principal_stresses", &principal_stresses_of, py::arg("stress"),

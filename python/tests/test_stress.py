@@ -75,13 +75,14 @@ def test_equals_the_program(coatfft_exe, tmp_path, steel, tin):
 
 
 def test_periodic_equals_the_program(coatfft_exe, tmp_path, steel, tin):
-    # A periodic coated scene with [stress]: run_scene, the program and stresses(...,
-    # boundary="periodic") give the same planes bitwise.
+    # A periodic coated scene with [stress] and [shear]: run_scene, the program and stresses(...,
+    # boundary="periodic"), surface_displacements(..., boundary="periodic") give the same planes
+    # and in-plane displacements bitwise.
     text = (
         "[grid]\nnx = 32\nny = 32\nlx = 1e-3\nly = 1e-3\nboundary = \"periodic\"\n"
         "[substrate]\nmaterial = \"steel\"\n[[coating]]\nmaterial = \"titanium_nitride\"\n"
         "thickness = 1e-4\n[pressure]\nkind = \"hertz\"\np0 = 1e9\na = 2e-4\n"
-        "[stress]\ndepths = [1e-4, 2e-4]\n")
+        "[shear]\nkind = \"proportional\"\nmu = 0.2\n[stress]\ndepths = [1e-4, 2e-4]\n")
     scene = tmp_path / "periodic_stress.toml"
     scene.write_text(text)
     out = tmp_path / "out"
@@ -89,12 +90,21 @@ def test_periodic_equals_the_program(coatfft_exe, tmp_path, steel, tin):
                           capture_output=True, text=True, timeout=300)
     assert done.returncode == 0, done.stderr
     run = coatfft.run_scene(str(scene))
-    np.testing.assert_array_equal(run["stress"], np.load(out / "stress.npy"))
+    for name in ("stress", "ux", "uy"):
+        np.testing.assert_array_equal(run[name], np.load(out / f"{name}.npy"))
     assert run["summary"]["stress"]["periodic"] is True
     grid = coatfft.Grid(32, 32, 1e-3, 1e-3)
     body = coatfft.LayerStack(steel, [coatfft.Coating(tin, 1e-4)])
-    s = coatfft.stresses(body, grid, [1e-4, 2e-4], run["pressure"], boundary="periodic")
+    p = run["pressure"]
+    s = coatfft.stresses(body, grid, [1e-4, 2e-4], p, qx=0.2 * p, boundary="periodic")
     np.testing.assert_array_equal(s, run["stress"])
+    ux, uy, _ = coatfft.surface_displacements(body, grid, p, qx=0.2 * p, boundary="periodic")
+    np.testing.assert_array_equal(ux, run["ux"])
+    np.testing.assert_array_equal(uy, run["uy"])
+    # Every periodic displacement has zero mean; sigma_xz balances the mean traction (to the
+    # 1e-10 of the k -> 0 limit, taken at k L = 1e-10).
+    assert abs(ux.mean()) < 1e-12 * np.abs(ux).max()
+    np.testing.assert_allclose(s[:, 4].mean(axis=(1, 2)), -0.2 * p.mean(), rtol=1e-9)
     # Equilibrium of the slab above each plane: mean sigma_zz = -mean pressure.
     np.testing.assert_allclose(s[:, 2].mean(axis=(1, 2)), -run["pressure"].mean(), rtol=1e-12)
 
@@ -109,6 +119,10 @@ def test_periodic_errors(steel):
         coatfft.stresses(steel, even, [1e-4], q, boundary="open")
     with pytest.raises(ValueError, match="even"):
         coatfft.stresses(steel, grid, [1e-4], p, boundary="periodic")
+    with pytest.raises(ValueError, match="boundary"):
+        coatfft.surface_displacements(steel, even, q, boundary="open")
+    with pytest.raises(ValueError, match="even"):
+        coatfft.surface_displacements(steel, grid, p, boundary="periodic")
 
 
 def test_tractions_are_linear(steel):
