@@ -1,10 +1,28 @@
 #include "contact/sliding_contact.hpp"
 
+#include <array>
 #include <cmath>
+#include <utility>
 
 #include "core/error.hpp"
 
 namespace coatfft {
+
+TangentialCoupling traction_coupling(std::shared_ptr<CerrutiOperator> on_body,
+                                     std::shared_ptr<CerrutiOperator> on_indenter) {
+  COATFFT_REQUIRE(on_body != nullptr, "traction_coupling: no surface response of the body");
+  return [on_body = std::move(on_body), on_indenter = std::move(on_indenter)](const Field& qx) {
+    const Field zero = Field::Zero(qx.rows(), qx.cols());
+    std::array<Field, 3> u;
+    on_body->apply(zero, &qx, nullptr, u);
+    Field uz = std::move(u[2]);
+    if (on_indenter) {
+      on_indenter->apply(zero, &qx, nullptr, u);
+      uz -= u[2];
+    }
+    return uz;
+  };
+}
 
 namespace {
 

@@ -7,7 +7,9 @@
 // tractions' normal displacement of the last pressure in the gap, a fixed-point iteration that
 // contracts by about that factor per step, until the pressure changes by less than the tolerance.
 #include <functional>
+#include <memory>
 
+#include "../convolution/operators/cerruti_operator.hpp"
 #include "contact_solver.hpp"
 
 namespace coatfft {
@@ -15,6 +17,12 @@ namespace coatfft {
 /// The relative normal displacement [m] (into the body) that the traction field q_x [Pa] causes:
 /// u_z of the body's surface, less the indenter's when it is elastic.
 using TangentialCoupling = std::function<Field(const Field& qx)>;
+
+/// The coupling of a body's 3 x 3 surface response `on_body` (its u_z under q_x), less an
+/// elastic indenter's `on_indenter` (null: a rigid indenter), whose surface receives -q_x. Both
+/// operators are shared with the caller, which may apply them for the in-plane displacements.
+TangentialCoupling traction_coupling(std::shared_ptr<CerrutiOperator> on_body,
+                                     std::shared_ptr<CerrutiOperator> on_indenter = nullptr);
 
 struct SlidingOptions {
   double friction = 0.0;    ///< mu >= 0 (finite): q_x = mu p

@@ -226,25 +226,15 @@ void add_in_plane(CerrutiOperator& op, const Tractions& q, SceneRun& run) {
 }
 
 // The normal displacement of q_x relative to the indenter: the body's (any bonded stack,
-// convolution/kernels/traction_kernels.hpp) less an elastic indenter's, whose surface receives
-// -q_x.
+// convolution/kernels/traction_kernels.hpp) less an elastic indenter's
+// (contact/sliding_contact.hpp).
 TangentialCoupling tangential_coupling(std::shared_ptr<CerrutiOperator> on_body,
                                        const std::optional<Material>& indenter, int threads) {
   std::shared_ptr<CerrutiOperator> on_indenter;
   if (indenter)
     on_indenter =
         traction_operator(on_body->grid(), LayerStack(*indenter), threads, on_body->periodic());
-  return [on_body, on_indenter](const Field& qx) {
-    const Field zero = Field::Zero(qx.rows(), qx.cols());
-    std::array<Field, 3> u;
-    on_body->apply(zero, &qx, nullptr, u);
-    Field uz = std::move(u[2]);
-    if (on_indenter) {
-      on_indenter->apply(zero, &qx, nullptr, u);
-      uz -= u[2];
-    }
-    return uz;
-  };
+  return traction_coupling(std::move(on_body), std::move(on_indenter));
 }
 
 // The contact solve: frictionless, or under full sliding with the coupling iterated

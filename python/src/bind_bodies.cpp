@@ -36,6 +36,13 @@ Body body_from_object(py::handle object, const char* what) {
                        py::str(py::type::of(object).attr("__name__")).cast<std::string>());
 }
 
+LayerStack layers_of(py::handle body_object, const std::string& who, const char* why) {
+  const Body body = body_from_object(body_object, "body");
+  COATFFT_REQUIRE(body.stack, who, ": body must be a LayerStack or a Material (", why,
+                  "), not an Frf");
+  return *body.stack;
+}
+
 namespace {
 
 // H(k) of any FRF at every k of a numpy array, in one batch, without the GIL (a UserFrf takes

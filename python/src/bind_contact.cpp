@@ -1,12 +1,17 @@
 // solve_contact and ContactResult: the Polonsky & Keer (1999) solver of contact/ on an Operator.
 #include <pybind11/stl.h>
 
+#include <cmath>
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "bodies.hpp"
 #include "contact/contact_solver.hpp"
+#include "contact/sliding_contact.hpp"
+#include "convolution/operators/make_operator.hpp"
 #include "core/error.hpp"
 #include "operator.hpp"
 #include "without_gil.hpp"
@@ -34,6 +39,7 @@ struct PyContactResult {
   bool touches_boundary = false;
   double max_penetration = 0.0;
   std::string warning;
+  py::object friction_coupling = py::none();  // solve_sliding's report, as summary.json's
 };
 
 PyContactResult to_python(ContactResult&& r) {
@@ -92,6 +98,49 @@ PyContactResult solve_contact(Operator& op, const DoubleArray& height, std::opti
   return to_python(std::move(result));
 }
 
+// Full sliding (contact/sliding_contact.hpp): the normal contact with q_x = mu p, the tractions'
+// normal displacement of the bonded body `body_object` iterated into the gap, as a scene's
+// [contact] friction (each solve to `tolerance`, the coupling to ten times it).
+PyContactResult solve_sliding(Operator& op, const DoubleArray& height, py::handle body_object,
+                              double friction, std::optional<double> load,
+                              std::optional<double> approach, double tolerance, int max_iterations,
+                              bool preconditioned, int threads) {
+  COATFFT_REQUIRE(load.has_value() != approach.has_value(),
+                  "solve_sliding: give exactly one of load [N] and approach [m]");
+  COATFFT_REQUIRE(std::isfinite(friction) && friction >= 0.0 && friction <= 10.0,
+                  "solve_sliding: friction = ", friction, " must be in [0, 10]");
+  const LayerStack body =
+      layers_of(body_object, "solve_sliding", "the tractions' response needs the layers");
+  const Field h = field_from_array(height, op.grid(), "solve_sliding: height");
+  const ContactOptions options = contact_options(op, approach.has_value(), tolerance,
+                                                 max_iterations, preconditioned, "solve_sliding");
+  SlidingOptions sliding;
+  sliding.friction = friction;
+  sliding.tolerance = 10.0 * tolerance;
+  SlidingReport report;
+  ContactResult result = without_gil([&] {
+    const auto guard = op.lock();
+    TangentialOptions tangential;
+    tangential.threads = threads;
+    tangential.periodic = op.op().periodic();
+    std::shared_ptr<CerrutiOperator> surface =
+        make_tangential_operator(op.grid(), body, tangential).op;
+    ContactSolver solver(op.op(), options);
+    return coatfft::solve_sliding(solver, traction_coupling(std::move(surface)), h,
+                                  load ? ContactControl::load : ContactControl::approach,
+                                  load ? *load : *approach, sliding, &report);
+  });
+  PyContactResult out = to_python(std::move(result));
+  py::dict coupling;
+  coupling["solves"] = report.solves;
+  coupling["pressure_change"] = report.pressure_change;
+  coupling["pressure_shift"] = report.pressure_shift;
+  coupling["centroid_shift"] = report.centroid_shift;
+  coupling["converged"] = report.converged;
+  out.friction_coupling = coupling;
+  return out;
+}
+
 // ContactSolver::solve_sweep: the results in ascending order of the values.
 std::vector<PyContactResult> solve_sweep(Operator& op, const DoubleArray& height,
                                          std::optional<std::vector<double>> loads,
@@ -139,6 +188,10 @@ void bind_contact(py::module_& m) {
       .def_readonly("max_penetration", &PyContactResult::max_penetration,
                     "largest overlap max(0, -min(gap)) [m]; 0 when no cell interpenetrates")
       .def_readonly("warning", &PyContactResult::warning)
+      .def_readonly("friction_coupling", &PyContactResult::friction_coupling,
+                    "solve_sliding's coupling, as summary.json's friction_coupling: solves, "
+                    "pressure_change, pressure_shift, centroid_shift [m], converged; None "
+                    "otherwise")
       .def("__repr__", [](const PyContactResult& r) {
         return py::str(
                    "ContactResult(status={!r}, iterations={}, load={!r}, contact_area={!r}, "
@@ -150,6 +203,14 @@ void bind_contact(py::module_& m) {
         "preconditioned"_a = true,
         "Frictionless normal contact of a rigid indenter of initial separation `height` [m] "
         "(ny, nx) on the operator's body, under a total load [N] or an approach [m].");
+  m.def("solve_sliding", &solve_sliding, "op"_a, "height"_a, "body"_a, py::kw_only(), "friction"_a,
+        "load"_a = py::none(), "approach"_a = py::none(), "tolerance"_a = 1e-10,
+        "max_iterations"_a = 1000, "preconditioned"_a = true, "threads"_a = 1,
+        "solve_contact under full sliding along +x: the surface of `body` (a LayerStack with "
+        "bonded interfaces, or a Material: the operator's body) receives q_x = friction p, "
+        "whose normal displacement enters the gap; the normal contact is solved again until "
+        "the pressure changes by less than ten times `tolerance` (a scene's [contact] "
+        "friction; docs/contact.md). The result's friction_coupling reports it.");
   m.def("solve_sweep", &solve_sweep, "op"_a, "height"_a, py::kw_only(), "loads"_a = py::none(),
         "approaches"_a = py::none(), "tolerance"_a = 1e-10, "max_iterations"_a = 1000,
         "preconditioned"_a = true,

@@ -50,14 +50,6 @@ SurfaceLoads surface_loads(const std::string& who, const Grid& grid, const Doubl
   return loads;
 }
 
-// The layers of `body_object` (a LayerStack or a Material), which `who` needs: an Frf is refused.
-LayerStack layers_of(py::handle body_object, const std::string& who, const char* why) {
-  const Body body = body_from_object(body_object, "body");
-  COATFFT_REQUIRE(body.stack, who, ": body must be a LayerStack or a Material (", why,
-                  "), not an Frf");
-  return *body.stack;
-}
-
 // The depths [m] of a 1-D array: a 2-D array is refused rather than flattened, whose planes would
 // come back in an order the caller did not write.
 std::vector<double> depth_list(const DoubleArray& depths) {

@@ -5,6 +5,7 @@
 
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "frf/frf.hpp"
 #include "layers/layer_stack.hpp"
@@ -21,5 +22,9 @@ struct Body {
 
 /// `object` as a Body; TypeError naming the accepted types otherwise. `what` names the argument.
 Body body_from_object(pybind11::handle object, const char* what = "body");
+
+/// The layers of `body_object` (a LayerStack or a Material), which `who` needs for `why`: an Frf
+/// is refused (ValueError).
+LayerStack layers_of(pybind11::handle body_object, const std::string& who, const char* why);
 
 }  // namespace coatfft::python

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 import coatfft
-from conftest import quiet_operator, radius, rel_max
+from conftest import SCENES, quiet_operator, radius, rel_max
 
 # The scene of examples/scenes/sphere_contact.toml: R = 10 mm, W = 100 N on steel, 128^2 cells
 # over [-0.4 mm, 0.4 mm]^2, so a = 0.148 mm spans 23.7 cells.
@@ -231,3 +231,43 @@ def test_extreme_loads_give_finite_fields(dcfft):
         assert np.isfinite(r.pressure).all() and np.isfinite(r.gap).all()
         assert rel_max(r.pressure, reference.pressure * c) <= 1e-12
         assert r.load == pytest.approx(W * c, rel=1e-12)
+
+
+def test_sliding_equals_the_program(tmp_path, steel, tin):
+    # The example scene's sliding rough contact on a 64^2 crop of its gap (a period of its own):
+    # solve_sliding on the periodic operator gives run_scene's pressure, and its
+    # friction_coupling the summary's, to rounding.
+    scene_gap = np.load(SCENES / "rough_coated_gap.npy")[:64, :64]
+    gap = scene_gap - scene_gap.min()
+    np.save(tmp_path / "gap.npy", gap)
+    text = (
+        "[grid]\nnx = 64\nny = 64\nlx = 0.25e-3\nly = 0.25e-3\nboundary = \"periodic\"\n"
+        "[substrate]\nmaterial = \"steel\"\n[[coating]]\nmaterial = \"titanium_nitride\"\n"
+        "thickness = 1e-5\n[method]\nname = \"frf-split\"\n[contact]\nindenter = \"height_map\"\n"
+        "path = \"gap.npy\"\nload = 3.0\nfriction = 0.3\n")
+    (tmp_path / "sliding.toml").write_text(text)
+    run = coatfft.run_scene(str(tmp_path / "sliding.toml"))
+    grid = coatfft.Grid(64, 64, 0.25e-3, 0.25e-3)
+    body = coatfft.LayerStack(steel, [coatfft.Coating(tin, 1e-5)])
+    op = coatfft.make_operator(grid, body, method="frf-split", boundary="periodic")
+    r = coatfft.solve_sliding(op, gap, body, friction=0.3, load=3.0)
+    assert r.converged and r.friction_coupling["converged"]
+    assert r.friction_coupling["solves"] == run["summary"]["friction_coupling"]["solves"]
+    np.testing.assert_allclose(r.pressure, run["pressure"], rtol=0,
+                               atol=1e-12 * run["pressure"].max())
+    frictionless = coatfft.solve_contact(op, gap, load=3.0)
+    assert frictionless.friction_coupling is None
+    shift = np.abs(r.pressure - frictionless.pressure).max() / frictionless.pressure.max()
+    assert shift == pytest.approx(r.friction_coupling["pressure_shift"], rel=1e-12)
+
+
+def test_sliding_errors(steel, tin, dcfft):
+    grid = dcfft.grid
+    h = np.zeros(grid.shape)
+    with pytest.raises(ValueError, match="exactly one"):
+        coatfft.solve_sliding(dcfft, h, steel, friction=0.3)
+    with pytest.raises(ValueError, match="friction"):
+        coatfft.solve_sliding(dcfft, h, steel, friction=-1.0, load=1.0)
+    sliding = coatfft.LayerStack(steel, [coatfft.Coating(tin, 1e-4, "frictionless")])
+    with pytest.raises(ValueError, match="frictionless"):
+        coatfft.solve_sliding(dcfft, h, sliding, friction=0.3, load=1.0)
