@@ -59,6 +59,51 @@ struct Row {
   double memory_mib;
 };
 
+// The stress operator's rows (1 and 8 planes under p, 1 plane under p, q_x, q_y) on a free or a
+// periodic surface; the ratio over the free surface's application `surface_ms`.
+void add_stress_rows(const Grid& grid, const LayerStack& body, const Field& p, const Field& qx,
+                     const Field& qy, double surface_ms, bool periodic, std::vector<Row>& rows) {
+  const std::vector<double> eight{1e-4, 2e-4, 3e-4, 4e-4, 5e-4, 6e-4, 7e-4, 8e-4};
+  const std::string prefix = periodic ? "periodic " : "";
+  for (auto [what, planes, tangential] :
+       {std::tuple{"stress p", 1, false}, {"stress p", 8, false}, {"stress p qx qy", 1, true}}) {
+    StressOperatorOptions o;
+    o.tangential = tangential;
+    o.boundary = periodic ? Boundary::periodic : Boundary::free;
+    o.planning = Planning::measure;
+    const std::vector<double> depths(eight.begin(), eight.begin() + planes);
+    const auto t0 = Clock::now();
+    const auto op = make_stress_operator(grid, body, depths, o);
+    const double setup = detail::seconds_since(t0);
+    std::vector<PlaneStress> s;
+    const double ms =
+        median_ms([&] { op->apply(p, tangential ? &qx : nullptr, tangential ? &qy : nullptr, s); });
+    rows.push_back({grid.nx(), prefix + what, planes, setup, ms, ms / planes / surface_ms,
+                    static_cast<double>(op->memory_bytes()) / (1 << 20)});
+  }
+}
+
+// The 3 x 3 surface response (CerrutiOperator) on a free or periodic surface.
+Row response_row(const Grid& grid, const LayerStack& body, const Field& p, const Field& qx,
+                 const Field& qy, double surface_ms, bool periodic) {
+  TangentialOptions options;
+  options.planning = Planning::measure;
+  options.boundary = periodic ? Boundary::periodic : Boundary::free;
+  const auto t0 = Clock::now();
+  const std::unique_ptr<CerrutiOperator> response =
+      make_tangential_operator(grid, body, options).op;
+  const double setup = detail::seconds_since(t0);
+  std::array<Field, 3> u;
+  const double ms = median_ms([&] { response->apply(p, &qx, &qy, u); });
+  return {grid.nx(),
+          std::string(periodic ? "periodic " : "") + "surface 3x3 p qx qy",
+          0,
+          setup,
+          ms,
+          ms / surface_ms,
+          static_cast<double>(response->memory_bytes()) / (1 << 20)};
+}
+
 std::vector<Row> measure(std::ptrdiff_t n) {
   const Grid grid(n, n, 4e-3, 4e-3);
   const LayerStack body({{Material(400e9, 0.25), 1e-4, Interface::bonded}}, Material(210e9, 0.3));
@@ -72,35 +117,23 @@ std::vector<Row> measure(std::ptrdiff_t n) {
   Field u;
   const double surface_ms = median_ms([&] { surface.op->apply(p, u); });
   std::vector<Row> rows{{n, "surface dcfft", 0, surface_setup, surface_ms, 1.0, 0.0}};
+  rows.push_back(response_row(grid, body, p, qx, qy, surface_ms, false));
+  add_stress_rows(grid, body, p, qx, qy, surface_ms, false, rows);
 
-  TangentialOptions response_options;
-  response_options.planning = Planning::measure;
+  // The periodic surface of the same body: its normal operator (the FFT floor of a periodic
+  // application), its 3 x 3 response and its stresses, all over the free surface's application.
+  OperatorOptions periodic_options;
+  periodic_options.method = Method::frf_split;
+  periodic_options.boundary = Boundary::periodic;
+  periodic_options.planning = Planning::measure;
   t0 = Clock::now();
-  const std::unique_ptr<CerrutiOperator> response =
-      make_tangential_operator(grid, body, response_options).op;
-  const double response_setup = detail::seconds_since(t0);
-  std::array<Field, 3> displacements;
-  const double response_ms = median_ms([&] { response->apply(p, &qx, &qy, displacements); });
-  rows.push_back({n, "surface 3x3 p qx qy", 0, response_setup, response_ms,
-                  response_ms / surface_ms,
-                  static_cast<double>(response->memory_bytes()) / (1 << 20)});
-
-  const std::vector<double> eight{1e-4, 2e-4, 3e-4, 4e-4, 5e-4, 6e-4, 7e-4, 8e-4};
-  for (auto [what, planes, tangential] :
-       {std::tuple{"stress p", 1, false}, {"stress p", 8, false}, {"stress p qx qy", 1, true}}) {
-    StressOperatorOptions o;
-    o.tangential = tangential;
-    o.planning = Planning::measure;
-    const std::vector<double> depths(eight.begin(), eight.begin() + planes);
-    t0 = Clock::now();
-    const auto op = make_stress_operator(grid, body, depths, o);
-    const double setup = detail::seconds_since(t0);
-    std::vector<PlaneStress> s;
-    const double ms =
-        median_ms([&] { op->apply(p, tangential ? &qx : nullptr, tangential ? &qy : nullptr, s); });
-    rows.push_back({n, what, planes, setup, ms, ms / planes / surface_ms,
-                    static_cast<double>(op->memory_bytes()) / (1 << 20)});
-  }
+  BuiltOperator periodic = make_operator(grid, body, periodic_options);
+  const double periodic_setup = detail::seconds_since(t0);
+  const double periodic_ms = median_ms([&] { periodic.op->apply(p, u); });
+  rows.push_back(
+      {n, "periodic surface", 0, periodic_setup, periodic_ms, periodic_ms / surface_ms, 0.0});
+  rows.push_back(response_row(grid, body, p, qx, qy, surface_ms, true));
+  add_stress_rows(grid, body, p, qx, qy, surface_ms, true, rows);
   return rows;
 }
 

@@ -8,6 +8,11 @@
 
 namespace coatfft {
 
+/// The surface's extent: free (an isolated load on a half-space, the grid a window of it), or
+/// periodic (the grid one period of a surface repeated in x and y, docs/theory.md 4.8). Every
+/// operator factory takes it: the surface's, the tangential and the stress operator.
+enum class Boundary { free, periodic };
+
 enum class Method {
   direct,        ///< brute-force sum of Love's coefficients (reference; homogeneous only)
   dcfft,         ///< DC-FFT of Love's coefficients (Liu, Wang & Liu 2000; homogeneous only)

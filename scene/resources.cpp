@@ -52,8 +52,8 @@ MemoryNeed estimate_memory(const Scene& scene) {
   if (scene.stress && scene.body) {
     const std::size_t planes = stress_planes(*scene.stress, *scene.body).depths.size();
     const bool tangential = scene.shear || (scene.contact && scene.contact->friction > 0.0);
-    need.bytes +=
-        estimated_stress_bytes(grid, planes, scene.stress->alpha, tangential, scene.periodic);
+    need.bytes += estimated_stress_bytes(grid, planes, scene.stress->alpha, tangential,
+                                         scene.periodic ? Boundary::periodic : Boundary::free);
     need.drivers += scene.periodic ? detail::concat(", [stress] ", planes, " periodic planes")
                                    : detail::concat(", [stress] ", planes,
                                                     " planes at alpha = ", scene.stress->alpha);

@@ -202,7 +202,7 @@ std::shared_ptr<CerrutiOperator> traction_operator(const Grid& grid, const Layer
                                                    int threads, bool periodic) {
   TangentialOptions options;
   options.threads = threads;
-  options.periodic = periodic;
+  options.boundary = periodic ? Boundary::periodic : Boundary::free;
   return make_tangential_operator(grid, body, options).op;
 }
 

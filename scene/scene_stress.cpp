@@ -131,7 +131,7 @@ StressRun compute_stress(const StressSpec& spec, const LayerStack& body, const G
   StressOperatorOptions options;
   options.kernel.alpha = spec.alpha;
   options.kernel.threads = threads;
-  options.periodic = spec.periodic;
+  options.boundary = spec.periodic ? Boundary::periodic : Boundary::free;
   options.sides = planes.sides;
   options.tangential = q.qx || q.qy;
   const std::unique_ptr<StressOperator> op =

@@ -54,11 +54,11 @@ void require_stress_depths(const std::vector<double>& depths) {
 }
 
 double estimated_stress_bytes(const Grid& grid, std::size_t planes, int alpha, bool tangential,
-                              bool periodic) {
+                              Boundary boundary) {
   const double n = static_cast<double>(planes);
   const double loads = tangential ? 3.0 : 1.0;
   const double cells = double(grid.nx()) * double(grid.ny());
-  if (periodic) {
+  if (boundary == Boundary::periodic) {
     // Per plane: six spectrum quarters per load and the six output fields; the load spectra.
     const double quarter = (grid.nx() / 2 + 1.0) * (grid.ny() / 2 + 1.0);
     return 8.0 * (n * (6 * loads * quarter + 7 * cells) + 4 * loads * quarter);
@@ -80,7 +80,8 @@ StressOperator::StressOperator(const Grid& grid, const LayerStack& stack,
                                std::vector<double> depths, const StressOperatorOptions& options)
     : depths_(std::move(depths)),
       tangential_(options.tangential),
-      convolution_(grid, options.tangential ? 3 : 1, options.planning, options.periodic) {
+      convolution_(grid, options.tangential ? 3 : 1, options.planning,
+                   options.boundary == Boundary::periodic) {
   const auto start = std::chrono::steady_clock::now();
   require_stress_depths(depths_);
   COATFFT_REQUIRE(options.sides.empty() || options.sides.size() == depths_.size(),
@@ -111,7 +112,7 @@ void StressOperator::add_planes(const Grid& grid, const LayerStack& stack, std::
   const int nb_loads = convolution_.nb_loads();
   const auto depths = std::span<const double>(depths_).subspan(first, count);
   std::vector<StressKernelReport> reports;
-  if (options.periodic) {
+  if (options.boundary == Boundary::periodic) {
     for (StressPlaneSpectrum& plane :
          periodic_stress_spectra(grid, stack, depths, side, tangential_, options.kernel, &reports))
       for (int c = 0; c < 6; ++c)

@@ -15,6 +15,7 @@
 
 #include "../convolution/fft/parity_convolution.hpp"
 #include "../convolution/fft/planning.hpp"
+#include "../convolution/method.hpp"
 #include "../core/grid.hpp"
 #include "../core/types.hpp"
 #include "../frf/stress_frf.hpp"
@@ -35,9 +36,9 @@ struct StressOperatorOptions {
   std::vector<InterfaceSide> sides = {};
   /// Whether the tractions q_x, q_y are loads too (their kernels cost twice the pressure's).
   bool tangential = false;
-  /// The surface repeats over the grid's domain (nx, ny even): periodic_stress_spectra's
-  /// kernels, kernel.alpha unused.
-  bool periodic = false;
+  /// Boundary::periodic: the surface repeats over the grid's domain (nx, ny even):
+  /// periodic_stress_spectra's kernels, kernel.alpha unused.
+  Boundary boundary = Boundary::free;
   Planning planning = Planning::estimate;
 };
 
@@ -50,7 +51,7 @@ void require_stress_depths(const std::vector<double>& depths);
 /// built and applied (its spectra, a group's kernel construction, the output fields), for a
 /// memory check before any allocation (core/memory.hpp); `alpha` as StressKernelOptions::alpha.
 double estimated_stress_bytes(const Grid& grid, std::size_t planes, int alpha, bool tangential,
-                              bool periodic = false);
+                              Boundary boundary = Boundary::free);
 
 class StressOperator {
  public:

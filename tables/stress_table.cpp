@@ -366,7 +366,7 @@ double sinusoid_error(double z_cells, bool shear) {
   for (std::ptrdiff_t j = 0; j < g.ny(); ++j)
     for (std::ptrdiff_t i = 0; i < g.nx(); ++i) load(i, j) = p0 * std::cos(k * g.x(i));
   StressOperatorOptions o;
-  o.periodic = true;
+  o.boundary = Boundary::periodic;
   o.tangential = shear;
   std::vector<PlaneStress> out;
   const Field zero = Field::Zero(g.nx(), g.ny());
@@ -391,7 +391,7 @@ double period_difference(int cells) {
   const std::vector<double> depths{0.5 * a, a};
   const LayerStack steel(Material(210e9, 0.3));
   StressOperatorOptions o;
-  o.periodic = true;
+  o.boundary = Boundary::periodic;
   std::vector<PlaneStress> periodic, free;
   make_stress_operator(g, steel, depths, o)->apply(p, nullptr, nullptr, periodic);
   free = stresses(g, steel, p, nullptr, depths);

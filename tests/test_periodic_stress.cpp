@@ -33,7 +33,7 @@ std::vector<PlaneStress> periodic_stress(const Grid& g, const LayerStack& body,
                                          const Field* qx = nullptr, const Field* qy = nullptr,
                                          std::vector<InterfaceSide> sides = {}) {
   StressOperatorOptions o;
-  o.periodic = true;
+  o.boundary = Boundary::periodic;
   o.tangential = qx || qy;
   o.sides = std::move(sides);
   StressOperator op(g, body, depths, o);
@@ -178,7 +178,7 @@ TEST_CASE("periodic stresses: a contact in a large period tends to the free surf
 
 TEST_CASE("periodic stresses refuse what they cannot compute", "[stress][periodic]") {
   StressOperatorOptions o;
-  o.periodic = true;
+  o.boundary = Boundary::periodic;
   CHECK_THROWS_AS(StressOperator(Grid(9, 8, 1e-3, 1e-3), LayerStack(steel), {1e-4}, o),
                   InvalidArgument);
   o.tangential = true;

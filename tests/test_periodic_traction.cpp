@@ -98,7 +98,7 @@ TEST_CASE("the periodic tangential operator is the circular convolution of its k
   const Grid g(8, 6, 0.4e-3, 0.3e-3);
   const LayerStack body({{tin, 0.05e-3}}, steel);
   TangentialOptions options;
-  options.periodic = true;
+  options.boundary = Boundary::periodic;
   const BuiltTangentialOperator built = make_tangential_operator(g, body, options);
   REQUIRE(built.op->periodic());
   const TractionKernels k = periodic_traction_kernels(g, body);

@@ -187,7 +187,7 @@ BuiltTangentialOperator make_tangential_operator(const Grid& grid, const LayerSt
   TractionKernelOptions kernel = options.kernel;
   kernel.lattice.threads = options.threads;
   BuiltTangentialOperator built;
-  if (options.periodic) {
+  if (options.boundary == Boundary::periodic) {
     PeriodicKernelOptions periodic;
     periodic.tolerance = std::min(kernel.tolerance, 1e-6);
     periodic.max_evaluations = kernel.lattice.max_evaluations;

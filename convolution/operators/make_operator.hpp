@@ -23,10 +23,6 @@
 
 namespace coatfft {
 
-/// The surface's extent: free (an isolated load on a half-space, the grid a window of it), or
-/// periodic (the grid one period of a surface repeated in x and y, docs/theory.md 4.8).
-enum class Boundary { free, periodic };
-
 /// How to build an operator. The defaults are those of a scene file without [method] keys.
 struct OperatorOptions {
   Method method = Method::dcfft;
@@ -110,9 +106,10 @@ struct TangentialOptions {
   int threads = 1;
   /// The kernels' options (convolution/kernels/traction_kernels.hpp).
   TractionKernelOptions kernel;
-  /// The surface repeats over the grid's domain (nx, ny even): periodic_traction_kernels, with
-  /// `kernel.tolerance` as their tolerance (at most 1e-6) and `threads`.
-  bool periodic = false;
+  /// Boundary::periodic: the surface repeats over the grid's domain (nx, ny even):
+  /// periodic_traction_kernels, with `kernel.tolerance` as their tolerance (at most 1e-6) and
+  /// `threads`.
+  Boundary boundary = Boundary::free;
 };
 
 /// What make_tangential_operator built.

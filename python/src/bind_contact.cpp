@@ -122,7 +122,7 @@ PyContactResult solve_sliding(Operator& op, const DoubleArray& height, py::handl
     const auto guard = op.lock();
     TangentialOptions tangential;
     tangential.threads = threads;
-    tangential.periodic = op.op().periodic();
+    tangential.boundary = op.op().periodic() ? Boundary::periodic : Boundary::free;
     std::shared_ptr<CerrutiOperator> surface =
         make_tangential_operator(op.grid(), body, tangential).op;
     ContactSolver solver(op.op(), options);

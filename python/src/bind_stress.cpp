@@ -66,11 +66,12 @@ std::vector<double> depth_list(const DoubleArray& depths) {
 void require_stress_memory(const Grid& grid, std::size_t planes, const StressOperatorOptions& o) {
   const double out = 6.0 * 8.0 * static_cast<double>(planes) * static_cast<double>(grid.nb_cells());
   const int alpha = o.kernel.alpha;
-  require_memory({estimated_stress_bytes(grid, planes, alpha, o.tangential, o.periodic) + out,
-                  o.periodic ? detail::concat("grid ", grid.nx(), " x ", grid.ny(), ", ", planes,
-                                              " periodic planes")
-                             : detail::concat("grid ", grid.nx(), " x ", grid.ny(), ", ", planes,
-                                              " planes at alpha = ", alpha)},
+  const bool periodic = o.boundary == Boundary::periodic;
+  require_memory({estimated_stress_bytes(grid, planes, alpha, o.tangential, o.boundary) + out,
+                  periodic ? detail::concat("grid ", grid.nx(), " x ", grid.ny(), ", ", planes,
+                                            " periodic planes")
+                           : detail::concat("grid ", grid.nx(), " x ", grid.ny(), ", ", planes,
+                                            " planes at alpha = ", alpha)},
                  std::nullopt, "stresses", "", "use fewer cells or fewer depths");
 }
 
@@ -102,7 +103,7 @@ py::array_t<double> stresses(py::handle body_object, const Grid& grid,
   const std::vector<double> depths = depth_list(depth_array);
   StressOperatorOptions options;
   options.side = parse_side(at_interface);
-  options.periodic = periodic_stress(boundary, alpha);
+  options.boundary = periodic_stress(boundary, alpha) ? Boundary::periodic : Boundary::free;
   options.kernel.alpha = alpha.value_or(options.kernel.alpha);
   options.kernel.threads = threads;
   options.tangential = qx || qy;
@@ -133,7 +134,8 @@ py::tuple surface_displacements(py::handle body_object, const Grid& grid,
   const LayerStack stack =
       layers_of(body_object, "surface_displacements", "the tangential response needs the layers");
   TangentialOptions options;
-  options.periodic = is_periodic(boundary, "surface_displacements");
+  options.boundary =
+      is_periodic(boundary, "surface_displacements") ? Boundary::periodic : Boundary::free;
   // The operator, the loads' copies and the three outputs, before anything is allocated.
   require_memory({estimated_cerruti_bytes(grid) + 6.0 * 8.0 * static_cast<double>(grid.nb_cells()),
                   detail::concat("grid ", grid.nx(), " x ", grid.ny())},
