@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "convolution/fft/fftw_plan.hpp"
-#include "convolution/kernels/ewald_cell.hpp"
+#include "convolution/kernels/ewald.hpp"
 #include "convolution/kernels/love_influence.hpp"
 #include "core/detail/brief.hpp"
 #include "core/detail/parallel_for.hpp"
@@ -18,9 +18,8 @@ namespace coatfft {
 
 namespace {
 
+using detail::EwaldLattice;
 using std::numbers::pi;
-// erfc(6.5) = 3.8e-20: the Ewald sums' terms beyond are below any tolerance of the options.
-constexpr double kErfcCut = 6.5;
 
 using detail::sinc;
 
@@ -67,12 +66,6 @@ double remainder_cut(const Grid& g, const Frf& frf, double tolerance) {
   }
   throw InvalidArgument("periodic kernel: k H(k) of the FRF does not approach its c_inf()");
 }
-
-struct EwaldLattice {
-  std::ptrdiff_t hx, ny;
-  double dkx, dky, k_ewald, k_rest;
-  int px, py;
-};
 
 // The spectrum M(i, j) = sum over the aliases of (C erfc(k/(2 alpha))/k + R(k)) S(k), k != 0, on
 // the half lattice 0 <= i <= nx/2 (FFTW's c2r layout, j the signed frequency).
@@ -129,17 +122,8 @@ void validate(const Grid& g, const Frf& frf, const PeriodicKernelOptions& o) {
 
 EwaldLattice make_lattice(const Grid& g, const Frf& frf, double alpha,
                           const PeriodicKernelOptions& o) {
-  EwaldLattice l{g.nx() / 2 + 1,
-                 g.ny(),
-                 2.0 * pi / g.lx(),
-                 2.0 * pi / g.ly(),
-                 2.0 * alpha * kErfcCut,
-                 remainder_cut(g, frf, o.tolerance),
-                 0,
-                 0};
+  const EwaldLattice l = detail::ewald_lattice(g, alpha, remainder_cut(g, frf, o.tolerance));
   const double k_max = std::max(l.k_ewald, l.k_rest);
-  l.px = static_cast<int>(std::ceil(k_max * g.dx() / (2.0 * pi))) + 1;
-  l.py = static_cast<int>(std::ceil(k_max * g.dy() / (2.0 * pi))) + 1;
   // The points of the aliased half lattice within k_max: the aliases tile the plane, so about half
   // a disk of lattice cells (the loop visits every alias too, but a visit outside costs a compare).
   const double evaluations = 0.5 * pi * (k_max / l.dkx + 2.0) * (k_max / l.dky + 2.0);
@@ -154,9 +138,7 @@ EwaldLattice make_lattice(const Grid& g, const Frf& frf, double alpha,
 
 Field periodic_influence_kernel(const Grid& g, const Frf& frf, const PeriodicKernelOptions& o) {
   validate(g, frf, o);
-  // alpha sets the split between space and lattice: 6/min(lx, ly) keeps the space part within
-  // the nearest images and the lattice part within about 12 alpha = 72/min(lx, ly).
-  const double alpha = 6.0 / std::min(g.lx(), g.ly());
+  const double alpha = detail::ewald_alpha(g);
   const EwaldLattice l = make_lattice(g, frf, alpha, o);
   Field k = to_space(g, spectrum(g, frf, l, alpha, o.threads));
   const double c = frf.c_inf();

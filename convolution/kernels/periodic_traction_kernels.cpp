@@ -9,7 +9,7 @@
 
 #include "convolution/fft/fftw_plan.hpp"
 #include "convolution/kernels/angular_influence.hpp"
-#include "convolution/kernels/ewald_cell.hpp"
+#include "convolution/kernels/ewald.hpp"
 #include "core/detail/brief.hpp"
 #include "core/detail/parallel_for.hpp"
 #include "core/detail/sinc.hpp"
@@ -23,9 +23,8 @@ namespace coatfft {
 
 namespace {
 
+using detail::EwaldLattice;
 using std::numbers::pi;
-// erfc(6.5) = 3.8e-20: the Ewald sums' terms beyond are below any tolerance of the options.
-constexpr double kErfcCut = 6.5;
 
 // The four angular kernels, in the order of their FRFs cos 2theta, sin 2theta, -i cos theta,
 // -i sin theta (each per unit coefficient: 1/k times it).
@@ -83,14 +82,6 @@ Angular short_range(const Grid& g, double alpha, double x, double y) {
   return sum;
 }
 
-// The lattice: the period's wavevectors with aliases up to the larger of the Ewald cut and the
-// remainders' reach.
-struct Lattice {
-  std::ptrdiff_t hx, ny;
-  double dkx, dky, k_ewald, k_rest;
-  int px, py;
-};
-
 // The wavenumber beyond which k D(k) and k C(k) are their top medium's values to the tolerance
 // (of k S's, which is > 0) over 8 doublings: the remainders are negligible beyond. 0 for a
 // homogeneous body.
@@ -123,19 +114,9 @@ TractionResponse bonded_response(const LayerStack& stack) {
   return response;
 }
 
-Lattice make_lattice(const Grid& g, const TractionResponse& r, double alpha,
-                     const PeriodicKernelOptions& o) {
-  Lattice l{g.nx() / 2 + 1,
-            g.ny(),
-            2.0 * pi / g.lx(),
-            2.0 * pi / g.ly(),
-            2.0 * alpha * kErfcCut,
-            remainder_cut(g, r, o.tolerance),
-            0,
-            0};
-  const double k_max = std::max(l.k_ewald, l.k_rest);
-  l.px = static_cast<int>(std::ceil(k_max * g.dx() / (2.0 * pi))) + 1;
-  l.py = static_cast<int>(std::ceil(k_max * g.dy() / (2.0 * pi))) + 1;
+EwaldLattice make_lattice(const Grid& g, const TractionResponse& r, double alpha,
+                          const PeriodicKernelOptions& o) {
+  const EwaldLattice l = detail::ewald_lattice(g, alpha, remainder_cut(g, r, o.tolerance));
   const double evaluations = remainder_evaluations(g, l.k_rest);
   COATFFT_REQUIRE(evaluations <= o.max_evaluations,
                   "periodic traction kernels: the remainders reach k = ", detail::brief(l.k_rest),
@@ -147,8 +128,8 @@ Lattice make_lattice(const Grid& g, const TractionResponse& r, double alpha,
 // The lattice parts' spectra at (kx, ky), k = |k| > 0, times the cell's transform `cell`: the
 // Gaussian-fast complements of the short-range parts, with the top medium's D and C, and the
 // remainders; `sums` in the order of Angular.
-void add_wavevector(const TractionResponse& r, const Lattice& l, double alpha, double kx, double ky,
-                    double k, double cell, std::array<std::complex<double>, 4>& sums) {
+void add_wavevector(const TractionResponse& r, const EwaldLattice& l, double alpha, double kx,
+                    double ky, double k, double cell, std::array<std::complex<double>, 4>& sums) {
   const TractionFrfs& inf = r.at_infinity();
   const std::complex<double> i(0.0, 1.0);
   if (k <= l.k_ewald) {
@@ -174,7 +155,7 @@ void add_wavevector(const TractionResponse& r, const Lattice& l, double alpha, d
 }
 
 // The four lattice parts in space: K(d) = (1/(nx ny)) sum over the lattice of F exp(i k.d).
-std::array<Field, 4> lattice_part(const Grid& g, const TractionResponse& r, const Lattice& l,
+std::array<Field, 4> lattice_part(const Grid& g, const TractionResponse& r, const EwaldLattice& l,
                                   double alpha, int threads) {
   std::array<std::vector<std::complex<double>>, 4> spectra;
   for (auto& s : spectra) s.assign(static_cast<std::size_t>(l.hx * l.ny), 0.0);
@@ -247,10 +228,8 @@ TractionKernels periodic_traction_kernels(const Grid& g, const LayerStack& stack
   COATFFT_REQUIRE(o.threads >= 1 && o.threads <= max_threads,
                   "periodic traction kernels: threads must be in [1, ", max_threads, "]");
   const TractionResponse response = bonded_response(stack);
-  // As periodic_influence_kernel's: the short range within the nearest images, the lattice part
-  // within about 13 alpha.
-  const double alpha = 6.0 / std::min(g.lx(), g.ly());
-  const Lattice lattice = make_lattice(g, response, alpha, o);
+  const double alpha = detail::ewald_alpha(g);
+  const EwaldLattice lattice = make_lattice(g, response, alpha, o);
   const Field zp = periodic_influence_kernel(g, *make_frf(stack), o);
   const Field s = periodic_influence_kernel(g, *in_plane_frf(stack), o);
   std::array<Field, 4> a = lattice_part(g, response, lattice, alpha, o.threads);
