@@ -14,7 +14,7 @@ import pytest
 import coatfft
 from conftest import quiet_operator, radius
 
-DELAY = 1.0  # [s] from the start of the call to the SIGINT
+DELAY = 0.5  # [s] from the start of the call to the SIGINT (the calls run for tens of seconds)
 # [s] from the SIGINT to the exception: about 0.1 s measured; generous for a loaded machine,
 # far below what the calls would take.
 RESPONSE = 5.0
