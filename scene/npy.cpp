@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <optional>
 #include <string>
@@ -189,23 +190,63 @@ std::string header_for_message(std::string_view header) {
   return quoted_excerpt(header.substr(0, end == std::string_view::npos ? 0 : end + 1));
 }
 
-// The shape of the array the header describes, once its dtype and order are checked.
-Shape npy_shape(const fs::path& path, std::string_view text) {
+// The layout of the array's values: IEEE floats of 4 or 8 bytes (float32 exports are common;
+// float16's three digits are not a topography), in either byte order ('=' and no mark are this
+// machine's, little endian), in C or Fortran order.
+struct NpyLayout {
+  Shape shape;
+  std::size_t bytes = 8;  // of one value
+  bool big_endian = false;
+  bool fortran = false;
+};
+
+std::optional<NpyLayout> parse_dtype(std::string_view descr) {
+  NpyLayout layout;
+  if (!descr.empty() && (descr[0] == '<' || descr[0] == '>' || descr[0] == '=')) {
+    layout.big_endian = descr[0] == '>';
+    descr.remove_prefix(1);
+  }
+  if (descr == "f8") return layout;
+  layout.bytes = 4;
+  if (descr == "f4") return layout;
+  return std::nullopt;
+}
+
+// The layout of the array the header describes, once its dtype and order are checked.
+NpyLayout npy_layout(const fs::path& path, std::string_view text) {
   NpyHeader header;
   HeaderParser parser(text);
   COATFFT_REQUIRE(parser.parse(header), path.string(), ": malformed .npy header (", parser.reason(),
                   "): ", header_for_message(text));
-  const std::string_view descr = unquoted(*header.descr);
-  COATFFT_REQUIRE(descr == "<f8" || descr == "=f8" || descr == "f8", path.string(),
-                  ": dtype must be float64 ('<f8'), header is ", header_for_message(text));
-  COATFFT_REQUIRE(*header.fortran_order == "False", path.string(),
-                  ": array must be in C order (fortran_order False), header is ",
+  std::optional<NpyLayout> layout = parse_dtype(unquoted(*header.descr));
+  COATFFT_REQUIRE(layout, path.string(),
+                  ": dtype must be float64 or float32 ('<f8', '>f8', '<f4', '>f4'), header is ",
                   header_for_message(text));
+  COATFFT_REQUIRE(*header.fortran_order == "False" || *header.fortran_order == "True",
+                  path.string(), ": fortran_order must be False or True, header is ",
+                  header_for_message(text));
+  layout->fortran = *header.fortran_order == "True";
   const std::optional<Shape> shape = parse_shape(*header.shape);
   COATFFT_REQUIRE(shape, path.string(),
                   ": array must be 2-D with a shape of two positive integers, shape is ",
                   quoted_excerpt(*header.shape), " in header ", header_for_message(text));
-  return *shape;
+  layout->shape = *shape;
+  return *layout;
+}
+
+// Value n of `data` (the file's bytes) as a double, in the layout's type and byte order.
+double npy_value(const unsigned char* data, std::size_t n, const NpyLayout& layout) {
+  unsigned char bytes[8];
+  std::memcpy(bytes, data + n * layout.bytes, layout.bytes);
+  if (layout.big_endian) std::reverse(bytes, bytes + layout.bytes);
+  if (layout.bytes == 4) {
+    float f;
+    std::memcpy(&f, bytes, 4);
+    return f;
+  }
+  double d;
+  std::memcpy(&d, bytes, 8);
+  return d;
 }
 
 // The header of a .npy file and where its data starts.
@@ -243,20 +284,21 @@ NpyStart read_npy_start(InputFile& file) {
   return npy;
 }
 
-// Checks that the data after the header is exactly the rows x cols float64 values of `shape`;
+// Checks that the data after the header is exactly the rows x cols values of the layout;
 // returns their size in bytes.
-std::size_t npy_data_bytes(const fs::path& path, const NpyStart& npy, const Shape& shape,
+std::size_t npy_data_bytes(const fs::path& path, const NpyStart& npy, const NpyLayout& layout,
                            std::uintmax_t file_size) {
+  const Shape& shape = layout.shape;
   const std::uintmax_t have = file_size - npy.data_offset;
   std::uintmax_t need = 0;
   const bool overflow = __builtin_mul_overflow(shape.rows, shape.cols, &need) ||
-                        __builtin_mul_overflow(need, std::uintmax_t{8}, &need);
+                        __builtin_mul_overflow(need, std::uintmax_t{layout.bytes}, &need);
   if (!overflow && need == have) return static_cast<std::size_t>(need);
   const std::string needs = overflow ? std::string("more than 2^64") : std::to_string(need);
   throw InvalidArgument(detail::concat(
       path.string(), ": ", overflow || need > have ? "truncated data: " : "", "shape ",
-      quoted_excerpt(shape.text), " needs ", needs, " bytes of float64 values after the ",
-      npy.data_offset, "-byte header, the file has ", have));
+      quoted_excerpt(shape.text), " needs ", needs, " bytes of float", 8 * layout.bytes,
+      " values after the ", npy.data_offset, "-byte header, the file has ", have));
 }
 
 }  // namespace
@@ -300,11 +342,24 @@ void write_npy(const std::filesystem::path& path, const Field& field) {
 Field read_npy(const fs::path& path, std::uintmax_t max_bytes) {
   InputFile file(path, "a .npy file", max_bytes);
   const NpyStart npy = read_npy_start(file);
-  const Shape shape = npy_shape(path, npy.header);
-  const std::size_t bytes = npy_data_bytes(path, npy, shape, file.size());
-  // rows x cols x 8 equals the data's size: both fit an Eigen::Index.
-  Field field(static_cast<Eigen::Index>(shape.cols), static_cast<Eigen::Index>(shape.rows));
-  file.read_exact(field.data(), bytes);
+  const NpyLayout layout = npy_layout(path, npy.header);
+  const std::size_t bytes = npy_data_bytes(path, npy, layout, file.size());
+  // rows x cols x (4 or 8) equals the data's size: both fit an Eigen::Index.
+  const auto rows = static_cast<Eigen::Index>(layout.shape.rows);
+  const auto cols = static_cast<Eigen::Index>(layout.shape.cols);
+  Field field(cols, rows);
+  if (layout.bytes == 8 && !layout.big_endian && !layout.fortran) {
+    file.read_exact(field.data(), bytes);  // the Field's own layout: row j is y_j
+    return field;
+  }
+  std::vector<unsigned char> data(bytes);
+  file.read_exact(data.data(), bytes);
+  // Value (r, c) of the (rows, cols) array: at r cols + c in C order, r + c rows in Fortran's.
+  for (Eigen::Index r = 0; r < rows; ++r)
+    for (Eigen::Index c = 0; c < cols; ++c) {
+      const auto n = static_cast<std::size_t>(layout.fortran ? r + c * rows : r * cols + c);
+      field(c, r) = npy_value(data.data(), n, layout);
+    }
   return field;
 }
 

@@ -1,10 +1,12 @@
 // The scene layer's .npy and CSV readers and writers, and the checks on input files they share.
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -69,16 +71,62 @@ TEST_CASE("npy: reads NumPy's own header layout, row j is y_j", "[scene][npy]") 
   CHECK(f(0, 1) == 4.0);
 }
 
+TEST_CASE("npy: float32 and big-endian values, Fortran order: the same array", "[scene][npy]") {
+  // The (3, 4) array a[r, c] = 4 r + c + 0.5 (exact in float32) written in each layout numpy
+  // exports: the bytes made here independently of the reader.
+  const auto write = [](const std::string& name, const std::string& descr, bool fortran) {
+    const bool big = descr[0] == '>';
+    const std::size_t size = descr[2] == '4' ? 4 : 8;
+    std::string data;
+    for (int k = 0; k < 12; ++k) {
+      const int r = fortran ? k % 3 : k / 4, c = fortran ? k / 3 : k % 4;
+      const double v = 4.0 * r + c + 0.5;
+      unsigned char b[8];
+      if (size == 4) {
+        const float f = static_cast<float>(v);
+        std::memcpy(b, &f, 4);
+      } else {
+        std::memcpy(b, &v, 8);
+      }
+      if (big) std::reverse(b, b + size);
+      data.append(reinterpret_cast<const char*>(b), size);
+    }
+    const std::string header = "{'descr': '" + descr +
+                               "', 'fortran_order': " + (fortran ? "True" : "False") +
+                               ", 'shape': (3, 4), }";
+    const fs::path path = scratch(name);
+    std::ofstream out(path, std::ios::binary);
+    out.write("\x93NUMPY\x01\x00", 8);
+    out.put(static_cast<char>(header.size()));
+    out.put('\0');
+    out << header << data;
+    return path;
+  };
+  for (const char* descr : {"<f8", ">f8", "<f4", ">f4", "=f4"})
+    for (bool fortran : {false, true}) {
+      INFO(descr << (fortran ? " Fortran" : " C"));
+      const Field f = coatfft::scene::read_npy(write("layout.npy", descr, fortran));
+      REQUIRE(f.rows() == 4);
+      REQUIRE(f.cols() == 3);
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 4; ++c) CHECK(f(c, r) == 4.0 * r + c + 0.5);
+    }
+}
+
 TEST_CASE("npy: refuses what it cannot read, naming the file", "[scene][npy][bad_input]") {
   using Catch::Contains;
   CHECK_THROWS_WITH(
       coatfft::scene::read_npy(npy_with_header(
           "int.npy", "{'descr': '<i4', 'fortran_order': False, 'shape': (3, 4), }", 6)),
-      Contains("int.npy") && Contains("float64"));
+      Contains("int.npy") && Contains("float64 or float32"));
   CHECK_THROWS_WITH(
       coatfft::scene::read_npy(npy_with_header(
-          "fortran.npy", "{'descr': '<f8', 'fortran_order': True, 'shape': (3, 4), }", 12)),
-      Contains("C order"));
+          "half.npy", "{'descr': '<f2', 'fortran_order': False, 'shape': (3, 4), }", 3)),
+      Contains("float64 or float32"));
+  CHECK_THROWS_WITH(
+      coatfft::scene::read_npy(npy_with_header(
+          "order.npy", "{'descr': '<f8', 'fortran_order': 1, 'shape': (3, 4), }", 12)),
+      Contains("fortran_order"));
   CHECK_THROWS_WITH(
       coatfft::scene::read_npy(npy_with_header(
           "vector.npy", "{'descr': '<f8', 'fortran_order': False, 'shape': (3,), }", 3)),
