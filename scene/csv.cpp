@@ -3,6 +3,7 @@
 #include <locale.h>
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -84,6 +85,34 @@ void read_csv_line(const fs::path& path, std::size_t line_number, std::string_vi
   ++table.rows;
 }
 
+// Whether `token` is a whole number as parse_csv_value reads it (out of range included).
+bool is_csv_number(std::string_view token) {
+  if (token.size() > 1 && token[0] == '+' && token[1] != '-' && token[1] != '+')
+    token.remove_prefix(1);
+  double value = 0;
+  const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
+  return end == token.data() + token.size() &&
+         (error == std::errc{} || error == std::errc::result_out_of_range);
+}
+
+// A word of a header: text with a letter (ASCII, or a UTF-8 sequence such as "µm"), no number.
+bool is_header_word(std::string_view token) {
+  const auto letter = [](char c) {
+    return std::isalpha(static_cast<unsigned char>(c)) || static_cast<unsigned char>(c) >= 0x80;
+  };
+  const auto control = [](char c) { return static_cast<unsigned char>(c) < 0x20; };
+  return std::any_of(token.begin(), token.end(), letter) &&
+         std::none_of(token.begin(), token.end(), control) && !is_csv_number(token);
+}
+
+// A header line of a spreadsheet or instrument export ("x,y,z", "Height [nm]"): before the first
+// row of values, a line of words only. A line with a number among words is a row with a typo, and
+// one with control bytes is not text: both are refused as rows.
+bool is_csv_header(std::string_view line) {
+  const std::vector<std::string_view> tokens = csv_tokens(line);
+  return !tokens.empty() && std::all_of(tokens.begin(), tokens.end(), is_header_word);
+}
+
 }  // namespace
 
 std::vector<std::string_view> csv_tokens(std::string_view line) {
@@ -109,9 +138,13 @@ Field read_csv_matrix(const fs::path& path, std::uintmax_t max_bytes) {
   const std::string text = read_input_file(path, "a CSV file", max_bytes);
   CsvTable table;
   std::size_t line_number = 0;
-  for (std::size_t begin = 0; begin < text.size();) {
+  // A UTF-8 byte order mark (spreadsheet exports) is not part of the first value.
+  const std::size_t start = std::string_view(text).starts_with("\xEF\xBB\xBF") ? 3 : 0;
+  for (std::size_t begin = start; begin < text.size();) {
     const std::size_t end = std::min(text.find('\n', begin), text.size());
-    read_csv_line(path, ++line_number, std::string_view(text).substr(begin, end - begin), table);
+    const std::string_view line = std::string_view(text).substr(begin, end - begin);
+    ++line_number;
+    if (table.rows > 0 || !is_csv_header(line)) read_csv_line(path, line_number, line, table);
     begin = end + 1;
   }
   COATFFT_REQUIRE(table.rows > 0, path.string(), ": no data");

@@ -14,8 +14,10 @@
 
 namespace coatfft::scene {
 
-/// Reads a CSV matrix (rows separated by newlines, values by commas, semicolons or blanks; '#'
-/// starts a comment; lines without values are skipped) into a Field (cols, rows). Values are
+/// Reads a CSV matrix (rows separated by newlines, values by commas, semicolons, tabs or blanks;
+/// '#' starts a comment; lines without values are skipped; a UTF-8 byte order mark at the start
+/// and header lines before the first row, lines of words without a number, are skipped too) into
+/// a Field (cols, rows). Values are
 /// decimal numbers as std::from_chars reads them, with an optional leading '+' ("inf" and "nan"
 /// included); a value too small for float64 reads as 0 or a subnormal, as strtod gives it, a value
 /// too large is refused. Throws InvalidArgument on ragged rows, non-numbers or an empty file.

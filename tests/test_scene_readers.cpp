@@ -140,6 +140,29 @@ TEST_CASE("npy: refuses what it cannot read, naming the file", "[scene][npy][bad
   CHECK_THROWS_WITH(coatfft::scene::read_npy(scratch("missing.npy")), Contains("missing.npy"));
 }
 
+TEST_CASE("CSV matrix: a spreadsheet's byte order mark and header lines, tabs", "[scene][npy]") {
+  std::ofstream(scratch("export.csv")) << "\xEF\xBB\xBF"
+                                       << "x;y;Height [nm]\nunit: nm\n"
+                                       << "1\t2\t3\n4\t5\t6\n";
+  const Field f = coatfft::scene::read_csv_matrix(scratch("export.csv"));
+  REQUIRE(f.rows() == 3);
+  REQUIRE(f.cols() == 2);
+  CHECK(f(0, 0) == 1.0);
+  CHECK(f(2, 1) == 6.0);
+  // A first row with a typo among numbers is a row, not a header: refused, named.
+  std::ofstream(scratch("typo.csv")) << "1, tw0, 3\n4, 5, 6\n";
+  CHECK_THROWS_WITH(coatfft::scene::read_csv_matrix(scratch("typo.csv")),
+                    Catch::Contains("typo.csv:1") && Catch::Contains("\"tw0\""));
+  // Words after the first row are not a header.
+  std::ofstream(scratch("late.csv")) << "1, 2\nx, y\n";
+  CHECK_THROWS_WITH(coatfft::scene::read_csv_matrix(scratch("late.csv")),
+                    Catch::Contains("late.csv:2"));
+  // A file of headers alone has no data.
+  std::ofstream(scratch("words.csv")) << "\xEF\xBB\xBFx, y\n";
+  CHECK_THROWS_WITH(coatfft::scene::read_csv_matrix(scratch("words.csv")),
+                    Catch::Contains("no data"));
+}
+
 TEST_CASE("CSV matrix: comments, blanks and commas; ragged rows and words refused",
           "[scene][npy][bad_input]") {
   std::ofstream(scratch("good.csv")) << "# heights\n1, 2 3\n\n4,5,6  # row 1\n";
