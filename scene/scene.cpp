@@ -24,6 +24,7 @@
 #include "scene/npy.hpp"
 #include "stress/stress_kernel.hpp"
 #include "stress/stress_operator.hpp"
+#include "surfaces/detrend.hpp"
 
 namespace coatfft::scene {
 
@@ -383,11 +384,44 @@ Field read_height_map(const std::filesystem::path& file) {
   return ext == ".npy" ? read_npy(file) : read_csv_matrix(file);
 }
 
+// A height map or topography file of the grid's shape (ny, nx), every value finite.
+Field read_grid_file(const std::filesystem::path& file, const Grid& grid) {
+  Field h = read_height_map(file);
+  COATFFT_REQUIRE(h.rows() == grid.nx() && h.cols() == grid.ny(), file.string(), ": shape (",
+                  h.cols(), ", ", h.rows(), ") but the grid needs (ny, nx) = (", grid.ny(), ", ",
+                  grid.nx(), ")");
+  for (Eigen::Index j = 0; j < h.cols(); ++j)
+    for (Eigen::Index i = 0; i < h.rows(); ++i)
+      COATFFT_REQUIRE(std::isfinite(h(i, j)), file.string(), ": row ", j, ", column ", i,
+                      ": height ", h(i, j), " is not finite");
+  return h;
+}
+
+// [contact] topography = "FILE": a measured surface's heights z (peaks up, towards a rigid flat),
+// `detrend` "none" (default: the file as it is), "mean" or "plane" (its tilt on the instrument),
+// pressed by a rigid flat: the gap max(z) - z (surfaces/detrend.hpp), as a height map.
+void read_topography(SectionReader& reader, const Grid& grid,
+                     const std::filesystem::path& scene_dir, ContactSpec& spec) {
+  COATFFT_REQUIRE(!reader.has("indenter"), reader.where("topography"),
+                  " is pressed by a rigid flat: give it or an indenter, not both");
+  std::filesystem::path file = reader.string("topography");
+  if (file.is_relative()) file = scene_dir / file;
+  const Detrend detrend = detrend_from_name(
+      reader.choice("detrend", "none", {"none", "mean", "plane"}), reader.where("detrend"));
+  spec.indenter_name = "topography";
+  spec.height_file = file;
+  spec.indenter =
+      HeightMap{gap_of_topography(detrended(grid, read_grid_file(file, grid), detrend))};
+}
+
 // `stack_body`: the body the operator is built from when it is a stack, nullptr for a table.
 // [contact] indenter and its keys: the shape, checked against the grid (a height map's shape and
 // values; a cylinder's length, a punch's radius within the domain).
 void read_indenter(SectionReader& reader, const Grid& grid, const std::filesystem::path& scene_dir,
                    ContactSpec& spec) {
+  if (reader.has("topography")) return read_topography(reader, grid, scene_dir, spec);
+  COATFFT_REQUIRE(!reader.has("detrend"), reader.where("detrend"),
+                  " applies to a measured topography ([contact] topography = \"FILE\")");
   spec.indenter_name = reader.choice(
       "indenter", "", {"sphere", "paraboloid", "cylinder", "flat_punch", "height_map"});
   const std::string& kind = spec.indenter_name;
@@ -411,15 +445,7 @@ void read_indenter(SectionReader& reader, const Grid& grid, const std::filesyste
     std::filesystem::path file = reader.string("path");
     if (file.is_relative()) file = scene_dir / file;
     spec.height_file = file;
-    spec.indenter = HeightMap{read_height_map(file)};
-    const Field& h = std::get<HeightMap>(spec.indenter).heights;
-    COATFFT_REQUIRE(h.rows() == grid.nx() && h.cols() == grid.ny(), file.string(), ": shape (",
-                    h.cols(), ", ", h.rows(), ") but the grid needs (ny, nx) = (", grid.ny(), ", ",
-                    grid.nx(), ")");
-    for (Eigen::Index j = 0; j < h.cols(); ++j)
-      for (Eigen::Index i = 0; i < h.rows(); ++i)
-        COATFFT_REQUIRE(std::isfinite(h(i, j)), file.string(), ": row ", j, ", column ", i,
-                        ": height ", h(i, j), " is not finite");
+    spec.indenter = HeightMap{read_grid_file(file, grid)};
   }
 }
 

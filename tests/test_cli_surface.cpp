@@ -118,3 +118,60 @@ TEST_CASE("coatfft surface names a missing output directory as given, not its st
   CHECK(r.stderr_text.find(".partial") == std::string::npos);
   CHECK_FALSE(fs::exists(dir));
 }
+
+TEST_CASE("a scene's measured topography is pressed by a rigid flat, its tilt removed on request",
+          "[cli][topography]") {
+  // The topography of `coatfft surface` (peaks up) as [contact] topography equals the height map
+  // max(z) - z the user would have formed; tilted on the stage and detrended with "plane", the
+  // same contact to the solver's accuracy (the plane's removal rounds the gap).
+  const fs::path z_file = scratch("topography_z.npy");
+  fs::remove(z_file);
+  REQUIRE(run_coatfft("surface -o " + z_file.string() +
+                      " --nx 32 --ny 32 --lx 0.25e-3 --ly 0.25e-3 --hurst 0.8 --rms-height 0.2e-6"
+                      " --seed 4")
+              .status == 0);
+  const coatfft::Field z = coatfft::scene::read_npy(z_file);
+  coatfft::scene::write_npy(scratch("topography_gap.npy"), z.maxCoeff() - z);
+  coatfft::Field tilted = z;
+  const double dx = 0.25e-3 / 32;
+  for (Eigen::Index j = 0; j < 32; ++j)
+    for (Eigen::Index i = 0; i < 32; ++i)
+      tilted(i, j) += 2e-3 * (i + 0.5 - 16) * dx - 1e-3 * (j + 0.5 - 16) * dx + 1e-6;
+  coatfft::scene::write_npy(scratch("topography_tilted.npy"), tilted);
+  const std::string base =
+      "[grid]\nnx = 32\nny = 32\nlx = 0.25e-3\nly = 0.25e-3\nboundary = \"periodic\"\n"
+      "[substrate]\nmaterial = \"steel\"\n[contact]\nload = 0.5\n";
+  const auto run = [&](const std::string& keys, const std::string& name) {
+    return run_scene_ok(base + keys, name);
+  };
+  const fs::path from_map =
+      run("indenter = \"height_map\"\npath = \"" + scratch("topography_gap.npy").string() + "\"\n",
+          "topography_map");
+  const fs::path from_z = run("topography = \"" + z_file.string() + "\"\n", "topography_z");
+  const fs::path from_tilt = run(
+      "topography = \"" + scratch("topography_tilted.npy").string() + "\"\ndetrend = \"plane\"\n",
+      "topography_tilted");
+  const coatfft::Field p_map = coatfft::scene::read_npy(from_map / "pressure.npy");
+  CHECK((coatfft::scene::read_npy(from_z / "pressure.npy") - p_map).abs().maxCoeff() == 0.0);
+  // The untilted z has its own small plane (its rms slope is not zero): compare against z
+  // detrended the same way.
+  const fs::path from_plane =
+      run("topography = \"" + z_file.string() + "\"\ndetrend = \"plane\"\n", "topography_plane");
+  const coatfft::Field p_plane = coatfft::scene::read_npy(from_plane / "pressure.npy");
+  CHECK((coatfft::scene::read_npy(from_tilt / "pressure.npy") - p_plane).abs().maxCoeff() <
+        1e-6 * p_plane.maxCoeff());
+  CHECK(read_summary(from_z)["indenter"] == "topography");
+}
+
+TEST_CASE("a measured topography's refusals", "[cli][topography]") {
+  const std::string base =
+      "[grid]\nnx = 8\nny = 8\nlx = 1e-3\nly = 1e-3\n[substrate]\nmaterial = \"steel\"\n"
+      "[contact]\nindenter = \"sphere\"\nradius = 0.01\nload = 1.0\n";
+  const BadCase cases[] = {
+      {"topography_and_indenter", "load = 1.0", "load = 1.0\ntopography = \"z.npy\"", "not both"},
+      {"detrend_without_topography", "load = 1.0", "load = 1.0\ndetrend = \"plane\"", "topography"},
+      {"topography_bad_detrend", "indenter = \"sphere\"\nradius = 0.01",
+       "topography = \"z.npy\"\ndetrend = \"tilt\"", "detrend"},
+  };
+  for (const BadCase& c : cases) check_refused(base, c);
+}
