@@ -60,6 +60,7 @@
 #include "stress/stress_kernel.hpp"
 #include "stress/stress_operator.hpp"
 #include "surfaces/detrend.hpp"
+#include "surfaces/roughness.hpp"
 #include "surfaces/self_affine_surface.hpp"
 #include "validation/aliased_traction.hpp"
 #include "validation/axisymmetric_stress.hpp"

@@ -15,6 +15,7 @@
 #include "cli/run_command.hpp"
 #include "cli/signal_cleanup.hpp"
 #include "cli/surface_command.hpp"
+#include "cli/topography_command.hpp"
 #include "cli/validate_frf_command.hpp"
 #include "core/detail/shorten.hpp"
 #include "core/error.hpp"
@@ -28,10 +29,11 @@ bool refuse_unknown_command(int argc, char** argv) {
   if (argc < 2 || argv[1][0] == '-') return false;
   const std::string_view word = argv[1];
   if (word == "run" || word == "frf" || word == "check" || word == "validate-frf" ||
-      word == "surface")
+      word == "surface" || word == "topography")
     return false;
-  std::cerr << "coatfft: error: unknown command \"" << coatfft::detail::shorten(word)
-            << "\" (commands: run, check, validate-frf, frf, surface; see coatfft --help)\n";
+  std::cerr
+      << "coatfft: error: unknown command \"" << coatfft::detail::shorten(word)
+      << "\" (commands: run, check, validate-frf, frf, surface, topography; see coatfft --help)\n";
   return true;
 }
 
@@ -145,6 +147,26 @@ Command add_surface(CLI::App& app) {
           }};
 }
 
+Command add_topography(CLI::App& app) {
+  auto o = std::make_shared<coatfft::cli::TopographyOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "topography",
+      "Read a measured topography, print its summary (JSON), write it as .npy or .nc");
+  cmd->add_option("file", o->input, "Topography file: .npy, .csv/.txt/.asc/.xyz, .nc, .x3p or .sdf")
+      ->required();
+  cmd->add_option("-o,--output", o->output, "Write the heights [m] as .npy or .nc");
+  cmd->add_option("--unit", o->unit, "Unit of a file that carries none: m, mm, um, nm, A");
+  cmd->add_option("--detrend", o->detrend, "none (default), mean or plane");
+  cmd->add_option("--missing", o->missing,
+                  "Missing points: refuse (default) or fill (harmonic interpolation)");
+  cmd->add_option("--lx", o->lx, "Size along x [m] of a file that carries none");
+  cmd->add_option("--ly", o->ly, "Size along y [m] of a file that carries none");
+  return {cmd, [o] {
+            coatfft::cli::topography_command(*o);
+            return 0;
+          }};
+}
+
 // Runs the command the user chose; its exceptions become exit statuses.
 int run_chosen(const std::vector<Command>& commands) {
   try {
@@ -174,8 +196,8 @@ int main(int argc, char** argv) {
   CLI::App app{"coatfft: surface displacements and contact of coated elastic half-spaces"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("coatfft ") + COATFFT_VERSION);
-  const std::vector<Command> commands{add_run(app), add_check(app), add_validate_frf(app),
-                                      add_frf(app), add_surface(app)};
+  const std::vector<Command> commands{add_run(app), add_check(app),   add_validate_frf(app),
+                                      add_frf(app), add_surface(app), add_topography(app)};
   if (refuse_unknown_command(argc, argv)) return 2;
   try {
     app.parse(argc, argv);

@@ -13,6 +13,7 @@ void bind_contact(pybind11::module_& m);   // solve_contact, ContactResult
 void bind_scene(pybind11::module_& m);     // run_scene, validate_frf
 void bind_stress(pybind11::module_& m);    // stresses, von_mises, surface_displacements
 void bind_timing(pybind11::module_& m);    // the C++ side of bench/bench_python.py
+void bind_topography(pybind11::module_& m);  // read_topography
 void bind_surfaces(pybind11::module_& m);  // self_affine_surface, indenter heights, hertz_sphere
 
 /// A Python dict from JSON (the CLI's summary and reports), through the json module: numbers

@@ -48,4 +48,5 @@ PYBIND11_MODULE(_coatfft, m) {
   coatfft::python::bind_stress(m);
   coatfft::python::bind_timing(m);
   coatfft::python::bind_surfaces(m);
+  coatfft::python::bind_topography(m);
 }

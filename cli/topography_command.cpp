@@ -1,0 +1,58 @@
+#include "cli/topography_command.hpp"
+
+#include <cmath>
+#include <iostream>
+
+#include "cli/staged_output.hpp"
+#include "core/error.hpp"
+#include "surfaces/detrend.hpp"
+#include "topography/netcdf_writer.hpp"
+#include "topography/topography_summary.hpp"
+
+namespace coatfft::cli {
+
+namespace {
+// A size given on the command line: the file's when it has none, else checked against it (to
+// 1e-9, the digits a file prints).
+void apply_size(std::optional<double>& size, const std::optional<double>& given, const char* flag) {
+  if (!given) return;
+  COATFFT_REQUIRE(std::isfinite(*given) && *given > 0, flag, " = ", *given,
+                  " m must be finite and > 0");
+  COATFFT_REQUIRE(!size || std::abs(*size - *given) <= 1e-9 * *size, flag, " = ", *given,
+                  " m disagrees with the file's ", *size, " m");
+  size = given;
+}
+}  // namespace
+
+void topography_command(const TopographyOptions& o) {
+  topography::ReadOptions read;
+  read.unit = o.unit;
+  read.missing = topography::missing_points_from_name(o.missing, "--missing");
+  const Detrend detrend = detrend_from_name(o.detrend, "--detrend");
+  COATFFT_REQUIRE(o.lx.has_value() == o.ly.has_value(), "give both --lx and --ly, or neither");
+  std::optional<StagedFile> file;
+  std::optional<topography::HeightsFormat> format;
+  // The output is checked before any work: a file that cannot be written is refused at once.
+  if (o.output) {
+    format = topography::heights_format(*o.output);
+    file.emplace(*o.output, "output file", std::vector{o.input});
+  }
+  topography::Topography t = topography::read_topography(o.input, read);
+  apply_size(t.lx, o.lx, "--lx");
+  apply_size(t.ly, o.ly, "--ly");
+  const Grid grid = topography::topography_grid(t);
+  const Field heights = detrended(grid, t.heights, detrend);
+  if (file) {
+    COATFFT_REQUIRE(t.lx || format == topography::HeightsFormat::npy, o.input.string(),
+                    ": the file carries no size; give --lx and --ly to write a NetCDF file");
+    topography::write_heights(
+        file->path(), *format, heights, grid, t.periodic.value_or(false),
+        {{{"source", o.input.filename().string()}, {"format", t.format}}, {}});
+    file->commit();
+  }
+  std::cout << topography::topography_summary(t, heights, detrend)
+                   .dump(2, ' ', false, nlohmann::json::error_handler_t::replace)
+            << "\n";
+}
+
+}  // namespace coatfft::cli

@@ -1,0 +1,55 @@
+// Units of length (topography/units.hpp) and the roughness parameters of a sampled map
+// (surfaces/roughness.hpp) against closed forms.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "surfaces/roughness.hpp"
+#include "topography/units.hpp"
+
+using namespace coatfft;
+using topography::metres_per_unit;
+
+TEST_CASE("units: symbols and names in metres; unknown ones refused naming them",
+          "[topography][units]") {
+  CHECK(metres_per_unit("m", "t") == 1.0);
+  CHECK(metres_per_unit("mm", "t") == 1e-3);
+  for (const char* micro : {"um", "\u00b5m", "\u03bcm", "micrometre", "micron"})
+    CHECK(metres_per_unit(micro, "t") == 1e-6);
+  CHECK(metres_per_unit("nm", "t") == 1e-9);
+  CHECK(metres_per_unit("pm", "t") == 1e-12);
+  for (const char* angstrom : {"\u00c5", "\u212b", "A", "angstrom"})
+    CHECK(metres_per_unit(angstrom, "t") == 1e-10);
+  CHECK_THROWS_WITH(metres_per_unit("inch", "the file's unit"),
+                    Catch::Contains("unknown unit \"inch\" in the file's unit"));
+  // Symbols are case-sensitive: Mm is a megametre, not a millimetre.
+  CHECK_THROWS_AS(metres_per_unit("Mm", "t"), InvalidArgument);
+  CHECK_THROWS_AS(metres_per_unit("", "t"), InvalidArgument);
+}
+
+TEST_CASE("roughness: rms height and slope of a sampled sine against closed forms",
+          "[topography][roughness]") {
+  // z = A sin(2 pi m x / L) over n points of spacing d = L/n: rms height A/sqrt(2) (m < n/2),
+  // and the differences z(i+1) - z(i) = 2 A sin(pi m/n) cos(...): rms slope
+  // sqrt(2) A sin(pi m/n) / d over a period (periodic) -- the exact values of the sampled map.
+  for (const auto& [n, m] : {std::pair{16, 1}, std::pair{12, 5}, std::pair{40, 3}}) {
+    const double A = 2e-6, L = 1e-3, d = L / n;
+    const Grid g(n, 6, L, 6 * d);
+    Field z(n, 6);
+    for (Eigen::Index j = 0; j < 6; ++j)
+      for (Eigen::Index i = 0; i < n; ++i) z(i, j) = A * std::sin(2 * M_PI * m * g.x(i) / L);
+    CHECK(rms_height(z) == Approx(A / std::sqrt(2.0)).epsilon(1e-13));
+    const double slope = std::sqrt(2.0) * A * std::sin(M_PI * m / n) / d;
+    CHECK(rms_slope(g, z, true) == Approx(slope).epsilon(1e-13));
+    // Without the pair across the edge: the n - 1 inner differences' mean square.
+    double sum = 0;
+    for (Eigen::Index i = 0; i + 1 < n; ++i) sum += std::pow((z(i + 1, 0) - z(i, 0)) / d, 2);
+    CHECK(rms_slope(g, z, false) == Approx(std::sqrt(sum / (n - 1))).epsilon(1e-13));
+  }
+  // A plane a x + b y has slope sqrt(a^2 + b^2) with or without the edges' pairs dropped.
+  const Grid g(7, 5, 7e-6, 10e-6);
+  Field z(7, 5);
+  for (Eigen::Index j = 0; j < 5; ++j)
+    for (Eigen::Index i = 0; i < 7; ++i) z(i, j) = 0.3 * g.x(i) - 0.4 * g.y(j);
+  CHECK(rms_slope(g, z, false) == Approx(0.5).epsilon(1e-12));
+}

@@ -1,0 +1,43 @@
+#include "topography/netcdf_file.hpp"
+
+#include <netcdf.h>
+#include <netcdf_mem.h>
+
+#include "core/error.hpp"
+
+namespace coatfft::topography {
+
+void check_netcdf(int status, const std::filesystem::path& path, std::string_view what) {
+  if (status != NC_NOERR)
+    throw InvalidArgument(detail::concat(path.string(), ": ", what, ": ", nc_strerror(status)));
+}
+
+NetcdfFile NetcdfFile::open_memory(const std::filesystem::path& path, std::string& bytes) {
+  int id = -1;
+  check_netcdf(nc_open_mem(path.c_str(), NC_NOWRITE, bytes.size(), bytes.data(), &id), path,
+               "not a readable NetCDF file");
+  return NetcdfFile(path, id);
+}
+
+NetcdfFile NetcdfFile::create(const std::filesystem::path& path) {
+  int id = -1;
+  check_netcdf(nc_create(path.c_str(), NC_NOCLOBBER | NC_64BIT_OFFSET, &id), path, "cannot create");
+  return NetcdfFile(path, id);
+}
+
+NetcdfFile::NetcdfFile(NetcdfFile&& other) noexcept
+    : path_(std::move(other.path_)), id_(other.id_) {
+  other.id_ = -1;
+}
+
+NetcdfFile::~NetcdfFile() {
+  if (id_ >= 0) nc_close(id_);
+}
+
+void NetcdfFile::close() {
+  const int id = id_;
+  id_ = -1;
+  check_netcdf(nc_close(id), path_, "cannot write");
+}
+
+}  // namespace coatfft::topography

@@ -1,0 +1,70 @@
+#pragma once
+// Writing fields as one NetCDF file in the layout SurfaceTopography reads and xarray opens
+// (docs/measured_surfaces.md, "NetCDF layout"): dimensions x and y with coordinate variables of
+// the cell centres [m] carrying `length`, `periodic`, `length_unit` and CF's `units`; each map a
+// variable over (..., x, y), x the first of the two as SurfaceTopography writes `heights`; other
+// dimensions (depths, loads, stress components) with their own coordinates before them.
+#include <cstddef>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/grid.hpp"
+#include "core/types.hpp"
+
+namespace coatfft::topography {
+
+/// Text and numeric attributes of a variable or of the file, in their order.
+struct NetcdfAttributes {
+  std::vector<std::pair<std::string, std::string>> text;
+  std::vector<std::pair<std::string, double>> numbers;
+};
+
+/// A dimension other than x and y, with its coordinate values (empty: none, as for a stress
+/// component index) and their attributes.
+struct NetcdfDimension {
+  std::string name;
+  std::size_t size = 0;
+  std::vector<double> coordinates;
+  NetcdfAttributes attributes;
+};
+
+/// A variable whose last two dimensions are x and y: `data` in coatfft's memory order (C order
+/// over `leading` dims, then y, then x fastest: a Field, or fields stacked as the .npy files
+/// are), written as (leading..., x, y). Or, with `maps` false, a variable over `leading` only.
+struct NetcdfVariable {
+  std::string name;
+  std::vector<std::string> leading;  ///< names of dimensions declared in NetcdfDataset
+  std::span<const double> data;
+  NetcdfAttributes attributes;
+  bool maps = true;
+};
+
+struct NetcdfDataset {
+  Grid grid;
+  bool periodic = false;
+  std::vector<NetcdfDimension> dimensions;
+  std::vector<NetcdfVariable> variables;
+  NetcdfAttributes attributes;  ///< of the file (global)
+};
+
+/// Writes `dataset` as a new NetCDF-3 (64-bit offset) file `path`, refusing an existing one.
+void write_netcdf(const std::filesystem::path& path, const NetcdfDataset& dataset);
+
+}  // namespace coatfft::topography
+
+namespace coatfft::topography {
+
+enum class HeightsFormat { npy, netcdf };
+
+/// The format of a heights file named `target`: .npy or .nc (NetCDF); InvalidArgument otherwise.
+HeightsFormat heights_format(const std::filesystem::path& target);
+
+/// Writes a height map [m] on `grid` as `path`: a (ny, nx) float64 .npy file, or a NetCDF file
+/// holding the variable `heights` as SurfaceTopography names it, with `attributes` as the file's.
+void write_heights(const std::filesystem::path& path, HeightsFormat format, const Field& heights,
+                   const Grid& grid, bool periodic, const NetcdfAttributes& attributes = {});
+
+}  // namespace coatfft::topography

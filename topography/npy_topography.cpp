@@ -1,0 +1,14 @@
+#include "scene/npy.hpp"
+#include "topography/formats.hpp"
+
+namespace coatfft::topography {
+
+// A .npy file carries heights only: no unit, no size, no periodicity.
+Topography read_npy_topography(const std::filesystem::path& path, std::uintmax_t max_bytes) {
+  Topography topography;
+  topography.heights = scene::read_npy(path, max_bytes);
+  topography.format = "npy";
+  return topography;
+}
+
+}  // namespace coatfft::topography

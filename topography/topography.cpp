@@ -1,0 +1,95 @@
+#include "topography/topography.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <string>
+
+#include "core/error.hpp"
+#include "topography/formats.hpp"
+#include "topography/units.hpp"
+
+namespace coatfft::topography {
+
+namespace fs = std::filesystem;
+
+MissingPoints missing_points_from_name(std::string_view name, std::string_view what) {
+  if (name == "refuse") return MissingPoints::refuse;
+  if (name == "fill") return MissingPoints::fill;
+  throw InvalidArgument(
+      detail::concat(what, " must be \"refuse\" or \"fill\", not ", scene::quoted_excerpt(name)));
+}
+
+namespace {
+std::string lower_extension(const fs::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+Topography read_format(const fs::path& path, std::uintmax_t max_bytes) {
+  const std::string ext = lower_extension(path);
+  if (ext == ".npy") return read_npy_topography(path, max_bytes);
+  if (ext == ".csv" || ext == ".txt" || ext == ".asc" || ext == ".xyz")
+    return read_text_topography(path, max_bytes, ext == ".xyz");
+  if (ext == ".nc") return read_netcdf_topography(path, max_bytes);
+  if (ext == ".x3p") return read_x3p_topography(path, max_bytes);
+  if (ext == ".sdf") return read_sdf_topography(path, max_bytes);
+  throw InvalidArgument(detail::concat(path.string(), ": unknown topography format ",
+                                       scene::quoted_excerpt(ext),
+                                       " (known: .npy, .csv, .txt, .asc, .xyz, .nc, .x3p, .sdf)"));
+}
+
+// Metres per unit of the file: its own unit, or the caller's for a file without one (metres if
+// neither); a caller's unit that disagrees with the file's is refused.
+double file_scale(const fs::path& path, Topography& topography, const std::string& unit) {
+  const std::string where = path.string() + ": the unit";
+  if (topography.unit.empty()) {
+    topography.unit = unit;
+    return unit.empty() ? 1.0 : metres_per_unit(unit, "the unit asked for");
+  }
+  const double scale = metres_per_unit(topography.unit, where);
+  // Both units are known ones here (metres_per_unit passed), so they are printed as they are.
+  COATFFT_REQUIRE(unit.empty() || metres_per_unit(unit, "the unit asked for") == scale,
+                  path.string(), ": the file's unit is \"", topography.unit, "\", not the unit \"",
+                  unit, "\" asked for");
+  return scale;
+}
+
+// Counts the NaN points, refuses infinite ones, and fills or refuses the NaN ones.
+void check_heights(const fs::path& path, Topography& topography, MissingPoints missing) {
+  Field& z = topography.heights;
+  COATFFT_REQUIRE(z.rows() >= 2 && z.cols() >= 2, path.string(), ": ", z.rows(), " x ", z.cols(),
+                  " points: a topography needs at least 2 x 2");
+  std::size_t nan = 0;
+  for (Eigen::Index j = 0; j < z.cols(); ++j)
+    for (Eigen::Index i = 0; i < z.rows(); ++i) {
+      COATFFT_REQUIRE(!std::isinf(z(i, j)), path.string(), ": row ", j, ", column ", i,
+                      ": an infinite height");
+      nan += std::isnan(z(i, j));
+    }
+  topography.missing = nan;
+  if (nan == 0) return;
+  COATFFT_REQUIRE(missing == MissingPoints::fill, path.string(), ": ", nan, " of ", z.size(),
+                  " points are missing (NaN or marked invalid); they can be filled (missing = "
+                  "\"fill\": docs/measured_surfaces.md)");
+  COATFFT_REQUIRE(static_cast<Eigen::Index>(nan) < z.size(), path.string(),
+                  ": every point is missing");
+  fill_missing_points(z);
+}
+}  // namespace
+
+Topography read_topography(const fs::path& path, const ReadOptions& options) {
+  Topography topography = read_format(path, options.max_bytes);
+  const double scale = file_scale(path, topography, options.unit);
+  topography.heights *= scale;
+  if (topography.lx) *topography.lx *= scale;
+  if (topography.ly) *topography.ly *= scale;
+  COATFFT_REQUIRE(topography.lx.has_value() == topography.ly.has_value(), path.string(),
+                  ": the file gives the size along one axis only");
+  check_heights(path, topography, options.missing);
+  return topography;
+}
+
+}  // namespace coatfft::topography

@@ -1,0 +1,66 @@
+#pragma once
+// Measured topographies: a height map read from an instrument's or another program's file, in
+// metres, with the physical size and periodicity the file carries (docs/measured_surfaces.md).
+//
+// Formats, chosen by the file's extension: .npy; text grids .csv, .txt, .asc (a matrix of
+// heights, or "x y z" rows on a regular grid); NetCDF .nc in SurfaceTopography's layout; ISO
+// 25178-72 X3P .x3p; ISO 25178-71 SDF .sdf. A Topography's heights follow coatfft's grid
+// convention (docs/conventions.md): heights(i, j) at (x_i, y_j), x along a file's columns, y
+// along its rows, and the size of the map is the number of points times the spacing (cell-
+// centred points, as SurfaceTopography counts it).
+//
+// Refusals are one-line InvalidArgument messages that start with the path.
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "core/types.hpp"
+#include "scene/input_file.hpp"
+
+namespace coatfft::topography {
+
+/// What becomes of points a file marks as missing (NaN, an X3P invalid mark, SDF's
+/// BadPointMarker): refused, naming their count, or filled by the harmonic rule
+/// (fill_missing_points).
+enum class MissingPoints { refuse, fill };
+
+/// "refuse" or "fill"; InvalidArgument naming `what` otherwise.
+MissingPoints missing_points_from_name(std::string_view name, std::string_view what);
+
+struct ReadOptions {
+  /// The unit of a file that carries none (.npy, text grids, x y z rows: for x y z the unit of
+  /// the coordinates too); "" reads such a file in metres. A file with a unit of its own is
+  /// read in it, and a different `unit` given here is refused.
+  std::string unit;
+  MissingPoints missing = MissingPoints::refuse;
+  std::uintmax_t max_bytes = scene::kMaxArrayFileBytes;
+};
+
+/// A height map as read from a file.
+struct Topography {
+  Field heights;                 ///< (nx, ny) [m], finite (missing points filled or refused)
+  std::optional<double> lx, ly;  ///< physical size [m] where the file carries its spacing
+  std::optional<bool> periodic;  ///< where the file says (NetCDF's `periodic` attribute)
+  std::string format;            ///< "npy", "csv", "xyz", "netcdf", "x3p", "sdf"
+  std::string unit;              ///< the unit of the file's heights as it names it; "" if none
+  std::size_t missing = 0;       ///< points the file marks as missing (filled if any)
+  /// What else the file says about itself (instrument, date, ...), name and value, in its order.
+  std::vector<std::pair<std::string, std::string>> metadata;
+};
+
+/// Reads the topography of `path` (format by extension, case-insensitive) into metres, applies
+/// `options` and checks that every height is finite.
+Topography read_topography(const std::filesystem::path& path, const ReadOptions& options = {});
+
+/// Fills the NaN points of `heights` by the discrete harmonic rule: each missing point is the
+/// mean of its neighbours along x and y (those inside the map; no wrap-around), the known points
+/// held, which is the smoothest surface through them (a discrete Laplace equation, solved
+/// exactly). Returns the number of points filled; refuses a map with no finite point.
+std::size_t fill_missing_points(Field& heights);
+
+}  // namespace coatfft::topography

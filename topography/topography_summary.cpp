@@ -1,0 +1,36 @@
+#include "topography/topography_summary.hpp"
+
+#include "surfaces/roughness.hpp"
+
+namespace coatfft::topography {
+
+Grid topography_grid(const Topography& t) {
+  const auto nx = t.heights.rows(), ny = t.heights.cols();
+  return Grid(nx, ny, t.lx.value_or(static_cast<double>(nx)),
+              t.ly.value_or(static_cast<double>(ny)));
+}
+
+nlohmann::json topography_summary(const Topography& t, const Field& heights, Detrend detrend) {
+  using nlohmann::json;
+  const char* detrends[] = {"none", "mean", "plane"};
+  json out = {{"format", t.format},
+              {"nx", t.heights.rows()},
+              {"ny", t.heights.cols()},
+              {"lx", t.lx ? json(*t.lx) : json()},
+              {"ly", t.ly ? json(*t.ly) : json()},
+              {"unit", t.unit.empty() ? json() : json(t.unit)},
+              {"periodic", t.periodic ? json(*t.periodic) : json()},
+              {"missing", t.missing},
+              {"detrend", detrends[static_cast<int>(detrend)]},
+              {"rms_height", rms_height(heights)},
+              {"rms_slope", json()},
+              {"min", heights.minCoeff()},
+              {"max", heights.maxCoeff()}};
+  if (t.lx) out["rms_slope"] = rms_slope(topography_grid(t), heights, t.periodic.value_or(false));
+  json metadata = json::object();
+  for (const auto& [name, value] : t.metadata) metadata[name] = value;
+  out["metadata"] = metadata;
+  return out;
+}
+
+}  // namespace coatfft::topography
