@@ -12,8 +12,8 @@
 #include <string>
 
 #include "core/error.hpp"
-#include "temp_dir.hpp"
 #include "topography/formats.hpp"
+#include "topography_files.hpp"
 
 namespace {
 
@@ -21,6 +21,8 @@ namespace fs = std::filesystem;
 using coatfft::topography::read_sdf_topography;
 using coatfft::topography::Topography;
 
+using coatfft::testing::append;
+using coatfft::testing::metadata_value;
 using coatfft::testing::TempDir;
 
 std::string header(int data_type, int nx = 4, int ny = 3, const std::string& extra = "") {
@@ -49,12 +51,6 @@ std::string reference_values() {
   return data;
 }
 
-std::string metadata_value(const Topography& topography, const std::string& name) {
-  for (const auto& [key, value] : topography.metadata)
-    if (key == name) return value;
-  return "(absent)";
-}
-
 void check_reference_map(const Topography& topography) {
   CHECK(topography.format == "sdf");
   CHECK(topography.unit == "m");
@@ -69,22 +65,15 @@ void check_reference_map(const Topography& topography) {
   CHECK(*topography.ly == Approx(7.5e-6).epsilon(1e-14));  // NumProfiles * Yscale
 }
 
-// Little-endian bytes of a value, assembled from its bits (independent of the host's order).
-template <typename Bits, typename T>
-void append(std::string& out, T value) {
-  const auto bits = std::bit_cast<Bits>(value);
-  for (std::size_t k = 0; k < sizeof(Bits); ++k) out.push_back(static_cast<char>(bits >> (8 * k)));
-}
-
 // ISO 25178-71's 81-byte binary header.
 std::string binary_header(int data_type, std::uint16_t nx, std::uint16_t ny) {
   std::string bytes = "bISO-1.0";
   bytes += std::string("coatfft") + std::string(3, ' ');  // ManufacID, 10 bytes
   bytes += "010220241200";                                // CreateDate
   bytes += "010220241300";                                // ModDate
-  append<std::uint16_t>(bytes, nx);
-  append<std::uint16_t>(bytes, ny);
-  for (const double scale : {1.0e-6, 2.5e-6, 1e-9, -1.0}) append<std::uint64_t>(bytes, scale);
+  append(bytes, nx);
+  append(bytes, ny);
+  for (const double scale : {1.0e-6, 2.5e-6, 1e-9, -1.0}) append(bytes, scale);
   bytes += std::string{0, static_cast<char>(data_type), 0};  // Compression, DataType, CheckType
   REQUIRE(bytes.size() == 81);
   return bytes;
@@ -159,7 +148,7 @@ TEST_CASE("sdf: the binary variant", "[topography][sdf]") {
   const TempDir dir;
   std::string bytes = binary_header(5, 4, 3);
   for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 4; ++i) append<std::uint16_t>(bytes, static_cast<std::int16_t>(i + 10 * j));
+    for (int i = 0; i < 4; ++i) append(bytes, static_cast<std::int16_t>(i + 10 * j));
   SECTION("INT16 values, then a trailer") {
     const Topography topography =
         read_sdf_topography(dir.write(bytes + "Operator = A. Tester\r\n"), 1 << 20);
@@ -181,8 +170,8 @@ TEST_CASE("sdf: the binary variant", "[topography][sdf]") {
   }
   SECTION("DOUBLE values") {
     std::string doubles = binary_header(7, 2, 1);
-    append<std::uint64_t>(doubles, 4.5);
-    append<std::uint64_t>(doubles, -7.25);
+    append(doubles, 4.5);
+    append(doubles, -7.25);
     const Topography topography = read_sdf_topography(dir.write(doubles), 1 << 20);
     CHECK(topography.heights(0, 0) == Approx(4.5e-9));
     CHECK(topography.heights(1, 0) == Approx(-7.25e-9));

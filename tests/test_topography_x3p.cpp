@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "core/error.hpp"
-#include "temp_dir.hpp"
 #include "topography/formats.hpp"
+#include "topography_files.hpp"
 
 namespace {
 
@@ -40,6 +40,8 @@ std::string md5_hex(const std::string& bytes) {
   return hex;
 }
 
+using coatfft::testing::append;
+using coatfft::testing::metadata_value;
 using coatfft::testing::TempDir;
 
 using Entries = std::vector<std::pair<std::string, std::string>>;
@@ -54,15 +56,6 @@ void write_zip(const fs::path& path, const Entries& entries) {
     REQUIRE(zip_file_add(archive, name.c_str(), source, ZIP_FL_OVERWRITE) >= 0);
   }
   REQUIRE(zip_close(archive) == 0);
-}
-
-// Little-endian bytes of a value, assembled from its bits (independent of the host's order).
-template <typename T>
-void append(std::string& out, T value) {
-  using Bits = std::conditional_t<sizeof(T) == 8, std::uint64_t,
-                                  std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint16_t>>;
-  const auto bits = std::bit_cast<Bits>(value);
-  for (std::size_t k = 0; k < sizeof(T); ++k) out.push_back(static_cast<char>(bits >> (8 * k)));
 }
 
 // What goes into an archive; each field a test may spoil.
@@ -155,14 +148,8 @@ std::string reference_doubles() {
   return data;
 }
 
-std::string metadata_value(const Topography& topography, const std::string& name) {
-  for (const auto& [key, value] : topography.metadata)
-    if (key == name) return value;
-  return "(absent)";
-}
-
 // Sq: the root mean square of the heights about their mean.
-double rms_height(const coatfft::Field& heights) {
+double rms_about_mean(const coatfft::Field& heights) {
   return std::sqrt((heights - heights.mean()).square().mean());
 }
 
@@ -194,7 +181,7 @@ TEST_CASE("x3p: double heights on a grid are read in place, with size and metada
   CHECK(*topography.lx == Approx(4e-6).epsilon(1e-14));  // SizeX * Increment of CX
   CHECK(*topography.ly == Approx(6e-6).epsilon(1e-14));  // SizeY * Increment of CY
   // Sq of 1e-6 (i + 10 j): the variances of i over 0..3 (5/4) and of 10 j over 0..2 (200/3).
-  CHECK(rms_height(topography.heights) == Approx(1e-6 * std::sqrt(1.25 + 200.0 / 3)));
+  CHECK(rms_about_mean(topography.heights) == Approx(1e-6 * std::sqrt(1.25 + 200.0 / 3)));
   CHECK(topography.missing == 0);
   CHECK(!topography.periodic);
   CHECK(metadata_value(topography, "instrument") == "Acme Profiler 3000");

@@ -24,25 +24,15 @@
 
 #include "core/error.hpp"
 #include "topography/formats.hpp"
+#include "topography/reader_support.hpp"
 
 namespace coatfft::topography {
 namespace {
 
 namespace fs = std::filesystem;
 
-template <typename... Parts>
-[[noreturn]] void refuse(const fs::path& path, const Parts&... parts) {
-  throw InvalidArgument(detail::concat(path.string(), ": ", parts...));
-}
-
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr std::string_view kSpace = " \t\r\n\f\v";
-
-std::string_view trimmed(std::string_view text) {
-  const auto first = text.find_first_not_of(kSpace);
-  if (first == std::string_view::npos) return {};
-  return text.substr(first, text.find_last_not_of(kSpace) - first + 1);
-}
 
 bool equal_ignoring_case(std::string_view a, std::string_view b) {
   if (a.size() != b.size()) return false;

@@ -22,17 +22,13 @@
 
 #include "core/error.hpp"
 #include "topography/formats.hpp"
+#include "topography/reader_support.hpp"
 
 namespace coatfft::topography {
 namespace {
 
 namespace fs = std::filesystem;
 using tinyxml2::XMLElement;
-
-template <typename... Parts>
-[[noreturn]] void refuse(const fs::path& path, const Parts&... parts) {
-  throw InvalidArgument(detail::concat(path.string(), ": ", parts...));
-}
 
 // ---------------------------------------------------------------------------------------------
 // MD5 (RFC 1321), as lower-case hex. ISO 25178-72 checks main.xml and the binary point data by
@@ -64,12 +60,6 @@ std::string lower_case(std::string_view text) {
 bool is_md5_hex(std::string_view text) {
   return text.size() == 32 &&
          text.find_first_not_of("0123456789abcdefABCDEF") == std::string_view::npos;
-}
-
-std::string_view trimmed(std::string_view text) {
-  const auto first = text.find_first_not_of(" \t\r\n");
-  if (first == std::string_view::npos) return {};
-  return text.substr(first, text.find_last_not_of(" \t\r\n") - first + 1);
 }
 
 // ---------------------------------------------------------------------------------------------
