@@ -126,8 +126,8 @@ Command add_frf(CLI::App& app) {
 Command add_surface(CLI::App& app) {
   auto o = std::make_shared<coatfft::cli::SurfaceOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "surface", "Write a periodic self-affine random surface (heights [m]) as a .npy file");
-  cmd->add_option("-o,--output", o->output, "Output .npy file")->required();
+      "surface", "Write a periodic self-affine random surface (heights [m]) as .npy or .nc");
+  cmd->add_option("-o,--output", o->output, "Output file: .npy, or .nc (NetCDF)")->required();
   cmd->add_option("--nx", o->nx, "Cells along x (even)")->required();
   cmd->add_option("--ny", o->ny, "Cells along y (even)")->required();
   cmd->add_option("--lx", o->lx, "Domain length along x [m]")->required();

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -17,6 +18,7 @@
 #include "scene/npy.hpp"
 #include "scene/operator_from_scene.hpp"
 #include "scene/scene.hpp"
+#include "scene/scene_netcdf.hpp"
 #include "scene/scene_run.hpp"
 
 namespace coatfft::cli {
@@ -36,6 +38,8 @@ void write_displacement_csv(const std::filesystem::path& path, const Grid& grid,
 
 // The files a run writes, in the order of the manifest (cli/staged_output.hpp). Only these are
 // checked, staged and committed.
+// With format = "netcdf", the .npy files' arrays go into one file instead, named in the place of
+// the first of them.
 std::vector<std::string> output_names(const scene::OutputSpec& spec) {
   std::vector<std::string> names;
   if (spec.uz) names.push_back("uz.npy");
@@ -49,6 +53,12 @@ std::vector<std::string> output_names(const scene::OutputSpec& spec) {
   if (spec.von_mises) names.push_back("von_mises.npy");
   if (spec.stress_section) names.push_back("stress_section.npy");
   if (spec.von_mises_section) names.push_back("von_mises_section.npy");
+  if (!spec.netcdf) return names;
+  const auto is_npy = [](const std::string& name) { return name.ends_with(".npy"); };
+  const auto first = std::find_if(names.begin(), names.end(), is_npy);
+  if (first == names.end()) return names;
+  *first = scene::netcdf_output_name;
+  names.erase(std::remove_if(first + 1, names.end(), is_npy), names.end());
   return names;
 }
 
@@ -88,24 +98,13 @@ void write_stacked(const std::filesystem::path& path, const std::vector<Field>& 
   scene::write_npy_array(path, shape, values);
 }
 
-// A sweep's uz.npy, pressure.npy and gap.npy, stacked, and sweep.csv.
-void write_sweep_outputs(StagedOutput& out, const scene::OutputSpec& spec,
-                         const scene::SceneRun& run) {
-  if (spec.uz) write_stacked(out.path("uz.npy"), run.sweep->uz);
-  if (spec.pressure) write_stacked(out.path("pressure.npy"), run.sweep->pressure);
-  if (spec.gap) write_stacked(out.path("gap.npy"), run.sweep->gap);
-  std::ofstream csv(out.path("sweep.csv"));
-  csv << scene::sweep_csv(run.summary["sweep"]);
-  COATFFT_REQUIRE(csv.good(), "failed writing sweep.csv");
-}
-
-// Writes the requested outputs only: the CSV text, the costliest of them (a 2048^2 grid makes
-// hundreds of megabytes of decimal text), is not even formatted when it is not asked for.
-void write_outputs(StagedOutput& out, const scene::OutputSpec& spec, const scene::SceneRun& run,
-                   Progress& progress) {
-  progress.stage("writing " + joined(output_names(spec)));
+// The .npy files: a sweep's uz, pressure and gap stacked, else one field each; stresses; ux, uy.
+void write_npy_outputs(StagedOutput& out, const scene::OutputSpec& spec,
+                       const scene::SceneRun& run) {
   if (run.sweep) {
-    write_sweep_outputs(out, spec, run);
+    if (spec.uz) write_stacked(out.path("uz.npy"), run.sweep->uz);
+    if (spec.pressure) write_stacked(out.path("pressure.npy"), run.sweep->pressure);
+    if (spec.gap) write_stacked(out.path("gap.npy"), run.sweep->gap);
   } else {
     if (spec.uz) scene::write_npy(out.path("uz.npy"), run.uz);
     if (spec.pressure) scene::write_npy(out.path("pressure.npy"), run.pressure);
@@ -115,6 +114,23 @@ void write_outputs(StagedOutput& out, const scene::OutputSpec& spec, const scene
   if (spec.in_plane && run.ux && run.uy) {
     scene::write_npy(out.path("ux.npy"), *run.ux);
     scene::write_npy(out.path("uy.npy"), *run.uy);
+  }
+}
+
+// Writes the requested outputs only: the CSV text, the costliest of them (a 2048^2 grid makes
+// hundreds of megabytes of decimal text), is not even formatted when it is not asked for.
+void write_outputs(StagedOutput& out, const scene::OutputSpec& spec, const scene::SceneRun& run,
+                   Progress& progress) {
+  const auto names = output_names(spec);
+  progress.stage("writing " + joined(names));
+  if (!spec.netcdf)
+    write_npy_outputs(out, spec, run);
+  else if (std::find(names.begin(), names.end(), scene::netcdf_output_name) != names.end())
+    scene::write_run_netcdf(out.path(scene::netcdf_output_name), spec, run);
+  if (run.sweep) {
+    std::ofstream csv(out.path("sweep.csv"));
+    csv << scene::sweep_csv(run.summary["sweep"]);
+    COATFFT_REQUIRE(csv.good(), "failed writing sweep.csv");
   }
   if (spec.displacement_csv)
     write_displacement_csv(out.path("displacement.csv"), run.grid, run.pressure, run.uz);

@@ -9,8 +9,8 @@
 #include "cli/staged_output.hpp"
 #include "core/detail/shorten.hpp"
 #include "core/error.hpp"
-#include "scene/npy.hpp"
 #include "surfaces/self_affine_surface.hpp"
+#include "topography/netcdf_writer.hpp"
 
 namespace coatfft::cli {
 
@@ -26,8 +26,7 @@ std::uint64_t parse_seed(std::string_view text, std::string_view option) {
 }
 
 void surface_command(const SurfaceOptions& o) {
-  COATFFT_REQUIRE(o.output.extension() == ".npy", "-o ", o.output.string(),
-                  ": the surface is written as a .npy file (name it *.npy)");
+  const topography::HeightsFormat format = topography::heights_format(o.output);
   for (const auto& [name, n] : {std::pair{"--nx", o.nx}, std::pair{"--ny", o.ny}})
     COATFFT_REQUIRE(n >= 2 && n <= max_surface_cells && n % 2 == 0, name, " = ", n,
                     " must be even and in [2, ", max_surface_cells, "]");
@@ -47,7 +46,10 @@ void surface_command(const SurfaceOptions& o) {
   // The output is checked before any work: a file that cannot be written is refused at once.
   StagedFile file(o.output, "output file", {});
   const Field h = self_affine_surface(grid, spec);
-  scene::write_npy(file.path(), h);
+  // A NetCDF file in SurfaceTopography's layout says its size and that it is periodic.
+  topography::write_heights(
+      file.path(), format, h, grid, true,
+      {{{"source", "coatfft surface"}, {"seed", o.seed}}, {{"hurst", o.hurst}}});
   file.commit();
   std::cout << "wrote " << o.output.string() << ": " << o.ny << " x " << o.nx
             << " heights [m], rms height " << std::sqrt(h.square().mean()) << " m, rms slope "

@@ -1,7 +1,8 @@
 #pragma once
-// `coatfft surface -o FILE.npy --nx N --ny N --lx L --ly L --hurst H (--rms-height R |
+// `coatfft surface -o FILE.npy|FILE.nc --nx N --ny N --lx L --ly L --hurst H (--rms-height R |
 // --rms-slope S) [--short-cutoff LS] [--long-cutoff LR] [--seed K]`: a periodic self-affine random
-// surface (surfaces/self_affine_surface.hpp) written as a (ny, nx) float64 .npy of heights [m].
+// surface (surfaces/self_affine_surface.hpp) written as a (ny, nx) float64 .npy of heights [m], or
+// as a NetCDF file in SurfaceTopography's layout (topography/netcdf_writer.hpp).
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -14,7 +15,7 @@ namespace coatfft::cli {
 inline constexpr long max_surface_cells = 16384;
 
 struct SurfaceOptions {
-  std::filesystem::path output;  ///< .npy file
+  std::filesystem::path output;  ///< .npy or .nc file
   long nx = 0, ny = 0;           ///< cells, even, in [2, max_surface_cells]
   double lx = 0.0, ly = 0.0;     ///< domain [m]
   double hurst = 0.0;

@@ -22,6 +22,7 @@
 #include "scene/input_file.hpp"
 #include "scene/method_request.hpp"
 #include "scene/npy.hpp"
+#include "scene/scene_topography.hpp"
 #include "stress/stress_kernel.hpp"
 #include "stress/stress_operator.hpp"
 #include "surfaces/detrend.hpp"
@@ -202,6 +203,15 @@ Material read_material(SectionReader& reader) {
   return material_from_moduli(reader, "E", "nu");
 }
 
+// What the sections after [grid] read against: the grid, its boundary, the scene's folder and a
+// measured topography read before the grid (null without one).
+struct SceneContext {
+  const Grid& grid;
+  bool periodic = false;
+  const std::filesystem::path& scene_dir;
+  const SceneTopography* topography = nullptr;
+};
+
 // [grid]: nx and ny, or refine = "auto" with tolerance_total (the grid is then chosen once the
 // load and the body are known: refine_grid).
 struct GridSection {
@@ -212,8 +222,59 @@ struct GridSection {
   bool periodic = false;                  // boundary = "periodic"
 };
 
-GridSection read_grid(const toml::table& root) {
-  SectionReader reader(section(root, "grid", true), "grid");
+// [contact] topography = "FILE" with its unit and missing keys, read before the grid (whose keys
+// the file may give); the keys are read again, and checked with the others, by read_contact.
+std::optional<SceneTopography> read_scene_topography(const toml::table& root,
+                                                     const std::filesystem::path& scene_dir) {
+  if (!root.contains("contact")) return std::nullopt;
+  SectionReader reader(section(root, "contact", true), "contact");
+  if (!reader.has("topography")) return std::nullopt;
+  return in_section("contact", [&] {
+    // The keys' own mistakes first, before the file is read.
+    COATFFT_REQUIRE(!reader.has("indenter"), reader.where("topography"),
+                    " is pressed by a rigid flat: give it or an indenter, not both");
+    detrend_from_name(reader.choice("detrend", "none", {"none", "mean", "plane"}),
+                      reader.where("detrend"));
+    SceneTopography t;
+    t.file = reader.string("topography");
+    if (t.file.is_relative()) t.file = scene_dir / t.file;
+    topography::ReadOptions options;
+    options.unit = reader.string("unit", "");
+    options.missing = topography::missing_points_from_name(
+        reader.choice("missing", "refuse", {"refuse", "fill"}), reader.where("missing"));
+    t.map = topography::read_topography(t.file, options);
+    return t;
+  });
+}
+
+// [grid] on a measured topography: the section and its nx, ny, lx, ly are optional (the file's
+// unless given, checked against it), the boundary the file's periodic flag unless given.
+GridSection read_topography_grid(SectionReader& reader, const SceneTopography& t) {
+  COATFFT_REQUIRE(!reader.has("refine"), reader.where("refine"),
+                  ": a measured topography's grid is its own (nx, ny of the file)");
+  const auto integer = [&](const char* key) {
+    return reader.has(key) ? std::optional(reader.integer(key)) : std::nullopt;
+  };
+  const auto number = [&](const char* key) {
+    return reader.has(key) ? std::optional(reader.number(key)) : std::nullopt;
+  };
+  const TopographyGrid keys =
+      topography_grid_keys(t, integer("nx"), integer("ny"), number("lx"), number("ly"));
+  const char* file_boundary = t.map.periodic.value_or(false) ? "periodic" : "free";
+  GridSection g{keys.lx, keys.ly, std::nullopt, std::nullopt, false};
+  g.periodic = reader.choice("boundary", file_boundary, {"free", "periodic"}) == "periodic";
+  COATFFT_REQUIRE(!g.periodic || (keys.nx % 2 == 0 && keys.ny % 2 == 0),
+                  "boundary = \"periodic\" needs even nx and ny: the topography has nx = ", keys.nx,
+                  ", ny = ", keys.ny, " (boundary = \"free\" takes any)");
+  g.grid = Grid(keys.nx, keys.ny, keys.lx, keys.ly);
+  reader.finish();
+  return g;
+}
+
+GridSection read_grid(const toml::table& root, const SceneTopography* topography) {
+  SectionReader reader(section(root, "grid", topography == nullptr), "grid");
+  if (topography)
+    return in_section("grid", [&] { return read_topography_grid(reader, *topography); });
   return in_section("grid", [&] {
     GridSection g{reader.number("lx"), reader.number("ly"), std::nullopt, std::nullopt, false};
     g.periodic = reader.choice("boundary", "free", {"free", "periodic"}) == "periodic";
@@ -397,31 +458,35 @@ Field read_grid_file(const std::filesystem::path& file, const Grid& grid) {
   return h;
 }
 
-// [contact] topography = "FILE": a measured surface's heights z (peaks up, towards a rigid flat),
-// `detrend` "none" (default: the file as it is), "mean" or "plane" (its tilt on the instrument),
-// pressed by a rigid flat: the gap max(z) - z (surfaces/detrend.hpp), as a height map.
-void read_topography(SectionReader& reader, const Grid& grid,
-                     const std::filesystem::path& scene_dir, ContactSpec& spec) {
+// [contact] topography = "FILE" (read by read_scene_topography): a measured surface's heights z
+// (peaks up, towards a rigid flat), `detrend` "none" (default: the file as it is), "mean" or
+// "plane" (its tilt on the instrument), pressed by a rigid flat: the gap max(z) - z
+// (surfaces/detrend.hpp), as a height map; `unit` and `missing` as the file was read.
+void read_topography(SectionReader& reader, const SceneContext& context, ContactSpec& spec) {
   COATFFT_REQUIRE(!reader.has("indenter"), reader.where("topography"),
                   " is pressed by a rigid flat: give it or an indenter, not both");
-  std::filesystem::path file = reader.string("topography");
-  if (file.is_relative()) file = scene_dir / file;
+  reader.string("topography");
+  reader.string("unit", "");
+  reader.string("missing", "");
   const Detrend detrend = detrend_from_name(
       reader.choice("detrend", "none", {"none", "mean", "plane"}), reader.where("detrend"));
   spec.indenter_name = "topography";
-  spec.height_file = file;
-  spec.indenter =
-      HeightMap{gap_of_topography(detrended(grid, read_grid_file(file, grid), detrend))};
+  spec.height_file = context.topography->file;
+  TopographyGap t = topography_gap(*context.topography, context.grid, detrend, context.periodic);
+  spec.indenter = HeightMap{std::move(t.gap)};
+  spec.topography = std::move(t.report);
 }
 
 // `stack_body`: the body the operator is built from when it is a stack, nullptr for a table.
 // [contact] indenter and its keys: the shape, checked against the grid (a height map's shape and
 // values; a cylinder's length, a punch's radius within the domain).
-void read_indenter(SectionReader& reader, const Grid& grid, const std::filesystem::path& scene_dir,
-                   ContactSpec& spec) {
-  if (reader.has("topography")) return read_topography(reader, grid, scene_dir, spec);
-  COATFFT_REQUIRE(!reader.has("detrend"), reader.where("detrend"),
-                  " applies to a measured topography ([contact] topography = \"FILE\")");
+void read_indenter(SectionReader& reader, const SceneContext& context, ContactSpec& spec) {
+  if (context.topography) return read_topography(reader, context, spec);
+  for (const char* key : {"detrend", "unit", "missing"})
+    COATFFT_REQUIRE(!reader.has(key), reader.where(key),
+                    " applies to a measured topography ([contact] topography = \"FILE\")");
+  const Grid& grid = context.grid;
+  const std::filesystem::path& scene_dir = context.scene_dir;
   spec.indenter_name = reader.choice(
       "indenter", "", {"sphere", "paraboloid", "cylinder", "flat_punch", "height_map"});
   const std::string& kind = spec.indenter_name;
@@ -502,11 +567,12 @@ void read_elastic_indenter(SectionReader& reader, const LayerStack* stack_body, 
     spec.indenter_material = material_from_moduli(reader, "indenter_E", "indenter_nu");
 }
 
-ContactSpec read_contact(const toml::table& table, const Grid& grid, const LayerStack* stack_body,
-                         const std::filesystem::path& scene_dir) {
+ContactSpec read_contact(const toml::table& table, const SceneContext& context,
+                         const LayerStack* stack_body) {
   SectionReader reader(table, "contact");
   ContactSpec spec;
-  read_indenter(reader, grid, scene_dir, spec);
+  const Grid& grid = context.grid;
+  read_indenter(reader, context, spec);
   read_contact_control(reader, spec);
   read_elastic_indenter(reader, stack_body, spec);
   // Catch geometry errors (a sphere smaller than the domain) before any work is done.
@@ -589,6 +655,7 @@ OutputSpec read_output(const toml::table& root, bool contact) {
   SectionReader reader(section(root, "output", false), "output");
   OutputSpec spec;
   spec.gap = contact;
+  const bool netcdf = reader.choice("format", "npy", {"npy", "netcdf"}) == "netcdf";
   if (reader.has("fields")) {
     const std::vector<std::string> names = reader.strings("fields");
     COATFFT_REQUIRE(!names.empty(), reader.where("fields"),
@@ -604,6 +671,7 @@ OutputSpec read_output(const toml::table& root, bool contact) {
                       "\" is listed twice");
     }
   }
+  spec.netcdf = netcdf;
   reader.finish();
   return spec;
 }
@@ -825,7 +893,8 @@ Scene read_scene(const std::filesystem::path& path) {
   return with_file_name(path, [&] {
     const toml::table root = parse_scene_text(text, path);
     const std::filesystem::path scene_dir = path.parent_path();
-    const GridSection grid = read_grid(root);
+    const std::optional<SceneTopography> topography = read_scene_topography(root, scene_dir);
+    const GridSection grid = read_grid(root, topography ? &*topography : nullptr);
     Scene scene{grid.grid.value_or(Grid(1, 1, grid.lx, grid.ly)),
                 read_optional_body(root),
                 std::nullopt,
@@ -851,8 +920,10 @@ Scene read_scene(const std::filesystem::path& path) {
       scene.pressure = read_pressure(section(root, "pressure", true), scene.grid, scene_dir);
     else
       scene.contact = in_section("contact", [&] {
-        return read_contact(section(root, "contact", true), scene.grid,
-                            scene.frf ? nullptr : &*scene.body, scene_dir);
+        const SceneContext context{scene.grid, scene.periodic, scene_dir,
+                                   topography ? &*topography : nullptr};
+        return read_contact(section(root, "contact", true), context,
+                            scene.frf ? nullptr : &*scene.body);
       });
     scene.output = read_output(root, scene.contact.has_value());
     if (root.contains("stress")) scene.stress = read_stress(root, scene);

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -85,6 +86,9 @@ struct ContactSpec {
   /// Coefficient of friction of a full sliding along +x: q_x = friction p on the body's surface,
   /// for the stresses ([stress]); the normal contact is solved frictionless (docs/stress.md).
   double friction = 0.0;
+  /// A measured topography's report for summary.json (scene/scene_topography.hpp); null for
+  /// an indenter.
+  nlohmann::json topography;
 };
 
 /// [output]: the files `coatfft run` writes (docs/scene_format.md, "[output]"). summary.json is
@@ -104,6 +108,9 @@ struct OutputSpec {
   /// ux.npy and uy.npy: set by [stress], [shear] or [contact] friction on a bonded body (not an
   /// [frf] table) whose traction kernels are affordable (convolution/kernels/traction_kernels.hpp)
   bool in_plane = false;
+  /// format = "netcdf": the .npy files' arrays are written instead as the variables of one
+  /// NetCDF file, fields.nc (scene/scene_netcdf.hpp); summary.json and the CSV files stay.
+  bool netcdf = false;
   /// [output] fields was given: only the files it names are written.
   bool listed = false;
   /// sweep.csv, and uz.npy, pressure.npy, gap.npy stacked one per value: a [contact] sweep

@@ -38,3 +38,19 @@ double rms_slope(const Grid& grid, const Field& heights, bool periodic) {
 }
 
 }  // namespace coatfft
+
+namespace coatfft {
+
+EdgeMismatch edge_mismatch(const Field& z) {
+  const Eigen::Index nx = z.rows(), ny = z.cols();
+  COATFFT_REQUIRE(nx >= 2 && ny >= 2, "edge_mismatch: needs at least 2 x 2 points");
+  const double jumps =
+      (z.row(0) - z.row(nx - 1)).square().sum() + (z.col(0) - z.col(ny - 1)).square().sum();
+  const double steps = (z.bottomRows(nx - 1) - z.topRows(nx - 1)).square().sum() +
+                       (z.rightCols(ny - 1) - z.leftCols(ny - 1)).square().sum();
+  const auto n_jumps = static_cast<double>(nx + ny);
+  const auto n_steps = static_cast<double>((nx - 1) * ny + nx * (ny - 1));
+  return {std::sqrt(jumps / n_jumps), std::sqrt(steps / n_steps)};
+}
+
+}  // namespace coatfft

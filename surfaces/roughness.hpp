@@ -15,3 +15,17 @@ double rms_height(const Field& heights);
 double rms_slope(const Grid& grid, const Field& heights, bool periodic);
 
 }  // namespace coatfft
+
+namespace coatfft {
+
+/// How far a map is from joining its own copies when it is taken as periodic: the rms height
+/// jump between opposite edges (z(0, j) - z(nx - 1, j) and z(i, 0) - z(i, ny - 1)) [m], and the
+/// rms step between neighbours inside the map [m], its scale. A ratio near 1 joins seamlessly;
+/// far above 1 the periodic copies meet at a cliff (docs/measured_surfaces.md).
+struct EdgeMismatch {
+  double rms_jump = 0.0;
+  double rms_step = 0.0;
+};
+EdgeMismatch edge_mismatch(const Field& heights);
+
+}  // namespace coatfft

@@ -53,3 +53,26 @@ TEST_CASE("roughness: rms height and slope of a sampled sine against closed form
     for (Eigen::Index i = 0; i < 7; ++i) z(i, j) = 0.3 * g.x(i) - 0.4 * g.y(j);
   CHECK(rms_slope(g, z, false) == Approx(0.5).epsilon(1e-12));
 }
+
+TEST_CASE("edge mismatch: a ramp's jump across the edge against its closed form",
+          "[topography][roughness]") {
+  // z = a i along x: steps a between x neighbours (and 0 along y); the jump back across the x
+  // edge is a (nx - 1) on each of ny lines, none across the y edge.
+  for (const auto& [nx, ny] : {std::pair{8, 5}, std::pair{5, 12}}) {
+    const double a = 3e-7;
+    Field z(nx, ny);
+    for (Eigen::Index j = 0; j < ny; ++j)
+      for (Eigen::Index i = 0; i < nx; ++i) z(i, j) = a * static_cast<double>(i);
+    const EdgeMismatch m = edge_mismatch(z);
+    const double steps = (nx - 1.0) * ny, pairs = (nx - 1.0) * ny + nx * (ny - 1.0);
+    CHECK(m.rms_step == Approx(a * std::sqrt(steps / pairs)).epsilon(1e-13));
+    CHECK(m.rms_jump == Approx(a * (nx - 1) * std::sqrt(ny / double(nx + ny))).epsilon(1e-13));
+  }
+  // A map periodic in both directions (a sampled cosine) joins its copies: the jump is a step.
+  Field c(16, 16);
+  for (Eigen::Index j = 0; j < 16; ++j)
+    for (Eigen::Index i = 0; i < 16; ++i) c(i, j) = std::cos(2 * M_PI * (i + 0.5) / 16.0);
+  const EdgeMismatch m = edge_mismatch(c);
+  // Across the edge: cos(2 pi 0.5/16) - cos(2 pi 15.5/16) = 0 on every x line.
+  CHECK(m.rms_jump < 1e-14);
+}

@@ -140,3 +140,118 @@ def test_program_refuses_bad_files_without_output(coatfft_exe, tmp_path):
         assert run.returncode == 2, run.stderr
         assert run.stderr.count("\n") == 1 and name in run.stderr or "inch" in run.stderr
         assert not out.exists()
+
+
+SCENE_BODY = """
+[substrate]
+material = "steel"
+
+[[coating]]
+material = "titanium_nitride"
+thickness = 2.0e-5
+"""
+
+
+def test_periodic_contact_from_netcdf_equals_the_gap_and_typed_grid(tmp_path):
+    grid = coatfft.Grid(32, 32, 0.4e-3, 0.4e-3)
+    z = coatfft.self_affine_surface(grid, hurst=0.8, rms_slope=0.1, seed=4)
+    write_surface_topography_nc(tmp_path / "z.nc", z, 0.4e-3, 0.4e-3, "m", True)
+    np.save(tmp_path / "gap.npy", z.max() - z)
+    # No [grid]: its sizes and the periodic boundary come from the file.
+    (tmp_path / "nc.toml").write_text(SCENE_BODY + '[contact]\ntopography = "z.nc"\nload = 2.0\n')
+    (tmp_path / "typed.toml").write_text(
+        '[grid]\nnx = 32\nny = 32\nlx = 0.4e-3\nly = 0.4e-3\nboundary = "periodic"\n' + SCENE_BODY
+        + '[contact]\nindenter = "height_map"\npath = "gap.npy"\nload = 2.0\n')
+    a = coatfft.run_scene(tmp_path / "nc.toml")
+    b = coatfft.run_scene(tmp_path / "typed.toml")
+    assert a["summary"]["converged"] and b["summary"]["converged"]
+    assert a["summary"]["boundary"] == "periodic"
+    assert np.array_equal(a["pressure"], b["pressure"])
+    assert np.array_equal(a["uz"], b["uz"])
+    assert a["summary"]["iterations"] == b["summary"]["iterations"]
+    t = a["summary"]["topography"]
+    assert (t["format"], t["nx"], t["periodic"], t["file"]) == ("netcdf", 32, True, str(tmp_path / "z.nc"))
+    # A periodic map joins its copies: the edge jump is a step like the others.
+    assert 0.3 < t["edge_mismatch"]["ratio"] < 3
+
+
+def test_grid_keys_from_a_topography_are_checked(tmp_path):
+    z = z_of(6, 4)
+    write_surface_topography_nc(tmp_path / "z.nc", z, 6e-3, 4e-3, "um", False)
+    np.save(tmp_path / "z.npy", z)
+    cases = [
+        ('[grid]\nnx = 8\n', "z.nc", "nx = 8 disagrees with the topography"),
+        ('[grid]\nlx = 5e-3\n', "z.nc", "lx = 0.005 disagrees"),
+        ('[grid]\nboundary = "periodic"\nnx = 6\n', "z.nc", None),
+        ("", "z.npy", "carries no size; give \\[grid\\] lx and ly"),
+        ('[grid]\nrefine = "auto"\n', "z.nc", "refine"),
+    ]
+    for k, (grid, file, message) in enumerate(cases):
+        scene = tmp_path / f"s{k}.toml"
+        scene.write_text(grid + SCENE_BODY + f'[contact]\ntopography = "{file}"\nload = 1e-3\n')
+        if message is None:
+            s = coatfft.run_scene(scene)["summary"]
+            assert s["boundary"] == "periodic" and s["topography"]["edge_mismatch"]["ratio"] > 1
+        else:
+            with pytest.raises(ValueError, match=message):
+                coatfft.run_scene(scene)
+    # A file that does not say it is periodic is solved on a free boundary by default.
+    scene = tmp_path / "free.toml"
+    scene.write_text(SCENE_BODY + '[contact]\ntopography = "z.nc"\nload = 1e-3\n')
+    s = coatfft.run_scene(scene)["summary"]
+    assert s["boundary"] == "free" and s["topography"]["edge_mismatch"] is None
+
+
+def test_run_writes_netcdf_equal_to_its_npy_files(coatfft_exe, tmp_path):
+    grid = coatfft.Grid(16, 12, 0.2e-3, 0.15e-3)
+    z = coatfft.self_affine_surface(grid, hurst=0.7, rms_slope=0.1, seed=1)
+    write_surface_topography_nc(tmp_path / "z.nc", z, 0.2e-3, 0.15e-3, "m", True)
+    sweep = SCENE_BODY + '[contact]\ntopography = "z.nc"\nload = [0.5, 1.0]\n'
+    stress = (SCENE_BODY + '[contact]\ntopography = "z.nc"\nload = 1.0\n'
+              '[stress]\ndepths = [1e-5, 3e-5]\nsection = "xz"\ndepth_max = 4e-5\nnz = 4\n')
+    for case, body in (("sweep", sweep), ("stress", stress)):
+        (tmp_path / f"{case}_npy.toml").write_text(body)
+        (tmp_path / f"{case}_nc.toml").write_text(body + '[output]\nformat = "netcdf"\n')
+        for name in ("npy", "nc"):
+            subprocess.run([coatfft_exe, "run", str(tmp_path / f"{case}_{name}.toml"), "-o",
+                            str(tmp_path / f"{case}_{name}"), "--quiet"], check=True,
+                           capture_output=True)
+        assert not list((tmp_path / f"{case}_nc").glob("*.npy"))
+        assert (tmp_path / f"{case}_nc" / "summary.json").exists()
+    # Each map over (..., x, y): the .npy array with its last two axes swapped.
+    def same_maps(case, names):
+        with netCDF4.Dataset(tmp_path / f"{case}_nc" / "fields.nc") as nc:
+            assert nc["x"].length == pytest.approx(0.2e-3) and nc["x"].periodic == 1
+            assert np.allclose(nc["x"][:], grid.x) and np.allclose(nc["y"][:], grid.y)
+            for name in names:
+                assert nc[name].dimensions[-2:] == ("x", "y")
+                assert np.array_equal(np.swapaxes(np.asarray(nc[name]), -1, -2),
+                                      np.load(tmp_path / f"{case}_npy" / f"{name}.npy"))
+            assert nc["pressure"].units == "Pa"
+            return json.loads(nc.summary)
+    summary = same_maps("sweep", ("uz", "pressure", "gap"))
+    assert (tmp_path / "sweep_nc" / "sweep.csv").exists()
+    with netCDF4.Dataset(tmp_path / "sweep_nc" / "fields.nc") as nc:
+        assert np.allclose(nc["load"][:], [0.5, 1.0]) and nc["uz"].dimensions[0] == "sweep"
+    assert summary["sweep"] == json.loads((tmp_path / "sweep_npy" / "summary.json").read_text())["sweep"]
+    same_maps("stress", ("uz", "pressure", "gap", "ux", "uy", "stress", "von_mises"))
+    with netCDF4.Dataset(tmp_path / "stress_nc" / "fields.nc") as nc:
+        for name in ("stress_section", "von_mises_section"):
+            assert np.array_equal(np.asarray(nc[name]), np.load(tmp_path / "stress_npy" / f"{name}.npy"))
+        assert np.array_equal(nc["depth"][:], [1e-5, 3e-5])
+        assert np.allclose(nc["section_depth"][:], [1e-5, 2e-5, 3e-5, 4e-5])
+        assert nc["stress"].dimensions == ("depth", "component", "x", "y")
+
+
+def test_surface_written_as_netcdf_is_the_npy_surface(coatfft_exe, tmp_path):
+    flags = ["--nx", "16", "--ny", "8", "--lx", "1e-3", "--ly", "5e-4", "--hurst", "0.8",
+             "--rms-height", "1e-6", "--seed", "9"]
+    for name in ("s.npy", "s.nc"):
+        subprocess.run([coatfft_exe, "surface", "-o", str(tmp_path / name), *flags], check=True,
+                       capture_output=True)
+    with netCDF4.Dataset(tmp_path / "s.nc") as nc:
+        assert np.array_equal(np.asarray(nc["heights"]).T, np.load(tmp_path / "s.npy"))
+        assert (nc["x"].length, nc["y"].length, nc["x"].periodic, nc["y"].periodic) == \
+            (1e-3, 5e-4, 1, 1)
+    t = coatfft.read_topography(tmp_path / "s.nc")
+    assert t["periodic"] is True and np.array_equal(t["heights"], np.load(tmp_path / "s.npy"))

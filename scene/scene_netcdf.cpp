@@ -1,0 +1,106 @@
+#include "scene/scene_netcdf.hpp"
+
+#include <string>
+#include <vector>
+
+#include "topography/netcdf_writer.hpp"
+
+namespace coatfft::scene {
+
+namespace {
+using topography::NetcdfAttributes;
+using topography::NetcdfDataset;
+using topography::NetcdfDimension;
+using topography::NetcdfVariable;
+
+NetcdfAttributes described(const char* units, const char* long_name) {
+  return {{{"units", units}, {"long_name", long_name}}, {}};
+}
+
+std::span<const double> values(const Field& f) {
+  return {f.data(), static_cast<std::size_t>(f.size())};
+}
+
+// A sweep's fields, stacked as its .npy files are (n_values, ny, nx), kept alive by `store`.
+std::span<const double> stacked(const std::vector<Field>& fields, std::vector<double>& store) {
+  for (const Field& f : fields) store.insert(store.end(), f.data(), f.data() + f.size());
+  return store;
+}
+
+// The stress planes (depth, component, x, y) and their von Mises stress (depth, x, y); the
+// section (section_depth, component, x) and its von Mises stress (section_depth, x).
+void add_stress(NetcdfDataset& d, const OutputSpec& spec, const StressRun& s) {
+  const auto& summary = s.summary;
+  d.dimensions.push_back({"component", 6, {}, {{{"names", "xx yy zz yz xz xy"}}, {}}});
+  if (spec.stress || spec.von_mises) {
+    const auto depths = summary.at("depths").get<std::vector<double>>();
+    d.dimensions.push_back(
+        {"depth", depths.size(), depths, described("m", "depth below the surface")});
+  }
+  if (spec.stress)
+    d.variables.push_back({"stress", {"depth", "component"}, s.stress, described("Pa", "stress")});
+  if (spec.von_mises)
+    d.variables.push_back(
+        {"von_mises", {"depth"}, s.von_mises, described("Pa", "von Mises stress")});
+  if (!spec.stress_section && !spec.von_mises_section) return;
+  const auto nz = summary.at("section").at("nz").get<std::size_t>();
+  const double depth_max = summary.at("section").at("depth_max").get<double>();
+  std::vector<double> z;
+  for (std::size_t k = 1; k <= nz; ++k) z.push_back(depth_max * double(k) / double(nz));
+  d.dimensions.push_back({"section_depth", nz, z, described("m", "depth of the section's rows")});
+  if (spec.stress_section)
+    d.variables.push_back({"stress_section",
+                           {"section_depth", "component", "x"},
+                           s.section,
+                           described("Pa", "stress on the section y = y_centre"),
+                           false});
+  if (spec.von_mises_section)
+    d.variables.push_back({"von_mises_section",
+                           {"section_depth", "x"},
+                           s.section_von_mises,
+                           described("Pa", "von Mises stress on the section"),
+                           false});
+}
+}  // namespace
+
+void write_run_netcdf(const std::filesystem::path& path, const OutputSpec& spec,
+                      const SceneRun& run) {
+  const bool periodic = run.summary.value("boundary", "free") == "periodic";
+  NetcdfDataset d{run.grid, periodic, {}, {}, {{{"summary", run.summary.dump()}}, {}}};
+  std::vector<double> uz, pressure, gap, loads, approaches;
+  if (run.sweep) {
+    const auto& rows = run.summary.at("sweep");
+    for (const auto& row : rows) {
+      loads.push_back(row.at("load").get<double>());
+      if (!row.at("approach").is_null()) approaches.push_back(row.at("approach").get<double>());
+    }
+    d.dimensions.push_back({"sweep", rows.size(), {}, {}});
+    d.variables.push_back({"load", {"sweep"}, loads, described("N", "total load"), false});
+    if (approaches.size() == loads.size())
+      d.variables.push_back({"approach", {"sweep"}, approaches, described("m", "approach"), false});
+  }
+  const std::vector<std::string> sweep =
+      run.sweep ? std::vector<std::string>{"sweep"} : std::vector<std::string>{};
+  if (spec.uz)
+    d.variables.push_back({"uz", sweep, run.sweep ? stacked(run.sweep->uz, uz) : values(run.uz),
+                           described("m", "normal surface displacement, into the body")});
+  if (spec.pressure)
+    d.variables.push_back(
+        {"pressure", sweep,
+         run.sweep ? stacked(run.sweep->pressure, pressure) : values(run.pressure),
+         described("Pa", "surface pressure")});
+  if (spec.gap && (run.gap || run.sweep))
+    d.variables.push_back({"gap", sweep,
+                           run.sweep ? stacked(run.sweep->gap, gap) : values(*run.gap),
+                           described("m", "gap after loading")});
+  if (spec.in_plane && run.ux && run.uy) {
+    d.variables.push_back(
+        {"ux", {}, values(*run.ux), described("m", "surface displacement along x")});
+    d.variables.push_back(
+        {"uy", {}, values(*run.uy), described("m", "surface displacement along y")});
+  }
+  if (run.stress) add_stress(d, spec, *run.stress);
+  topography::write_netcdf(path, d);
+}
+
+}  // namespace coatfft::scene

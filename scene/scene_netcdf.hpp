@@ -1,0 +1,21 @@
+#pragma once
+// A run's fields as one NetCDF file ([output] format = "netcdf"; docs/measured_surfaces.md,
+// "NetCDF layout"): each array a variable named as its .npy file would be, over x and y with
+// coordinates, units and long names, the stress planes' depths and components and a sweep's
+// values as their own dimensions, and summary.json's object as the file's attribute `summary`.
+#include <filesystem>
+
+#include "scene/scene.hpp"
+#include "scene/scene_run.hpp"
+
+namespace coatfft::scene {
+
+/// The file's name in the output folder.
+inline constexpr const char* netcdf_output_name = "fields.nc";
+
+/// Writes the arrays of `run` that `spec` asks for (the .npy files' arrays) into the new file
+/// `path`.
+void write_run_netcdf(const std::filesystem::path& path, const OutputSpec& spec,
+                      const SceneRun& run);
+
+}  // namespace coatfft::scene
