@@ -210,6 +210,7 @@ struct SceneContext {
   bool periodic = false;
   const std::filesystem::path& scene_dir;
   const SceneTopography* topography = nullptr;
+  std::int64_t pad = 0;  ///< [grid] pad of the topography
 };
 
 // [grid]: nx and ny, or refine = "auto" with tolerance_total (the grid is then chosen once the
@@ -220,6 +221,7 @@ struct GridSection {
   std::optional<Grid> grid;               // nx and ny given
   std::optional<double> tolerance_total;  // refine = "auto"
   bool periodic = false;                  // boundary = "periodic"
+  std::int64_t pad = 0;                   // a topography's pad [cells each side]
 };
 
 // [contact] topography = "FILE" with its unit and missing keys, read before the grid (whose keys
@@ -261,12 +263,19 @@ GridSection read_topography_grid(SectionReader& reader, const SceneTopography& t
   const TopographyGrid keys =
       topography_grid_keys(t, integer("nx"), integer("ny"), number("lx"), number("ly"));
   const char* file_boundary = t.map.periodic.value_or(false) ? "periodic" : "free";
-  GridSection g{keys.lx, keys.ly, std::nullopt, std::nullopt, false};
+  GridSection g{keys.lx, keys.ly, std::nullopt, std::nullopt, false, reader.integer("pad", 0)};
   g.periodic = reader.choice("boundary", file_boundary, {"free", "periodic"}) == "periodic";
   COATFFT_REQUIRE(!g.periodic || (keys.nx % 2 == 0 && keys.ny % 2 == 0),
                   "boundary = \"periodic\" needs even nx and ny: the topography has nx = ", keys.nx,
                   ", ny = ", keys.ny, " (boundary = \"free\" takes any)");
-  g.grid = Grid(keys.nx, keys.ny, keys.lx, keys.ly);
+  // The map and `pad` cells of out-of-reach gap on each side, at the map's spacing.
+  const std::int64_t nx = keys.nx + 2 * g.pad, ny = keys.ny + 2 * g.pad;
+  COATFFT_REQUIRE(g.pad >= 0 && nx <= Grid::max_cells_per_axis && ny <= Grid::max_cells_per_axis,
+                  reader.where("pad"), " = ", g.pad, " must be >= 0, with at most ",
+                  Grid::max_cells_per_axis, " cells per direction in all");
+  g.lx = keys.lx * static_cast<double>(nx) / static_cast<double>(keys.nx);
+  g.ly = keys.ly * static_cast<double>(ny) / static_cast<double>(keys.ny);
+  g.grid = Grid(nx, ny, g.lx, g.ly);
   reader.finish();
   return g;
 }
@@ -275,6 +284,8 @@ GridSection read_grid(const toml::table& root, const SceneTopography* topography
   SectionReader reader(section(root, "grid", topography == nullptr), "grid");
   if (topography)
     return in_section("grid", [&] { return read_topography_grid(reader, *topography); });
+  COATFFT_REQUIRE(!reader.has("pad"), reader.where("pad"),
+                  " applies to a measured topography ([contact] topography = \"FILE\")");
   return in_section("grid", [&] {
     GridSection g{reader.number("lx"), reader.number("ly"), std::nullopt, std::nullopt, false};
     g.periodic = reader.choice("boundary", "free", {"free", "periodic"}) == "periodic";
@@ -472,7 +483,9 @@ void read_topography(SectionReader& reader, const SceneContext& context, Contact
       reader.choice("detrend", "none", {"none", "mean", "plane"}), reader.where("detrend"));
   spec.indenter_name = "topography";
   spec.height_file = context.topography->file;
-  TopographyGap t = topography_gap(*context.topography, context.grid, detrend, context.periodic);
+  TopographyGap t =
+      topography_gap(*context.topography, context.grid, detrend, context.periodic, context.pad);
+  spec.topography_pad = context.pad;
   spec.indenter = HeightMap{std::move(t.gap)};
   spec.topography = std::move(t.report);
 }
@@ -921,7 +934,7 @@ Scene read_scene(const std::filesystem::path& path) {
     else
       scene.contact = in_section("contact", [&] {
         const SceneContext context{scene.grid, scene.periodic, scene_dir,
-                                   topography ? &*topography : nullptr};
+                                   topography ? &*topography : nullptr, grid.pad};
         return read_contact(section(root, "contact", true), context,
                             scene.frf ? nullptr : &*scene.body);
       });

@@ -89,6 +89,8 @@ struct ContactSpec {
   /// A measured topography's report for summary.json (scene/scene_topography.hpp); null for
   /// an indenter.
   nlohmann::json topography;
+  /// [grid] pad: cells of out-of-reach gap around the topography on each side.
+  std::int64_t topography_pad = 0;
 };
 
 /// [output]: the files `coatfft run` writes (docs/scene_format.md, "[output]"). summary.json is

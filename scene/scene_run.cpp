@@ -24,6 +24,7 @@
 #include "scene/operator_from_scene.hpp"
 #include "scene/resources.hpp"
 #include "scene/scene_pressure.hpp"
+#include "scene/scene_topography.hpp"
 #include "validation/hertz.hpp"
 #include "validation/hertz_contact.hpp"
 
@@ -279,6 +280,21 @@ nlohmann::json sweep_row(const Grid& grid, const ContactResult& r) {
           {"max_penetration", r.max_penetration}};
 }
 
+// Whether the contact of any solve reaches the border cells of a measured topography's map;
+// refuses one that reaches the pad around it ([grid] pad), which was to be out of reach.
+bool topography_edge_contact(const std::vector<ContactResult>& results, std::int64_t pad) {
+  bool map_edge = false;
+  for (const ContactResult& r : results) {
+    const PadContact c = pad_contact(r.pressure, pad);
+    COATFFT_REQUIRE(!c.pad,
+                    "[grid] pad: the contact reaches the pad around the topography (its "
+                    "gap is out of reach only up to twice the map's largest gap): lower "
+                    "the load or approach");
+    map_edge = map_edge || c.map_edge;
+  }
+  return map_edge;
+}
+
 // The solves of a [contact] scene: its one value, or each value of its sweep (ascending).
 std::vector<ContactResult> solve_contacts(ContactSolver& solver, const Scene& scene,
                                           const std::shared_ptr<CerrutiOperator>& surface,
@@ -342,15 +358,16 @@ SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat,
   // touches_boundary is false on a periodic surface (no edge: contact/contact_solver.hpp).
   const bool touches = std::any_of(results.begin(), results.end(),
                                    [](const ContactResult& r) { return r.touches_boundary; });
-  // The largest value's: the summary's contact keys (a sweep keeps every value's fields too).
-  ContactResult result = spec.sweep.empty() ? std::move(results.back()) : results.back();
   // A measured topography on a free boundary is the whole surface there is: beyond the map the
   // gap is out of reach, so contact on its edge cells is the map's own (reported, not refused).
   const bool topography = !spec.topography.is_null();
+  const bool map_edge = topography && topography_edge_contact(results, spec.topography_pad);
   COATFFT_REQUIRE(!touches || topography,
                   "[contact] the contact reaches the domain edge (pressure > 0 on a border cell): "
                   "the domain is too small for this contact; enlarge [grid] lx and ly (and nx, ny "
                   "to keep the cell size) or lower the load");
+  // The largest value's: the summary's contact keys (a sweep keeps every value's fields too).
+  ContactResult result = spec.sweep.empty() ? std::move(results.back()) : results.back();
 
   progress.stage(applications_stage(repeat));
   Field uz;  // only for the timing: the solver returned the displacement
@@ -359,7 +376,7 @@ SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat,
                                           result.pressure, result.displacement);
   add_contact_summary(summary, scene, result, solve_seconds);
   if (!coupling.is_null()) summary["friction_coupling"] = coupling;
-  if (topography) summary["topography"]["contact_at_edge"] = touches;
+  if (topography) summary["topography"]["contact_at_edge"] = map_edge;
   // The solver computes the gap in any case; the CLI saves it only when [output] asks for it.
   SceneRun run{scene.grid,
                std::move(result.pressure),

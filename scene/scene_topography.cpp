@@ -1,5 +1,6 @@
 #include "scene/scene_topography.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.hpp"
@@ -37,18 +38,38 @@ TopographyGrid topography_grid_keys(const SceneTopography& t, std::optional<std:
           agreed(ly, t.map.ly, "ly", t)};
 }
 
+double pad_gap(double max_gap, double lx, double ly) {
+  return 2.0 * max_gap + (max_gap > 0 ? 0.0 : std::max(lx, ly));
+}
+
+PadContact pad_contact(const Field& p, std::int64_t pad) {
+  const Eigen::Index nx = p.rows() - 2 * pad, ny = p.cols() - 2 * pad;
+  const auto map = p.block(pad, pad, nx, ny);
+  const bool edge = (map.row(0) > 0).any() || (map.row(nx - 1) > 0).any() ||
+                    (map.col(0) > 0).any() || (map.col(ny - 1) > 0).any();
+  return {(p > 0).count() > (map > 0).count(), edge};
+}
+
 TopographyGap topography_gap(const SceneTopography& t, const Grid& grid, Detrend detrend,
-                             bool periodic) {
-  const Field heights = detrended(grid, t.map.heights, detrend);
-  TopographyGap out{gap_of_topography(heights),
+                             bool periodic, std::int64_t pad) {
+  const Eigen::Index nx = t.map.heights.rows(), ny = t.map.heights.cols();
+  const Grid map_grid(nx, ny, grid.dx() * static_cast<double>(nx),
+                      grid.dy() * static_cast<double>(ny));
+  const Field heights = detrended(map_grid, t.map.heights, detrend);
+  const Field map_gap = gap_of_topography(heights);
+  TopographyGap out{Field::Constant(grid.nx(), grid.ny(),
+                                    pad_gap(map_gap.maxCoeff(), map_grid.lx(), map_grid.ly())),
                     topography::topography_summary(t.map, heights, detrend)};
+  out.gap.block(pad, pad, nx, ny) = map_gap;
   // The scene's grid, not the file's, sizes the map now.
   out.report["file"] = t.file.string();
-  out.report["lx"] = grid.lx();
-  out.report["ly"] = grid.ly();
-  out.report["rms_slope"] = rms_slope(grid, heights, periodic);
+  out.report["lx"] = map_grid.lx();
+  out.report["ly"] = map_grid.ly();
+  out.report["pad"] = pad;
+  // The map's own slope: across its edges only where it is its own periodic copy's neighbour.
+  out.report["rms_slope"] = rms_slope(map_grid, heights, periodic && pad == 0);
   out.report["edge_mismatch"] = nullptr;
-  if (periodic) {
+  if (periodic && pad == 0) {
     const EdgeMismatch m = edge_mismatch(heights);
     out.report["edge_mismatch"] = {{"rms_jump", m.rms_jump},
                                    {"rms_step", m.rms_step},

@@ -255,3 +255,43 @@ def test_surface_written_as_netcdf_is_the_npy_surface(coatfft_exe, tmp_path):
             (1e-3, 5e-4, 1, 1)
     t = coatfft.read_topography(tmp_path / "s.nc")
     assert t["periodic"] is True and np.array_equal(t["heights"], np.load(tmp_path / "s.npy"))
+
+
+def test_pad_leaves_a_free_map_as_it_is_and_frees_a_periodic_one(tmp_path):
+    grid = coatfft.Grid(24, 24, 0.3e-3, 0.3e-3)
+    z = coatfft.self_affine_surface(grid, hurst=0.8, rms_slope=0.1, seed=6)
+    write_surface_topography_nc(tmp_path / "z.nc", z, 0.3e-3, 0.3e-3, "m", False)
+
+    # A homogeneous body: its DC-FFT influence coefficients are exact on any grid (a coated
+    # body's are its FRF's quadrature, chosen afresh on each grid to the method's tolerance).
+    def pressure(grid_keys):
+        scene = tmp_path / "s.toml"
+        scene.write_text(grid_keys + '[substrate]\nmaterial = "steel"\n' +
+                         '[contact]\ntopography = "z.nc"\nload = 80.0\ntolerance = 1e-13\n')
+        run = coatfft.run_scene(scene)
+        pad = run["summary"]["topography"]["pad"]
+        assert run["summary"]["converged"]
+        return run["pressure"][pad:pad + 24, pad:pad + 24], run["summary"]
+
+    free, s = pressure("")
+    assert s["boundary"] == "free" and s["topography"]["pad"] == 0
+    # On a free boundary the half-space beyond the map carries no load anyway: a pad changes
+    # nothing on the map (to the solver's tolerance).
+    padded, s = pressure("[grid]\npad = 8\n")
+    assert s["nx"] == 40 and s["lx"] == pytest.approx(0.5e-3)
+    assert np.abs(padded - free).max() <= 1e-8 * free.max()
+    # A periodic run approaches the free map as its copies move apart.
+    errors = [np.abs(pressure(f'[grid]\nboundary = "periodic"\npad = {p}\n')[0] - free).max()
+              for p in (0, 8, 24)]
+    assert errors[0] > errors[1] > errors[2]
+
+
+def test_pad_out_of_reach_is_checked(tmp_path):
+    z = z_of(8, 8) * 1e-7
+    write_surface_topography_nc(tmp_path / "z.nc", z, 1e-3, 1e-3, "m", False)
+    gap = z.max() - z.min()
+    scene = tmp_path / "s.toml"
+    scene.write_text("[grid]\npad = 4\n" + SCENE_BODY +
+                     f'[contact]\ntopography = "z.nc"\napproach = {3 * gap}\n')
+    with pytest.raises(ValueError, match="reaches the pad"):
+        coatfft.run_scene(scene)
