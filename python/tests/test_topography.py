@@ -295,3 +295,67 @@ def test_pad_out_of_reach_is_checked(tmp_path):
                      f'[contact]\ntopography = "z.nc"\napproach = {3 * gap}\n')
     with pytest.raises(ValueError, match="reaches the pad"):
         coatfft.run_scene(scene)
+
+
+def write_x3p(path, z_counts, increment_z, offset_z, dx, dy, valid=None, spoil_md5=False):
+    """An ISO 25178-72 archive written by Python's zipfile: int32 counts (x fastest), their
+    increment and offset on CZ, an optional valid-points bit mask, MD5 sums by hashlib."""
+    import hashlib
+    import zipfile
+    ny, nx = z_counts.shape
+    data = z_counts.astype("<i4").tobytes()
+    link = (f"<PointDataLink>bindata/data.bin</PointDataLink>"
+            f"<MD5ChecksumPointData>{hashlib.md5(data).hexdigest()}</MD5ChecksumPointData>")
+    if valid is not None:
+        bits = np.packbits(valid.ravel().astype(np.uint8), bitorder="little").tobytes()
+        link += (f"<ValidPointsLink>bindata/valid.bin</ValidPointsLink>"
+                 f"<MD5ChecksumValidPoints>{hashlib.md5(bits).hexdigest()}</MD5ChecksumValidPoints>")
+    xml = f"""<?xml version="1.0" encoding="UTF-8"?>
+<p:ISO5436_2 xmlns:p="http://www.opengps.eu/2008/ISO5436_2">
+ <Record1><Revision>ISO5436 - 2000</Revision><FeatureType>SUR</FeatureType><Axes>
+  <CX><AxisType>I</AxisType><DataType>D</DataType><Increment>{dx!r}</Increment><Offset>0</Offset></CX>
+  <CY><AxisType>I</AxisType><DataType>D</DataType><Increment>{dy!r}</Increment><Offset>0</Offset></CY>
+  <CZ><AxisType>A</AxisType><DataType>L</DataType><Increment>{increment_z!r}</Increment><Offset>{offset_z!r}</Offset></CZ>
+ </Axes></Record1>
+ <Record2><Date>2026-01-02T03:04:05+00:00</Date><Creator>pytest</Creator>
+  <Instrument><Manufacturer>None</Manufacturer><Model>zipfile</Model><Serial>0</Serial><Version>1</Version></Instrument>
+  <CalibrationDate>2026-01-01T00:00:00+00:00</CalibrationDate>
+  <ProbingSystem><Type>NonContacting</Type><Identification>none</Identification></ProbingSystem>
+ </Record2>
+ <Record3><MatrixDimension><SizeX>{nx}</SizeX><SizeY>{ny}</SizeY><SizeZ>1</SizeZ></MatrixDimension>
+  <DataLink>{link}</DataLink></Record3>
+ <Record4><ChecksumFile>md5checksum.hex</ChecksumFile></Record4>
+</p:ISO5436_2>
+""".encode()
+    md5 = hashlib.md5(xml + (b" " if spoil_md5 else b"")).hexdigest()
+    with zipfile.ZipFile(path, "w", zipfile.ZIP_DEFLATED) as archive:
+        archive.writestr("main.xml", xml)
+        archive.writestr("md5checksum.hex", f"{md5} *main.xml\n")
+        archive.writestr("bindata/data.bin", data)
+        if valid is not None:
+            archive.writestr("bindata/valid.bin", bits)
+
+
+def test_x3p_written_by_zipfile(coatfft_exe, tmp_path):
+    counts = (z_of(7, 5) - 20).astype(np.int64) * 1000
+    write_x3p(tmp_path / "s.x3p", counts, 1e-12, 2e-9, 0.5e-6, 0.25e-6)
+    t = coatfft.read_topography(tmp_path / "s.x3p")
+    expected = counts * 1e-12 + 2e-9
+    assert t["format"] == "x3p" and t["heights"].shape == (5, 7)
+    assert np.allclose(t["heights"], expected, rtol=1e-15, atol=1e-24)
+    assert (t["lx"], t["ly"]) == (pytest.approx(3.5e-6), pytest.approx(1.25e-6))
+    assert t["metadata"]["creator"] == "pytest"
+    # Invalid points by the mask: refused, or filled.
+    valid = np.ones((5, 7), bool)
+    valid[2, 3] = False
+    write_x3p(tmp_path / "v.x3p", counts, 1e-12, 0.0, 0.5e-6, 0.25e-6, valid=valid)
+    with pytest.raises(ValueError, match="1 of 35 points are missing"):
+        coatfft.read_topography(tmp_path / "v.x3p")
+    # Bad files: one line, exit 2, no output.
+    write_x3p(tmp_path / "md5.x3p", counts, 1e-12, 0.0, 0.5e-6, 0.25e-6, spoil_md5=True)
+    (tmp_path / "cut.x3p").write_bytes((tmp_path / "s.x3p").read_bytes()[:200])
+    for name, message in (("md5.x3p", "MD5"), ("cut.x3p", "cut.x3p")):
+        run = subprocess.run([coatfft_exe, "topography", str(tmp_path / name), "-o",
+                              str(tmp_path / "o.nc")], capture_output=True, text=True)
+        assert run.returncode == 2 and message in run.stderr and run.stderr.count("\n") == 1
+        assert not (tmp_path / "o.nc").exists()
