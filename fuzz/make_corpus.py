@@ -85,6 +85,64 @@ def scene_seeds():
     }
 
 
+def x3p(counts_rows, data_type="L", valid=None, increment="1e-9"):
+    """A small ISO 25178-72 archive: int32 (or other) points x fastest, MD5 sums (hashlib)."""
+    import hashlib
+    import io
+    import zipfile
+    formats = {"I": "<h", "L": "<i", "F": "<f", "D": "<d"}
+    ny, nx = len(counts_rows), len(counts_rows[0])
+    data = b"".join(struct.pack(formats[data_type], v) for row in counts_rows for v in row)
+    link = ("<PointDataLink>bindata/data.bin</PointDataLink><MD5ChecksumPointData>"
+            + hashlib.md5(data).hexdigest() + "</MD5ChecksumPointData>")
+    if valid is not None:
+        link += ("<ValidPointsLink>bindata/valid.bin</ValidPointsLink><MD5ChecksumValidPoints>"
+                 + hashlib.md5(valid).hexdigest() + "</MD5ChecksumValidPoints>")
+    xml = ('<?xml version="1.0" encoding="UTF-8"?>\n<p:ISO5436_2 xmlns:p="http://www.opengps.eu/'
+           '2008/ISO5436_2"><Record1><Revision>ISO5436 - 2000</Revision><FeatureType>SUR'
+           '</FeatureType><Axes><CX><AxisType>I</AxisType><DataType>D</DataType><Increment>1e-6'
+           '</Increment><Offset>0</Offset></CX><CY><AxisType>I</AxisType><DataType>D</DataType>'
+           '<Increment>2e-6</Increment><Offset>0</Offset></CY><CZ><AxisType>A</AxisType>'
+           f'<DataType>{data_type}</DataType><Increment>{increment}</Increment><Offset>0</Offset>'
+           '</CZ></Axes></Record1><Record2><Date>2026-01-01T00:00:00</Date><Creator>corpus'
+           '</Creator></Record2><Record3><MatrixDimension>'
+           f'<SizeX>{nx}</SizeX><SizeY>{ny}</SizeY><SizeZ>1</SizeZ></MatrixDimension>'
+           f'<DataLink>{link}</DataLink></Record3><Record4><ChecksumFile>md5checksum.hex'
+           '</ChecksumFile></Record4></p:ISO5436_2>\n').encode()
+    out = io.BytesIO()
+    with zipfile.ZipFile(out, "w", zipfile.ZIP_STORED) as archive:
+        archive.writestr("main.xml", xml)
+        archive.writestr("md5checksum.hex", hashlib.md5(xml).hexdigest() + " *main.xml\n")
+        archive.writestr("bindata/data.bin", data)
+        if valid is not None:
+            archive.writestr("bindata/valid.bin", valid)
+    return out.getvalue()
+
+
+def topography_seeds():
+    """The first byte chooses the format (fuzz_topography.cpp): 0 X3P, 1 SDF, 2 x y z rows."""
+    sdf_header = ("aISO-1.0\r\nManufacID = corpus\r\nCreateDate = 010120260000\r\n"
+                  "ModDate = 010120260000\r\nNumPoints = 3\r\nNumProfiles = 2\r\n"
+                  "Xscale = 1.0E-6\r\nYscale = 2.0E-6\r\nZscale = 1.0E-9\r\n"
+                  "Zresolution = -1\r\nCompression = 0\r\nDataType = {}\r\nCheckType = 0\r\n"
+                  "NumDataSet = 1\r\nNanPresent = 0\r\n*\r\n")
+    binary = (b"bISO-1.0" + b"corpus".ljust(10, b"\0") + b"010120260000" + b"010120260000"
+              + struct.pack("<HHdddd", 3, 2, 1e-6, 2e-6, 1e-9, -1.0) + bytes([0, 5, 0])
+              + b"".join(struct.pack("<h", v) for v in (1, 2, 3, 4, 5, -32768)))
+    return {
+        "int32.x3p": b"\0" + x3p([[1, 2, 3], [4, 5, 6]]),
+        "int16_valid.x3p": b"\0" + x3p([[1, 2, 3, 4], [5, 6, 7, 8]], "I", valid=bytes([0xEF])),
+        "double.x3p": b"\0" + x3p([[0.5, 1.5], [2.5, float("nan")]], "D", increment="1"),
+        "double.sdf": b"\1" + (sdf_header.format(7) + "1.5 2.5 3.5\r\n4.5 5.5 BAD\r\n*\r\n").encode(),
+        "int16.sdf": b"\1" + (sdf_header.format(5) + "1 2 3 4 5 -32768\r\n*\r\n").encode(),
+        "binary.sdf": b"\1" + binary,
+        "mountainsmap.sdf": b"\1" + (REPO / "tests" / "data" / "topography"
+                                       / "mm11_iso1_ascii_int32.sdf").read_bytes(),
+        "rows.xyz": b"\2x y z\n0 0 1\n1 0 2\n0 1 3\n1 1 nan\n",
+        "shuffled.xyz": b"\5# comment\n1.0,0.5,3\n0.0,0.5,4\n0.0,0.0,1\n1.0,0.0,2\n",
+    }
+
+
 def write(folder, files):
     target = ROOT / "corpus" / folder
     shutil.rmtree(target, ignore_errors=True)
@@ -101,6 +159,7 @@ def main():
     write("fuzz_scene", scenes)
     write("fuzz_npy", npy_seeds())
     write("fuzz_csv", csv_seeds())
+    write("fuzz_topography", topography_seeds())
 
 
 if __name__ == "__main__":

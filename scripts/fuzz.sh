@@ -5,12 +5,12 @@
 # report or an exception other than InvalidArgument; its input is kept under
 # build-fuzz/fuzz/run/findings/TARGET/, the log in build-fuzz/fuzz/run/TARGET.log. docs/fuzz_report.md has more.
 # Usage: scripts/fuzz.sh [seconds-per-target]   (default 60)
-#        COATFFT_FUZZ_BUILD_DIR (default build-fuzz), COATFFT_FUZZ_TARGETS (default all three)
+#        COATFFT_FUZZ_BUILD_DIR (default build-fuzz), COATFFT_FUZZ_TARGETS (default all four)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
 build_dir=${COATFFT_FUZZ_BUILD_DIR:-build-fuzz}
-read -r -a targets <<<"${COATFFT_FUZZ_TARGETS:-fuzz_scene fuzz_npy fuzz_csv}"
+read -r -a targets <<<"${COATFFT_FUZZ_TARGETS:-fuzz_scene fuzz_npy fuzz_csv fuzz_topography}"
 
 if ! command -v clang++ >/dev/null; then
   echo "fuzz.sh: clang++ not found (scripts/setup.sh installs clang and libclang-rt-14-dev)" >&2
