@@ -50,6 +50,23 @@ double time_applications(const Scene& scene, SurfaceOperator& op, const Field& p
   return seconds;
 }
 
+// The body as the scene gives it: moduli [Pa], Poisson's ratios, coatings top first with their
+// thickness [m] and the interface below each; for an [frf] table, its file.
+nlohmann::json body_summary(const Scene& scene) {
+  const auto medium = [](const Material& m) {
+    return nlohmann::json{{"E", m.youngs_modulus()}, {"nu", m.poisson_ratio()}};
+  };
+  if (scene.frf) return {{"frf_table", scene.frf_file.string()}};
+  nlohmann::json coatings = nlohmann::json::array();
+  for (const Coating& c : scene.body->coatings()) {
+    nlohmann::json layer = medium(c.material);
+    layer["thickness"] = c.thickness;
+    layer["interface_below"] = c.interface_below == Interface::bonded ? "bonded" : "frictionless";
+    coatings.push_back(layer);
+  }
+  return {{"substrate", medium(scene.body->substrate())}, {"coatings", coatings}};
+}
+
 nlohmann::json common_summary(const Scene& scene, const Automatic& automatic,
                               const BuiltOperator& built, double apply_seconds, int repeat,
                               const Field& pressure, const Field& uz) {
@@ -57,6 +74,7 @@ nlohmann::json common_summary(const Scene& scene, const Automatic& automatic,
   nlohmann::json summary;
   summary["method"] = to_string(built.report.method);
   summary["boundary"] = scene.periodic ? "periodic" : "free";
+  summary["body"] = body_summary(scene);
   summary["nx"] = grid.nx();
   summary["ny"] = grid.ny();
   summary["lx"] = grid.lx();

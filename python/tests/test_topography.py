@@ -234,6 +234,10 @@ def test_run_writes_netcdf_equal_to_its_npy_files(coatfft_exe, tmp_path):
     with netCDF4.Dataset(tmp_path / "sweep_nc" / "fields.nc") as nc:
         assert np.allclose(nc["load"][:], [0.5, 1.0]) and nc["uz"].dimensions[0] == "sweep"
     assert summary["sweep"] == json.loads((tmp_path / "sweep_npy" / "summary.json").read_text())["sweep"]
+    # The body, from the scene: TiN (its E, nu) 20 um thick, bonded, on steel.
+    coating = coatfft.material("titanium_nitride")
+    assert summary["body"]["coatings"] == [{"E": coating.E, "nu": coating.nu, "thickness": 2e-5,
+                                            "interface_below": "bonded"}]
     same_maps("stress", ("uz", "pressure", "gap", "ux", "uy", "stress", "von_mises"))
     with netCDF4.Dataset(tmp_path / "stress_nc" / "fields.nc") as nc:
         for name in ("stress_section", "von_mises_section"):
