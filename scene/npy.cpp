@@ -190,9 +190,9 @@ std::string header_for_message(std::string_view header) {
   return quoted_excerpt(header.substr(0, end == std::string_view::npos ? 0 : end + 1));
 }
 
-// The layout of the array's values: IEEE floats of 4 or 8 bytes (float32 exports are common;
-// float16's three digits are not a topography), in either byte order ('=' and no mark are this
-// machine's, little endian), in C or Fortran order.
+// The layout of the array's values: IEEE floats of 8, 4 or 2 bytes (float32 exports are common,
+// float16 ones rarer: three digits), in either byte order ('=' and no mark are this machine's,
+// little endian), in C or Fortran order.
 struct NpyLayout {
   Shape shape;
   std::size_t bytes = 8;  // of one value
@@ -209,6 +209,8 @@ std::optional<NpyLayout> parse_dtype(std::string_view descr) {
   if (descr == "f8") return layout;
   layout.bytes = 4;
   if (descr == "f4") return layout;
+  layout.bytes = 2;
+  if (descr == "f2") return layout;
   return std::nullopt;
 }
 
@@ -220,7 +222,8 @@ NpyLayout npy_layout(const fs::path& path, std::string_view text) {
                   "): ", header_for_message(text));
   std::optional<NpyLayout> layout = parse_dtype(unquoted(*header.descr));
   COATFFT_REQUIRE(layout, path.string(),
-                  ": dtype must be float64 or float32 ('<f8', '>f8', '<f4', '>f4'), header is ",
+                  ": dtype must be float64, float32 or float16 ('<f8', '>f8', '<f4', '>f4', '<f2', "
+                  "'>f2'), header is ",
                   header_for_message(text));
   COATFFT_REQUIRE(*header.fortran_order == "False" || *header.fortran_order == "True",
                   path.string(), ": fortran_order must be False or True, header is ",
@@ -243,6 +246,11 @@ double npy_value(const unsigned char* data, std::size_t n, const NpyLayout& layo
     float f;
     std::memcpy(&f, bytes, 4);
     return f;
+  }
+  if (layout.bytes == 2) {
+    std::uint16_t bits;
+    std::memcpy(&bits, bytes, 2);
+    return static_cast<float>(Eigen::numext::bit_cast<Eigen::half>(bits));  // IEEE binary16
   }
   double d;
   std::memcpy(&d, bytes, 8);
@@ -344,7 +352,7 @@ Field read_npy(const fs::path& path, std::uintmax_t max_bytes) {
   const NpyStart npy = read_npy_start(file);
   const NpyLayout layout = npy_layout(path, npy.header);
   const std::size_t bytes = npy_data_bytes(path, npy, layout, file.size());
-  // rows x cols x (4 or 8) equals the data's size: both fit an Eigen::Index.
+  // rows x cols x (2, 4 or 8) equals the data's size: both fit an Eigen::Index.
   const auto rows = static_cast<Eigen::Index>(layout.shape.rows);
   const auto cols = static_cast<Eigen::Index>(layout.shape.cols);
   Field field(cols, rows);

@@ -26,7 +26,8 @@ void write_npy_array(const std::filesystem::path& path, std::span<const std::siz
 void write_npy(const std::filesystem::path& path, const Field& field);
 
 /// Reads a 2-D .npy file (format 1.0, 2.0 or 3.0) of shape (rows, cols) into a Field (cols,
-/// rows): float64 or float32 values ('<f8', '>f8', '<f4', '>f4'; '=' or no mark: little endian),
+/// rows): float64, float32 or float16 values ('<f8', '>f8', '<f4', '>f4', '<f2', '>f2'; '=' or no
+/// mark: little endian),
 /// in C or Fortran order (numpy's fortran_order), converted to double. The header must be a
 /// well-formed dict with exactly the keys 'descr', 'fortran_order' and 'shape', the shape two
 /// positive integers, and the file exactly the header followed by rows x cols x 8 bytes. Throws

@@ -76,7 +76,7 @@ TEST_CASE("npy: float32 and big-endian values, Fortran order: the same array", "
   // exports: the bytes made here independently of the reader.
   const auto write = [](const std::string& name, const std::string& descr, bool fortran) {
     const bool big = descr[0] == '>';
-    const std::size_t size = descr[2] == '4' ? 4 : 8;
+    const std::size_t size = descr[2] == '4' ? 4 : descr[2] == '2' ? 2 : 8;
     std::string data;
     for (int k = 0; k < 12; ++k) {
       const int r = fortran ? k % 3 : k / 4, c = fortran ? k / 3 : k % 4;
@@ -85,6 +85,13 @@ TEST_CASE("npy: float32 and big-endian values, Fortran order: the same array", "
       if (size == 4) {
         const float f = static_cast<float>(v);
         std::memcpy(b, &f, 4);
+      } else if (size == 2) {
+        // IEEE binary16 by its definition: v = 2^e (1 + m/1024), bits (e + 15) << 10 | m
+        // (every value here, 0.5 to 11.5, is exact in it).
+        const int e = static_cast<int>(std::floor(std::log2(v)));
+        const auto m = static_cast<std::uint16_t>(std::lround((v / std::ldexp(1.0, e) - 1) * 1024));
+        const auto bits = static_cast<std::uint16_t>((e + 15) << 10 | m);
+        std::memcpy(b, &bits, 2);
       } else {
         std::memcpy(b, &v, 8);
       }
@@ -102,7 +109,7 @@ TEST_CASE("npy: float32 and big-endian values, Fortran order: the same array", "
     out << header << data;
     return path;
   };
-  for (const char* descr : {"<f8", ">f8", "<f4", ">f4", "=f4"})
+  for (const char* descr : {"<f8", ">f8", "<f4", ">f4", "=f4", "<f2", ">f2"})
     for (bool fortran : {false, true}) {
       INFO(descr << (fortran ? " Fortran" : " C"));
       const Field f = coatfft::scene::read_npy(write("layout.npy", descr, fortran));
@@ -118,11 +125,11 @@ TEST_CASE("npy: refuses what it cannot read, naming the file", "[scene][npy][bad
   CHECK_THROWS_WITH(
       coatfft::scene::read_npy(npy_with_header(
           "int.npy", "{'descr': '<i4', 'fortran_order': False, 'shape': (3, 4), }", 6)),
-      Contains("int.npy") && Contains("float64 or float32"));
+      Contains("int.npy") && Contains("float64, float32 or float16"));
   CHECK_THROWS_WITH(
       coatfft::scene::read_npy(npy_with_header(
-          "half.npy", "{'descr': '<f2', 'fortran_order': False, 'shape': (3, 4), }", 3)),
-      Contains("float64 or float32"));
+          "quad.npy", "{'descr': '<f16', 'fortran_order': False, 'shape': (3, 4), }", 3)),
+      Contains("float64, float32 or float16"));
   CHECK_THROWS_WITH(
       coatfft::scene::read_npy(npy_with_header(
           "order.npy", "{'descr': '<f8', 'fortran_order': 1, 'shape': (3, 4), }", 12)),
