@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -11,6 +12,7 @@
 #include "contact/complementarity.hpp"
 #include "contact/fourier_preconditioner.hpp"
 #include "contact/initial_pressure.hpp"
+#include "core/detail/timing.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 
@@ -59,9 +61,13 @@ class PolonskyKeerIteration {
 
   // One iteration; the status once the iteration has ended, nothing while it goes on.
   std::optional<ContactStatus> iterate(double tolerance);
+  std::optional<ContactStatus> step(double tolerance);  // iterate() without its timing
 
   // The relative pressure change of the last step (infinity before the first).
   double residual() const { return residual_; }
+
+  // Where the iterations' time went so far (steps, recomputations, preconditioner, passes).
+  ContactTimings& timings() { return timings_; }
 
   // The result for the current iterate (one more operator application when its displacement is
   // not exact).
@@ -111,6 +117,21 @@ class PolonskyKeerIteration {
   // restart): set when the iteration stopped on I_c while cells outside it overlap.
   bool widen_ = false;
   int applications_ = 0;
+  ContactTimings timings_;
+};
+
+// Adds the wall time of its scope to `bucket` [s].
+class ScopedTimer {
+ public:
+  explicit ScopedTimer(double& bucket)
+      : bucket_(bucket), start_(std::chrono::steady_clock::now()) {}
+  ~ScopedTimer() { bucket_ += detail::seconds_since(start_); }
+  ScopedTimer(const ScopedTimer&) = delete;
+  ScopedTimer& operator=(const ScopedTimer&) = delete;
+
+ private:
+  double& bucket_;
+  std::chrono::steady_clock::time_point start_;
 };
 
 PolonskyKeerIteration::PolonskyKeerIteration(SurfaceOperator& op,
@@ -219,12 +240,24 @@ void PolonskyKeerIteration::scale_to_approach() {
 }
 
 void PolonskyKeerIteration::recompute_displacement() {
+  const ScopedTimer timer(timings_.recomputations);
   op_.apply(p_, u_);
   ++applications_;
   exact_ = true;
 }
 
 std::optional<ContactStatus> PolonskyKeerIteration::iterate(double tolerance) {
+  // The passes' time is what the iteration's time leaves after the timed parts.
+  const ContactTimings before = timings_;
+  const auto start = std::chrono::steady_clock::now();
+  const std::optional<ContactStatus> end = step(tolerance);
+  timings_.passes += detail::seconds_since(start) - (timings_.steps - before.steps) -
+                     (timings_.recomputations - before.recomputations) -
+                     (timings_.preconditioner - before.preconditioner);
+  return end;
+}
+
+std::optional<ContactStatus> PolonskyKeerIteration::step(double tolerance) {
   if (!exact_ || !update_by_linearity_) recompute_displacement();
   Gap gap = update_gap();
   if (gap.n_contact == 0) return ContactStatus::pressure_vanished;
@@ -329,7 +362,10 @@ void PolonskyKeerIteration::update_direction(std::ptrdiff_t n_working, double g_
   const double* direction = gd;
   if (preconditioner_) {
     for (std::ptrdiff_t k = 0; k < n_cells_; ++k) zd[k] = in_working_set(k) ? gd[k] : 0.0;
-    preconditioner_->apply(z_);
+    {
+      const ScopedTimer timer(timings_.preconditioner);
+      preconditioner_->apply(z_);
+    }
     double z_mean = 0.0;
     if (load_control_) {
       for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
@@ -356,7 +392,10 @@ void PolonskyKeerIteration::update_direction(std::ptrdiff_t n_working, double g_
 // approach, so it must not steer the step. This is also what makes the iterates independent of
 // the operator's g(0).
 std::optional<double> PolonskyKeerIteration::step_length(std::ptrdiff_t n_working) {
-  op_.apply(t_, r_);
+  {
+    const ScopedTimer timer(timings_.steps);
+    op_.apply(t_, r_);
+  }
   ++applications_;
   const double* gd = g_.data();
   const double* td = t_.data();
@@ -647,6 +686,7 @@ void ContactSolver::check_problem(const Field& h, ContactControl control, double
 ContactResult ContactSolver::run(const Field& h, ContactControl control, double value,
                                  const Field* start) {
   check_problem(h, control, value);
+  const auto solve_start = std::chrono::steady_clock::now();
   int scale_applications = 0;
   const double s =
       control == ContactControl::load ? load_scale(op_, h, value, scale_applications) : 1.0;
@@ -657,6 +697,8 @@ ContactResult ContactSolver::run(const Field& h, ContactControl control, double 
                   " m are too far apart for double precision; rescale their units");
   PolonskyKeerIteration iteration(op_, preconditioner_.get(), s == 1.0 ? h : h_scaled, control,
                                   value / s, options_.update_by_linearity, start);
+  const double start_seconds = detail::seconds_since(solve_start);
+  iteration.timings() = ContactTimings{};  // the start's recomputations are the start's
   ContactStatus status = ContactStatus::iteration_limit;
   int iterations = 0;
   while (iterations < options_.max_iterations) {
@@ -673,6 +715,9 @@ ContactResult ContactSolver::run(const Field& h, ContactControl control, double 
     }
   }
   ContactResult result = iteration.result(status, iterations, options_.compute_approach);
+  result.timings = iteration.timings();
+  result.timings.start = start_seconds;
+  result.timings.total = detail::seconds_since(solve_start);
   result.operator_applications += scale_applications;
   unscale(result, s, value);
   result.warning = describe(result, options_.tolerance);

@@ -79,6 +79,16 @@ enum class ContactStatus {
 std::string_view to_string(ContactStatus status);
 
 /// Output of one contact solve. Fields have the grid's shape (nx, ny).
+/// Where a solve's wall time went [s] (steady clock), for the benchmarks of the solver's cost
+/// (docs/benchmarks.md, "Where a contact iteration goes"): the operator applications of the
+/// steps (one an iteration), the recomputations of the displacement after a step changed the
+/// contact set (and for the result), the preconditioner's transforms, the element-wise passes
+/// over the fields (the rest of the iterations), and the start (scaling, initial pressure).
+struct ContactTimings {
+  double steps = 0, recomputations = 0, preconditioner = 0, passes = 0, start = 0;
+  double total = 0;  ///< the whole solve
+};
+
 struct ContactResult {
   Field pressure;      ///< p [Pa], >= 0 everywhere
   Field displacement;  ///< u = K p [m], positive into the body, as the operator returns it
@@ -113,6 +123,7 @@ struct ContactResult {
   /// Human-readable notes, describe(*this, tolerance): empty when all is well. For display only;
   /// programs read status and touches_boundary.
   std::string warning;
+  ContactTimings timings;
 };
 
 /// The notes on a result for users, derived from its status, touches_boundary, iterations and

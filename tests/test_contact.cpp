@@ -640,3 +640,21 @@ TEST_CASE("Extreme loads on ordinary heights: the asymptotes", "[contact][bad_in
                           Catch::Contains("which double precision cannot solve"));
   }
 }
+
+TEST_CASE("Solver timings: the parts are accounted once each, within the total",
+          "[contact][timings]") {
+  // Bookkeeping, not speed: every part is non-negative, the parts add up to no more than the
+  // whole solve, and a solve without a preconditioner spends nothing on one.
+  const HertzProblem hp(64);
+  DcfftOperator op(love_kernel(hp.grid, kModulus));
+  ContactOptions opts;
+  opts.preconditioned = GENERATE(true, false);
+  const ContactResult res = ContactSolver(op, opts).solve_load(hp.h, kLoad);
+  REQUIRE(res.converged);
+  const ContactTimings& t = res.timings;
+  for (const double part : {t.steps, t.recomputations, t.preconditioner, t.passes, t.start})
+    CHECK(part >= 0.0);
+  CHECK(t.steps > 0.0);
+  CHECK(t.steps + t.recomputations + t.preconditioner + t.passes + t.start <= t.total);
+  if (!opts.preconditioned) CHECK(t.preconditioner == 0.0);
+}
