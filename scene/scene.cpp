@@ -17,11 +17,10 @@
 #include "core/threads.hpp"
 #include "loads/load_limits.hpp"
 #include "materials/catalog.hpp"
-#include "scene/csv.hpp"
 #include "scene/frf_table_file.hpp"
+#include "scene/grid_file.hpp"
 #include "scene/input_file.hpp"
 #include "scene/method_request.hpp"
-#include "scene/npy.hpp"
 #include "scene/scene_topography.hpp"
 #include "stress/stress_kernel.hpp"
 #include "stress/stress_operator.hpp"
@@ -449,26 +448,6 @@ double positive(SectionReader& reader, std::string_view key) {
   return value;
 }
 
-Field read_height_map(const std::filesystem::path& file) {
-  const std::string ext = file.extension().string();
-  COATFFT_REQUIRE(ext == ".npy" || ext == ".csv", "[contact] path = ", file.string(),
-                  ": must end in .npy or .csv");
-  return ext == ".npy" ? read_npy(file) : read_csv_matrix(file);
-}
-
-// A height map or topography file of the grid's shape (ny, nx), every value finite.
-Field read_grid_file(const std::filesystem::path& file, const Grid& grid) {
-  Field h = read_height_map(file);
-  COATFFT_REQUIRE(h.rows() == grid.nx() && h.cols() == grid.ny(), file.string(), ": shape (",
-                  h.cols(), ", ", h.rows(), ") but the grid needs (ny, nx) = (", grid.ny(), ", ",
-                  grid.nx(), ")");
-  for (Eigen::Index j = 0; j < h.cols(); ++j)
-    for (Eigen::Index i = 0; i < h.rows(); ++i)
-      COATFFT_REQUIRE(std::isfinite(h(i, j)), file.string(), ": row ", j, ", column ", i,
-                      ": height ", h(i, j), " is not finite");
-  return h;
-}
-
 // [contact] topography = "FILE" (read by read_scene_topography): a measured surface's heights z
 // (peaks up, towards a rigid flat), `detrend` "none" (default: the file as it is), "mean" or
 // "plane" (its tilt on the instrument), pressed by a rigid flat: the gap max(z) - z
@@ -523,7 +502,7 @@ void read_indenter(SectionReader& reader, const SceneContext& context, ContactSp
     std::filesystem::path file = reader.string("path");
     if (file.is_relative()) file = scene_dir / file;
     spec.height_file = file;
-    spec.indenter = HeightMap{read_grid_file(file, grid)};
+    spec.indenter = HeightMap{read_grid_file(file, grid, "[contact] path", "height")};
   }
 }
 

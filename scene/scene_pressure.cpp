@@ -1,38 +1,21 @@
 #include "scene/scene_pressure.hpp"
 
-#include <cmath>
 
 #include "core/error.hpp"
 #include "loads/hertz_pressure.hpp"
 #include "loads/load_limits.hpp"
 #include "loads/uniform_disk_pressure.hpp"
-#include "scene/csv.hpp"
-#include "scene/npy.hpp"
+#include "scene/grid_file.hpp"
 
 namespace coatfft::scene {
 
 namespace {
 
-Field read_load_file(const std::filesystem::path& file, const Grid& grid, const char* key) {
-  const std::string ext = file.extension().string();
-  COATFFT_REQUIRE(ext == ".npy" || ext == ".csv", key, " = ", file.string(),
-                  ": must end in .npy or .csv");
-  Field p = ext == ".npy" ? read_npy(file) : read_csv_matrix(file);
-  COATFFT_REQUIRE(p.rows() == grid.nx() && p.cols() == grid.ny(), file.string(), ": shape (",
-                  p.cols(), ", ", p.rows(), ") but the grid needs (ny, nx) = (", grid.ny(), ", ",
-                  grid.nx(), ")");
-  for (Eigen::Index j = 0; j < p.cols(); ++j)
-    for (Eigen::Index i = 0; i < p.rows(); ++i)
-      COATFFT_REQUIRE(std::isfinite(p(i, j)), file.string(), ": row ", j, ", column ", i,
-                      ": value ", p(i, j), " is not finite");
-  return p;
-}
-
 Field pressure_from_scene(const Scene& scene) {
   const PressureSpec& spec = *scene.pressure;
   switch (spec.kind) {
     case PressureKind::file:
-      return read_load_file(spec.file, scene.grid, "[pressure] path");
+      return read_grid_file(spec.file, scene.grid, "[pressure] path", "value");
     case PressureKind::hertz:
       return hertz_pressure(scene.grid, spec.amplitude, spec.radius, spec.sampling);
     case PressureKind::uniform_disk:
@@ -71,8 +54,10 @@ Tractions scene_tractions(const Scene& scene, const Field& pressure) {
     (spec.along_x ? t.qx : t.qy) = spec.friction * pressure;
     return t;
   }
-  if (!spec.path_x.empty()) t.qx = read_load_file(spec.path_x, scene.grid, "[shear] path_x");
-  if (!spec.path_y.empty()) t.qy = read_load_file(spec.path_y, scene.grid, "[shear] path_y");
+  if (!spec.path_x.empty())
+    t.qx = read_grid_file(spec.path_x, scene.grid, "[shear] path_x", "value");
+  if (!spec.path_y.empty())
+    t.qy = read_grid_file(spec.path_y, scene.grid, "[shear] path_y", "value");
   return t;
 }
 

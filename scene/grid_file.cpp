@@ -1,0 +1,28 @@
+#include "scene/grid_file.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "core/error.hpp"
+#include "scene/csv.hpp"
+#include "scene/npy.hpp"
+
+namespace coatfft::scene {
+
+Field read_grid_file(const std::filesystem::path& file, const Grid& grid, std::string_view key,
+                     std::string_view value_word) {
+  const std::string ext = file.extension().string();
+  COATFFT_REQUIRE(ext == ".npy" || ext == ".csv", key, " = ", file.string(),
+                  ": must end in .npy or .csv");
+  Field f = ext == ".npy" ? read_npy(file) : read_csv_matrix(file);
+  COATFFT_REQUIRE(f.rows() == grid.nx() && f.cols() == grid.ny(), file.string(), ": shape (",
+                  f.cols(), ", ", f.rows(), ") but the grid needs (ny, nx) = (", grid.ny(), ", ",
+                  grid.nx(), ")");
+  for (Eigen::Index j = 0; j < f.cols(); ++j)
+    for (Eigen::Index i = 0; i < f.rows(); ++i)
+      COATFFT_REQUIRE(std::isfinite(f(i, j)), file.string(), ": row ", j, ", column ", i, ": ",
+                      value_word, " ", f(i, j), " is not finite");
+  return f;
+}
+
+}  // namespace coatfft::scene
