@@ -50,7 +50,9 @@ void topography_command(const TopographyOptions& o) {
         {{{"source", o.input.filename().string()}, {"format", t.format}}, {}});
     file->commit();
   }
-  std::cout << topography::topography_summary(t, heights, detrend)
+  const std::optional<Grid> sized = t.lx ? std::optional(grid) : std::nullopt;
+  std::cout << topography::topography_summary(t, heights, detrend, sized,
+                                              t.periodic.value_or(false))
                    .dump(2, ' ', false, nlohmann::json::error_handler_t::replace)
             << "\n";
 }

@@ -57,17 +57,15 @@ TopographyGap topography_gap(const SceneTopography& t, const Grid& grid, Detrend
                       grid.dy() * static_cast<double>(ny));
   const Field heights = detrended(map_grid, t.map.heights, detrend);
   const Field map_gap = gap_of_topography(heights);
-  TopographyGap out{Field::Constant(grid.nx(), grid.ny(),
-                                    pad_gap(map_gap.maxCoeff(), map_grid.lx(), map_grid.ly())),
-                    topography::topography_summary(t.map, heights, detrend)};
+  TopographyGap out{
+      Field::Constant(grid.nx(), grid.ny(),
+                      pad_gap(map_gap.maxCoeff(), map_grid.lx(), map_grid.ly())),
+      topography::topography_summary(t.map, heights, detrend, map_grid, periodic && pad == 0)};
   out.gap.block(pad, pad, nx, ny) = map_gap;
-  // The scene's grid, not the file's, sizes the map now.
+  // The scene's grid, not the file's, sizes the map (lx, ly, rms_slope above); the slope crosses
+  // the map's edges only where the map is its own periodic copy's neighbour.
   out.report["file"] = t.file.string();
-  out.report["lx"] = map_grid.lx();
-  out.report["ly"] = map_grid.ly();
   out.report["pad"] = pad;
-  // The map's own slope: across its edges only where it is its own periodic copy's neighbour.
-  out.report["rms_slope"] = rms_slope(map_grid, heights, periodic && pad == 0);
   out.report["edge_mismatch"] = nullptr;
   if (periodic && pad == 0) {
     const EdgeMismatch m = edge_mismatch(heights);

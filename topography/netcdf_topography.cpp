@@ -17,6 +17,7 @@
 #include "scene/input_file.hpp"
 #include "topography/formats.hpp"
 #include "topography/netcdf_file.hpp"
+#include "topography/reader_support.hpp"
 #include "topography/units.hpp"
 
 namespace coatfft::topography {
@@ -62,16 +63,16 @@ std::optional<std::string> unit_attribute(int file, int var) {
 }
 
 // What a coordinate variable (x or y) says: its length [its unit] and unit, and periodicity.
-struct Axis {
+struct Coordinate {
   std::optional<double> length;
   std::optional<std::string> unit;
   std::optional<bool> periodic;
 };
 
-Axis read_axis(const NetcdfFile& nc, const char* name) {
+Coordinate read_coordinate(const NetcdfFile& nc, const char* name) {
   int var = -1;
   if (nc_inq_varid(nc.id(), name, &var) != NC_NOERR) return {};
-  Axis axis{number_attribute(nc.id(), var, "length"), unit_attribute(nc.id(), var), {}};
+  Coordinate axis{number_attribute(nc.id(), var, "length"), unit_attribute(nc.id(), var), {}};
   if (const auto periodic = number_attribute(nc.id(), var, "periodic"))
     axis.periodic = *periodic != 0;
   COATFFT_REQUIRE(!axis.length || (std::isfinite(*axis.length) && *axis.length > 0),
@@ -137,8 +138,10 @@ Topography read_netcdf_topography(const std::filesystem::path& path, std::uintma
   std::array<std::size_t, 2> sizes{};
   const bool yx = y_first(nc, var, sizes);
   const std::size_t nx = yx ? sizes[1] : sizes[0], ny = yx ? sizes[0] : sizes[1];
-  COATFFT_REQUIRE(nx > 0 && ny > 0 && nx * ny <= max_bytes / sizeof(double), path.string(),
-                  ": heights of ", nx, " x ", ny, " points are empty or too large");
+  COATFFT_REQUIRE(nx > 0 && ny > 0, path.string(), ": heights of ", nx, " x ", ny,
+                  " points are empty");
+  // Checked without forming nx ny, which may overflow for the dimensions a file can declare.
+  require_point_limit(path, "heights: x * y", nx, ny, max_bytes);
   const std::vector<double> values = read_values(nc, var, nx * ny);
   Topography topography;
   topography.heights.resize(static_cast<Index>(nx), static_cast<Index>(ny));
@@ -146,10 +149,11 @@ Topography read_netcdf_topography(const std::filesystem::path& path, std::uintma
     for (std::size_t i = 0; i < nx; ++i)
       topography.heights(static_cast<Index>(i), static_cast<Index>(j)) =
           yx ? values[j * nx + i] : values[i * ny + j];
-  const Axis x = read_axis(nc, "x"), y = read_axis(nc, "y");
+  const Coordinate x = read_coordinate(nc, "x"), y = read_coordinate(nc, "y");
   topography.unit = unit_attribute(nc.id(), var).value_or(x.unit.value_or(y.unit.value_or("")));
   // The lengths in the heights' unit, each converted from its own axis's unit.
-  const auto in_height_unit = [&](const Axis& axis, const char* name) -> std::optional<double> {
+  const auto in_height_unit = [&](const Coordinate& axis,
+                                  const char* name) -> std::optional<double> {
     if (!axis.length) return {};
     if (!axis.unit || topography.unit.empty() || *axis.unit == topography.unit) return axis.length;
     const std::string where = path.string() + ": the unit of " + name;

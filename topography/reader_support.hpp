@@ -1,6 +1,12 @@
 #pragma once
-// Small pieces the topography readers share (x3p_topography.cpp, sdf_topography.cpp).
+// Small pieces the topography readers share (x3p_topography.cpp, sdf_topography.cpp,
+// netcdf_topography.cpp, topography.cpp).
+#include <charconv>
+#include <cstddef>
+#include <cstdint>
 #include <filesystem>
+#include <optional>
+#include <string>
 #include <string_view>
 
 #include "core/error.hpp"
@@ -19,6 +25,44 @@ inline std::string_view trimmed(std::string_view text) {
   const auto first = text.find_first_not_of(space);
   if (first == std::string_view::npos) return {};
   return text.substr(first, text.find_last_not_of(space) - first + 1);
+}
+
+/// `text` with its ASCII capitals made small (file extensions, hex digits, keywords).
+inline std::string lower_ascii(std::string_view text) {
+  std::string lower(text);
+  for (char& c : lower)
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+  return lower;
+}
+
+/// A number of type T as the whole of `text` (blanks around it and a leading '+' allowed, as
+/// std::from_chars reads it otherwise); nothing for anything else.
+template <typename T>
+std::optional<T> parse_number(std::string_view text) {
+  text = trimmed(text);
+  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+  T value{};
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || error != std::errc() || end != text.data() + text.size()) return std::nullopt;
+  return value;
+}
+
+/// The unsigned integer of `width` (<= 8) little-endian bytes at `bytes`.
+inline std::uint64_t little_endian(const char* bytes, std::size_t width) {
+  std::uint64_t word = 0;
+  for (std::size_t k = width; k-- > 0;)  // the last byte is the highest
+    word = (word << 8) | static_cast<unsigned char>(bytes[k]);
+  return word;
+}
+
+/// Refuses a map of nx x ny points whose heights (a double each) would exceed `max_bytes`, the
+/// file size limit, before anything is allocated; `sizes` names the counts ("SizeX * SizeY").
+inline void require_point_limit(const std::filesystem::path& path, std::string_view sizes,
+                                std::size_t nx, std::size_t ny, std::uintmax_t max_bytes) {
+  const std::uintmax_t max_points = max_bytes / sizeof(double);
+  if (nx > max_points || (nx > 0 && ny > max_points / nx))
+    refuse(path, sizes, " = ", nx, " * ", ny, " points, more than the limit of ", max_points,
+           " points (", max_bytes, " bytes)");
 }
 
 }  // namespace coatfft::topography

@@ -34,6 +34,7 @@ namespace fs = std::filesystem;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr std::string_view kSpace = " \t\r\n\f\v";
 
+// Without allocating: "BAD" is looked for in every value of a data section.
 bool equal_ignoring_case(std::string_view a, std::string_view b) {
   if (a.size() != b.size()) return false;
   for (std::size_t k = 0; k < a.size(); ++k) {
@@ -113,10 +114,7 @@ void check_header(const fs::path& path, const Header& header, std::uintmax_t max
   if (header.nx == 0 || header.ny == 0)
     refuse(path, "NumPoints = ", header.nx, ", NumProfiles = ", header.ny,
            ", but both must be >= 1");
-  const std::uintmax_t max_points = max_bytes / sizeof(double);
-  if (header.nx > max_points || header.ny > max_points / header.nx)
-    refuse(path, "NumPoints * NumProfiles = ", header.nx, " * ", header.ny,
-           " points, more than the limit of ", max_points, " points (", max_bytes, " bytes)");
+  require_point_limit(path, "NumPoints * NumProfiles", header.nx, header.ny, max_bytes);
   for (const auto& [name, value] :
        {std::pair{"Xscale", header.xscale}, std::pair{"Yscale", header.yscale},
         std::pair{"Zscale", header.zscale}})
@@ -135,16 +133,6 @@ void check_header(const fs::path& path, const Header& header, std::uintmax_t max
 // The ASCII header: "Keyword = value" lines (in ISO 25178-71's order, but found by name here,
 // ignoring case), comments starting with ';', ended by a line "*". Keywords the standard does
 // not name are kept as metadata.
-
-template <typename T>
-std::optional<T> parse_number(std::string_view text) {
-  text = trimmed(text);
-  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
-  T value{};
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (text.empty() || error != std::errc() || end != text.data() + text.size()) return std::nullopt;
-  return value;
-}
 
 template <typename T>
 T header_value(const fs::path& path, std::string_view keyword, std::string_view value) {
@@ -295,10 +283,7 @@ void read_trailer(std::string_view trailer, Header& header) {
 constexpr std::size_t kBinaryHeaderBytes = 8 + 10 + 12 + 12 + 2 + 2 + 4 * 8 + 3;
 
 std::uint64_t little_endian(std::string_view bytes, std::size_t offset, std::size_t width) {
-  std::uint64_t word = 0;
-  for (std::size_t k = width; k-- > 0;)
-    word = (word << 8) | static_cast<unsigned char>(bytes[offset + k]);
-  return word;
+  return topography::little_endian(bytes.data() + offset, width);
 }
 
 double binary_value(std::string_view bytes, std::size_t offset, int code) {

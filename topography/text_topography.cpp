@@ -25,11 +25,14 @@ std::vector<double> distinct_values(const Field& rows, Index column) {
   return values;
 }
 
-bool is_xyz(const Field& matrix) {
-  if (matrix.rows() != 3) return false;  // the Field is (columns, rows)
-  const auto nx = distinct_values(matrix, 0).size(), ny = distinct_values(matrix, 1).size();
-  return nx >= 2 && ny >= 2 && static_cast<Index>(nx * ny) == matrix.cols();
-}
+// The distinct x and y of three-column rows (the Field is (columns, rows)).
+struct Coordinates {
+  std::vector<double> xs, ys;
+  // Whether they make a grid of the rows: nx ny = rows, nx, ny >= 2.
+  bool grid(Index rows) const {
+    return xs.size() >= 2 && ys.size() >= 2 && static_cast<Index>(xs.size() * ys.size()) == rows;
+  }
+};
 
 // The spacing of sorted distinct coordinates, which must be uniform: each within 1 % of a
 // spacing of its place (files print coordinates with a few digits, so exact equality would
@@ -47,14 +50,13 @@ double uniform_spacing(const std::filesystem::path& path, const std::vector<doub
   return spacing;
 }
 
-Topography xyz_topography(const std::filesystem::path& path, const Field& rows) {
-  COATFFT_REQUIRE(rows.rows() == 3, path.string(), ": x y z rows need three columns, not ",
-                  rows.rows());
-  const std::vector<double> xs = distinct_values(rows, 0), ys = distinct_values(rows, 1);
-  COATFFT_REQUIRE(
-      xs.size() >= 2 && ys.size() >= 2 && static_cast<Index>(xs.size() * ys.size()) == rows.cols(),
-      path.string(), ": x y z rows: ", rows.cols(), " rows on ", xs.size(), " x values and ",
-      ys.size(), " y values do not make a regular grid (one row a point)");
+Topography xyz_topography(const std::filesystem::path& path, const Field& rows,
+                          const Coordinates& c) {
+  const std::vector<double>& xs = c.xs;
+  const std::vector<double>& ys = c.ys;
+  COATFFT_REQUIRE(c.grid(rows.cols()), path.string(), ": x y z rows: ", rows.cols(), " rows on ",
+                  xs.size(), " x values and ", ys.size(),
+                  " y values do not make a regular grid (one row a point)");
   const double dx = uniform_spacing(path, xs, "x"), dy = uniform_spacing(path, ys, "y");
   const auto nx = static_cast<Index>(xs.size()), ny = static_cast<Index>(ys.size());
   Topography topography;
@@ -79,7 +81,12 @@ Topography xyz_topography(const std::filesystem::path& path, const Field& rows) 
 Topography read_text_topography(const std::filesystem::path& path, std::uintmax_t max_bytes,
                                 bool xyz) {
   const Field matrix = scene::read_csv_matrix(path, max_bytes);
-  if (xyz || is_xyz(matrix)) return xyz_topography(path, matrix);
+  COATFFT_REQUIRE(!xyz || matrix.rows() == 3, path.string(),
+                  ": x y z rows need three columns, not ", matrix.rows());
+  if (matrix.rows() == 3) {
+    const Coordinates c{distinct_values(matrix, 0), distinct_values(matrix, 1)};
+    if (xyz || c.grid(matrix.cols())) return xyz_topography(path, matrix, c);
+  }
   Topography topography;
   topography.heights = matrix;
   topography.format = "csv";

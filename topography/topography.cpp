@@ -1,12 +1,11 @@
 #include "topography/topography.hpp"
 
-#include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <string>
 
 #include "core/error.hpp"
 #include "topography/formats.hpp"
+#include "topography/reader_support.hpp"
 #include "topography/units.hpp"
 
 namespace coatfft::topography {
@@ -21,15 +20,8 @@ MissingPoints missing_points_from_name(std::string_view name, std::string_view w
 }
 
 namespace {
-std::string lower_extension(const fs::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
-
 Topography read_format(const fs::path& path, std::uintmax_t max_bytes) {
-  const std::string ext = lower_extension(path);
+  const std::string ext = lower_ascii(path.extension().string());
   if (ext == ".npy") return read_npy_topography(path, max_bytes);
   if (ext == ".csv" || ext == ".txt" || ext == ".asc" || ext == ".xyz")
     return read_text_topography(path, max_bytes, ext == ".xyz");

@@ -10,14 +10,15 @@ Grid topography_grid(const Topography& t) {
               t.ly.value_or(static_cast<double>(ny)));
 }
 
-nlohmann::json topography_summary(const Topography& t, const Field& heights, Detrend detrend) {
+nlohmann::json topography_summary(const Topography& t, const Field& heights, Detrend detrend,
+                                  const std::optional<Grid>& sized, bool periodic) {
   using nlohmann::json;
   const char* detrends[] = {"none", "mean", "plane"};
   json out = {{"format", t.format},
               {"nx", t.heights.rows()},
               {"ny", t.heights.cols()},
-              {"lx", t.lx ? json(*t.lx) : json()},
-              {"ly", t.ly ? json(*t.ly) : json()},
+              {"lx", sized ? json(sized->lx()) : json()},
+              {"ly", sized ? json(sized->ly()) : json()},
               {"unit", t.unit.empty() ? json() : json(t.unit)},
               {"periodic", t.periodic ? json(*t.periodic) : json()},
               {"missing", t.missing},
@@ -26,7 +27,7 @@ nlohmann::json topography_summary(const Topography& t, const Field& heights, Det
               {"rms_slope", json()},
               {"min", heights.minCoeff()},
               {"max", heights.maxCoeff()}};
-  if (t.lx) out["rms_slope"] = rms_slope(topography_grid(t), heights, t.periodic.value_or(false));
+  if (sized) out["rms_slope"] = rms_slope(*sized, heights, periodic);
   json metadata = json::object();
   for (const auto& [name, value] : t.metadata) metadata[name] = value;
   out["metadata"] = metadata;

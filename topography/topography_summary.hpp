@@ -1,6 +1,7 @@
 #pragma once
 // What `coatfft topography` prints about a topography, and the grid it is read on.
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "core/grid.hpp"
 #include "surfaces/detrend.hpp"
@@ -12,10 +13,12 @@ namespace coatfft::topography {
 /// point (for detrending, which does not depend on the spacing; never for a contact).
 Grid topography_grid(const Topography& topography);
 
-/// {format, nx, ny, lx, ly, unit, periodic, missing, filled, detrend, rms_height, rms_slope, min,
-/// max, metadata} of `heights` (the topography's heights as detrended by `detrend`) [m]; lx, ly
-/// and rms_slope are null when the file carries no size, unit and periodic when it says nothing.
+/// {format, nx, ny, lx, ly, unit, periodic, missing, detrend, rms_height, rms_slope, min, max,
+/// metadata} of `heights` (the topography's heights as detrended by `detrend`) [m]. lx, ly and
+/// rms_slope are those of `sized`, the grid the map is read on (across its edges when
+/// `periodic`), and null without one (a file without a size); unit and periodic (the file's
+/// flag) null when the file says nothing.
 nlohmann::json topography_summary(const Topography& topography, const Field& heights,
-                                  Detrend detrend);
+                                  Detrend detrend, const std::optional<Grid>& sized, bool periodic);
 
 }  // namespace coatfft::topography

@@ -50,13 +50,6 @@ std::string md5_hex(std::string_view bytes) {
   return hex;
 }
 
-std::string lower_case(std::string_view text) {
-  std::string lower(text);
-  for (char& c : lower)
-    if (c >= 'A' && c <= 'F') c = static_cast<char>(c - 'A' + 'a');
-  return lower;
-}
-
 bool is_md5_hex(std::string_view text) {
   return text.size() == 32 &&
          text.find_first_not_of("0123456789abcdefABCDEF") == std::string_view::npos;
@@ -157,25 +150,23 @@ const XMLElement& require(const fs::path& path, const XMLElement* root, std::str
 }
 
 double number_of(const fs::path& path, const XMLElement& element, std::string_view where) {
-  std::string_view text = trimmed(element.GetText() ? element.GetText() : "");
-  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
-  double value = 0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (text.empty() || error != std::errc() || end != text.data() + text.size() ||
-      !std::isfinite(value))
-    refuse(path, "main.xml: ", where, " = ", scene::quoted_excerpt(text), " is not a number");
-  return value;
+  const std::string_view text = element.GetText() ? element.GetText() : "";
+  const auto value = parse_number<double>(text);
+  if (!value || !std::isfinite(*value))
+    refuse(path, "main.xml: ", where, " = ", scene::quoted_excerpt(trimmed(text)),
+           " is not a number");
+  return *value;
 }
 
 /// A matrix dimension (ISO 25178-72: an unsigned integer), at least 1.
 std::size_t size_of(const fs::path& path, const XMLElement* root, std::string_view where) {
   const std::string text = text_of(&require(path, root, where));
-  std::size_t value = 0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (text.empty() || error != std::errc() || end != text.data() + text.size() || value == 0)
+  const auto value =
+      text.empty() || text.front() == '+' ? std::nullopt : parse_number<std::size_t>(text);
+  if (!value || *value == 0)
     refuse(path, "main.xml: ", where, " = ", scene::quoted_excerpt(text),
            " is not a positive integer");
-  return value;
+  return *value;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -242,8 +233,7 @@ Axis read_axis(const fs::path& path, const XMLElement* root, std::string_view na
 // The whole record: what the reader needs of Record1 and Record3.
 
 struct Record {
-  Axis x, y, z;
-  ValueType type = ValueType::float64;
+  Axis x, y, z;  ///< z.type is set (read_record refuses a record without it)
   std::size_t nx = 0, ny = 0;
   const XMLElement* data_link = nullptr;  ///< Record3/DataLink, or
   const XMLElement* data_list = nullptr;  ///< Record3/DataList (inline <Datum> values)
@@ -257,10 +247,7 @@ void read_matrix_dimension(const fs::path& path, const XMLElement* root, Record&
   if (nz != 1)
     refuse(path, "main.xml: SizeZ = ", nz, ", but only a single layer (SizeZ = 1) is read");
   // Every point becomes a double: bound the map by the file size limit before allocating.
-  const std::uintmax_t max_points = max_bytes / sizeof(double);
-  if (record.nx > max_points || record.ny > max_points / record.nx)
-    refuse(path, "main.xml: SizeX * SizeY = ", record.nx, " * ", record.ny,
-           " points, more than the limit of ", max_points, " points (", max_bytes, " bytes)");
+  require_point_limit(path, "main.xml: SizeX * SizeY", record.nx, record.ny, max_bytes);
 }
 
 Record read_record(const fs::path& path, const XMLElement* root, std::uintmax_t max_bytes) {
@@ -273,7 +260,6 @@ Record read_record(const fs::path& path, const XMLElement* root, std::uintmax_t 
   record.y = read_axis(path, root, "CY");
   record.z = read_axis(path, root, "CZ");
   if (!record.z.type) refuse(path, "main.xml has no Record1/Axes/CZ/DataType");
-  record.type = *record.z.type;
   for (const auto& [axis, name] : {std::pair{&record.x, "CX"}, std::pair{&record.y, "CY"}})
     if (!(axis->increment > 0))
       refuse(path, "main.xml: Record1/Axes/", name, "/Increment = ", axis->increment,
@@ -304,9 +290,9 @@ void verify_record_checksum(const fs::path& path, const Archive& archive, const 
     refuse(path, checksum_file, " holds ", scene::quoted_excerpt(stated),
            ", not the MD5 checksum of main.xml (32 hex digits)");
   const std::string actual = md5_hex(main_xml);
-  if (lower_case(stated) != actual)
+  if (lower_ascii(stated) != actual)
     refuse(path, "main.xml does not match its MD5 checksum in ", checksum_file, " (",
-           lower_case(stated), "; the content's is ", actual, "): the file is damaged");
+           lower_ascii(stated), "; the content's is ", actual, "): the file is damaged");
 }
 
 void verify_data_checksum(const fs::path& path, const XMLElement* checksum,
@@ -317,8 +303,8 @@ void verify_data_checksum(const fs::path& path, const XMLElement* checksum,
     refuse(path, "main.xml: ", local_name(checksum->Name()), " = ", scene::quoted_excerpt(stated),
            " is not an MD5 checksum (32 hex digits)");
   const std::string actual = md5_hex(content);
-  if (lower_case(stated) != actual)
-    refuse(path, entry, " does not match its MD5 checksum in main.xml (", lower_case(stated),
+  if (lower_ascii(stated) != actual)
+    refuse(path, entry, " does not match its MD5 checksum in main.xml (", lower_ascii(stated),
            "; the content's is ", actual, "): the file is damaged");
 }
 
@@ -327,9 +313,7 @@ void verify_data_checksum(const fs::path& path, const XMLElement* checksum,
 // is the column-major order of a Field (nx, ny).
 
 double decode(const char* bytes, ValueType type) {
-  std::uint64_t word = 0;
-  for (std::size_t k = bytes_of(type); k-- > 0;)  // little endian: the last byte is the highest
-    word = (word << 8) | static_cast<unsigned char>(bytes[k]);
+  const std::uint64_t word = little_endian(bytes, bytes_of(type));
   switch (type) {
     case ValueType::int16:
       return static_cast<std::int16_t>(static_cast<std::uint16_t>(word));
@@ -346,14 +330,15 @@ double decode(const char* bytes, ValueType type) {
 Field decode_point_data(const fs::path& path, const Record& record, const std::string& entry,
                         const std::string& data) {
   const std::size_t count = record.nx * record.ny;
-  const std::size_t width = bytes_of(record.type);
+  const ValueType type = *record.z.type;
+  const std::size_t width = bytes_of(type);
   if (data.size() != count * width)
     refuse(path, entry, ": ", data.size(), " bytes, but SizeX * SizeY = ", record.nx, " * ",
            record.ny, " values of ", width, " bytes take ", count * width,
            data.size() < count * width ? " (truncated)" : "");
   Field heights(record.nx, record.ny);
   double* out = heights.data();  // column-major (nx, ny): x fastest, as in the file
-  for (std::size_t k = 0; k < count; ++k) out[k] = decode(data.data() + k * width, record.type);
+  for (std::size_t k = 0; k < count; ++k) out[k] = decode(data.data() + k * width, type);
   return heights;
 }
 
