@@ -91,8 +91,7 @@ void write_stress_outputs(StagedOutput& out, const scene::OutputSpec& spec, cons
 
 // The fields of a sweep, one per value, as one array (n_values, ny, nx).
 void write_stacked(const std::filesystem::path& path, const std::vector<Field>& fields) {
-  std::vector<double> values;
-  for (const Field& f : fields) values.insert(values.end(), f.data(), f.data() + f.size());
+  const std::vector<double> values = scene::stacked_fields(fields);
   const std::size_t shape[3] = {fields.size(), static_cast<std::size_t>(fields.front().cols()),
                                 static_cast<std::size_t>(fields.front().rows())};
   scene::write_npy_array(path, shape, values);

@@ -23,7 +23,7 @@ std::span<const double> values(const Field& f) {
 
 // A sweep's fields, stacked as its .npy files are (n_values, ny, nx), kept alive by `store`.
 std::span<const double> stacked(const std::vector<Field>& fields, std::vector<double>& store) {
-  for (const Field& f : fields) store.insert(store.end(), f.data(), f.data() + f.size());
+  store = stacked_fields(fields);
   return store;
 }
 

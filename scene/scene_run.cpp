@@ -479,6 +479,12 @@ SceneRun compute_scene(PreparedScene prepared, const SceneRunOptions& options) {
   return run;
 }
 
+std::vector<double> stacked_fields(const std::vector<Field>& fields) {
+  std::vector<double> values;
+  for (const Field& f : fields) values.insert(values.end(), f.data(), f.data() + f.size());
+  return values;
+}
+
 std::string sweep_csv(const nlohmann::json& rows) {
   std::ostringstream csv;
   csv.precision(std::numeric_limits<double>::max_digits10);

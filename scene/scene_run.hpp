@@ -54,6 +54,10 @@ struct SceneRun {
 /// operator_applications, converged (1 or 0), max_penetration, at full precision.
 std::string sweep_csv(const nlohmann::json& rows);
 
+/// A sweep's fields (each (nx, ny)) as one C-order array (n_values, ny, nx): the layout of the
+/// stacked .npy files and of fields.nc's (sweep, ...) variables.
+std::vector<double> stacked_fields(const std::vector<Field>& fields);
+
 struct SceneRunOptions {
   int repeat = 1;  ///< operator applications timed; apply_seconds is their median
   /// Memory the run may use [bytes]; by default what the machine has available.
