@@ -11,6 +11,7 @@
 
 #include "contact/complementarity.hpp"
 #include "contact/fourier_preconditioner.hpp"
+#include "contact/grid_transfer.hpp"
 #include "contact/initial_pressure.hpp"
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
@@ -54,10 +55,11 @@ void append(std::string& text, const std::string& more) {
 // (initial_pressure.hpp): close to the solution, the contact set settles in a few iterations.
 class PolonskyKeerIteration {
  public:
-  // `start`, when not null, is the pressure to start from (a warm start: start_from_pressure).
+  // `start`, when given, is the pressure to start from (a warm or nested start:
+  // start_from_pressure).
   PolonskyKeerIteration(SurfaceOperator& op, detail::FourierPreconditioner* preconditioner,
                         const Field& h, ContactControl control, double value,
-                        bool update_by_linearity, const Field* start);
+                        const ContactOptions& options, std::optional<Field> start);
 
   // One iteration; the status once the iteration has ended, nothing while it goes on.
   std::optional<ContactStatus> iterate(double tolerance);
@@ -80,7 +82,7 @@ class PolonskyKeerIteration {
     double norm;               // sum of g^2 over the working set
   };
 
-  void start(const Field* warm);
+  void start(std::optional<Field> warm);
   void start_from_pressure();
   void start_uniform();
   void start_hertzian();
@@ -89,7 +91,7 @@ class PolonskyKeerIteration {
   Gap update_gap();
   bool in_working_set(std::ptrdiff_t k) const;
   bool complementary(double tolerance);
-  void update_direction(std::ptrdiff_t n_working, double g_norm);
+  void update_direction(std::ptrdiff_t n_working);
   std::optional<double> step_length(std::ptrdiff_t n_working);
   double project(double tau);
   double enforce_load(double p_sum);
@@ -105,9 +107,13 @@ class PolonskyKeerIteration {
   double cell_area_;
   std::ptrdiff_t n_cells_;
   Field p_, u_, g_, t_, r_, p_old_;
-  Field z_;  // preconditioned gap (g itself serves when not preconditioned)
+  // Polak-Ribiere: the previous gap on its working set (empty for Polonsky & Keer's rule). The
+  // preconditioned gap z lives in the preconditioner's own field (g itself serves without one).
+  Field g_prev_;
   double g_dot_z_old_ = 1.0;
-  // Polonsky & Keer's delta: keep the previous direction (the last step added no contact cells).
+  Conjugation conjugation_;
+  // Keep the previous direction: false before the first step and, under Polonsky & Keer's rule,
+  // after a step that added contact cells.
   bool conjugate_ = false;
   double residual_ = std::numeric_limits<double>::infinity();
   // false: Polonsky & Keer's original (uniform start, u = K p recomputed at every iteration).
@@ -137,7 +143,8 @@ class ScopedTimer {
 PolonskyKeerIteration::PolonskyKeerIteration(SurfaceOperator& op,
                                              detail::FourierPreconditioner* preconditioner,
                                              const Field& h, ContactControl control, double value,
-                                             bool update_by_linearity, const Field* start_pressure)
+                                             const ContactOptions& options,
+                                             std::optional<Field> start_pressure)
     : op_(op),
       preconditioner_(preconditioner),
       h_(h),
@@ -153,15 +160,17 @@ PolonskyKeerIteration::PolonskyKeerIteration(SurfaceOperator& op,
       t_(Field::Zero(h.rows(), h.cols())),  // read (times beta = 0) by the first iteration
       r_(h.rows(), h.cols()),
       p_old_(h.rows(), h.cols()),
-      z_(h.rows(), h.cols()),
-      update_by_linearity_(update_by_linearity) {
-  start(start_pressure);
+      conjugation_(options.conjugation),
+      update_by_linearity_(options.update_by_linearity) {
+  if (conjugation_ == Conjugation::polak_ribiere) g_prev_ = Field::Zero(h.rows(), h.cols());
+  start(std::move(start_pressure));
 }
 
 // The initial pressure.
-void PolonskyKeerIteration::start(const Field* warm) {
+void PolonskyKeerIteration::start(std::optional<Field> warm) {
   if (warm) {
-    p_ = warm->max(0.0);
+    p_ = std::move(*warm);
+    p_ = p_.max(0.0);
     if (p_.sum() > 0) {
       start_from_pressure();
       return;
@@ -269,7 +278,7 @@ std::optional<ContactStatus> PolonskyKeerIteration::step(double tolerance) {
     widen_ = true;
     gap = update_gap();
   }
-  update_direction(gap.n_working, gap.norm);
+  update_direction(gap.n_working);
   const std::optional<double> tau = step_length(gap.n_working);
   widen_ = false;
   if (!tau) return ContactStatus::non_positive_curvature;
@@ -311,12 +320,16 @@ PolonskyKeerIteration::Gap PolonskyKeerIteration::update_gap() {
   g_mean_ = load_control_ ? g_sum / static_cast<double>(n_contact) : 0.0;
   std::ptrdiff_t n_working = 0;
   double g_norm = 0.0;
+  // The preconditioner's input, P g, written in the same pass (update_direction).
+  double* zd = preconditioner_ ? preconditioner_->data() : nullptr;
   for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
     gd[k] -= g_mean_;
-    if (in_working_set(k)) {
+    const bool working = in_working_set(k);
+    if (working) {
       ++n_working;
       g_norm += gd[k] * gd[k];
     }
+    if (zd) zd[k] = working ? gd[k] : 0.0;
   }
   return {n_contact, n_working, g_norm};
 }
@@ -352,37 +365,45 @@ bool PolonskyKeerIteration::complementary(double tolerance) {
 // multiplier) and P the restriction to I_c (and, under load control, to zero mean on I_c, the
 // tangent space of the load constraint); P M P is symmetric positive definite there, so this is
 // preconditioned CG on the contact block, and a constant in g still cancels. Unpreconditioned:
-// z = g. Then t = z + beta t, Polonsky & Keer's conjugate direction, restarted (beta = 0) after
-// an iteration that added contact cells and on a widened working set.
-void PolonskyKeerIteration::update_direction(std::ptrdiff_t n_working, double g_norm) {
-  const double* gd = g_.data();
-  double* zd = z_.data();
-  double* td = t_.data();
-  double g_dot_z = g_norm;
-  const double* direction = gd;
-  if (preconditioner_) {
-    for (std::ptrdiff_t k = 0; k < n_cells_; ++k) zd[k] = in_working_set(k) ? gd[k] : 0.0;
-    {
-      const ScopedTimer timer(timings_.preconditioner);
-      preconditioner_->apply(z_);
-    }
-    double z_mean = 0.0;
-    if (load_control_) {
-      for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
-        if (in_working_set(k)) z_mean += zd[k];
-      }
-      z_mean /= static_cast<double>(n_working);
-    }
-    g_dot_z = 0.0;
-    for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
-      zd[k] = in_working_set(k) ? zd[k] - z_mean : 0.0;
-      g_dot_z += gd[k] * zd[k];
-    }
-    direction = zd;
+// z = g. Then t = z + beta t (Conjugation), beta = 0 on the first step and on a widened working
+// set. Two passes: one for the sums (z's mean and the products beta needs, the mean removed
+// afterwards: sum w (z - m) = sum w z - m sum w), one that writes t (and keeps g for the next
+// beta).
+void PolonskyKeerIteration::update_direction(std::ptrdiff_t n_working) {
+  if (preconditioner_) {  // update_gap filled its field with P g
+    const ScopedTimer timer(timings_.preconditioner);
+    preconditioner_->apply();
   }
-  const double beta = conjugate_ && !widen_ ? g_dot_z / g_dot_z_old_ : 0.0;
+  const double* gd = g_.data();
+  const double* zd = preconditioner_ ? preconditioner_->data() : gd;
+  double* td = t_.data();
+  double* qd = g_prev_.size() > 0 ? g_prev_.data() : nullptr;
+  double z_sum = 0.0, g_sum = 0.0, q_sum = 0.0, g_dot_z = 0.0, q_dot_z = 0.0;
   for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
-    td[k] = in_working_set(k) ? direction[k] + beta * td[k] : 0.0;
+    if (!in_working_set(k)) continue;
+    z_sum += zd[k];
+    g_sum += gd[k];
+    g_dot_z += gd[k] * zd[k];
+    if (qd) {
+      q_sum += qd[k];
+      q_dot_z += qd[k] * zd[k];
+    }
+  }
+  // Unpreconditioned, z = g already has zero mean on I_c under load control.
+  const double z_mean =
+      preconditioner_ && load_control_ ? z_sum / static_cast<double>(n_working) : 0.0;
+  g_dot_z -= z_mean * g_sum;
+  q_dot_z -= z_mean * q_sum;
+  double beta = 0.0;
+  if (conjugate_ && !widen_) {
+    beta = conjugation_ == Conjugation::polak_ribiere
+               ? std::max(0.0, (g_dot_z - q_dot_z) / g_dot_z_old_)
+               : g_dot_z / g_dot_z_old_;
+  }
+  for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
+    const bool working = in_working_set(k);
+    td[k] = working ? zd[k] - z_mean + beta * td[k] : 0.0;
+    if (qd) qd[k] = working ? gd[k] : 0.0;
   }
   g_dot_z_old_ = g_dot_z;
 }
@@ -390,7 +411,7 @@ void PolonskyKeerIteration::update_direction(std::ptrdiff_t n_working, double g_
 // Step 3: step length tau along t, or nothing when the curvature r.t is not positive. Under load
 // control the mean of r = K t over I_c is removed: a constant displacement is absorbed by the
 // approach, so it must not steer the step. This is also what makes the iterates independent of
-// the operator's g(0).
+// the operator's g(0). One pass: sum (r - m) t = sum r t - m sum t.
 std::optional<double> PolonskyKeerIteration::step_length(std::ptrdiff_t n_working) {
   {
     const ScopedTimer timer(timings_.steps);
@@ -400,29 +421,24 @@ std::optional<double> PolonskyKeerIteration::step_length(std::ptrdiff_t n_workin
   const double* gd = g_.data();
   const double* td = t_.data();
   const double* rd = r_.data();
-  double r_mean = 0.0;
-  if (load_control_) {
-    for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
-      if (in_working_set(k)) r_mean += rd[k];
-    }
-    r_mean /= static_cast<double>(n_working);
-  }
-  double numerator = 0.0;
-  double denominator = 0.0;
+  double r_sum = 0.0, t_sum = 0.0, g_dot_t = 0.0, r_dot_t = 0.0;
   for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
-    if (in_working_set(k)) {
-      numerator += gd[k] * td[k];
-      denominator += (rd[k] - r_mean) * td[k];
-    }
+    if (!in_working_set(k)) continue;
+    r_sum += rd[k];
+    t_sum += td[k];
+    g_dot_t += gd[k] * td[k];
+    r_dot_t += rd[k] * td[k];
   }
-  if (!(denominator > 0) || !std::isfinite(numerator)) return std::nullopt;
-  return numerator / denominator;
+  const double r_mean = load_control_ ? r_sum / static_cast<double>(n_working) : 0.0;
+  const double denominator = r_dot_t - r_mean * t_sum;
+  if (!(denominator > 0) || !std::isfinite(g_dot_t)) return std::nullopt;
+  return g_dot_t / denominator;
 }
 
 // Step 4: p <- max(p - tau t, 0), keeping the previous iterate in p_old; cells that overlap
-// (p = 0, g < 0) get pressure -tau g and restart the conjugation. The displacement follows by
-// linearity, u <- u - tau r, which stays exact unless the projection changed a cell. Returns
-// sum p.
+// (p = 0, g < 0) get pressure -tau g (and under Polonsky & Keer's rule restart the conjugation).
+// The displacement follows by
+// linearity, u <- u - tau r, which stays exact unless the projection changed a cell. Returns sum p.
 double PolonskyKeerIteration::project(double tau) {
   const double* gd = g_.data();
   const double* td = t_.data();
@@ -430,8 +446,8 @@ double PolonskyKeerIteration::project(double tau) {
   double* pd = p_.data();
   double* qd = p_old_.data();
   double* ud = u_.data();
-  conjugate_ = true;
   bool projected = false;
+  bool added = false;
   double p_sum = 0.0;
   for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
     qd[k] = pd[k];
@@ -442,7 +458,7 @@ double PolonskyKeerIteration::project(double tau) {
     }
     if (pk == 0.0 && gd[k] < 0.0) {
       pk = -tau * gd[k];
-      conjugate_ = false;
+      added = true;
       projected = true;
     }
     pd[k] = pk;
@@ -450,6 +466,7 @@ double PolonskyKeerIteration::project(double tau) {
     p_sum += pk;
   }
   exact_ = exact_ && !projected;
+  conjugate_ = conjugation_ == Conjugation::polak_ribiere || !added;
   return p_sum;
 }
 
@@ -624,12 +641,12 @@ void ContactSolver::check_value(ContactControl control, double value) const {
 
 ContactResult ContactSolver::solve_load(const Field& height, double load) {
   check_value(ContactControl::load, load);
-  return run(height, ContactControl::load, load, nullptr);
+  return run(height, ContactControl::load, load, std::nullopt);
 }
 
 ContactResult ContactSolver::solve_approach(const Field& height, double approach) {
   check_value(ContactControl::approach, approach);
-  return run(height, ContactControl::approach, approach, nullptr);
+  return run(height, ContactControl::approach, approach, std::nullopt);
 }
 
 ContactResult ContactSolver::solve(const Field& height, ContactControl control, double value) {
@@ -646,8 +663,8 @@ std::vector<ContactResult> ContactSolver::solve_sweep(const Field& height, Conta
   }
   std::sort(values.begin(), values.end());
   std::vector<ContactResult> results;
-  Field start;
   for (const double value : values) {
+    Field start;
     const std::size_t k = results.size();
     if (k >= 2 && values[k - 1] > values[k - 2]) {
       // The secant through the last two solutions: exact while the contact set holds (p is then
@@ -657,7 +674,8 @@ std::vector<ContactResult> ContactSolver::solve_sweep(const Field& height, Conta
     } else if (k >= 1) {
       start = results[k - 1].pressure;
     }
-    results.push_back(run(height, control, value, k == 0 ? nullptr : &start));
+    results.push_back(run(height, control, value,
+                          k == 0 ? std::nullopt : std::optional<Field>(std::move(start))));
   }
   return results;
 }
@@ -683,11 +701,42 @@ void ContactSolver::check_problem(const Field& h, ContactControl control, double
   }
 }
 
+// Nested start: the coarse problem is the same contact on the coarse operator (the Galerkin
+// product R K P) with the heights' 2 x 2 means R h and the same load or approach; its pressure,
+// carried to the fine cells, starts the fine iteration near its solution, so the fine grid spends
+// its iterations on what the coarse one cannot resolve (docs/contact.md, "Nested start").
+std::optional<Field> ContactSolver::nested_start(const Field& h, ContactControl control,
+                                                 double value, ContactResult& applications) {
+  constexpr std::ptrdiff_t coarsest = 64;    // cells per side of the coarsest grid
+  constexpr double coarse_tolerance = 1e-4;  // a start needs no more (docs/contact.md)
+  const Grid& grid = op_.grid();
+  if (!options_.nested_start || grid.nx() % 2 != 0 || grid.ny() % 2 != 0 ||
+      std::min(grid.nx(), grid.ny()) < 2 * coarsest)
+    return std::nullopt;
+  Field h_coarse = detail::restrict_by_mean(h);
+  // The means' minimum lies above min(h): an approach just beyond min(h) may miss them.
+  if (control == ContactControl::approach && !(value > h_coarse.minCoeff())) return std::nullopt;
+  const std::unique_ptr<SurfaceOperator> coarse = op_.coarsened();
+  if (!coarse) return std::nullopt;
+  ++applications.operator_applications;
+  ContactOptions options = options_;
+  options.tolerance = std::max(options_.tolerance, coarse_tolerance);
+  options.compute_approach = false;
+  options.on_iteration = nullptr;
+  ContactSolver solver(*coarse, options);
+  const ContactResult result = solver.solve(h_coarse, control, value);
+  applications.coarse_applications += result.operator_applications + result.coarse_applications;
+  if (!(result.pressure.sum() > 0)) return std::nullopt;
+  return detail::prolong_by_cell(result.pressure);
+}
+
 ContactResult ContactSolver::run(const Field& h, ContactControl control, double value,
-                                 const Field* start) {
+                                 std::optional<Field> start) {
   check_problem(h, control, value);
   const auto solve_start = std::chrono::steady_clock::now();
-  int scale_applications = 0;
+  ContactResult nested;  // the applications of a nested start
+  if (!start) start = nested_start(h, control, value, nested);
+  int scale_applications = nested.operator_applications;
   const double s =
       control == ContactControl::load ? load_scale(op_, h, value, scale_applications) : 1.0;
   const Field h_scaled = s == 1.0 ? Field() : Field(h / s);
@@ -696,7 +745,7 @@ ContactResult ContactSolver::run(const Field& h, ContactControl control, double 
                   h.maxCoeff() - h.minCoeff(),
                   " m are too far apart for double precision; rescale their units");
   PolonskyKeerIteration iteration(op_, preconditioner_.get(), s == 1.0 ? h : h_scaled, control,
-                                  value / s, options_.update_by_linearity, start);
+                                  value / s, options_, std::move(start));
   const double start_seconds = detail::seconds_since(solve_start);
   iteration.timings() = ContactTimings{};  // the start's recomputations are the start's
   ContactStatus status = ContactStatus::iteration_limit;
@@ -719,6 +768,7 @@ ContactResult ContactSolver::run(const Field& h, ContactControl control, double 
   result.timings.start = start_seconds;
   result.timings.total = detail::seconds_since(solve_start);
   result.operator_applications += scale_applications;
+  result.coarse_applications = nested.coarse_applications;
   unscale(result, s, value);
   result.warning = describe(result, options_.tolerance);
   return result;

@@ -18,6 +18,19 @@
 
 namespace coatfft {
 
+/// How the search direction carries the previous one (the conjugation's beta).
+enum class Conjugation {
+  /// Polonsky & Keer (1999): Fletcher-Reeves' beta = (g.z) / (g.z)_old, restarted (beta = 0)
+  /// after every step that added contact cells.
+  polonsky_keer,
+  /// Polak-Ribiere's beta = max(0, z.(g - g_old)) / (g.z)_old (Gilbert & Nocedal 1992's
+  /// non-negative form), never restarted for added cells: the difference g - g_old discounts what
+  /// a change of the contact set did to the gap, so the direction keeps its memory while the set
+  /// settles (Bugnicourt et al. 2018 drop the restart in the same spirit). Fewer iterations on
+  /// rough surfaces (docs/contact.md, "Conjugation").
+  polak_ribiere,
+};
+
 /// Stopping rule and limits of the iteration.
 struct ContactOptions {
   /// Converged when the relative pressure change of one iteration,
@@ -43,6 +56,15 @@ struct ContactOptions {
   /// u = K p recomputed at every iteration (two applications per iteration). Both solve the same
   /// problem to the same stopping rule.
   bool update_by_linearity = true;
+  /// The conjugation of the search direction (Conjugation).
+  Conjugation conjugation = Conjugation::polak_ribiere;
+  /// Start a cold solve from the same contact solved on coarser grids (half the cells per side
+  /// each, down to 64 cells, to a relative pressure change of 1e-4, each started the same way),
+  /// its pressure carried to the fine grid cell by cell (docs/contact.md, "Nested start"). Only
+  /// where the operator offers its coarse form (SurfaceOperator::coarsened: periodic and DC-FFT
+  /// operators on even grids); a warm start (solve_sweep) does not use it. Off: the start of
+  /// update_by_linearity.
+  bool nested_start = true;
   /// Called, when set, after every iteration that took a step (all but a breakdown), with the
   /// iteration's number (1, 2, ...) and the residual it left (the relative pressure change, as
   /// ContactResult::residual): a caller can show progress, since the solver itself never prints.
@@ -109,6 +131,9 @@ struct ContactResult {
   /// Operator applications the solve made (the dominant cost): one per iteration, plus the
   /// displacement's recomputations (ContactOptions::update_by_linearity).
   int operator_applications = 0;
+  /// Applications on the coarser grids of a nested start (ContactOptions::nested_start), each
+  /// on a quarter (or less) of the cells of a fine one; 0 without.
+  int coarse_applications = 0;
   double residual = 0;  ///< last relative pressure change (see ContactOptions::tolerance)
   /// How the iteration ended; a result that no solve filled counts as not converged.
   ContactStatus status = ContactStatus::iteration_limit;
@@ -181,7 +206,13 @@ class ContactSolver {
   void check_value(ContactControl control, double value) const;
   // The height field against the operator's grid, and an approach against the heights.
   void check_problem(const Field& height, ContactControl control, double value) const;
-  ContactResult run(const Field& height, ContactControl control, double value, const Field* start);
+  ContactResult run(const Field& height, ContactControl control, double value,
+                    std::optional<Field> start);
+  // The pressure of the same contact solved on the coarser grid, on this grid; nothing where the
+  // grid is too small or the operator has no coarse form. Adds the coarse solve's applications
+  // (its own, and on this grid the one that built the coarse operator) to `applications`.
+  std::optional<Field> nested_start(const Field& height, ContactControl control, double value,
+                                    ContactResult& applications);
 
   SurfaceOperator& op_;
   ContactOptions options_;

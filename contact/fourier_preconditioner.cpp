@@ -40,13 +40,17 @@ FourierPreconditioner::FourierPreconditioner(const Grid& grid, int threads)
 void FourierPreconditioner::apply(Field& field) {
   const auto n_real = static_cast<std::size_t>(nx_ * ny_);
   std::copy_n(field.data(), n_real, real_.data());
+  apply();
+  std::copy_n(real_.data(), n_real, field.data());
+}
+
+void FourierPreconditioner::apply() {
   forward_.execute();
   std::complex<double>* s = as_complex(spectrum_.data());
   const double* sigma = sigma_.data();
   const auto n_complex = static_cast<std::size_t>(hx_ * ny_);
   for (std::size_t q = 0; q < n_complex; ++q) s[q] *= sigma[q];
   backward_.execute();
-  std::copy_n(real_.data(), n_real, field.data());
 }
 
 }  // namespace coatfft::detail

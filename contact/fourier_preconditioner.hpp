@@ -15,6 +15,11 @@ class FourierPreconditioner {
   /// Plans the periodic r2c/c2r pair on `grid` (FFTW_ESTIMATE, `threads` FFTW threads).
   explicit FourierPreconditioner(const Grid& grid, int threads = 1);
 
+  /// The preconditioner's own field, (nx, ny) x fastest: fill it, apply(), read the result. The
+  /// contact iteration works in it, which spares a field of its own.
+  double* data() { return real_.data(); }
+  /// data() <- F^-1 [sigma F[data()]] in place.
+  void apply();
   /// field <- F^-1 [sigma F[field]] in place; `field` has the grid's shape (nx, ny).
   /// sigma(k) = |k| [rad/m]; at k = 0, where |k| vanishes, sigma is the inverse of the mean of
   /// 1/|k| over the central frequency cell (docs/theory.md eq. 3.1), the same zero-frequency rule

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <complex>
 
+#include "convolution/kernels/coarse_kernel.hpp"
 #include "core/detail/parallel_for.hpp"
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
@@ -168,6 +169,19 @@ void DcfftOperator::convolve_columns(Worker& worker, std::ptrdiff_t first_block,
       for (std::ptrdiff_t c = 0; c < width; ++c) dst[c] = t[c * my + ky];
     }
   }
+}
+
+std::unique_ptr<SurfaceOperator> DcfftOperator::coarsened() {
+  if (nx_ % 2 != 0 || ny_ % 2 != 0) return nullptr;
+  // The response to a unit pressure on cell (0, 0) is the coefficient quarter K(i, j), i, j >= 0.
+  Field unit = Field::Zero(nx_, ny_);
+  unit(0, 0) = 1.0;
+  Field quarter = Field::Zero(nx_ + 1, ny_ + 1);
+  quarter.topLeftCorner(nx_, ny_) = apply(unit);
+  const Grid coarse(nx_ / 2, ny_ / 2, grid_.lx(), grid_.ly());
+  const InfluenceKernel kernel(coarse, InfluenceKernel::Form::coefficients,
+                               detail::coarse_kernel_quarter(quarter), method_);
+  return std::make_unique<DcfftOperator>(kernel, Planning::estimate, threads_);
 }
 
 void DcfftOperator::apply(const Field& pressure, Field& displacement) {

@@ -37,6 +37,9 @@ class DcfftOperator final : public SurfaceOperator {
   /// `displacement`.
   void apply(const Field& pressure, Field& displacement) override;
   Method method() const override { return method_; }
+  /// The Galerkin coarse operator (SurfaceOperator::coarsened) in coefficient form, same
+  /// threads, FFTW_ESTIMATE plans.
+  std::unique_ptr<SurfaceOperator> coarsened() override;
   using SurfaceOperator::apply;
 
   /// Wall-clock seconds the constructor took (kernel transform and FFTW planning) [s].

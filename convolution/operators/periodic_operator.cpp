@@ -5,6 +5,7 @@
 #include <type_traits>
 
 #include "convolution/fft/fftw_plan.hpp"
+#include "convolution/kernels/coarse_kernel.hpp"
 #include "core/error.hpp"
 
 namespace coatfft {
@@ -90,7 +91,7 @@ PeriodicOperator::~PeriodicOperator() = default;
 
 PeriodicOperator::PeriodicOperator(const Grid& grid, const Field& kernel, Method method,
                                    Planning planning, Precision precision, int threads)
-    : grid_(grid), method_(method), precision_(precision) {
+    : grid_(grid), method_(method), precision_(precision), threads_(threads) {
   COATFFT_REQUIRE(kernel.rows() == grid.nx() && kernel.cols() == grid.ny(),
                   "PeriodicOperator: the kernel is not of the grid's shape");
   COATFFT_REQUIRE(kernel.allFinite(),
@@ -121,6 +122,17 @@ void PeriodicOperator::apply(const Field& pressure, Field& displacement) {
                   "PeriodicOperator::apply: the pressure has a value that is not finite");
   displacement.resize(grid_.nx(), grid_.ny());
   t_->apply(pressure.data(), displacement.data());
+}
+
+std::unique_ptr<SurfaceOperator> PeriodicOperator::coarsened() {
+  if (grid_.nx() % 2 != 0 || grid_.ny() % 2 != 0) return nullptr;
+  // The kernel is the response to a unit pressure on cell (0, 0).
+  Field unit = Field::Zero(grid_.nx(), grid_.ny());
+  unit(0, 0) = 1.0;
+  const Field kernel = apply(unit);
+  const Grid coarse(grid_.nx() / 2, grid_.ny() / 2, grid_.lx(), grid_.ly());
+  return std::make_unique<PeriodicOperator>(coarse, detail::coarse_periodic_kernel(kernel), method_,
+                                            Planning::estimate, precision_, threads_);
 }
 
 }  // namespace coatfft

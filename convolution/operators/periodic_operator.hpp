@@ -27,6 +27,9 @@ class PeriodicOperator final : public SurfaceOperator {
   Method method() const override { return method_; }
   Precision precision() const { return precision_; }
   bool periodic() const override { return true; }
+  /// The Galerkin coarse operator (SurfaceOperator::coarsened), same precision and threads,
+  /// FFTW_ESTIMATE plans.
+  std::unique_ptr<SurfaceOperator> coarsened() override;
   using SurfaceOperator::apply;
 
   struct Transforms;  // the FFTs in one precision (FFTW stays out of the public headers)
@@ -35,6 +38,7 @@ class PeriodicOperator final : public SurfaceOperator {
   Grid grid_;
   Method method_;
   Precision precision_;
+  int threads_;
   std::unique_ptr<Transforms> t_;
 };
 

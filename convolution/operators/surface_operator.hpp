@@ -3,6 +3,7 @@
 // piecewise-constant surface pressure on a Grid. Contact solvers, the CLI and the benchmarks see
 // only this. An operator is a plan: everything that depends on sizes is built in the constructor;
 // apply() only computes. Not safe to call apply() on one instance from two threads at once.
+#include <memory>
 #include <string>
 
 #include "../../core/grid.hpp"
@@ -30,6 +31,11 @@ class SurfaceOperator {
   /// Whether the surface repeats over the grid's period (no domain edge); false for the free
   /// surfaces of a half-space.
   virtual bool periodic() const { return false; }
+  /// The same body on the grid with half the cells per side (same lx, ly; nx and ny even), as the
+  /// Galerkin coarse operator (convolution/kernels/coarse_kernel.hpp), for the contact solver's
+  /// coarse-to-fine start; costs about one application. Null where the grid has an odd side or
+  /// the operator kind offers none (only the periodic and DC-FFT operators do).
+  virtual std::unique_ptr<SurfaceOperator> coarsened() { return nullptr; }
 
   /// Allocating convenience form.
   Field apply(const Field& pressure) {

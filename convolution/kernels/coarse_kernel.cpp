@@ -1,0 +1,48 @@
+#include "convolution/kernels/coarse_kernel.hpp"
+
+#include <cstdlib>
+
+namespace coatfft::detail {
+
+namespace {
+
+// K_c(I, J) over an nx x ny coarse array from the fine coefficient at an offset, fine(di, dj).
+template <class Fine>
+Field galerkin_sum(std::ptrdiff_t nx, std::ptrdiff_t ny, Fine&& fine) {
+  Field coarse(nx, ny);
+  for (std::ptrdiff_t j = 0; j < ny; ++j) {
+    for (std::ptrdiff_t i = 0; i < nx; ++i) {
+      double sum = 0.0;
+      for (int b = -1; b <= 1; ++b) {
+        for (int a = -1; a <= 1; ++a) {
+          sum += (2 - std::abs(a)) * (2 - std::abs(b)) * fine(2 * i + a, 2 * j + b);
+        }
+      }
+      coarse(i, j) = 0.25 * sum;
+    }
+  }
+  return coarse;
+}
+
+}  // namespace
+
+Field coarse_periodic_kernel(const Field& kernel) {
+  const auto nx = kernel.rows();
+  const auto ny = kernel.cols();
+  return galerkin_sum(nx / 2, ny / 2, [&](std::ptrdiff_t di, std::ptrdiff_t dj) {
+    return kernel((di + nx) % nx, (dj + ny) % ny);
+  });
+}
+
+Field coarse_kernel_quarter(const Field& quarter) {
+  const auto nx = quarter.rows() - 1;  // the fine grid's cells per side
+  const auto ny = quarter.cols() - 1;
+  Field coarse = Field::Zero(nx / 2 + 1, ny / 2 + 1);
+  coarse.topLeftCorner(nx / 2, ny / 2) =
+      galerkin_sum(nx / 2, ny / 2, [&](std::ptrdiff_t di, std::ptrdiff_t dj) {
+        return quarter(std::abs(di), std::abs(dj));  // K(-d) = K(d)
+      });
+  return coarse;
+}
+
+}  // namespace coatfft::detail
