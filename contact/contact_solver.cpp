@@ -10,6 +10,7 @@
 #include <string>
 
 #include "contact/complementarity.hpp"
+#include "contact/contact_patches.hpp"
 #include "contact/fourier_preconditioner.hpp"
 #include "contact/grid_transfer.hpp"
 #include "contact/initial_pressure.hpp"
@@ -704,7 +705,8 @@ void ContactSolver::check_problem(const Field& h, ContactControl control, double
 // Nested start: the coarse problem is the same contact on the coarse operator (the Galerkin
 // product R K P) with the heights' 2 x 2 means R h and the same load or approach; its pressure,
 // carried to the fine cells, starts the fine iteration near its solution, so the fine grid spends
-// its iterations on what the coarse one cannot resolve (docs/contact.md, "Nested start").
+// its iterations on what the coarse one cannot resolve (docs/contact.md, "Nested start"). Only
+// where the heights below the trial level form more than one patch (a rough surface).
 std::optional<Field> ContactSolver::nested_start(const Field& h, ContactControl control,
                                                  double value, ContactResult& applications) {
   constexpr std::ptrdiff_t coarsest = 64;    // cells per side of the coarsest grid
@@ -713,6 +715,10 @@ std::optional<Field> ContactSolver::nested_start(const Field& h, ContactControl 
   if (!options_.nested_start || grid.nx() % 2 != 0 || grid.ny() % 2 != 0 ||
       std::min(grid.nx(), grid.ny()) < 2 * coarsest)
     return std::nullopt;
+  // One patch below the trial level (a smooth indenter) is what the Hertzian start describes
+  // nearly exactly: there the coarse solves would cost more than they spare (docs/contact.md).
+  const double level = detail::level_below(h, detail::kTrialContactShare);
+  if (detail::count_patches(h < level, op_.periodic()) <= 1) return std::nullopt;
   Field h_coarse = detail::restrict_by_mean(h);
   // The means' minimum lies above min(h): an approach just beyond min(h) may miss them.
   if (control == ContactControl::approach && !(value > h_coarse.minCoeff())) return std::nullopt;

@@ -60,7 +60,8 @@ struct ContactOptions {
   Conjugation conjugation = Conjugation::polak_ribiere;
   /// Start a cold solve from the same contact solved on coarser grids (half the cells per side
   /// each, down to 64 cells, to a relative pressure change of 1e-4, each started the same way),
-  /// its pressure carried to the fine grid cell by cell (docs/contact.md, "Nested start"). Only
+  /// its pressure carried to the fine grid cell by cell (docs/contact.md, "Nested start"), when the
+  /// cells below the Hertzian start's trial level form more than one patch (a rough surface). Only
   /// where the operator offers its coarse form (SurfaceOperator::coarsened: periodic and DC-FFT
   /// operators on even grids); a warm start (solve_sweep) does not use it. Off: the start of
   /// update_by_linearity.
