@@ -83,7 +83,7 @@ class PolonskyKeerIteration {
     double norm;               // sum of g^2 over the working set
   };
 
-  void start(std::optional<Field> warm);
+  void start(bool warm);  // warm: p_ holds the pressure to start from
   void start_from_pressure();
   void start_uniform();
   void start_hertzian();
@@ -155,7 +155,7 @@ PolonskyKeerIteration::PolonskyKeerIteration(SurfaceOperator& op,
       delta_(load_control_ ? 0.0 : value),
       cell_area_(op.grid().dx() * op.grid().dy()),
       n_cells_(h.size()),
-      p_(h.rows(), h.cols()),
+      p_(start_pressure ? std::move(*start_pressure) : Field(h.rows(), h.cols())),
       u_(h.rows(), h.cols()),
       g_(h.rows(), h.cols()),
       t_(Field::Zero(h.rows(), h.cols())),  // read (times beta = 0) by the first iteration
@@ -164,13 +164,12 @@ PolonskyKeerIteration::PolonskyKeerIteration(SurfaceOperator& op,
       conjugation_(options.conjugation),
       update_by_linearity_(options.update_by_linearity) {
   if (conjugation_ == Conjugation::polak_ribiere) g_prev_ = Field::Zero(h.rows(), h.cols());
-  start(std::move(start_pressure));
+  start(start_pressure.has_value());
 }
 
 // The initial pressure.
-void PolonskyKeerIteration::start(std::optional<Field> warm) {
+void PolonskyKeerIteration::start(bool warm) {
   if (warm) {
-    p_ = std::move(*warm);
     p_ = p_.max(0.0);
     if (p_.sum() > 0) {
       start_from_pressure();
@@ -282,7 +281,16 @@ std::optional<ContactStatus> PolonskyKeerIteration::step(double tolerance) {
   update_direction(gap.n_working);
   const std::optional<double> tau = step_length(gap.n_working);
   widen_ = false;
-  if (!tau) return ContactStatus::non_positive_curvature;
+  if (!tau) {
+    // No curvature along t: t vanished to rounding because the gap is uniform on I_c to
+    // rounding (on a small working set Polak-Ribiere's beta cancels what is left of z), which
+    // is a solution if nothing overlaps; otherwise a true breakdown.
+    if (complementary(tolerance)) {
+      residual_ = 0.0;
+      return ContactStatus::converged;
+    }
+    return ContactStatus::non_positive_curvature;
+  }
   const double p_sum = project(*tau);
   if (!(p_sum > 0) || !std::isfinite(p_sum)) {
     p_ = p_old_;  // the last iterate that carried pressure; u is not its displacement
@@ -376,23 +384,26 @@ void PolonskyKeerIteration::update_direction(std::ptrdiff_t n_working) {
     preconditioner_->apply();
   }
   const double* gd = g_.data();
+  // z: the preconditioned gap, or g itself.
   const double* zd = preconditioner_ ? preconditioner_->data() : gd;
   double* td = t_.data();
   double* qd = g_prev_.size() > 0 ? g_prev_.data() : nullptr;
-  double z_sum = 0.0, g_sum = 0.0, q_sum = 0.0, g_dot_z = 0.0, q_dot_z = 0.0;
+  double z_sum = 0.0, g_sum = 0.0, q_sum = 0.0, t_sum = 0.0, g_dot_z = 0.0, q_dot_z = 0.0;
   for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
     if (!in_working_set(k)) continue;
-    z_sum += zd[k];
+    const double zk = zd[k];
+    z_sum += zk;
     g_sum += gd[k];
-    g_dot_z += gd[k] * zd[k];
+    t_sum += td[k];
+    g_dot_z += gd[k] * zk;
     if (qd) {
       q_sum += qd[k];
-      q_dot_z += qd[k] * zd[k];
+      q_dot_z += qd[k] * zk;
     }
   }
   // Unpreconditioned, z = g already has zero mean on I_c under load control.
-  const double z_mean =
-      preconditioner_ && load_control_ ? z_sum / static_cast<double>(n_working) : 0.0;
+  const auto n = static_cast<double>(n_working);
+  const double z_mean = preconditioner_ && load_control_ ? z_sum / n : 0.0;
   g_dot_z -= z_mean * g_sum;
   q_dot_z -= z_mean * q_sum;
   double beta = 0.0;
@@ -401,9 +412,13 @@ void PolonskyKeerIteration::update_direction(std::ptrdiff_t n_working) {
                ? std::max(0.0, (g_dot_z - q_dot_z) / g_dot_z_old_)
                : g_dot_z / g_dot_z_old_;
   }
+  // Under load control t must have zero mean on the working set too (the load constraint's
+  // tangent space, where the step's curvature is positive): the previous direction had it on
+  // its own working set, not necessarily on this one.
+  const double t_mean = load_control_ ? t_sum / n : 0.0;
   for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
     const bool working = in_working_set(k);
-    td[k] = working ? zd[k] - z_mean + beta * td[k] : 0.0;
+    td[k] = working ? zd[k] - z_mean + beta * (td[k] - t_mean) : 0.0;
     if (qd) qd[k] = working ? gd[k] : 0.0;
   }
   g_dot_z_old_ = g_dot_z;
@@ -625,7 +640,13 @@ ContactSolver::ContactSolver(SurfaceOperator& op, ContactOptions options)
                   "ContactSolver: max_iterations = ", options_.max_iterations,
                   ", but it must be >= 1");
   if (options_.preconditioned) {
-    preconditioner_ = std::make_unique<detail::FourierPreconditioner>(op_.grid(), options_.threads);
+    // Applied once per iteration: FFTW_MEASURE pays for its planning from 1024^2 cells
+    // (docs/contact.md, "Preconditioner").
+    constexpr std::ptrdiff_t measured_cells = 1024 * 1024;
+    const Planning planning =
+        op_.grid().nb_cells() >= measured_cells ? Planning::measure : Planning::estimate;
+    preconditioner_ =
+        std::make_unique<detail::FourierPreconditioner>(op_.grid(), options_.threads, planning);
   }
 }
 

@@ -8,7 +8,7 @@
 
 namespace coatfft::detail {
 
-FourierPreconditioner::FourierPreconditioner(const Grid& grid, int threads)
+FourierPreconditioner::FourierPreconditioner(const Grid& grid, int threads, Planning planning)
     : nx_(grid.nx()), ny_(grid.ny()), hx_(grid.nx() / 2 + 1) {
   const auto n_real = static_cast<std::size_t>(nx_ * ny_);
   const auto n_complex = static_cast<std::size_t>(hx_ * ny_);
@@ -17,7 +17,7 @@ FourierPreconditioner::FourierPreconditioner(const Grid& grid, int threads)
   // Row-major dimensions {ny, nx}: a Field (x fastest) is a C-order (ny, nx) array.
   const int nyi = static_cast<int>(ny_);
   const int nxi = static_cast<int>(nx_);
-  const unsigned flags = fftw_flags(Planning::estimate);
+  const unsigned flags = fftw_flags(planning);
   forward_ = FftwPlan::create(threads, [&] {
     return fftw_plan_dft_r2c_2d(nyi, nxi, real_.data(), spectrum_.data(), flags);
   });

@@ -12,8 +12,13 @@ namespace coatfft::detail {
 
 class FourierPreconditioner {
  public:
-  /// Plans the periodic r2c/c2r pair on `grid` (FFTW_ESTIMATE, `threads` FFTW threads).
-  explicit FourierPreconditioner(const Grid& grid, int threads = 1);
+  /// Plans the periodic r2c/c2r pair on `grid` (`planning`, `threads` FFTW threads). Double
+  /// precision: single was measured to give the same iteration counts at 512^2 and 1024^2 with
+  /// transforms a third faster, but its rounding does not scale with the problem, so a contact
+  /// scaled by c would no longer be c times the unscaled one to double's rounding
+  /// (docs/contact.md, "Preconditioner").
+  explicit FourierPreconditioner(const Grid& grid, int threads = 1,
+                                 Planning planning = Planning::estimate);
 
   /// The preconditioner's own field, (nx, ny) x fastest: fill it, apply(), read the result. The
   /// contact iteration works in it, which spares a field of its own.

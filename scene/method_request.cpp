@@ -103,6 +103,7 @@ MethodSpec method_from_request(const MethodRequest& r, const KeyNames& keys) {
   COATFFT_REQUIRE(o.g0_tolerance > 0 && o.g0_tolerance < 1, keys.where("g0_tol"), " = ",
                   o.g0_tolerance, " must be in (0, 1)");
   if (r.planning) o.planning = parse_key(keys, "planning", *r.planning, parse_planning);
+  spec.planning_given = r.planning.has_value();
   const std::int64_t threads = r.threads.value_or(o.threads);
   COATFFT_REQUIRE(threads >= 1 && threads <= max_threads, keys.where("threads"), " = ", threads,
                   " must be in 1..", max_threads);

@@ -917,6 +917,9 @@ Scene read_scene(const std::filesystem::path& path) {
         return read_contact(section(root, "contact", true), context,
                             scene.frf ? nullptr : &*scene.body);
       });
+    if (scene.contact && !scene.method.planning_given &&
+        scene.grid.nb_cells() >= contact_measure_cells)
+      scene.method.options.planning = Planning::measure;
     scene.output = read_output(root, scene.contact.has_value());
     if (root.contains("stress")) scene.stress = read_stress(root, scene);
     check_stress_outputs(scene.output, scene.stress.value_or(StressSpec{}));

@@ -58,7 +58,14 @@ struct MethodSpec {
   /// name = "auto" on a periodic boundary, resolved to dcfft or frf-split by the body alone
   /// (automatic is then false): reported as requested "auto".
   bool auto_periodic = false;
+  /// Whether [method] planning was given; otherwise read_scene chooses (planning_for_contact).
+  bool planning_given = false;
 };
+
+/// The fewest cells for which a contact scene without [method] planning plans its operator with
+/// FFTW_MEASURE: a contact solve applies the operator about a hundred times, and from 1024^2
+/// cells measured plans repay their planning within the solve (docs/benchmarks.md, "Planning").
+inline constexpr std::ptrdiff_t contact_measure_cells = 1024 * 1024;
 
 /// The most cells `direct` is run on: its cost grows as (nx ny)^2, hours beyond this size (and
 /// dcfft gives the same result).

@@ -1,6 +1,5 @@
 #include "scene/scene_pressure.hpp"
 
-
 #include "core/error.hpp"
 #include "loads/hertz_pressure.hpp"
 #include "loads/load_limits.hpp"

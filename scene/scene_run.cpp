@@ -80,6 +80,7 @@ nlohmann::json common_summary(const Scene& scene, const Automatic& automatic,
   summary["lx"] = grid.lx();
   summary["ly"] = grid.ly();
   summary["setup_seconds"] = built.report.setup_seconds;
+  summary["planning"] = to_string(scene.method.options.planning);
   summary["apply_seconds"] = apply_seconds;
   summary["repeat"] = repeat;
   summary["total_load"] = pressure.sum() * grid.dx() * grid.dy();
@@ -204,6 +205,7 @@ void add_contact_summary(nlohmann::json& summary, const Scene& scene, const Cont
   summary["max_pressure"] = result.max_pressure;
   summary["iterations"] = result.iterations;
   summary["operator_applications"] = result.operator_applications;
+  summary["coarse_applications"] = result.coarse_applications;
   summary["residual"] = result.residual;
   summary["converged"] = result.converged;
   summary["status"] = to_string(result.status);
@@ -294,6 +296,7 @@ nlohmann::json sweep_row(const Grid& grid, const ContactResult& r) {
           {"mean_gap", r.gap.mean()},
           {"iterations", r.iterations},
           {"operator_applications", r.operator_applications},
+          {"coarse_applications", r.coarse_applications},
           {"converged", r.converged},
           {"max_penetration", r.max_penetration}};
 }

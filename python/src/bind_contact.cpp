@@ -33,6 +33,7 @@ struct PyContactResult {
   double max_pressure = 0.0;
   int iterations = 0;
   int operator_applications = 0;
+  int coarse_applications = 0;
   double residual = 0.0;
   bool converged = false;
   std::string status;
@@ -54,6 +55,7 @@ PyContactResult to_python(ContactResult&& r) {
   out.max_pressure = r.max_pressure;
   out.iterations = r.iterations;
   out.operator_applications = r.operator_applications;
+  out.coarse_applications = r.coarse_applications;
   out.residual = r.residual;
   out.converged = r.converged;
   out.status = std::string(to_string(r.status));
@@ -178,6 +180,8 @@ void bind_contact(py::module_& m) {
       .def_readonly("max_pressure", &PyContactResult::max_pressure, "[Pa]")
       .def_readonly("iterations", &PyContactResult::iterations)
       .def_readonly("operator_applications", &PyContactResult::operator_applications)
+      .def_readonly("coarse_applications", &PyContactResult::coarse_applications,
+                    "applications on the coarser grids of the nested start")
       .def_readonly("residual", &PyContactResult::residual, "last relative pressure change")
       .def_readonly("converged", &PyContactResult::converged)
       .def_readonly("status", &PyContactResult::status,
