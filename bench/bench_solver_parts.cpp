@@ -1,13 +1,16 @@
 // Where a contact iteration goes: the solver of ContactSolver on the rough surfaces of
 // bench/rough_gap.hpp (H = 0.8, rms slope 0.05, shortest wavelength 16 cells), pressed into
 // steel and into TiN-coated steel (5 um) on periodic grids, load control at about 10 % contact
-// area, tolerance 1e-10, one thread. For each grid: iterations, applications and the solve's
-// time; one application timed alone; the FFT floor (a bare FFTW r2c, multiply, c2r pair of the
-// same size, planned with FFTW_MEASURE) measured in the same run; and the solve's time split
-// into its parts (ContactTimings) in units of one application: the steps' applications, the
-// recomputations after a change of the contact set, the preconditioner's transforms, the
-// element-wise passes and the start. Ends with the exponent of iterations against N (least
-// squares on log-log, per body). Writes bench/results/solver_parts.csv (or OUTPUT).
+// area, tolerance 1e-10, one thread; each problem solved twice, side by side: `before`
+// (Polonsky & Keer's conjugation from the Hertzian start, the solver as it was) and `after`
+// (the defaults: Polak-Ribiere's conjugation from the nested start). For each: iterations,
+// applications (and those on the coarser grids) and the solve's time; one application timed
+// alone; the FFT floor (a bare FFTW r2c, multiply, c2r pair of the same size, planned with
+// FFTW_MEASURE) measured in the same run; and the solve's time split into its parts
+// (ContactTimings) in units of one application: the steps' applications, the recomputations
+// after a change of the contact set, the preconditioner's transforms, the element-wise passes
+// and the start. Ends with the exponent of iterations against N (least squares on log-log, per
+// body and solver). Writes bench/results/solver_parts.csv (or OUTPUT).
 //   bench_solver_parts [OUTPUT] [--sizes N ...]
 #include <chrono>
 #include <cmath>
@@ -80,11 +83,24 @@ double fft_floor_ms(std::ptrdiff_t n) {
   });
 }
 
+struct Solver {
+  std::string label;
+  ContactOptions options;
+};
+
+// The solver as it was (Polonsky & Keer's conjugation from the Hertzian start) and as it is.
+std::vector<Solver> solvers() {
+  ContactOptions before;
+  before.conjugation = Conjugation::polonsky_keer;
+  before.nested_start = false;
+  return {{"before", before}, {"after", ContactOptions{}}};
+}
+
 // One row: the solve and its parts, in applications of `apply_ms`.
-void solve_row(std::ptrdiff_t n, const Body& body, PeriodicOperator& op, const Field& gap,
-               double apply_ms, double floor_ms, std::map<std::string, std::vector<double>>& fit,
-               std::ostream& out) {
-  ContactSolver solver(op, {});
+void solve_row(std::ptrdiff_t n, const Body& body, const Solver& s, PeriodicOperator& op,
+               const Field& gap, double apply_ms, double floor_ms,
+               std::map<std::string, std::vector<double>>& fit, std::ostream& out) {
+  ContactSolver solver(op, s.options);
   const double load =
       kLoad * kSteel.plane_strain_modulus() * bench::rough_rms_slope * kLength * kLength;
   const ContactResult r = solver.solve_load(gap, load);
@@ -92,17 +108,19 @@ void solve_row(std::ptrdiff_t n, const Body& body, PeriodicOperator& op, const F
   const double apply_s = 1e-3 * apply_ms, per_iteration = 1.0 / r.iterations;
   std::ostringstream row;
   row.precision(4);
-  row << n << "," << body.label << "," << r.iterations << "," << r.operator_applications << ","
-      << (r.converged ? 1 : 0) << "," << r.contact_area / (kLength * kLength) << ","
-      << 1e3 * t.total << "," << apply_ms << "," << floor_ms << "," << apply_ms / floor_ms << ","
-      << 1e3 * t.total * per_iteration << "," << t.total * per_iteration / apply_s << ","
-      << t.steps * per_iteration / apply_s << "," << t.recomputations * per_iteration / apply_s
-      << "," << t.preconditioner * per_iteration / apply_s << ","
-      << t.passes * per_iteration / apply_s << "," << t.start / apply_s << "\n";
+  row << n << "," << body.label << "," << s.label << "," << r.iterations << ","
+      << r.operator_applications << "," << r.coarse_applications << "," << (r.converged ? 1 : 0)
+      << "," << r.contact_area / (kLength * kLength) << "," << 1e3 * t.total << "," << apply_ms
+      << "," << floor_ms << "," << apply_ms / floor_ms << "," << 1e3 * t.total * per_iteration
+      << "," << t.total * per_iteration / apply_s << "," << t.steps * per_iteration / apply_s << ","
+      << t.recomputations * per_iteration / apply_s << ","
+      << t.preconditioner * per_iteration / apply_s << "," << t.passes * per_iteration / apply_s
+      << "," << t.start / apply_s << "\n";
   std::cout << row.str() << std::flush;
   out << row.str();
-  fit[body.label].push_back(std::log(static_cast<double>(n)));
-  fit[body.label + " iterations"].push_back(std::log(static_cast<double>(r.iterations)));
+  const std::string key = body.label + ", " + s.label;
+  fit[key].push_back(std::log(static_cast<double>(n)));
+  fit[key + " iterations"].push_back(std::log(static_cast<double>(r.iterations)));
 }
 
 // The slope of y against x by least squares.
@@ -140,9 +158,12 @@ int main(int argc, char** argv) {
         << "#   recomputations, preconditioner, passes) likewise per iteration; "
            "start_applications\n"
         << "#   = the start's time (scaling, initial pressure) / apply_ms, once per solve\n"
-        << "N,body,iterations,applications,converged,area_fraction,solve_ms,apply_ms,floor_ms,"
-           "apply_over_floor,per_iteration_ms,per_iteration_applications,steps,recomputations,"
-           "preconditioner,passes,start_applications\n";
+        << "# coarse_applications: on the coarser grids of the nested start (a quarter of the\n"
+        << "#   cells or fewer each), their time in start_applications\n"
+        << "N,body,solver,iterations,applications,coarse_applications,converged,area_fraction,"
+           "solve_ms,apply_ms,floor_ms,apply_over_floor,per_iteration_ms,"
+           "per_iteration_applications,steps,recomputations,preconditioner,passes,"
+           "start_applications\n";
     std::cout << out.str() << std::flush;
     const std::vector<Body> bodies = {
         {"steel", LayerStack(kSteel)},
@@ -160,14 +181,19 @@ int main(int argc, char** argv) {
         PeriodicOperator op(g, kernel, exact_method(body.stack), Planning::estimate);
         Field u;
         const double apply_ms = median_ms([&] { op.apply(gap, u); });
-        solve_row(n, body, op, gap, apply_ms, floor_ms, fit, out);
+        for (const Solver& s : solvers())
+          solve_row(n, body, s, op, gap, apply_ms, floor_ms, fit, out);
       }
     }
     std::ostringstream fits;
-    for (const Body& body : bodies)
-      if (fit[body.label].size() >= 2)
-        fits << "# iterations ~ N^" << slope(fit[body.label], fit[body.label + " iterations"])
-             << " (" << body.label << ", least squares over the sizes above)\n";
+    for (const Body& body : bodies) {
+      for (const Solver& s : solvers()) {
+        const std::string key = body.label + ", " + s.label;
+        if (fit[key].size() >= 2)
+          fits << "# iterations ~ N^" << slope(fit[key], fit[key + " iterations"]) << " (" << key
+               << ", least squares over the sizes above)\n";
+      }
+    }
     std::cout << fits.str() << std::flush;
     out << fits.str();
     bench::write_text_file(path, out.str());

@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "../convolution/fft/planning.hpp"
 #include "../convolution/operators/surface_operator.hpp"
 #include "../core/types.hpp"
 
@@ -49,6 +50,10 @@ struct ContactOptions {
   bool preconditioned = true;
   /// FFTW threads of the preconditioner's transforms (>= 1).
   int threads = 1;
+  /// FFTW planning of the preconditioner's transforms; unset: FFTW_MEASURE from 1024^2 cells
+  /// (applied once per iteration, measured plans repay their planning there; docs/contact.md,
+  /// "Preconditioner"), FFTW_ESTIMATE below. The nested start's coarse solves use estimate.
+  std::optional<Planning> preconditioner_planning;
   /// Move the displacement by linearity (u <- u - tau K t), recomputing u = K p only after a step
   /// that changed the contact set, from a Hertzian start (contact/initial_pressure.hpp): one
   /// operator application per iteration, two in those that changed the set (docs/contact.md,
@@ -59,7 +64,7 @@ struct ContactOptions {
   /// The conjugation of the search direction (Conjugation).
   Conjugation conjugation = Conjugation::polak_ribiere;
   /// Start a cold solve from the same contact solved on coarser grids (half the cells per side
-  /// each, down to 64 cells, to a relative pressure change of 1e-4, each started the same way),
+  /// each, down to 64 cells, to a relative pressure change of 1e-3, each started the same way),
   /// its pressure carried to the fine grid cell by cell (docs/contact.md, "Nested start"), when the
   /// cells below the Hertzian start's trial level form more than one patch (a rough surface). Only
   /// where the operator offers its coarse form (SurfaceOperator::coarsened: periodic and DC-FFT

@@ -1,0 +1,49 @@
+// FFTW planning of a scene's operator (scene/scene.hpp, contact_measure_cells): a contact on
+// 1024^2 cells or more measures its plans unless [method] planning says otherwise; a known
+// pressure (one application) and smaller contacts keep "estimate".
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "scene/scene.hpp"
+
+using namespace coatfft;
+
+namespace {
+
+// The scene read from `text`, written to a file of its own.
+scene::Scene read(const std::string& text) {
+  const auto dir = std::filesystem::temp_directory_path() / "coatfft_test_scene_planning";
+  std::filesystem::create_directories(dir);
+  const auto path = dir / "scene.toml";
+  std::ofstream(path) << text;
+  scene::Scene s = scene::read_scene(path);
+  std::filesystem::remove_all(dir);
+  return s;
+}
+
+std::string scene_text(int n, const std::string& load, const std::string& method) {
+  return "[grid]\nnx = " + std::to_string(n) + "\nny = " + std::to_string(n) +
+         "\nlx = 1e-3\nly = 1e-3\n[substrate]\nmaterial = \"steel\"\n" + load +
+         "[method]\nname = \"dcfft\"\n" + method;
+}
+
+const std::string contact = "[contact]\nindenter = \"sphere\"\nradius = 0.01\nload = 1.0\n";
+const std::string pressure = "[pressure]\nkind = \"hertz\"\np0 = 1e9\na = 1e-4\n";
+
+}  // namespace
+
+TEST_CASE("Contact scenes of 1024^2 cells or more measure their FFTW plans by default",
+          "[scene][planning]") {
+  CHECK(scene::contact_measure_cells == 1024 * 1024);
+  CHECK(read(scene_text(1024, contact, "")).method.options.planning == Planning::measure);
+  CHECK(read(scene_text(1022, contact, "")).method.options.planning == Planning::estimate);
+  CHECK(read(scene_text(1024, pressure, "")).method.options.planning == Planning::estimate);
+  // What the scene says is kept.
+  const auto given = read(scene_text(1024, contact, "planning = \"estimate\"\n"));
+  CHECK(given.method.planning_given);
+  CHECK(given.method.options.planning == Planning::estimate);
+  CHECK(read(scene_text(64, contact, "planning = \"measure\"\n")).method.options.planning ==
+        Planning::measure);
+}
