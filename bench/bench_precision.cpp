@@ -3,8 +3,9 @@
 // warm) in each precision and the ratio, under FFTW_ESTIMATE and FFTW_MEASURE plans (the latter on
 // one and two threads), and the single-precision error: the largest difference from the double
 // application relative to the largest displacement, on the displacement of a random (uniform [0,
-// 1]) pressure, steel, N = 512 ... 4096. Prints `# key = value` headers and CSV rows, and writes
-// the same to bench/results/precision.csv (or OUTPUT).
+// 1]) pressure, steel, N = 512 ... 4096; and the double operator's setup under each planning
+// (FFTW's planning, with the kernel's one transform). Prints `# key = value` headers and CSV rows,
+// and writes the same to bench/results/precision.csv (or OUTPUT).
 //   bench_precision [OUTPUT] [--sizes N ...]
 #include <chrono>
 #include <exception>
@@ -62,7 +63,8 @@ int main(int argc, char** argv) {
     out << "# fields are double outside the transforms in both precisions\n"
         << "# error = max |u_single - u_double| / max |u_double| for a uniform [0, 1] random "
            "pressure\n"
-        << "N,planning,threads,double_ms,single_ms,speedup,error\n";
+        << "# double_setup_s: the double operator's construction (kernel spectrum and plans)\n"
+        << "N,planning,threads,double_ms,single_ms,speedup,error,double_setup_s\n";
     std::cout << out.str() << std::flush;
     const HalfSpaceFrf frf(Material(210e9, 0.3));
     for (const std::ptrdiff_t n : sizes) {
@@ -73,8 +75,10 @@ int main(int argc, char** argv) {
       const Field p = random_pressure(n);
       for (const auto& [planning, threads] :
            {std::pair{Planning::estimate, 1}, {Planning::measure, 1}, {Planning::measure, 2}}) {
+        const auto setup_start = Clock::now();
         PeriodicOperator exact(g, kernel, Method::dcfft, planning, Precision::double_precision,
                                threads);
+        const double setup_s = detail::seconds_since(setup_start);
         PeriodicOperator single(g, kernel, Method::dcfft, planning, Precision::single, threads);
         Field u_exact, u_single;
         const double exact_ms = median_apply_ms(exact, p, u_exact);
@@ -83,7 +87,7 @@ int main(int argc, char** argv) {
         std::ostringstream row;
         row.precision(4);
         row << n << "," << to_string(planning) << "," << threads << "," << exact_ms << ","
-            << single_ms << "," << exact_ms / single_ms << "," << error << "\n";
+            << single_ms << "," << exact_ms / single_ms << "," << error << "," << setup_s << "\n";
         std::cout << row.str() << std::flush;
         out << row.str();
       }

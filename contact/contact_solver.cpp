@@ -8,12 +8,14 @@
 #include <numbers>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "contact/complementarity.hpp"
 #include "contact/contact_patches.hpp"
 #include "contact/fourier_preconditioner.hpp"
 #include "contact/grid_transfer.hpp"
 #include "contact/initial_pressure.hpp"
+#include "core/detail/parallel_for.hpp"
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
@@ -23,6 +25,10 @@ namespace coatfft {
 namespace {
 
 using Mask = Eigen::Array<bool, Eigen::Dynamic, Eigen::Dynamic>;
+
+// The fewest cells whose element-wise passes run on ContactOptions::threads: a pass over 512^2
+// cells takes about a millisecond, against tens of microseconds to start a thread.
+constexpr std::ptrdiff_t kParallelCells = 512 * 512;
 
 // Mean of f over the cells where mask is set (mask non-empty).
 double masked_mean(const Field& f, const Mask& mask, std::ptrdiff_t count) {
@@ -39,6 +45,35 @@ bool pressure_on_border(const Field& p) {
 void append(std::string& text, const std::string& more) {
   if (!text.empty()) text += "; ";
   text += more;
+}
+
+// Sums of a pass over the cells, added chunk by chunk (count and sum, or maxima, or nothing).
+struct CountSum {
+  std::ptrdiff_t count = 0;
+  double sum = 0.0;
+  CountSum& operator+=(const CountSum& o) {
+    count += o.count;
+    sum += o.sum;
+    return *this;
+  }
+};
+struct NoSums {
+  NoSums& operator+=(const NoSums&) { return *this; }
+};
+
+// Runs pass(first, last, sums) on contiguous chunks of the n cells, one per worker, and adds the
+// chunks' sums in chunk order (the same result for the same number of workers). The passes are
+// bound by memory bandwidth, which a second core raises; with one worker the pass runs inline.
+template <class Sums, class Pass>
+Sums over_cells(std::ptrdiff_t n, int workers, const Pass& pass) {
+  std::vector<Sums> parts(static_cast<std::size_t>(workers));
+  detail::parallel_chunks(0, n, workers,
+                          [&](std::ptrdiff_t w, std::ptrdiff_t first, std::ptrdiff_t last) {
+                            pass(first, last, parts[static_cast<std::size_t>(w)]);
+                          });
+  Sums total{};
+  for (const Sums& part : parts) total += part;
+  return total;
 }
 
 // The constrained conjugate gradient of Polonsky & Keer (1999) on one problem: the iterate, its
@@ -107,6 +142,7 @@ class PolonskyKeerIteration {
   double g_mean_ = 0.0;  // load control: the approach, mean of h + u over I_c (update_gap)
   double cell_area_;
   std::ptrdiff_t n_cells_;
+  int workers_;  // threads of the element-wise passes (one below kParallelCells)
   Field p_, u_, g_, t_, r_, p_old_;
   // Polak-Ribiere: the previous gap on its working set (empty for Polonsky & Keer's rule). The
   // preconditioned gap z lives in the preconditioner's own field (g itself serves without one).
@@ -155,6 +191,7 @@ PolonskyKeerIteration::PolonskyKeerIteration(SurfaceOperator& op,
       delta_(load_control_ ? 0.0 : value),
       cell_area_(op.grid().dx() * op.grid().dy()),
       n_cells_(h.size()),
+      workers_(n_cells_ >= kParallelCells ? options.threads : 1),
       p_(start_pressure ? std::move(*start_pressure) : Field(h.rows(), h.cols())),
       u_(h.rows(), h.cols()),
       g_(h.rows(), h.cols()),
@@ -316,31 +353,35 @@ PolonskyKeerIteration::Gap PolonskyKeerIteration::update_gap() {
   const double* pd = p_.data();
   const double* ud = u_.data();
   double* gd = g_.data();
-  std::ptrdiff_t n_contact = 0;
-  double g_sum = 0.0;
-  for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
-    gd[k] = hd[k] + ud[k] - delta_;
-    if (pd[k] > 0) {
-      ++n_contact;
-      g_sum += gd[k];
-    }
-  }
-  if (n_contact == 0) return {0, 0, 0.0};
-  g_mean_ = load_control_ ? g_sum / static_cast<double>(n_contact) : 0.0;
-  std::ptrdiff_t n_working = 0;
-  double g_norm = 0.0;
-  // The preconditioner's input, P g, written in the same pass (update_direction).
+  // The contact set's cells and their sum of g.
+  const CountSum contact =
+      over_cells<CountSum>(n_cells_, workers_, [&](auto first, auto last, CountSum& s) {
+        for (std::ptrdiff_t k = first; k < last; ++k) {
+          gd[k] = hd[k] + ud[k] - delta_;
+          if (pd[k] > 0) {
+            ++s.count;
+            s.sum += gd[k];
+          }
+        }
+      });
+  if (contact.count == 0) return {0, 0, 0.0};
+  g_mean_ = load_control_ ? contact.sum / static_cast<double>(contact.count) : 0.0;
+  // The working set's cells and their sum of g^2; the preconditioner's input, P g, written in
+  // the same pass (update_direction).
   double* zd = preconditioner_ ? preconditioner_->data() : nullptr;
-  for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
-    gd[k] -= g_mean_;
-    const bool working = in_working_set(k);
-    if (working) {
-      ++n_working;
-      g_norm += gd[k] * gd[k];
-    }
-    if (zd) zd[k] = working ? gd[k] : 0.0;
-  }
-  return {n_contact, n_working, g_norm};
+  const CountSum working =
+      over_cells<CountSum>(n_cells_, workers_, [&](auto first, auto last, CountSum& s) {
+        for (std::ptrdiff_t k = first; k < last; ++k) {
+          gd[k] -= g_mean_;
+          const bool in_working = in_working_set(k);
+          if (in_working) {
+            ++s.count;
+            s.sum += gd[k] * gd[k];
+          }
+          if (zd) zd[k] = in_working ? gd[k] : 0.0;
+        }
+      });
+  return {contact.count, working.count, working.sum};
 }
 
 // The cells a step moves: I_c, and after a stop with overlaps also the overlapping cells (g as
@@ -357,16 +398,24 @@ bool PolonskyKeerIteration::complementary(double tolerance) {
   const double* pd = p_.data();
   const double* ud = u_.data();
   const double* gd = g_.data();
-  double u_max = 0.0;
-  double h_max = 0.0;
-  double violation = 0.0;
-  for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
-    u_max = std::max(u_max, std::abs(ud[k]));
-    h_max = std::max(h_max, std::abs(hd[k]));
-    violation = std::max(violation, pd[k] > 0 ? std::abs(gd[k]) : -gd[k]);
-  }
-  const double largest_term = h_max + u_max + std::abs(delta_ + g_mean_);
-  return violation <= detail::gap_tolerance(tolerance, u_max, largest_term);
+  struct Maxima {
+    double u = 0.0, h = 0.0, violation = 0.0;
+    Maxima& operator+=(const Maxima& o) {
+      u = std::max(u, o.u);
+      h = std::max(h, o.h);
+      violation = std::max(violation, o.violation);
+      return *this;
+    }
+  };
+  const Maxima m = over_cells<Maxima>(n_cells_, workers_, [&](auto first, auto last, Maxima& s) {
+    for (std::ptrdiff_t k = first; k < last; ++k) {
+      s.u = std::max(s.u, std::abs(ud[k]));
+      s.h = std::max(s.h, std::abs(hd[k]));
+      s.violation = std::max(s.violation, pd[k] > 0 ? std::abs(gd[k]) : -gd[k]);
+    }
+  });
+  const double largest_term = m.h + m.u + std::abs(delta_ + g_mean_);
+  return m.violation <= detail::gap_tolerance(tolerance, m.u, largest_term);
 }
 
 // Step 2: search direction t on the working set (I_c, or I_c and the overlapping cells after a
@@ -388,19 +437,33 @@ void PolonskyKeerIteration::update_direction(std::ptrdiff_t n_working) {
   const double* zd = preconditioner_ ? preconditioner_->data() : gd;
   double* td = t_.data();
   double* qd = g_prev_.size() > 0 ? g_prev_.data() : nullptr;
-  double z_sum = 0.0, g_sum = 0.0, q_sum = 0.0, t_sum = 0.0, g_dot_z = 0.0, q_dot_z = 0.0;
-  for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
-    if (!in_working_set(k)) continue;
-    const double zk = zd[k];
-    z_sum += zk;
-    g_sum += gd[k];
-    t_sum += td[k];
-    g_dot_z += gd[k] * zk;
-    if (qd) {
-      q_sum += qd[k];
-      q_dot_z += qd[k] * zk;
+  struct Sums {
+    double z = 0.0, g = 0.0, q = 0.0, t = 0.0, g_dot_z = 0.0, q_dot_z = 0.0;
+    Sums& operator+=(const Sums& o) {
+      z += o.z;
+      g += o.g;
+      q += o.q;
+      t += o.t;
+      g_dot_z += o.g_dot_z;
+      q_dot_z += o.q_dot_z;
+      return *this;
     }
-  }
+  };
+  const Sums sums = over_cells<Sums>(n_cells_, workers_, [&](auto first, auto last, Sums& s) {
+    for (std::ptrdiff_t k = first; k < last; ++k) {
+      if (!in_working_set(k)) continue;
+      s.z += zd[k];
+      s.g += gd[k];
+      s.t += td[k];
+      s.g_dot_z += gd[k] * zd[k];
+      if (qd) {
+        s.q += qd[k];
+        s.q_dot_z += qd[k] * zd[k];
+      }
+    }
+  });
+  const double z_sum = sums.z, g_sum = sums.g, q_sum = sums.q, t_sum = sums.t;
+  double g_dot_z = sums.g_dot_z, q_dot_z = sums.q_dot_z;
   // Unpreconditioned, z = g already has zero mean on I_c under load control.
   const auto n = static_cast<double>(n_working);
   const double z_mean = preconditioner_ && load_control_ ? z_sum / n : 0.0;
@@ -416,11 +479,13 @@ void PolonskyKeerIteration::update_direction(std::ptrdiff_t n_working) {
   // tangent space, where the step's curvature is positive): the previous direction had it on
   // its own working set, not necessarily on this one.
   const double t_mean = load_control_ ? t_sum / n : 0.0;
-  for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
-    const bool working = in_working_set(k);
-    td[k] = working ? zd[k] - z_mean + beta * (td[k] - t_mean) : 0.0;
-    if (qd) qd[k] = working ? gd[k] : 0.0;
-  }
+  over_cells<NoSums>(n_cells_, workers_, [&](auto first, auto last, NoSums&) {
+    for (std::ptrdiff_t k = first; k < last; ++k) {
+      const bool working = in_working_set(k);
+      td[k] = working ? zd[k] - z_mean + beta * (td[k] - t_mean) : 0.0;
+      if (qd) qd[k] = working ? gd[k] : 0.0;
+    }
+  });
   g_dot_z_old_ = g_dot_z;
 }
 
@@ -437,14 +502,26 @@ std::optional<double> PolonskyKeerIteration::step_length(std::ptrdiff_t n_workin
   const double* gd = g_.data();
   const double* td = t_.data();
   const double* rd = r_.data();
-  double r_sum = 0.0, t_sum = 0.0, g_dot_t = 0.0, r_dot_t = 0.0;
-  for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
-    if (!in_working_set(k)) continue;
-    r_sum += rd[k];
-    t_sum += td[k];
-    g_dot_t += gd[k] * td[k];
-    r_dot_t += rd[k] * td[k];
-  }
+  struct Sums {
+    double r = 0.0, t = 0.0, g_dot_t = 0.0, r_dot_t = 0.0;
+    Sums& operator+=(const Sums& o) {
+      r += o.r;
+      t += o.t;
+      g_dot_t += o.g_dot_t;
+      r_dot_t += o.r_dot_t;
+      return *this;
+    }
+  };
+  const Sums sums = over_cells<Sums>(n_cells_, workers_, [&](auto first, auto last, Sums& s) {
+    for (std::ptrdiff_t k = first; k < last; ++k) {
+      if (!in_working_set(k)) continue;
+      s.r += rd[k];
+      s.t += td[k];
+      s.g_dot_t += gd[k] * td[k];
+      s.r_dot_t += rd[k] * td[k];
+    }
+  });
+  const double r_sum = sums.r, t_sum = sums.t, g_dot_t = sums.g_dot_t, r_dot_t = sums.r_dot_t;
   const double r_mean = load_control_ ? r_sum / static_cast<double>(n_working) : 0.0;
   const double denominator = r_dot_t - r_mean * t_sum;
   if (!(denominator > 0) || !std::isfinite(g_dot_t)) return std::nullopt;
@@ -462,28 +539,37 @@ double PolonskyKeerIteration::project(double tau) {
   double* pd = p_.data();
   double* qd = p_old_.data();
   double* ud = u_.data();
-  bool projected = false;
-  bool added = false;
-  double p_sum = 0.0;
-  for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
-    qd[k] = pd[k];
-    double pk = pd[k] - tau * td[k];
-    if (pk < 0.0) {
-      pk = 0.0;
-      projected = true;
+  struct Sums {
+    double p = 0.0;
+    bool projected = false, added = false;
+    Sums& operator+=(const Sums& o) {
+      p += o.p;
+      projected = projected || o.projected;
+      added = added || o.added;
+      return *this;
     }
-    if (pk == 0.0 && gd[k] < 0.0) {
-      pk = -tau * gd[k];
-      added = true;
-      projected = true;
+  };
+  const Sums sums = over_cells<Sums>(n_cells_, workers_, [&](auto first, auto last, Sums& s) {
+    for (std::ptrdiff_t k = first; k < last; ++k) {
+      qd[k] = pd[k];
+      double pk = pd[k] - tau * td[k];
+      if (pk < 0.0) {
+        pk = 0.0;
+        s.projected = true;
+      }
+      if (pk == 0.0 && gd[k] < 0.0) {
+        pk = -tau * gd[k];
+        s.added = true;
+        s.projected = true;
+      }
+      pd[k] = pk;
+      ud[k] -= tau * rd[k];
+      s.p += pk;
     }
-    pd[k] = pk;
-    ud[k] -= tau * rd[k];
-    p_sum += pk;
-  }
-  exact_ = exact_ && !projected;
-  conjugate_ = conjugation_ == Conjugation::polak_ribiere || !added;
-  return p_sum;
+  });
+  exact_ = exact_ && !sums.projected;
+  conjugate_ = conjugation_ == Conjugation::polak_ribiere || !sums.added;
+  return sums.p;
 }
 
 // Step 5: under load control scale p (and with it u) to the total load exactly; returns Polonsky &
@@ -493,13 +579,15 @@ double PolonskyKeerIteration::enforce_load(double p_sum) {
   double* pd = p_.data();
   double* ud = u_.data();
   const double* qd = p_old_.data();
-  double change = 0.0;
-  for (std::ptrdiff_t k = 0; k < n_cells_; ++k) {
-    pd[k] *= scale;
-    ud[k] *= scale;
-    change += std::abs(pd[k] - qd[k]);
-  }
-  return change / (scale * p_sum);
+  const CountSum change =
+      over_cells<CountSum>(n_cells_, workers_, [&](auto first, auto last, CountSum& s) {
+        for (std::ptrdiff_t k = first; k < last; ++k) {
+          pd[k] *= scale;
+          ud[k] *= scale;
+          s.sum += std::abs(pd[k] - qd[k]);
+        }
+      });
+  return change.sum / (scale * p_sum);
 }
 
 ContactResult PolonskyKeerIteration::result(ContactStatus status, int iterations,
@@ -640,9 +728,9 @@ ContactSolver::ContactSolver(SurfaceOperator& op, ContactOptions options)
                   "ContactSolver: max_iterations = ", options_.max_iterations,
                   ", but it must be >= 1");
   if (options_.preconditioned) {
-    // Applied once per iteration: FFTW_MEASURE pays for its planning from 1024^2 cells
-    // (docs/contact.md, "Preconditioner").
-    constexpr std::ptrdiff_t measured_cells = 1024 * 1024;
+    // Applied once per iteration: FFTW_MEASURE pays for its planning from 2048^2 cells
+    // (docs/contact.md, "Preconditioning").
+    constexpr std::ptrdiff_t measured_cells = 2048 * 2048;
     const Planning planning = options_.preconditioner_planning.value_or(
         op_.grid().nb_cells() >= measured_cells ? Planning::measure : Planning::estimate);
     preconditioner_ =

@@ -48,11 +48,13 @@ struct ContactOptions {
   /// independent of N (24-33 for Hertz from 64^2 to 1024^2 from the uniform start, against
   /// 46-137 without). Off gives the classic Polonsky-Keer iteration.
   bool preconditioned = true;
-  /// FFTW threads of the preconditioner's transforms (>= 1).
+  /// Threads (>= 1) of the preconditioner's FFTW transforms and, from 512^2 cells, of the
+  /// iteration's element-wise passes (each chunk's sums added in chunk order: a result depends on
+  /// the thread count only through rounding).
   int threads = 1;
-  /// FFTW planning of the preconditioner's transforms; unset: FFTW_MEASURE from 1024^2 cells
+  /// FFTW planning of the preconditioner's transforms; unset: FFTW_MEASURE from 2048^2 cells
   /// (applied once per iteration, measured plans repay their planning there; docs/contact.md,
-  /// "Preconditioner"), FFTW_ESTIMATE below. The nested start's coarse solves use estimate.
+  /// "Preconditioning"), FFTW_ESTIMATE below. The nested start's coarse solves use estimate.
   std::optional<Planning> preconditioner_planning;
   /// Move the displacement by linearity (u <- u - tau K t), recomputing u = K p only after a step
   /// that changed the contact set, from a Hertzian start (contact/initial_pressure.hpp): one

@@ -16,7 +16,7 @@ class FourierPreconditioner {
   /// precision: single was measured to give the same iteration counts at 512^2 and 1024^2 with
   /// transforms a third faster, but its rounding does not scale with the problem, so a contact
   /// scaled by c would no longer be c times the unscaled one to double's rounding
-  /// (docs/contact.md, "Preconditioner").
+  /// (docs/contact.md, "Preconditioning").
   explicit FourierPreconditioner(const Grid& grid, int threads = 1,
                                  Planning planning = Planning::estimate);
 

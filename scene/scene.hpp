@@ -63,9 +63,9 @@ struct MethodSpec {
 };
 
 /// The fewest cells for which a contact scene without [method] planning plans its operator with
-/// FFTW_MEASURE: a contact solve applies the operator about a hundred times, and from 1024^2
+/// FFTW_MEASURE: a contact solve applies the operator about a hundred times, and from 2048^2
 /// cells measured plans repay their planning within the solve (docs/benchmarks.md, "Planning").
-inline constexpr std::ptrdiff_t contact_measure_cells = 1024 * 1024;
+inline constexpr std::ptrdiff_t contact_measure_cells = 2048 * 2048;
 
 /// The most cells `direct` is run on: its cost grows as (nx ny)^2, hours beyond this size (and
 /// dcfft gives the same result).

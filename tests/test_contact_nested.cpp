@@ -5,6 +5,7 @@
 #include <cmath>
 #include <random>
 
+#include "contact/complementarity.hpp"
 #include "contact/contact_patches.hpp"
 #include "contact/contact_solver.hpp"
 #include "contact/grid_transfer.hpp"
@@ -175,4 +176,62 @@ TEST_CASE("Hertz at 512^2 within 25 applications: no nested start for one patch"
   CHECK(r.coarse_applications == 0);
   CHECK(r.operator_applications <= 25);
   CHECK(std::abs(r.contact_radius.value() / hertz.contact_radius - 1) <= 0.01);
+}
+
+namespace {
+
+// The complementarity conditions on every cell, from a fresh application: g = h + K p - delta,
+// delta the approach (load control: the mean of h + K p over the contact, which is what the
+// solver's gap is measured from).
+void check_complementarity(SurfaceOperator& op, const Field& h, const ContactResult& r,
+                           double tolerance) {
+  const Field u = op.apply(r.pressure);
+  const auto contact = r.pressure > 0;
+  const double approach = r.control == ContactControl::load
+                              ? contact.select(h + u, 0.0).sum() / contact.count()
+                              : r.approach.value();
+  const Field g = h + u - approach;
+  const double eps = detail::gap_tolerance(
+      tolerance, u.abs().maxCoeff(), h.abs().maxCoeff() + u.abs().maxCoeff() + std::abs(approach));
+  CHECK((r.pressure >= 0).all());
+  CHECK(contact.select(g.abs(), 0.0).maxCoeff() <= eps);
+  CHECK((-g).maxCoeff() <= eps);
+}
+
+}  // namespace
+
+TEST_CASE("Hard rough contacts converge, and only on a solution", "[contact][nested]") {
+  // The nested start and Polak-Ribiere's conjugation on the cases that strain a contact solver:
+  // near full contact, a very light load (a few cells), and a soft coating (strong contrast:
+  // 1 GPa on steel, 5 um, cells of 7.8 um), on a periodic rough surface of 128^2.
+  const Grid grid(128, 128, 1e-3, 1e-3);
+  SelfAffineSpec spec;
+  spec.rms_slope = 0.05;
+  spec.short_cutoff = 8 * grid.dx();
+  spec.long_cutoff = grid.lx() / 4;
+  spec.seed = 9;
+  const Field z = self_affine_surface(grid, spec);
+  const Field h = z.maxCoeff() - z;
+  const LayerStack soft({{Material(1e9, 0.4), 5e-6, Interface::bonded}}, kSteel);
+  const bool soft_coating = GENERATE(false, true);
+  const LayerStack& body = soft_coating ? soft : LayerStack(kSteel);
+  PeriodicOperator op(grid, periodic_influence_kernel(grid, *make_frf(body)), Method::frf_split);
+  const double e_star = kSteel.plane_strain_modulus();
+  struct Case {
+    const char* name;
+    ContactControl control;
+    double value;
+  };
+  const double h_min = h.minCoeff(), h_mean = h.mean();
+  for (const Case& c :
+       {Case{"near full contact", ContactControl::approach, h_mean - 1e-3 * (h_mean - h_min)},
+        Case{"very light load", ContactControl::load, 1e-7 * e_star * 1e-6},
+        Case{"moderate load", ContactControl::load, 0.02 * e_star * 0.05 * 1e-6}}) {
+    const ContactResult r = ContactSolver(op).solve(h, c.control, c.value);
+    INFO((soft_coating ? "soft coating, " : "steel, ")
+         << c.name << ": " << to_string(r.status) << " after " << r.iterations
+         << " iterations, area fraction " << r.contact_area / 1e-6);
+    REQUIRE(r.converged);
+    check_complementarity(op, h, r, 1e-10);
+  }
 }

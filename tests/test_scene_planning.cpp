@@ -1,5 +1,5 @@
 // FFTW planning of a scene's operator (scene/scene.hpp, contact_measure_cells): a contact on
-// 1024^2 cells or more measures its plans unless [method] planning says otherwise; a known
+// 2048^2 cells or more measures its plans unless [method] planning says otherwise; a known
 // pressure (one application) and smaller contacts keep "estimate".
 #include <catch2/catch.hpp>
 #include <filesystem>
@@ -34,14 +34,14 @@ const std::string pressure = "[pressure]\nkind = \"hertz\"\np0 = 1e9\na = 1e-4\n
 
 }  // namespace
 
-TEST_CASE("Contact scenes of 1024^2 cells or more measure their FFTW plans by default",
+TEST_CASE("Contact scenes of 2048^2 cells or more measure their FFTW plans by default",
           "[scene][planning]") {
-  CHECK(scene::contact_measure_cells == 1024 * 1024);
-  CHECK(read(scene_text(1024, contact, "")).method.options.planning == Planning::measure);
-  CHECK(read(scene_text(1022, contact, "")).method.options.planning == Planning::estimate);
-  CHECK(read(scene_text(1024, pressure, "")).method.options.planning == Planning::estimate);
+  CHECK(scene::contact_measure_cells == 2048 * 2048);
+  CHECK(read(scene_text(2048, contact, "")).method.options.planning == Planning::measure);
+  CHECK(read(scene_text(2046, contact, "")).method.options.planning == Planning::estimate);
+  CHECK(read(scene_text(2048, pressure, "")).method.options.planning == Planning::estimate);
   // What the scene says is kept.
-  const auto given = read(scene_text(1024, contact, "planning = \"estimate\"\n"));
+  const auto given = read(scene_text(2048, contact, "planning = \"estimate\"\n"));
   CHECK(given.method.planning_given);
   CHECK(given.method.options.planning == Planning::estimate);
   CHECK(read(scene_text(64, contact, "planning = \"measure\"\n")).method.options.planning ==
