@@ -19,7 +19,7 @@
 #include "frf/frf.hpp"
 #include "layers/layer_stack.hpp"
 #include "materials/material.hpp"
-#include "surfaces/self_affine_surface.hpp"
+#include "tests/rough_test_gap.hpp"
 #include "validation/hertz_contact.hpp"
 
 using namespace coatfft;
@@ -120,13 +120,7 @@ TEST_CASE("Nested start and either conjugation reach the same contact", "[contac
   const bool periodic = GENERATE(true, false);
   const ContactControl control = GENERATE(ContactControl::load, ContactControl::approach);
   const Grid grid(128, 128, 1e-3, 1e-3);
-  SelfAffineSpec spec;
-  spec.rms_slope = 0.05;
-  spec.short_cutoff = 8 * grid.dx();
-  spec.long_cutoff = grid.lx() / 4;
-  spec.seed = 5;
-  const Field z = self_affine_surface(grid, spec);
-  const Field h = z.maxCoeff() - z;
+  const Field h = test::rough_test_gap(grid, 8, 5);
   std::unique_ptr<SurfaceOperator> op;
   if (periodic) {
     op = std::make_unique<PeriodicOperator>(
@@ -205,13 +199,7 @@ TEST_CASE("Hard rough contacts converge, and only on a solution", "[contact][nes
   // near full contact, a very light load (a few cells), and a soft coating (strong contrast:
   // 1 GPa on steel, 5 um, cells of 7.8 um), on a periodic rough surface of 128^2.
   const Grid grid(128, 128, 1e-3, 1e-3);
-  SelfAffineSpec spec;
-  spec.rms_slope = 0.05;
-  spec.short_cutoff = 8 * grid.dx();
-  spec.long_cutoff = grid.lx() / 4;
-  spec.seed = 9;
-  const Field z = self_affine_surface(grid, spec);
-  const Field h = z.maxCoeff() - z;
+  const Field h = test::rough_test_gap(grid, 8, 9);
   const LayerStack soft({{Material(1e9, 0.4), 5e-6, Interface::bonded}}, kSteel);
   const bool soft_coating = GENERATE(false, true);
   const LayerStack& body = soft_coating ? soft : LayerStack(kSteel);

@@ -9,7 +9,7 @@
 #include "frf/frf.hpp"
 #include "layers/layer_stack.hpp"
 #include "materials/material.hpp"
-#include "surfaces/self_affine_surface.hpp"
+#include "tests/rough_test_gap.hpp"
 
 using namespace coatfft;
 
@@ -21,13 +21,7 @@ TEST_CASE("Element-wise passes on two threads give the one-thread contact", "[co
   // 512^2 cells: the passes run on ContactOptions::threads from there. Chunked sums change only
   // the rounding, so the two solves meet at the same solution to the solver tier.
   const Grid grid(512, 512, 1e-3, 1e-3);
-  SelfAffineSpec spec;
-  spec.rms_slope = 0.05;
-  spec.short_cutoff = 16 * grid.dx();
-  spec.long_cutoff = grid.lx() / 4;
-  spec.seed = 3;
-  const Field z = self_affine_surface(grid, spec);
-  const Field h = z.maxCoeff() - z;
+  const Field h = test::rough_test_gap(grid, 16, 3);
   PeriodicOperator op(grid, periodic_influence_kernel(grid, *make_frf(LayerStack(kSteel))),
                       Method::dcfft);
   const double load = 0.05 * kSteel.plane_strain_modulus() * 0.05 * 1e-6;
