@@ -462,13 +462,11 @@ void PolonskyKeerIteration::update_direction(std::ptrdiff_t n_working) {
       }
     }
   });
-  const double z_sum = sums.z, g_sum = sums.g, q_sum = sums.q, t_sum = sums.t;
-  double g_dot_z = sums.g_dot_z, q_dot_z = sums.q_dot_z;
   // Unpreconditioned, z = g already has zero mean on I_c under load control.
   const auto n = static_cast<double>(n_working);
-  const double z_mean = preconditioner_ && load_control_ ? z_sum / n : 0.0;
-  g_dot_z -= z_mean * g_sum;
-  q_dot_z -= z_mean * q_sum;
+  const double z_mean = preconditioner_ && load_control_ ? sums.z / n : 0.0;
+  const double g_dot_z = sums.g_dot_z - z_mean * sums.g;
+  const double q_dot_z = sums.q_dot_z - z_mean * sums.q;
   double beta = 0.0;
   if (conjugate_ && !widen_) {
     beta = conjugation_ == Conjugation::polak_ribiere
@@ -478,7 +476,7 @@ void PolonskyKeerIteration::update_direction(std::ptrdiff_t n_working) {
   // Under load control t must have zero mean on the working set too (the load constraint's
   // tangent space, where the step's curvature is positive): the previous direction had it on
   // its own working set, not necessarily on this one.
-  const double t_mean = load_control_ ? t_sum / n : 0.0;
+  const double t_mean = load_control_ ? sums.t / n : 0.0;
   over_cells<NoSums>(n_cells_, workers_, [&](auto first, auto last, NoSums&) {
     for (std::ptrdiff_t k = first; k < last; ++k) {
       const bool working = in_working_set(k);
@@ -521,11 +519,10 @@ std::optional<double> PolonskyKeerIteration::step_length(std::ptrdiff_t n_workin
       s.r_dot_t += rd[k] * td[k];
     }
   });
-  const double r_sum = sums.r, t_sum = sums.t, g_dot_t = sums.g_dot_t, r_dot_t = sums.r_dot_t;
-  const double r_mean = load_control_ ? r_sum / static_cast<double>(n_working) : 0.0;
-  const double denominator = r_dot_t - r_mean * t_sum;
-  if (!(denominator > 0) || !std::isfinite(g_dot_t)) return std::nullopt;
-  return g_dot_t / denominator;
+  const double r_mean = load_control_ ? sums.r / static_cast<double>(n_working) : 0.0;
+  const double denominator = sums.r_dot_t - r_mean * sums.t;
+  if (!(denominator > 0) || !std::isfinite(sums.g_dot_t)) return std::nullopt;
+  return sums.g_dot_t / denominator;
 }
 
 // Step 4: p <- max(p - tau t, 0), keeping the previous iterate in p_old; cells that overlap
@@ -631,11 +628,8 @@ std::string breakdown_message(ContactStatus status) {
 // one application: a unit pressure on one cell displaces by about dx / E*, a uniform one by the
 // domain's width over E*, about that times the cells per side (an order of magnitude is enough).
 double log2_compliance(SurfaceOperator& op) {
-  const Grid& grid = op.grid();
-  Field unit = Field::Zero(grid.nx(), grid.ny());
-  unit(0, 0) = 1.0;
-  const double cells_per_side = std::sqrt(static_cast<double>(grid.nb_cells()));
-  return std::log2(op.apply(unit).abs().maxCoeff()) + std::log2(cells_per_side);
+  const double cells_per_side = std::sqrt(static_cast<double>(op.grid().nb_cells()));
+  return std::log2(op.unit_response().abs().maxCoeff()) + std::log2(cells_per_side);
 }
 
 // Load control solves (h / s, W / s) and returns s times its solution: K is linear, so that is
@@ -816,24 +810,25 @@ void ContactSolver::check_problem(const Field& h, ContactControl control, double
 // carried to the fine cells, starts the fine iteration near its solution, so the fine grid spends
 // its iterations on what the coarse one cannot resolve (docs/contact.md, "Nested start"). Only
 // where the heights below the trial level form more than one patch (a rough surface).
-std::optional<Field> ContactSolver::nested_start(const Field& h, ContactControl control,
-                                                 double value, ContactResult& applications) {
+ContactSolver::NestedStart ContactSolver::nested_start(const Field& h, ContactControl control,
+                                                       double value) {
   constexpr std::ptrdiff_t coarsest = 64;    // cells per side of the coarsest grid
   constexpr double coarse_tolerance = 1e-3;  // a start needs no more (docs/contact.md)
   const Grid& grid = op_.grid();
   if (!options_.nested_start || grid.nx() % 2 != 0 || grid.ny() % 2 != 0 ||
       std::min(grid.nx(), grid.ny()) < 2 * coarsest)
-    return std::nullopt;
+    return {};
   // One patch below the trial level (a smooth indenter) is what the Hertzian start describes
   // nearly exactly: there the coarse solves would cost more than they spare (docs/contact.md).
   const double level = detail::level_below(h, detail::kTrialContactShare);
-  if (detail::count_patches(h < level, op_.periodic()) <= 1) return std::nullopt;
+  if (detail::count_patches(h < level, op_.periodic()) <= 1) return {};
   Field h_coarse = detail::restrict_by_mean(h);
   // The means' minimum lies above min(h): an approach just beyond min(h) may miss them.
-  if (control == ContactControl::approach && !(value > h_coarse.minCoeff())) return std::nullopt;
+  if (control == ContactControl::approach && !(value > h_coarse.minCoeff())) return {};
   const std::unique_ptr<SurfaceOperator> coarse = op_.coarsened();
-  if (!coarse) return std::nullopt;
-  ++applications.operator_applications;
+  if (!coarse) return {};
+  NestedStart nested;
+  nested.applications = 1;  // coarsened()'s unit response
   ContactOptions options = options_;
   options.tolerance = std::max(options_.tolerance, coarse_tolerance);
   options.compute_approach = false;
@@ -841,18 +836,21 @@ std::optional<Field> ContactSolver::nested_start(const Field& h, ContactControl 
   options.preconditioner_planning = Planning::estimate;  // a few cheap iterations
   ContactSolver solver(*coarse, options);
   const ContactResult result = solver.solve(h_coarse, control, value);
-  applications.coarse_applications += result.operator_applications + result.coarse_applications;
-  if (!(result.pressure.sum() > 0)) return std::nullopt;
-  return detail::prolong_by_cell(result.pressure);
+  nested.coarse_applications = result.operator_applications + result.coarse_applications;
+  if (result.pressure.sum() > 0) nested.pressure = detail::prolong_by_cell(result.pressure);
+  return nested;
 }
 
 ContactResult ContactSolver::run(const Field& h, ContactControl control, double value,
                                  std::optional<Field> start) {
   check_problem(h, control, value);
   const auto solve_start = std::chrono::steady_clock::now();
-  ContactResult nested;  // the applications of a nested start
-  if (!start) start = nested_start(h, control, value, nested);
-  int scale_applications = nested.operator_applications;
+  NestedStart nested;
+  if (!start) {
+    nested = nested_start(h, control, value);
+    start = std::move(nested.pressure);
+  }
+  int scale_applications = nested.applications;
   const double s =
       control == ContactControl::load ? load_scale(op_, h, value, scale_applications) : 1.0;
   const Field h_scaled = s == 1.0 ? Field() : Field(h / s);

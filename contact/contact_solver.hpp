@@ -108,7 +108,6 @@ enum class ContactStatus {
 /// "non_positive_curvature", "coupling_limit" (the value of summary.json's "status").
 std::string_view to_string(ContactStatus status);
 
-/// Output of one contact solve. Fields have the grid's shape (nx, ny).
 /// Where a solve's wall time went [s] (steady clock), for the benchmarks of the solver's cost
 /// (docs/benchmarks.md, "Where a contact iteration goes"): the operator applications of the
 /// steps (one an iteration), the recomputations of the displacement after a step changed the
@@ -119,6 +118,7 @@ struct ContactTimings {
   double total = 0;  ///< the whole solve
 };
 
+/// Output of one contact solve. Fields have the grid's shape (nx, ny).
 struct ContactResult {
   Field pressure;      ///< p [Pa], >= 0 everywhere
   Field displacement;  ///< u = K p [m], positive into the body, as the operator returns it
@@ -216,11 +216,15 @@ class ContactSolver {
   void check_problem(const Field& height, ContactControl control, double value) const;
   ContactResult run(const Field& height, ContactControl control, double value,
                     std::optional<Field> start);
-  // The pressure of the same contact solved on the coarser grid, on this grid; nothing where the
-  // grid is too small or the operator has no coarse form. Adds the coarse solve's applications
-  // (its own, and on this grid the one that built the coarse operator) to `applications`.
-  std::optional<Field> nested_start(const Field& height, ContactControl control, double value,
-                                    ContactResult& applications);
+  // A nested start: the pressure of the same contact solved on the coarser grid, on this grid
+  // (none where the grid is too small, the surface one patch or the operator without a coarse
+  // form), with the applications it cost on this grid (the coarse operator's) and on the coarser.
+  struct NestedStart {
+    std::optional<Field> pressure;
+    int applications = 0;
+    int coarse_applications = 0;
+  };
+  NestedStart nested_start(const Field& height, ContactControl control, double value);
 
   SurfaceOperator& op_;
   ContactOptions options_;

@@ -173,11 +173,9 @@ void DcfftOperator::convolve_columns(Worker& worker, std::ptrdiff_t first_block,
 
 std::unique_ptr<SurfaceOperator> DcfftOperator::coarsened() {
   if (nx_ % 2 != 0 || ny_ % 2 != 0) return nullptr;
-  // The response to a unit pressure on cell (0, 0) is the coefficient quarter K(i, j), i, j >= 0.
-  Field unit = Field::Zero(nx_, ny_);
-  unit(0, 0) = 1.0;
+  // The unit response is the coefficient quarter K(i, j), i, j >= 0.
   Field quarter = Field::Zero(nx_ + 1, ny_ + 1);
-  quarter.topLeftCorner(nx_, ny_) = apply(unit);
+  quarter.topLeftCorner(nx_, ny_) = unit_response();
   const Grid coarse(nx_ / 2, ny_ / 2, grid_.lx(), grid_.ly());
   const InfluenceKernel kernel(coarse, InfluenceKernel::Form::coefficients,
                                detail::coarse_kernel_quarter(quarter), method_);

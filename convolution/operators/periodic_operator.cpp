@@ -126,10 +126,7 @@ void PeriodicOperator::apply(const Field& pressure, Field& displacement) {
 
 std::unique_ptr<SurfaceOperator> PeriodicOperator::coarsened() {
   if (grid_.nx() % 2 != 0 || grid_.ny() % 2 != 0) return nullptr;
-  // The kernel is the response to a unit pressure on cell (0, 0).
-  Field unit = Field::Zero(grid_.nx(), grid_.ny());
-  unit(0, 0) = 1.0;
-  const Field kernel = apply(unit);
+  const Field kernel = unit_response();
   const Grid coarse(grid_.nx() / 2, grid_.ny() / 2, grid_.lx(), grid_.ly());
   return std::make_unique<PeriodicOperator>(coarse, detail::coarse_periodic_kernel(kernel), method_,
                                             Planning::estimate, precision_, threads_);

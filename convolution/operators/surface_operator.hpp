@@ -43,6 +43,14 @@ class SurfaceOperator {
     apply(pressure, u);
     return u;
   }
+
+  /// The displacement of a unit pressure [1 Pa] on cell (0, 0) (one application): the kernel's
+  /// coefficients K(i, j) at the offsets i, j >= 0 (modulo the period on a periodic grid).
+  Field unit_response() {
+    Field unit = Field::Zero(grid().nx(), grid().ny());
+    unit(0, 0) = 1.0;
+    return apply(unit);
+  }
 };
 
 }  // namespace coatfft
