@@ -146,8 +146,9 @@ int terminate_while_writing(const fs::path& scene, const fs::path& out, const fs
 
 TEST_CASE("an interrupted run leaves no temporary files, and OUTDIR as it was", "[cli][safety]") {
   const fs::path dir = fresh("safety_signal");
+  // 512^2 cells: about 30 MB of outputs, written in about 0.3 s, some twenty of the watch's polls.
   const fs::path scene =
-      write_scene(kGoodScene, "safety_signal/scene", "nx = 33\nny = 33", "nx = 1024\nny = 1024");
+      write_scene(kGoodScene, "safety_signal/scene", "nx = 33\nny = 33", "nx = 512\nny = 512");
   const fs::path out = dir / "out";
   // A new OUTDIR: staged beside it, nothing left.
   CHECK(terminate_while_writing(scene, out, dir) == 143);  // 128 + SIGTERM, re-raised

@@ -14,7 +14,7 @@ import pytest
 import coatfft
 from conftest import quiet_operator, radius
 
-DELAY = 0.5  # [s] from the start of the call to the SIGINT (the calls run for tens of seconds)
+DELAY = 0.25  # [s] from the start of the call to the SIGINT (the calls run for tens of seconds)
 # [s] from the SIGINT to the exception: about 0.1 s measured; generous for a loaded machine,
 # far below what the calls would take.
 RESPONSE = 5.0
@@ -136,7 +136,7 @@ def test_a_handler_that_does_not_raise_lets_the_call_go_on(contact_case):
     try:
         raised, _ = interrupt(
             lambda: coatfft.solve_contact(op, height, load=100.0, tolerance=1e-300,
-                                          max_iterations=400), delay=0.2)
+                                          max_iterations=300), delay=0.2)
     finally:
         signal.signal(signal.SIGINT, previous)
     assert raised is None
