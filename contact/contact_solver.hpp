@@ -35,7 +35,8 @@ enum class Conjugation {
 /// Stopping rule and limits of the iteration.
 struct ContactOptions {
   /// Converged when the relative pressure change of one iteration,
-  /// sum |p_new - p_old| / sum p_new (Polonsky & Keer's criterion), drops below this [-].
+  /// sum |p_new - p_old| / sum p_new (Polonsky & Keer's criterion; held as an upper bound of it,
+  /// docs/contact.md), drops below this and the complementarity conditions hold [-].
   double tolerance = 1e-10;
   /// Iteration limit; reaching it returns converged = false (never throws).
   int max_iterations = 1000;
