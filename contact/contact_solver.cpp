@@ -15,6 +15,7 @@
 #include "contact/fourier_preconditioner.hpp"
 #include "contact/grid_transfer.hpp"
 #include "contact/initial_pressure.hpp"
+#include "core/detail/huge_pages.hpp"
 #include "core/detail/parallel_for.hpp"
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
@@ -25,6 +26,23 @@ namespace coatfft {
 namespace {
 
 using Mask = Eigen::Array<bool, Eigen::Dynamic, Eigen::Dynamic>;
+using CellMask = Eigen::Array<unsigned char, Eigen::Dynamic, 1>;  // one byte a cell
+
+// A work field of h's shape on huge pages (core/detail/huge_pages.hpp), its values unset, and
+// the same zeroed; a cell mask of h's size, cleared.
+Field work_field(const Field& h) {
+  return detail::untouched_array<Field>(h.rows(), h.cols());
+}
+Field zero_field(const Field& h) {
+  Field f = work_field(h);
+  f.setZero();
+  return f;
+}
+CellMask clear_mask(const Field& h) {
+  CellMask m = detail::untouched_array<CellMask>(h.size(), 1);
+  m.setZero();
+  return m;
+}
 
 // The fewest cells whose element-wise passes run on ContactOptions::threads: a pass over 512^2
 // cells takes about a millisecond, against tens of microseconds to start a thread.
@@ -156,7 +174,7 @@ class PolonskyKeerIteration {
   double scale_ = 1.0, old_scale_ = 1.0;
   // The working set, one byte a cell (the passes over its cells read it instead of p and g), and
   // the set the direction t (and g_prev_) was last written on: outside it both are zero.
-  std::vector<unsigned char> working_, direction_set_;
+  CellMask working_, direction_set_;
   // Polak-Ribiere: the previous gap on its working set (empty for Polonsky & Keer's rule). The
   // preconditioned gap z lives in the preconditioner's own field (g itself serves without one).
   Field g_prev_;
@@ -205,17 +223,17 @@ PolonskyKeerIteration::PolonskyKeerIteration(SurfaceOperator& op,
       cell_area_(op.grid().dx() * op.grid().dy()),
       n_cells_(h.size()),
       workers_(n_cells_ >= kParallelCells ? options.threads : 1),
-      p_(start_pressure ? std::move(*start_pressure) : Field(h.rows(), h.cols())),
-      u_(h.rows(), h.cols()),
-      g_(h.rows(), h.cols()),
-      t_(Field::Zero(h.rows(), h.cols())),  // read (times beta = 0) by the first iteration
-      r_(h.rows(), h.cols()),
-      p_old_(h.rows(), h.cols()),
-      working_(static_cast<std::size_t>(h.size()), 0),
-      direction_set_(static_cast<std::size_t>(h.size()), 0),
+      p_(start_pressure ? std::move(*start_pressure) : work_field(h)),
+      u_(work_field(h)),
+      g_(work_field(h)),
+      t_(zero_field(h)),  // read (times beta = 0) by the first iteration
+      r_(work_field(h)),
+      p_old_(work_field(h)),
+      working_(clear_mask(h)),
+      direction_set_(clear_mask(h)),
       conjugation_(options.conjugation),
       update_by_linearity_(options.update_by_linearity) {
-  if (conjugation_ == Conjugation::polak_ribiere) g_prev_ = Field::Zero(h.rows(), h.cols());
+  if (conjugation_ == Conjugation::polak_ribiere) g_prev_ = zero_field(h);
   start(start_pressure.has_value());
 }
 
@@ -636,6 +654,7 @@ ContactResult PolonskyKeerIteration::result(ContactStatus status, int iterations
   }
   ContactResult result;
   result.control = control_;
+  result.gap = work_field(h_);
   result.gap = h_ + u_ - approach;
   result.pressure = std::move(p_);
   result.displacement = std::move(u_);
@@ -891,7 +910,11 @@ ContactResult ContactSolver::run(const Field& h, ContactControl control, double 
   int scale_applications = nested.applications;
   const double s =
       control == ContactControl::load ? load_scale(op_, h, value, scale_applications) : 1.0;
-  const Field h_scaled = s == 1.0 ? Field() : Field(h / s);
+  Field h_scaled;
+  if (s != 1.0) {
+    h_scaled = work_field(h);
+    h_scaled = h / s;
+  }
   COATFFT_REQUIRE(s == 1.0 || (h_scaled.allFinite() && value / s > 0),
                   "ContactSolver: load = ", value, " N and heights spanning ",
                   h.maxCoeff() - h.minCoeff(),

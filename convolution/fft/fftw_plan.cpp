@@ -1,6 +1,5 @@
 #include "convolution/fft/fftw_plan.hpp"
 
-#include <sys/mman.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -13,6 +12,7 @@
 #include <sstream>
 #include <type_traits>
 
+#include "core/detail/huge_pages.hpp"
 #include "core/detail/parse_name.hpp"
 #include "core/error.hpp"
 
@@ -121,16 +121,9 @@ FftwBuffer<T>::FftwBuffer(std::size_t size) : size_(size) {
   }
   if (data_ == nullptr) throw std::bad_alloc();
   const std::size_t bytes = size * sizeof(T);
-  if (bytes >= (std::size_t{4} << 20)) {
-    // Large FFT buffers are walked column-wise (y transforms): with 4 KiB pages every row is
-    // another page and the TLB thrashes. Transparent huge pages (2 MiB) avoid that; the kernel
-    // may decline, which only costs speed.
-    const auto begin = reinterpret_cast<std::uintptr_t>(data_);
-    const std::uintptr_t page = 4096;
-    const std::uintptr_t first = (begin + page - 1) / page * page;
-    const std::uintptr_t last = (begin + bytes) / page * page;
-    if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
-  }
+  // Large FFT buffers are walked column-wise (y transforms): with 4 KiB pages every row is
+  // another page and the TLB thrashes.
+  detail::advise_huge_pages(data_, bytes);
   // Zero-filled so that a buffer is never read uninitialised (and padding starts as zeros).
   std::memset(static_cast<void*>(data_), 0, bytes);
 }

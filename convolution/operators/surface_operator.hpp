@@ -38,19 +38,11 @@ class SurfaceOperator {
   virtual std::unique_ptr<SurfaceOperator> coarsened() { return nullptr; }
 
   /// Allocating convenience form.
-  Field apply(const Field& pressure) {
-    Field u;
-    apply(pressure, u);
-    return u;
-  }
+  Field apply(const Field& pressure);
 
   /// The displacement of a unit pressure [1 Pa] on cell (0, 0) (one application): the kernel's
   /// coefficients K(i, j) at the offsets i, j >= 0 (modulo the period on a periodic grid).
-  Field unit_response() {
-    Field unit = Field::Zero(grid().nx(), grid().ny());
-    unit(0, 0) = 1.0;
-    return apply(unit);
-  }
+  Field unit_response();
 };
 
 }  // namespace coatfft
