@@ -72,6 +72,7 @@ ContactOptions contact_options(const Operator& op, bool approach_control, double
   options.tolerance = tolerance;
   options.max_iterations = max_iterations;
   options.preconditioned = preconditioned;
+  options.threads = op.threads();
   // The approach is part of the result, unless the operator was built without g(0) (a named
   // pipeline with g0 = "omitted"), which leaves the displacement's level unknown. Under approach
   // control that level is what the approach is measured against: the solve would converge to a

@@ -16,11 +16,14 @@ namespace coatfft::python {
 
 class Operator {
  public:
-  Operator(BuiltOperator built, pybind11::dict report)
-      : built_(std::move(built)), report_(std::move(report)) {}
+  Operator(BuiltOperator built, pybind11::dict report, int threads)
+      : built_(std::move(built)), report_(std::move(report)), threads_(threads) {}
 
   const Grid& grid() const { return built_.op->grid(); }
   const pybind11::dict& report() const { return report_; }
+  /// The threads it was built with, which a contact solve on it uses too (the solver's
+  /// preconditioner and element-wise passes), as `coatfft run` does.
+  int threads() const { return threads_; }
   std::string_view method() const { return to_string(built_.report.method); }
   /// Whether the displacement's level is known: not for an FRF pipeline built with
   /// g0 = "omitted", whose displacements carry an unknown constant offset.
@@ -35,6 +38,7 @@ class Operator {
  private:
   BuiltOperator built_;
   pybind11::dict report_;
+  int threads_;
   std::mutex mutex_;
   Field pressure_;      // apply()'s input, copied from numpy
   Field displacement_;  // and its output, before it is copied out

@@ -220,6 +220,20 @@ def test_light_rough_contact_converges_only_on_a_solution(steel):
             assert r.max_penetration == max(0.0, -r.gap.min())
 
 
+def test_a_two_thread_operator_solves_the_same_contact(steel):
+    # The solve on an operator runs on the operator's threads (its preconditioner's transforms):
+    # the same contact as on one thread, to the sums' order (1e-9 of the largest pressure: ten
+    # times the tolerance's pressure change, 1e-10, and far below any contact's detail).
+    grid = coatfft.Grid(128, 128, 0.5e-3, 0.5e-3)
+    h = rough_gap(128, 0.5e-3, 0.8, 0.2e-6, 5)
+    one, two = (coatfft.solve_contact(
+        coatfft.make_operator(grid, steel, method="dcfft", boundary="periodic", threads=t),
+        h, load=0.3) for t in (1, 2))
+    assert one.converged and two.converged
+    assert one.iterations == two.iterations
+    assert np.abs(two.pressure - one.pressure).max() <= 1e-9 * one.pressure.max()
+
+
 def test_extreme_loads_give_finite_fields(dcfft):
     # The problem is homogeneous: heights and load scaled by c scale the solution by c. At
     # c = 1e195 and 1e-290 the solver's inner products would leave double's range unscaled (they
