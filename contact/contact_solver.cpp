@@ -34,14 +34,10 @@ Field work_field(const Field& h) {
   return detail::untouched_array<Field>(h.rows(), h.cols());
 }
 Field zero_field(const Field& h) {
-  Field f = work_field(h);
-  f.setZero();
-  return f;
+  return detail::zeroed_array<Field>(h.rows(), h.cols());
 }
 CellMask clear_mask(const Field& h) {
-  CellMask m = detail::untouched_array<CellMask>(h.size(), 1);
-  m.setZero();
-  return m;
+  return detail::zeroed_array<CellMask>(h.size(), 1);
 }
 
 // The fewest cells whose element-wise passes run on ContactOptions::threads: a pass over 512^2

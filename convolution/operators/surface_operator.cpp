@@ -13,8 +13,7 @@ Field SurfaceOperator::apply(const Field& pressure) {
 }
 
 Field SurfaceOperator::unit_response() {
-  Field unit = detail::untouched_array<Field>(grid().nx(), grid().ny());
-  unit.setZero();
+  Field unit = detail::zeroed_array<Field>(grid().nx(), grid().ny());
   unit(0, 0) = 1.0;
   return apply(unit);
 }

@@ -34,4 +34,12 @@ Array untouched_array(std::ptrdiff_t rows, std::ptrdiff_t cols) {
   return a;
 }
 
+// The same, zeroed (after the advice: the zeros are its first touch).
+template <class Array>
+Array zeroed_array(std::ptrdiff_t rows, std::ptrdiff_t cols) {
+  Array a = untouched_array<Array>(rows, cols);
+  a.setZero();
+  return a;
+}
+
 }  // namespace coatfft::detail
