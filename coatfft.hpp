@@ -34,6 +34,13 @@
 #include "core/norms.hpp"
 #include "core/threads.hpp"
 #include "core/types.hpp"
+#ifdef COATFFT_WITH_MPI  // a build with COATFFT_MPI (docs/scale.md)
+#include "distributed/communicator.hpp"
+#include "distributed/distributed_periodic_operator.hpp"
+#include "distributed/mpi_session.hpp"
+#include "distributed/self_affine_slab.hpp"
+#include "distributed/slab.hpp"
+#endif
 #include "frf/coated_frf.hpp"
 #include "frf/frf.hpp"
 #include "frf/frf_table.hpp"

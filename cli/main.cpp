@@ -17,6 +17,7 @@
 #include "cli/surface_command.hpp"
 #include "cli/topography_command.hpp"
 #include "cli/validate_frf_command.hpp"
+#include "core/detail/mpi_launch.hpp"
 #include "core/detail/shorten.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
@@ -199,6 +200,15 @@ int main(int argc, char** argv) {
   const std::vector<Command> commands{add_run(app), add_check(app),   add_validate_frf(app),
                                       add_frf(app), add_surface(app), add_topography(app)};
   if (refuse_unknown_command(argc, argv)) return 2;
+  // Under mpirun every rank would run the whole job into the same output: refused (on rank 0's
+  // stderr, once) until the command runs distributed (docs/scale.md).
+  if (const auto launch = coatfft::detail::mpi_launch(); launch.size > 1) {
+    if (launch.rank == 0)
+      std::cerr << "coatfft: error: started by an MPI launcher with " << launch.size
+                << " ranks, but no command runs distributed yet (docs/scale.md): run it without "
+                   "mpirun\n";
+    return 2;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

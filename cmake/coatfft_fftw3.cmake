@@ -25,3 +25,16 @@ if(NOT TARGET FFTW3::fftw3)
   coatfft_import_fftw(fftw3f "")
   coatfft_import_fftw(fftw3f_threads "FFTW3::fftw3f;Threads::Threads")
 endif()
+# FFTW's MPI library (Debian's libfftw3-mpi-dev, built against Open MPI), for distributed runs:
+# FFTW3::fftw3_mpi only where it is installed; the caller links MPI itself.
+if(NOT TARGET FFTW3::fftw3_mpi)
+  find_path(COATFFT_FFTW3_MPI_INCLUDE_DIR fftw3-mpi.h HINTS ${COATFFT_FFTW3_INCLUDE_DIR})
+  find_library(COATFFT_FFTW3_MPI_LIBRARY fftw3_mpi HINTS ${COATFFT_FFTW3_LIBRARY_DIRS})
+  if(COATFFT_FFTW3_MPI_INCLUDE_DIR AND COATFFT_FFTW3_MPI_LIBRARY)
+    add_library(FFTW3::fftw3_mpi UNKNOWN IMPORTED GLOBAL)
+    set_target_properties(FFTW3::fftw3_mpi PROPERTIES
+                          IMPORTED_LOCATION "${COATFFT_FFTW3_MPI_LIBRARY}"
+                          INTERFACE_INCLUDE_DIRECTORIES "${COATFFT_FFTW3_MPI_INCLUDE_DIR}"
+                          INTERFACE_LINK_LIBRARIES FFTW3::fftw3)
+  endif()
+endif()

@@ -311,15 +311,9 @@ std::size_t npy_data_bytes(const fs::path& path, const NpyStart& npy, const NpyL
 
 }  // namespace
 
-void write_npy_array(const std::filesystem::path& path, std::span<const std::size_t> shape,
-                     std::span<const double> data) {
-  std::size_t count = 1;
+std::string npy_preamble(std::span<const std::size_t> shape) {
   std::string dims;
-  for (std::size_t n : shape) {
-    count *= n;
-    dims += std::to_string(n) + ", ";
-  }
-  COATFFT_REQUIRE(count == data.size(), "write_npy_array: the shape does not match the data");
+  for (std::size_t n : shape) dims += std::to_string(n) + ", ";
   if (shape.size() > 1) dims.resize(dims.size() - 2);  // a 1-tuple keeps its comma: (n,)
   std::string header = "{'descr': '<f8', 'fortran_order': False, 'shape': (" + dims + "), }";
   // NumPy format 1.0: magic(6) + version(2) + header length(2) + header, padded with blanks and
@@ -327,15 +321,21 @@ void write_npy_array(const std::filesystem::path& path, std::span<const std::siz
   const std::size_t unpadded = kMagicSize + 4 + header.size() + 1;
   header.append((64 - unpadded % 64) % 64, ' ');
   header.push_back('\n');
+  const auto header_size = static_cast<std::uint16_t>(header.size());
+  std::string preamble(kMagic, kMagicSize);
+  preamble += {'\x01', '\x00', static_cast<char>(header_size & 0xff),
+               static_cast<char>(header_size >> 8)};
+  return preamble + header;
+}
+
+void write_npy_array(const std::filesystem::path& path, std::span<const std::size_t> shape,
+                     std::span<const double> data) {
+  std::size_t count = 1;
+  for (std::size_t n : shape) count *= n;
+  COATFFT_REQUIRE(count == data.size(), "write_npy_array: the shape does not match the data");
   std::ofstream out(path, std::ios::binary);
   COATFFT_REQUIRE(out.good(), "cannot open ", path.string(), " for writing");
-  const auto header_size = static_cast<std::uint16_t>(header.size());
-  out.write(kMagic, kMagicSize);
-  out.put('\x01');
-  out.put('\x00');
-  out.put(static_cast<char>(header_size & 0xff));
-  out.put(static_cast<char>(header_size >> 8));
-  out << header;
+  out << npy_preamble(shape);
   out.write(reinterpret_cast<const char*>(data.data()),
             static_cast<std::streamsize>(data.size() * sizeof(double)));
   COATFFT_REQUIRE(out.good(), "failed writing ", path.string());

@@ -11,11 +11,17 @@
 #include <cstdint>
 #include <filesystem>
 #include <span>
+#include <string>
 
 #include "core/types.hpp"
 #include "scene/input_file.hpp"
 
 namespace coatfft::scene {
+
+/// The bytes before the data of a C-order little-endian float64 .npy file (format 1.0) of shape
+/// `shape`: magic, version, header length and the header dict, padded so that the data starts on
+/// a 64-byte boundary.
+std::string npy_preamble(std::span<const std::size_t> shape);
 
 /// Writes `data` as a C-order little-endian float64 .npy file of shape `shape` (whose product
 /// must be data.size()).

@@ -5,10 +5,13 @@
 #include <complex>
 #include <numbers>
 #include <random>
+#include <span>
 #include <string_view>
+#include <vector>
 
 #include "convolution/fft/fftw_plan.hpp"
 #include "core/error.hpp"
+#include "surfaces/detail/self_affine_spectrum.hpp"
 
 namespace coatfft {
 
@@ -75,28 +78,10 @@ double amplitude(double q, double hurst, const Cutoffs& c) {
   return std::pow(std::max(q, c.q_r) / c.q_r, -(1.0 + hurst));
 }
 
-// The mean squares of height and slope of the surface for C0 = 1, by Parseval on the grid: sums
-// of a^2 and |k|^2 a^2 over the modes. Every mode has its amplitude a exactly, whatever its phase,
-// so they fix the ratio of rms height to rms slope before any surface is made.
-struct UnitMoments {
-  double height2 = 0.0, slope2 = 0.0;
-};
-
-UnitMoments unit_moments(const Grid& g, double hurst, const Cutoffs& c) {
-  UnitMoments m;
-  for (std::ptrdiff_t j = 0; j < g.ny(); ++j)
-    for (std::ptrdiff_t i = 0; i <= g.nx() / 2; ++i) {
-      const double weight = (i == 0 || i == g.nx() / 2) ? 1.0 : 2.0;
-      const double q = wavenumber(g, i, j);
-      const double a = amplitude(q, hurst, c);
-      m.height2 += weight * a * a;
-      m.slope2 += weight * q * q * a * a;
-    }
-  return m;
-}
+using detail::SpectrumMoments;
 
 // The requested rms within the limits of the header, and for an rms slope the rms height it gives.
-void check_rms(const SelfAffineSpec& s, const UnitMoments& m, std::string_view height_name,
+void check_rms(const SelfAffineSpec& s, const SpectrumMoments& m, std::string_view height_name,
                std::string_view slope_name) {
   COATFFT_REQUIRE(m.height2 > 0, "self-affine surface: no Fourier mode lies between the cut-offs");
   if (s.rms_height) {
@@ -117,27 +102,6 @@ void check_rms(const SelfAffineSpec& s, const UnitMoments& m, std::string_view h
                   max_rms_height, "] m (docs/surfaces.md, \"Limits\")");
 }
 
-// Random phases, in a fixed order, with the symmetry that makes the field real: on the columns
-// i = 0 and i = nx/2 (their own conjugates' column) the entry of -j is the conjugate of that of
-// j, and the four self-conjugate entries are real (a random sign).
-void fill(const Grid& g, const SelfAffineSpec& s, const Cutoffs& c, HalfSpectrum& spec) {
-  std::mt19937_64 rng(s.seed);
-  const std::ptrdiff_t nx = g.nx(), ny = g.ny();
-  for (std::ptrdiff_t j = 0; j < ny; ++j)
-    for (std::ptrdiff_t i = 0; i < spec.hx; ++i) {
-      const double phase = 2.0 * pi * uniform(rng);
-      const double a = amplitude(wavenumber(g, i, j), s.hurst, c);
-      const bool own_column = i == 0 || i == nx / 2;
-      if (own_column && (j == 0 || j == ny / 2)) {
-        spec.at(i, j) = phase < std::numbers::pi ? a : -a;
-      } else if (own_column && j > ny / 2) {
-        spec.at(i, j) = std::conj(spec.at(i, ny - j));
-      } else {
-        spec.at(i, j) = std::polar(a, phase);
-      }
-    }
-}
-
 Field inverse(const Grid& g, HalfSpectrum& spec) {
   FftwRealBuffer out(static_cast<std::size_t>(g.nx() * g.ny()));
   const FftwPlan plan = FftwPlan::create(1, [&] {
@@ -149,6 +113,90 @@ Field inverse(const Grid& g, HalfSpectrum& spec) {
 }
 
 }  // namespace
+
+namespace detail {
+
+// By Parseval on the grid, the unscaled field's mean squares of height and slope are the sums of
+// a^2 and |k|^2 a^2 over the modes: every mode has its amplitude a exactly, whatever its phase,
+// so they fix the rms before any surface is made, and the same for any share of the rows.
+std::vector<SpectrumMoments> self_affine_row_moments(const Grid& g, const SelfAffineSpec& s,
+                                                     std::ptrdiff_t j0, std::ptrdiff_t j1) {
+  const Cutoffs c = validate_spectrum(g, s);
+  std::vector<SpectrumMoments> rows(static_cast<std::size_t>(j1 - j0));
+  for (std::ptrdiff_t j = j0; j < j1; ++j) {
+    SpectrumMoments& m = rows[static_cast<std::size_t>(j - j0)];
+    for (std::ptrdiff_t i = 0; i <= g.nx() / 2; ++i) {
+      const double weight = (i == 0 || i == g.nx() / 2) ? 1.0 : 2.0;
+      const double q = wavenumber(g, i, j);
+      const double a = amplitude(q, s.hurst, c);
+      m.height2 += weight * a * a;
+      m.slope2 += weight * q * q * a * a;
+    }
+  }
+  return rows;
+}
+
+double self_affine_scale(const SelfAffineSpec& s, std::span<const SpectrumMoments> rows,
+                         std::string_view height_name, std::string_view slope_name) {
+  SpectrumMoments m;
+  for (const SpectrumMoments& row : rows) {
+    m.height2 += row.height2;
+    m.slope2 += row.slope2;
+  }
+  check_rms(s, m, height_name, slope_name);
+  return s.rms_height ? *s.rms_height / std::sqrt(m.height2) : *s.rms_slope / std::sqrt(m.slope2);
+}
+
+// Random phases drawn in a fixed order, entry (i, j) the (j (nx/2 + 1) + i)-th number, with the
+// symmetry that makes the field real: on the columns i = 0 and i = nx/2 (their own conjugates'
+// column) the entry of -j is the conjugate of that of j, and the four self-conjugate entries are
+// real (a random sign). Rows from j0 on: the generator skips the numbers of the rows before; the
+// conjugates of rows before j0 come from a second generator that walks those rows.
+void self_affine_rows(const Grid& g, const SelfAffineSpec& s, std::ptrdiff_t j0, std::ptrdiff_t j1,
+                      std::complex<double>* rows) {
+  const Cutoffs c = validate_spectrum(g, s);
+  if (j1 <= j0) return;
+  const std::ptrdiff_t nx = g.nx(), ny = g.ny(), hx = nx / 2 + 1;
+  const auto a = [&](std::ptrdiff_t i, std::ptrdiff_t j) {
+    return amplitude(wavenumber(g, i, j), s.hurst, c);
+  };
+  // The own columns' entries of rows m0 <= m < j0 whose conjugates lie in j0 <= j < j1.
+  const std::ptrdiff_t m0 = std::max<std::ptrdiff_t>(ny - j1 + 1, 1);
+  std::vector<std::complex<double>> before(
+      static_cast<std::size_t>(2 * std::max<std::ptrdiff_t>(j0 - m0, 0)));
+  const auto own = [&](std::ptrdiff_t m, std::ptrdiff_t i) {
+    return static_cast<std::size_t>(2 * (m - m0) + (i == 0 ? 0 : 1));
+  };
+  std::mt19937_64 rng(s.seed);
+  if (j0 > m0) {
+    rng.discard(static_cast<unsigned long long>(m0 * hx));
+    for (std::ptrdiff_t m = m0; m < j0; ++m)
+      for (std::ptrdiff_t i = 0; i < hx; ++i) {
+        const double phase = 2.0 * pi * uniform(rng);
+        if (i == 0 || i == nx / 2) before[own(m, i)] = std::polar(a(i, m), phase);
+      }
+  } else {
+    rng.discard(static_cast<unsigned long long>(j0 * hx));
+  }
+  const auto at = [&](std::ptrdiff_t i, std::ptrdiff_t j) -> std::complex<double>& {
+    return rows[(j - j0) * hx + i];
+  };
+  for (std::ptrdiff_t j = j0; j < j1; ++j)
+    for (std::ptrdiff_t i = 0; i < hx; ++i) {
+      const double phase = 2.0 * pi * uniform(rng);
+      const bool own_column = i == 0 || i == nx / 2;
+      if (own_column && (j == 0 || j == ny / 2)) {
+        at(i, j) = phase < pi ? a(i, j) : -a(i, j);
+      } else if (own_column && j > ny / 2) {
+        const std::ptrdiff_t m = ny - j;
+        at(i, j) = std::conj(m >= j0 ? at(i, m) : before[own(m, i)]);
+      } else {
+        at(i, j) = std::polar(a(i, j), phase);
+      }
+    }
+}
+
+}  // namespace detail
 
 double spectral_rms_slope(const Grid& g, const Field& h) {
   COATFFT_REQUIRE(h.rows() == g.nx() && h.cols() == g.ny(),
@@ -176,18 +224,16 @@ double spectral_rms_slope(const Grid& g, const Field& h) {
 
 void check_self_affine_spec(const Grid& grid, const SelfAffineSpec& spec,
                             std::string_view height_name, std::string_view slope_name) {
-  const Cutoffs cutoffs = validate_spectrum(grid, spec);
-  check_rms(spec, unit_moments(grid, spec.hurst, cutoffs), height_name, slope_name);
+  detail::self_affine_scale(spec, detail::self_affine_row_moments(grid, spec, 0, grid.ny()),
+                            height_name, slope_name);
 }
 
 Field self_affine_surface(const Grid& grid, const SelfAffineSpec& spec) {
-  check_self_affine_spec(grid, spec);
-  const Cutoffs cutoffs = validate_spectrum(grid, spec);
+  const double scale =
+      detail::self_affine_scale(spec, detail::self_affine_row_moments(grid, spec, 0, grid.ny()));
   HalfSpectrum half(grid.nx(), grid.ny());
-  fill(grid, spec, cutoffs, half);
-  Field h = inverse(grid, half);
-  const double rms = spec.rms_height ? std::sqrt(h.square().mean()) : spectral_rms_slope(grid, h);
-  return h * ((spec.rms_height ? *spec.rms_height : *spec.rms_slope) / rms);
+  detail::self_affine_rows(grid, spec, 0, grid.ny(), as_complex(half.data.data()));
+  return inverse(grid, half) * scale;
 }
 
 }  // namespace coatfft

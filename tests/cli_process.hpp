@@ -28,12 +28,14 @@ struct ProcessResult {
   std::string stderr_text;
 };
 
-inline ProcessResult run_coatfft(const std::string& args) {
+/// The program with `args`; `environment` ("NAME=value ...") set for it alone.
+inline ProcessResult run_coatfft(const std::string& args, const std::string& environment = "") {
   // ctest runs test cases in parallel: one stderr file per command line.
-  const fs::path err = fs::temp_directory_path() /
-                       ("coatfft_test_stderr_" + std::to_string(std::hash<std::string>{}(args)));
-  const std::string command =
-      std::string(COATFFT_EXE) + " " + args + " 2>" + err.string() + " >/dev/null";
+  const fs::path err =
+      fs::temp_directory_path() /
+      ("coatfft_test_stderr_" + std::to_string(std::hash<std::string>{}(environment + args)));
+  const std::string command = environment + " " + std::string(COATFFT_EXE) + " " + args + " 2>" +
+                              err.string() + " >/dev/null";
   const int raw = std::system(command.c_str());
   std::ifstream in(err);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

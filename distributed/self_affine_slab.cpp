@@ -1,0 +1,43 @@
+#include "distributed/self_affine_slab.hpp"
+
+#include <vector>
+
+#include "distributed/slab_fft.hpp"
+#include "surfaces/detail/self_affine_spectrum.hpp"
+
+namespace coatfft {
+
+namespace {
+
+using detail::SpectrumMoments;
+
+// Every row's moments on every rank: each rank fills its rows and the sum over the ranks adds
+// only zeros to them, so the rows' sum in row order is the serial one bit for bit.
+std::vector<SpectrumMoments> all_row_moments(const Communicator& comm, const Grid& g,
+                                             const SelfAffineSpec& spec, const Slab& s) {
+  const std::vector<SpectrumMoments> mine =
+      detail::self_affine_row_moments(g, spec, s.y0, s.y0 + s.rows);
+  std::vector<double> all(2 * static_cast<std::size_t>(g.ny()), 0.0);
+  for (std::size_t r = 0; r < mine.size(); ++r) {
+    all[2 * (static_cast<std::size_t>(s.y0) + r)] = mine[r].height2;
+    all[2 * (static_cast<std::size_t>(s.y0) + r) + 1] = mine[r].slope2;
+  }
+  comm.sum(all);
+  std::vector<SpectrumMoments> rows(static_cast<std::size_t>(g.ny()));
+  for (std::size_t r = 0; r < rows.size(); ++r) rows[r] = {all[2 * r], all[2 * r + 1]};
+  return rows;
+}
+
+}  // namespace
+
+Field self_affine_slab(const Communicator& comm, const Grid& grid, const SelfAffineSpec& spec) {
+  const Slab s = slab_of(comm, grid.nx(), grid.ny());
+  const double scale = detail::self_affine_scale(spec, all_row_moments(comm, grid, spec, s));
+  detail::SlabFft fft(comm, grid.nx(), grid.ny());
+  detail::self_affine_rows(grid, spec, s.y0, s.y0 + s.rows, fft.row_spectrum());
+  Field h = s.field();
+  fft.inverse_from_rows(h.data());
+  return h * scale;
+}
+
+}  // namespace coatfft

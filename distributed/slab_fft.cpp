@@ -1,0 +1,128 @@
+#include "distributed/slab_fft.hpp"
+
+#include <fftw3-mpi.h>
+
+#include <algorithm>
+#include <chrono>
+
+#include "core/detail/timing.hpp"
+#include "distributed/detail/mpi_handle.hpp"
+
+namespace coatfft::detail {
+
+namespace {
+
+// FFTW's planning of `howmany` 1-D transforms: none when this rank holds nothing.
+template <typename Make>
+FftwPlan plan_many(std::ptrdiff_t howmany, int threads, Make&& make) {
+  return howmany > 0 ? FftwPlan::create(threads, std::forward<Make>(make)) : FftwPlan();
+}
+
+void execute(const FftwPlan& p) {
+  if (p.valid()) p.execute();
+}
+
+}  // namespace
+
+SlabFft::SlabFft(const Communicator& comm, std::ptrdiff_t nx, std::ptrdiff_t ny, Planning planning,
+                 int threads)
+    : slab_(slab_of(comm, nx, ny)) {
+  const std::ptrdiff_t hx = nx / 2 + 1;
+  const std::ptrdiff_t n[2] = {ny, hx};
+  std::ptrdiff_t rows = 0, y0 = 0, columns = 0, kx0 = 0;
+  const std::ptrdiff_t doubles =
+      fftw_mpi_local_size_many_transposed(2, n, 2, FFTW_MPI_DEFAULT_BLOCK, FFTW_MPI_DEFAULT_BLOCK,
+                                          mpi_comm(comm), &rows, &y0, &columns, &kx0);
+  // FFTW-MPI's allocation covers both layouts (and the transposes' needs); at least one entry.
+  const auto complex_entries = static_cast<std::size_t>(std::max<std::ptrdiff_t>(doubles / 2, 1));
+  rows_ = FftwComplexBuffer(complex_entries);
+  columns_ = FftwComplexBuffer(complex_entries);
+  planned_field_ = FftwRealBuffer(static_cast<std::size_t>(std::max<std::ptrdiff_t>(nx * rows, 1)));
+  planned_alignment_ = fftw_alignment_of(planned_field_.data());
+  // Out of place, with FFTW_DESTROY_INPUT: FFTW-MPI's transposes may use their input as scratch.
+  const unsigned flags = fftw_flags(planning) | FFTW_DESTROY_INPUT;
+  const int n_x = static_cast<int>(nx), n_y = static_cast<int>(ny), h = static_cast<int>(hx);
+  r2c_ = plan_many(rows, threads, [&] {
+    return fftw_plan_many_dft_r2c(1, &n_x, static_cast<int>(rows), planned_field_.data(), nullptr,
+                                  1, n_x, rows_.data(), nullptr, 1, h, fftw_flags(planning));
+  });
+  c2r_ = plan_many(rows, threads, [&] {
+    return fftw_plan_many_dft_c2r(1, &n_x, static_cast<int>(rows), rows_.data(), nullptr, 1, h,
+                                  planned_field_.data(), nullptr, 1, n_x, flags);
+  });
+  to_columns_ = FftwPlan::create(threads, [&] {
+    return fftw_mpi_plan_many_transpose(ny, hx, 2, FFTW_MPI_DEFAULT_BLOCK, FFTW_MPI_DEFAULT_BLOCK,
+                                        reinterpret_cast<double*>(rows_.data()),
+                                        reinterpret_cast<double*>(columns_.data()), mpi_comm(comm),
+                                        flags);
+  });
+  to_rows_ = FftwPlan::create(threads, [&] {
+    return fftw_mpi_plan_many_transpose(hx, ny, 2, FFTW_MPI_DEFAULT_BLOCK, FFTW_MPI_DEFAULT_BLOCK,
+                                        reinterpret_cast<double*>(columns_.data()),
+                                        reinterpret_cast<double*>(rows_.data()), mpi_comm(comm),
+                                        flags);
+  });
+  for (int sign : {FFTW_FORWARD, FFTW_BACKWARD}) {
+    (sign == FFTW_FORWARD ? forward_y_ : inverse_y_) = plan_many(columns, threads, [&] {
+      return fftw_plan_many_dft(1, &n_y, static_cast<int>(columns), columns_.data(), nullptr, 1,
+                                n_y, columns_.data(), nullptr, 1, n_y, sign, fftw_flags(planning));
+    });
+  }
+  planned_field_ = FftwRealBuffer();  // a field's memory; only a misaligned field needs it again
+}
+
+// FFTW's allocator gives the planned buffer's alignment again.
+void SlabFft::field_buffer() {
+  if (planned_field_.size() == 0)
+    planned_field_ = FftwRealBuffer(static_cast<std::size_t>(slab_.cells()));
+}
+
+// The row transforms read and write the caller's field itself (FFTW's new-array execute) when it
+// is aligned as the planned buffer was, as Eigen's fields are; otherwise through that buffer.
+void SlabFft::rows_r2c(const double* field) {
+  if (!r2c_.valid()) return;
+  auto* in = const_cast<double*>(field);  // an out-of-place r2c keeps its input
+  if (fftw_alignment_of(in) == planned_alignment_) {
+    fftw_execute_dft_r2c(r2c_.get(), in, rows_.data());
+    return;
+  }
+  field_buffer();
+  std::copy_n(field, slab_.cells(), planned_field_.data());
+  r2c_.execute();
+}
+
+void SlabFft::rows_c2r(double* field) {
+  if (!c2r_.valid()) return;
+  if (fftw_alignment_of(field) == planned_alignment_) {
+    fftw_execute_dft_c2r(c2r_.get(), rows_.data(), field);
+    return;
+  }
+  field_buffer();
+  c2r_.execute();
+  std::copy_n(planned_field_.data(), slab_.cells(), field);
+}
+
+void SlabFft::transpose(const FftwPlan& plan) {
+  const auto start = std::chrono::steady_clock::now();
+  plan.execute();
+  transpose_seconds_ += seconds_since(start);
+}
+
+void SlabFft::forward(const double* field) {
+  rows_r2c(field);
+  transpose(to_columns_);
+  execute(forward_y_);
+}
+
+void SlabFft::inverse(double* field) {
+  execute(inverse_y_);
+  transpose(to_rows_);
+  rows_c2r(field);
+}
+
+void SlabFft::inverse_from_rows(double* field) {
+  transpose(to_columns_);
+  inverse(field);
+}
+
+}  // namespace coatfft::detail

@@ -1,0 +1,129 @@
+// The distributed fields, transforms and operators (distributed/) against the serial library on
+// the same problem, run by mpirun at 1, 2 and 3 ranks (3 gives uneven slabs): slabs tile the grid,
+// the distributed periodic operator equals PeriodicOperator on a coated and a homogeneous body, a
+// surface of a seed is the same at any rank count and equals self_affine_surface's.
+#include <catch2/catch.hpp>
+#include <random>
+
+#include "convolution/kernels/periodic_kernel.hpp"
+#include "convolution/operators/periodic_operator.hpp"
+#include "core/error.hpp"
+#include "distributed/communicator.hpp"
+#include "distributed/distributed_periodic_operator.hpp"
+#include "distributed/self_affine_slab.hpp"
+#include "distributed/slab.hpp"
+#include "frf/frf.hpp"
+#include "layers/layer_stack.hpp"
+#include "surfaces/self_affine_surface.hpp"
+#include "tests/test_materials.hpp"
+
+using namespace coatfft;
+
+namespace {
+
+// This rank's rows of a whole field.
+Field rows_of(const Field& whole, const Slab& s) {
+  return whole.middleCols(s.y0, s.rows);
+}
+
+// max over the ranks of |a - b|, over max over the ranks of |b| (every rank gets the same).
+double relative_difference(const Communicator& comm, const Field& a, const Field& b) {
+  const double diff = a.size() ? (a - b).abs().maxCoeff() : 0.0;
+  const double ref = b.size() ? b.abs().maxCoeff() : 0.0;
+  return comm.max(diff) / comm.max(ref);
+}
+
+// A pressure field with random cells [Pa] (the same on every rank: the whole field).
+Field random_pressure(const Grid& g, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1e9);
+  Field p(g.nx(), g.ny());
+  for (Eigen::Index n = 0; n < p.size(); ++n) p(n) = u(rng);
+  return p;
+}
+
+}  // namespace
+
+TEST_CASE("the ranks' slabs tile the grid's rows and its half spectrum's columns") {
+  const Communicator comm = Communicator::world();
+  for (auto [nx, ny] : {std::pair{44, 50}, {8, 6}, {64, 64}, {2, 2}}) {
+    const Slab s = slab_of(comm, nx, ny);
+    CHECK(comm.sum(static_cast<std::int64_t>(s.rows)) == ny);
+    CHECK(comm.sum(static_cast<std::int64_t>(s.columns)) == nx / 2 + 1);
+    // Contiguous, in rank order: this rank's first row is the count of the rows before it.
+    const auto size = static_cast<std::size_t>(comm.size()),
+               rank = static_cast<std::size_t>(comm.rank());
+    std::vector<double> counts(2 * size, 0.0);
+    counts[2 * rank] = static_cast<double>(s.rows);
+    counts[2 * rank + 1] = static_cast<double>(s.columns);
+    comm.sum(counts);
+    double rows = 0, columns = 0;
+    for (std::size_t r = 0; r < rank; ++r) {
+      rows += counts[2 * r];
+      columns += counts[2 * r + 1];
+    }
+    CHECK(comm.all(static_cast<double>(s.y0) == rows && static_cast<double>(s.kx0) == columns));
+  }
+}
+
+TEST_CASE(
+    "the distributed periodic operator equals the serial one on coated and homogeneous bodies") {
+  const Communicator comm = Communicator::world();
+  // 44 x 50 cells: 23 half-spectrum columns and 50 rows, uneven at 3 ranks (8, 8, 7 and 17, 17,
+  // 16).
+  const Grid grid(44, 50, 1e-3, 1.2e-3);
+  const LayerStack coated({Coating{tin, 20e-6, Interface::bonded}}, steel);
+  const LayerStack homogeneous({}, steel);
+  for (const LayerStack* body : {&coated, &homogeneous}) {
+    const auto frf = make_frf(*body);
+    PeriodicOperator serial(grid, periodic_influence_kernel(grid, *frf), Method::frf_spectral);
+    DistributedPeriodicOperator distributed(comm, grid, *frf);
+    const Field p = random_pressure(grid, 7);
+    const Field u = distributed.apply(rows_of(p, distributed.slab()));
+    const Field reference = rows_of(serial.apply(p), distributed.slab());
+    // Both are exact to rounding: the FFTs' orders of operations differ (a few ulp of the largest
+    // displacement, 1e-13 leaves about 50 times that).
+    const double d = relative_difference(comm, u, reference);
+    CHECK(d < 1e-13);
+  }
+}
+
+TEST_CASE("the distributed periodic operator refuses a bad pressure on every rank together") {
+  const Communicator comm = Communicator::world();
+  const Grid grid(16, 12, 1e-3, 1e-3);
+  const auto frf = make_frf(LayerStack({}, steel));
+  DistributedPeriodicOperator op(comm, grid, *frf);
+  Field p = op.slab().field();
+  // A value that is not finite in the last row only (the other ranks' pressures are fine).
+  if (op.slab().rows > 0 && op.slab().y0 + op.slab().rows == grid.ny())
+    p(0, p.cols() - 1) = std::nan("");
+  Field u;
+  CHECK_THROWS_AS(op.apply(p, u), InvalidArgument);
+  // A pressure of the wrong shape on rank 0 only.
+  Field q = op.slab().field();
+  if (comm.rank() == 0) q.resize(3, 3);
+  CHECK_THROWS_AS(op.apply(q, u), InvalidArgument);
+}
+
+TEST_CASE(
+    "a self-affine surface of a seed is the same at any rank count and equals the serial one") {
+  const Communicator comm = Communicator::world();
+  const Grid grid(48, 46, 1e-3, 1e-3);
+  for (bool by_slope : {false, true}) {
+    SelfAffineSpec spec;
+    spec.hurst = 0.7;
+    spec.seed = 12345;
+    if (by_slope) {
+      spec.rms_slope = 0.1;
+    } else {
+      spec.rms_height = 1e-6;
+    }
+    const Field slab = self_affine_slab(comm, grid, spec);
+    // One rank alone makes the whole surface by the same steps: this rank's rows of it.
+    const Slab s = slab_of(comm, grid.nx(), grid.ny());
+    const Field alone = rows_of(self_affine_slab(Communicator::self(), grid, spec), s);
+    CHECK(relative_difference(comm, slab, alone) == 0.0);
+    const Field serial = rows_of(self_affine_surface(grid, spec), s);
+    CHECK(relative_difference(comm, slab, serial) < 1e-13);
+  }
+}
