@@ -18,6 +18,9 @@
 #include "cli/topography_command.hpp"
 #include "cli/validate_frf_command.hpp"
 #include "core/detail/mpi_launch.hpp"
+#ifdef COATFFT_WITH_MPI
+#include "distributed/mpi_session.hpp"
+#endif
 #include "core/detail/shorten.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
@@ -143,6 +146,12 @@ Command add_surface(CLI::App& app) {
   cmd->add_option("--seed", o->seed,
                   "Seed of the random phases, an integer in [0, 2^64 - 1] (default 0)");
   return {cmd, [o] {
+#ifdef COATFFT_WITH_MPI
+            if (coatfft::detail::mpi_launch().size > 1) {
+              coatfft::cli::surface_command(*o, coatfft::Communicator::world());
+              return 0;
+            }
+#endif
             coatfft::cli::surface_command(*o);
             return 0;
           }};
@@ -166,6 +175,13 @@ Command add_topography(CLI::App& app) {
             coatfft::cli::topography_command(*o);
             return 0;
           }};
+}
+
+// The name of the command the user chose.
+std::string chosen_name(const std::vector<Command>& commands) {
+  for (const Command& command : commands)
+    if (*command.app) return command.app->get_name();
+  return {};
 }
 
 // Runs the command the user chose; its exceptions become exit statuses.
@@ -199,16 +215,11 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("coatfft ") + COATFFT_VERSION);
   const std::vector<Command> commands{add_run(app), add_check(app),   add_validate_frf(app),
                                       add_frf(app), add_surface(app), add_topography(app)};
+  // Under an MPI launcher rank 0 speaks for the run: the other ranks' messages (the same
+  // refusals: every check is made alike on every rank) are dropped.
+  const auto launch = coatfft::detail::mpi_launch();
+  if (launch.rank != 0) std::cerr.setstate(std::ios::failbit);
   if (refuse_unknown_command(argc, argv)) return 2;
-  // Under mpirun every rank would run the whole job into the same output: refused (on rank 0's
-  // stderr, once) until the command runs distributed (docs/scale.md).
-  if (const auto launch = coatfft::detail::mpi_launch(); launch.size > 1) {
-    if (launch.rank == 0)
-      std::cerr << "coatfft: error: started by an MPI launcher with " << launch.size
-                << " ranks, but no command runs distributed yet (docs/scale.md): run it without "
-                   "mpirun\n";
-    return 2;
-  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -218,5 +229,20 @@ int main(int argc, char** argv) {
               << " (see coatfft --help)\n";
     return 2;
   }
-  return run_chosen(commands);
+  if (launch.size <= 1) return run_chosen(commands);
+  // Several ranks: a command that does not run distributed would run whole on each, into the
+  // same output, so it is refused before it reads anything (docs/scale.md).
+  const std::string chosen = chosen_name(commands);
+#ifdef COATFFT_WITH_MPI
+  if (chosen == "surface") {
+    const coatfft::MpiSession mpi(argc, argv);
+    return run_chosen(commands);
+  }
+  const char* why = "does not run distributed yet";
+#else
+  const char* why = "runs distributed only in a build with COATFFT_MPI";
+#endif
+  std::cerr << "coatfft: error: started by an MPI launcher with " << launch.size << " ranks, but `"
+            << chosen << "` " << why << " (docs/scale.md): run it without mpirun\n";
+  return 2;
 }

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "cli/staged_output.hpp"
@@ -11,6 +13,10 @@
 #include "core/error.hpp"
 #include "surfaces/self_affine_surface.hpp"
 #include "topography/netcdf_writer.hpp"
+#ifdef COATFFT_WITH_MPI
+#include "distributed/self_affine_slab.hpp"
+#include "scene/npy_slab.hpp"
+#endif
 
 namespace coatfft::cli {
 
@@ -25,7 +31,16 @@ std::uint64_t parse_seed(std::string_view text, std::string_view option) {
   return value;
 }
 
-void surface_command(const SurfaceOptions& o) {
+namespace {
+
+// The options checked into a grid and a spectrum, before any work.
+struct SurfaceRequest {
+  Grid grid;
+  SelfAffineSpec spec;
+  topography::HeightsFormat format;
+};
+
+SurfaceRequest request(const SurfaceOptions& o) {
   const topography::HeightsFormat format = topography::heights_format(o.output);
   for (const auto& [name, n] : {std::pair{"--nx", o.nx}, std::pair{"--ny", o.ny}})
     COATFFT_REQUIRE(n >= 2 && n <= max_surface_cells && n % 2 == 0, name, " = ", n,
@@ -43,6 +58,18 @@ void surface_command(const SurfaceOptions& o) {
   spec.long_cutoff = o.long_cutoff;
   spec.seed = parse_seed(o.seed, "--seed");
   check_self_affine_spec(grid, spec, "--rms-height", "--rms-slope");
+  return {grid, spec, format};
+}
+
+void report(const SurfaceOptions& o, double rms_height, double rms_slope) {
+  std::cout << "wrote " << o.output.string() << ": " << o.ny << " x " << o.nx
+            << " heights [m], rms height " << rms_height << " m, rms slope " << rms_slope << "\n";
+}
+
+}  // namespace
+
+void surface_command(const SurfaceOptions& o) {
+  const auto [grid, spec, format] = request(o);
   // The output is checked before any work: a file that cannot be written is refused at once.
   StagedFile file(o.output, "output file", {});
   const Field h = self_affine_surface(grid, spec);
@@ -51,9 +78,37 @@ void surface_command(const SurfaceOptions& o) {
       file.path(), format, h, grid, true,
       {{{"source", "coatfft surface"}, {"seed", o.seed}}, {{"hurst", o.hurst}}});
   file.commit();
-  std::cout << "wrote " << o.output.string() << ": " << o.ny << " x " << o.nx
-            << " heights [m], rms height " << std::sqrt(h.square().mean()) << " m, rms slope "
-            << spectral_rms_slope(grid, h) << "\n";
+  report(o, std::sqrt(h.square().mean()), spectral_rms_slope(grid, h));
 }
+
+#ifdef COATFFT_WITH_MPI
+void surface_command(const SurfaceOptions& o, const Communicator& comm) {
+  const auto [grid, spec, format] = request(o);  // the same on every rank
+  COATFFT_REQUIRE(format == topography::HeightsFormat::npy, "--output ", o.output.string(),
+                  ": NetCDF is not written by a distributed run yet (docs/scale.md); write .npy");
+  // Rank 0 checks and stages the file; its path, or its refusal, goes to every rank.
+  std::optional<StagedFile> file;
+  std::string staged, refusal;
+  if (comm.rank() == 0) {
+    try {
+      file.emplace(o.output, "output file", std::vector<std::filesystem::path>{});
+      staged = file->path().string();
+    } catch (const InvalidArgument& e) {
+      refusal = e.what();
+    }
+  }
+  comm.broadcast(refusal);
+  if (!refusal.empty()) throw InvalidArgument(refusal);
+  comm.broadcast(staged);
+  const Field h = self_affine_slab(comm, grid, spec);
+  scene::write_npy_slab(comm, staged, h, slab_of(comm, grid.nx(), grid.ny()));
+  const double rms_height =
+      std::sqrt(comm.sum(h.square().sum()) / static_cast<double>(grid.nb_cells()));
+  const double rms_slope = spectral_rms_slope(comm, grid, h);
+  if (comm.rank() != 0) return;
+  file->commit();
+  report(o, rms_height, rms_slope);
+}
+#endif
 
 }  // namespace coatfft::cli

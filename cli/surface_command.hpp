@@ -9,6 +9,10 @@
 #include <string>
 #include <string_view>
 
+#ifdef COATFFT_WITH_MPI
+#include "distributed/communicator.hpp"
+#endif
+
 namespace coatfft::cli {
 
 /// The largest cell count a side (a 16384^2 surface takes about 6 GiB while it is made).
@@ -32,5 +36,12 @@ std::uint64_t parse_seed(std::string_view text, std::string_view option);
 /// Makes the surface and writes it (through a temporary file renamed when complete); prints one
 /// line with its size, rms height and rms slope. InvalidArgument for bad options.
 void surface_command(const SurfaceOptions& options);
+
+#ifdef COATFFT_WITH_MPI
+/// The same by the ranks of `comm` (docs/scale.md): each makes its rows (self_affine_slab) and
+/// writes them into the one .npy file (MPI-IO); the same file as the serial command's, byte for
+/// byte. NetCDF output is refused. Rank 0 stages and commits the file and prints the line.
+void surface_command(const SurfaceOptions& options, const Communicator& comm);
+#endif
 
 }  // namespace coatfft::cli

@@ -76,6 +76,14 @@ bool Communicator::all(bool value) const {
   return v != 0;
 }
 
+void Communicator::broadcast(std::string& text, int root) const {
+  auto size = static_cast<std::int64_t>(text.size());
+  check(MPI_Bcast(&size, 1, MPI_INT64_T, root, comm_of(*this)), "MPI_Bcast");
+  text.resize(static_cast<std::size_t>(size));
+  check(MPI_Bcast(text.data(), static_cast<int>(size), MPI_CHAR, root, comm_of(*this)),
+        "MPI_Bcast");
+}
+
 void Communicator::barrier() const {
   check(MPI_Barrier(comm_of(*this)), "MPI_Barrier");
 }

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <string>
 
 namespace coatfft {
 
@@ -27,6 +28,8 @@ class Communicator {
   double max(double value) const;
   /// Whether `value` holds on every rank.
   bool all(bool value) const;
+  /// `text` as rank `root` has it, on every rank.
+  void broadcast(std::string& text, int root = 0) const;
   void barrier() const;
 
   const Handle& handle() const { return *handle_; }

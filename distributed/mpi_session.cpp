@@ -32,6 +32,8 @@ MpiSession::~MpiSession() {
   MPI_Finalize();
 }
 
-bool MpiSession::launched() { return detail::mpi_launch().launched; }
+bool MpiSession::launched() {
+  return detail::mpi_launch().launched;
+}
 
 }  // namespace coatfft

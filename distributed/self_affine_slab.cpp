@@ -1,7 +1,9 @@
 #include "distributed/self_affine_slab.hpp"
 
+#include <cmath>
 #include <vector>
 
+#include "core/error.hpp"
 #include "distributed/slab_fft.hpp"
 #include "surfaces/detail/self_affine_spectrum.hpp"
 
@@ -29,6 +31,21 @@ std::vector<SpectrumMoments> all_row_moments(const Communicator& comm, const Gri
 }
 
 }  // namespace
+
+double spectral_rms_slope(const Communicator& comm, const Grid& g, const Field& rows) {
+  detail::SlabFft fft(comm, g.nx(), g.ny());
+  const Slab& s = fft.slab();
+  COATFFT_REQUIRE(comm.all(rows.rows() == s.nx && rows.cols() == s.rows),
+                  "spectral_rms_slope: a rank's rows are not of its slab's shape");
+  fft.forward(rows.data());
+  // Parseval over this rank's half-spectrum columns, as spectral_rms_slope over the whole.
+  const double cells = static_cast<double>(g.nb_cells());
+  double sum = 0.0;
+  for (std::ptrdiff_t c = 0; c < s.columns; ++c)
+    for (std::ptrdiff_t j = 0; j < s.ny; ++j)
+      sum += detail::mode_slope2(g, s.kx0 + c, j, fft.spectrum()[c * s.ny + j]) / (cells * cells);
+  return std::sqrt(comm.sum(sum));
+}
 
 Field self_affine_slab(const Communicator& comm, const Grid& grid, const SelfAffineSpec& spec) {
   const Slab s = slab_of(comm, grid.nx(), grid.ny());

@@ -15,4 +15,7 @@ namespace coatfft {
 /// spec, as self_affine_surface.
 Field self_affine_slab(const Communicator& comm, const Grid& grid, const SelfAffineSpec& spec);
 
+/// spectral_rms_slope of a distributed field from this rank's rows (nx, rows) [-]. Collective.
+double spectral_rms_slope(const Communicator& comm, const Grid& grid, const Field& rows);
+
 }  // namespace coatfft

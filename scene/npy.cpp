@@ -323,8 +323,8 @@ std::string npy_preamble(std::span<const std::size_t> shape) {
   header.push_back('\n');
   const auto header_size = static_cast<std::uint16_t>(header.size());
   std::string preamble(kMagic, kMagicSize);
-  preamble += {'\x01', '\x00', static_cast<char>(header_size & 0xff),
-               static_cast<char>(header_size >> 8)};
+  preamble +=
+      {'\x01', '\x00', static_cast<char>(header_size & 0xff), static_cast<char>(header_size >> 8)};
   return preamble + header;
 }
 

@@ -102,13 +102,30 @@ void check_rms(const SelfAffineSpec& s, const SpectrumMoments& m, std::string_vi
                   max_rms_height, "] m (docs/surfaces.md, \"Limits\")");
 }
 
+// The inverse DFT in the steps of the distributed surface's slab transform (distributed/
+// slab_fft.hpp) on one rank: the half spectrum transposed into contiguous columns, FFTW's c2c of
+// each column (along y), transposed back, FFTW's c2r of each row (along x). The same 1-D plans
+// give the same numbers at any rank count; a 2-D plan differs from them by rounding (3e-16).
 Field inverse(const Grid& g, HalfSpectrum& spec) {
-  FftwRealBuffer out(static_cast<std::size_t>(g.nx() * g.ny()));
-  const FftwPlan plan = FftwPlan::create(1, [&] {
-    return fftw_plan_dft_c2r_2d(static_cast<int>(g.ny()), static_cast<int>(g.nx()),
-                                spec.data.data(), out.data(), FFTW_ESTIMATE | FFTW_DESTROY_INPUT);
+  const int nx = static_cast<int>(g.nx()), ny = static_cast<int>(g.ny());
+  const int hx = static_cast<int>(spec.hx);
+  FftwComplexBuffer columns(spec.data.size());
+  std::complex<double>* c = as_complex(columns.data());
+  const FftwPlan along_y = FftwPlan::create(1, [&] {
+    return fftw_plan_many_dft(1, &ny, hx, columns.data(), nullptr, 1, ny, columns.data(), nullptr,
+                              1, ny, FFTW_BACKWARD, FFTW_ESTIMATE);
   });
-  plan.execute();
+  FftwRealBuffer out(static_cast<std::size_t>(g.nx() * g.ny()));
+  const FftwPlan along_x = FftwPlan::create(1, [&] {
+    return fftw_plan_many_dft_c2r(1, &nx, ny, spec.data.data(), nullptr, 1, hx, out.data(), nullptr,
+                                  1, nx, FFTW_ESTIMATE | FFTW_DESTROY_INPUT);
+  });
+  for (std::ptrdiff_t j = 0; j < spec.ny; ++j)
+    for (std::ptrdiff_t i = 0; i < spec.hx; ++i) c[i * spec.ny + j] = spec.at(i, j);
+  along_y.execute();
+  for (std::ptrdiff_t j = 0; j < spec.ny; ++j)
+    for (std::ptrdiff_t i = 0; i < spec.hx; ++i) spec.at(i, j) = c[i * spec.ny + j];
+  along_x.execute();
   return Eigen::Map<const Field>(out.data(), g.nx(), g.ny());
 }
 
@@ -134,6 +151,12 @@ std::vector<SpectrumMoments> self_affine_row_moments(const Grid& g, const SelfAf
     }
   }
   return rows;
+}
+
+double mode_slope2(const Grid& g, std::ptrdiff_t i, std::ptrdiff_t j, std::complex<double> h_k) {
+  const double weight = (i == 0 || i == g.nx() / 2) ? 1.0 : 2.0;
+  const double k = wavenumber(g, i, j);
+  return weight * k * k * std::norm(h_k);
 }
 
 double self_affine_scale(const SelfAffineSpec& s, std::span<const SpectrumMoments> rows,
@@ -214,11 +237,8 @@ double spectral_rms_slope(const Grid& g, const Field& h) {
   const double cells = static_cast<double>(h.size());
   double sum = 0.0;
   for (std::ptrdiff_t j = 0; j < g.ny(); ++j)
-    for (std::ptrdiff_t i = 0; i < spec.hx; ++i) {
-      const double weight = (i == 0 || i == g.nx() / 2) ? 1.0 : 2.0;
-      const double k = wavenumber(g, i, j);
-      sum += weight * k * k * std::norm(spec.at(i, j)) / (cells * cells);
-    }
+    for (std::ptrdiff_t i = 0; i < spec.hx; ++i)
+      sum += detail::mode_slope2(g, i, j, spec.at(i, j)) / (cells * cells);
   return std::sqrt(sum);
 }
 

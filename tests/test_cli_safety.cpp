@@ -376,14 +376,15 @@ TEST_CASE("coatfft check validates as run does, prints the plan and writes nothi
   CHECK(snapshot(dir).size() == before.size() + 1);  // narrow.toml, nothing else
 }
 
-TEST_CASE("started by an MPI launcher with several ranks, the program refuses once and writes nothing",
-          "[cli][safety]") {
+TEST_CASE(
+    "started by an MPI launcher with several ranks, the program refuses once and writes nothing",
+    "[cli][safety]") {
   // The launcher's variables as Open MPI's mpirun sets them for each rank (no MPI is started).
   const fs::path dir = fresh("safety_mpi");
   const fs::path scene = write_scene(kGoodScene, "safety_mpi/scene", "", "");
   const std::string args = "run " + scene.string() + " -o " + (dir / "out").string();
   check_refusal(run_coatfft(args, "OMPI_COMM_WORLD_SIZE=3 OMPI_COMM_WORLD_RANK=0"),
-                "MPI launcher with 3 ranks");
+                "MPI launcher with 3 ranks, but `run` does not run distributed");
   const ProcessResult other = run_coatfft(args, "OMPI_COMM_WORLD_SIZE=3 OMPI_COMM_WORLD_RANK=2");
   CHECK(other.status == 2);
   CHECK(other.stderr_text.empty());

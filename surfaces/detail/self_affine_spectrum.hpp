@@ -17,6 +17,11 @@ namespace coatfft::detail {
 void self_affine_rows(const Grid& grid, const SelfAffineSpec& spec, std::ptrdiff_t j0,
                       std::ptrdiff_t j1, std::complex<double>* rows);
 
+/// One mode's part of the mean square slope times the cell count squared, weight |k|^2 |h_k|^2
+/// for an unnormalised DFT coefficient h_k (weight 2 for the modes whose conjugate the half
+/// spectrum leaves out): spectral_rms_slope sums them.
+double mode_slope2(const Grid& grid, std::ptrdiff_t i, std::ptrdiff_t j, std::complex<double> h_k);
+
 /// The unscaled field's mean squares of height and slope, or one row's part of them.
 struct SpectrumMoments {
   double height2 = 0.0, slope2 = 0.0;

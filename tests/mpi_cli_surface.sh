@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# `coatfft surface` under mpirun (docs/scale.md): at 1, 2 and 3 ranks (3: uneven slabs) the same
+# .npy file as the serial command, byte for byte, over sizes whose rows split unevenly; a NetCDF
+# output and a command that does not run distributed are refused on one line, writing nothing.
+# Usage: mpi_cli_surface.sh COATFFT MPIEXEC
+set -euo pipefail
+coatfft=$1
+mpiexec=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail() { echo "FAILED: $*" >&2; exit 1; }
+for case in "64 50 --rms-slope 0.1" "64 50 --rms-height 1e-6" "30 14 --rms-slope 0.2"; do
+  read -r nx ny rms <<<"$case"
+  args="--nx $nx --ny $ny --lx 1e-3 --ly 0.8e-3 --hurst 0.7 $rms --seed 2026"
+  "$coatfft" surface -o "$tmp/serial.npy" $args >/dev/null
+  for ranks in 1 2 3; do
+    "$mpiexec" -np "$ranks" --oversubscribe "$coatfft" surface -o "$tmp/np$ranks.npy" $args \
+      >"$tmp/out.txt"
+    cmp -s "$tmp/serial.npy" "$tmp/np$ranks.npy" || fail "$nx x $ny $rms at $ranks ranks differs"
+    # One line from rank 0 only.
+    [ "$(wc -l <"$tmp/out.txt")" -eq 1 ] || fail "$(cat "$tmp/out.txt")"
+  done
+done
+# Refusals: exit status 2, one line on stderr naming the cause, no file.
+refused() {
+  local expect=$1
+  shift
+  if "$mpiexec" -np 2 --oversubscribe "$coatfft" "$@" >/dev/null 2>"$tmp/err.txt"; then
+    fail "accepted: $*"
+  fi
+  grep -q "$expect" "$tmp/err.txt" || fail "no \"$expect\" in: $(cat "$tmp/err.txt")"
+  [ "$(grep -c '^coatfft: error' "$tmp/err.txt")" -eq 1 ] || fail "not one line: $(cat "$tmp/err.txt")"
+}
+refused "NetCDF is not written by a distributed run" surface -o "$tmp/z.nc" --nx 8 --ny 8 \
+  --lx 1e-3 --ly 1e-3 --hurst 0.8 --rms-height 1e-6
+[ ! -e "$tmp/z.nc" ] || fail "z.nc written"
+refused "\`run\` does not run distributed" run "$tmp/none.toml" -o "$tmp/out"
+[ ! -e "$tmp/out" ] || fail "out written"
+echo "mpi_cli_surface: all checks passed"
