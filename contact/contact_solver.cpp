@@ -12,6 +12,7 @@
 
 #include "contact/complementarity.hpp"
 #include "contact/contact_patches.hpp"
+#include "contact/detail/solver_ranks.hpp"
 #include "contact/fourier_preconditioner.hpp"
 #include "contact/grid_transfer.hpp"
 #include "contact/initial_pressure.hpp"
@@ -44,16 +45,24 @@ CellMask clear_mask(const Field& h) {
 // cells takes about a millisecond, against tens of microseconds to start a thread.
 constexpr std::ptrdiff_t kParallelCells = 512 * 512;
 
-// Mean of f over the cells where mask is set (mask non-empty).
-double masked_mean(const Field& f, const Mask& mask, std::ptrdiff_t count) {
-  return mask.select(f, 0.0).sum() / static_cast<double>(count);
+using detail::SolverRanks;
+
+// Mean of f over the cells where mask is set, `count` of them over the ranks (> 0).
+double masked_mean(const Field& f, const Mask& mask, std::ptrdiff_t count, const SolverRanks* r) {
+  return detail::sum_over(r, mask.select(f, 0.0).sum()) / static_cast<double>(count);
 }
 
-bool pressure_on_border(const Field& p) {
+// Whether a cell on the grid's border carries pressure; with ranks, p is this rank's rows, whose
+// first and last are the grid's only on the first and last rank.
+bool pressure_on_border(const Field& p, const SolverRanks* r, std::ptrdiff_t ny) {
   const auto nx = p.rows();
-  const auto ny = p.cols();
-  return (p.row(0) > 0).any() || (p.row(nx - 1) > 0).any() || (p.col(0) > 0).any() ||
-         (p.col(ny - 1) > 0).any();
+  const auto rows = p.cols();
+  const bool first = r == nullptr || r->first_row() == 0;
+  const bool last = r == nullptr || r->first_row() + r->rows() == ny;
+  const bool mine =
+      rows > 0 && ((p.row(0) > 0).any() || (p.row(nx - 1) > 0).any() ||
+                   (first && (p.col(0) > 0).any()) || (last && (p.col(rows - 1) > 0).any()));
+  return !detail::all_over(r, !mine);
 }
 
 void append(std::string& text, const std::string& more) {
@@ -107,9 +116,10 @@ class PolonskyKeerIteration {
  public:
   // `start`, when given, is the pressure to start from (a warm or nested start:
   // start_from_pressure).
-  PolonskyKeerIteration(SurfaceOperator& op, detail::FourierPreconditioner* preconditioner,
-                        const Field& h, ContactControl control, double value,
-                        const ContactOptions& options, std::optional<Field> start);
+  // `ranks`: those the fields are distributed over (their rows), or null.
+  PolonskyKeerIteration(SurfaceOperator& op, detail::Preconditioner* preconditioner,
+                        const SolverRanks* ranks, const Field& h, ContactControl control,
+                        double value, const ContactOptions& options, std::optional<Field> start);
 
   // One iteration; the status once the iteration has ended, nothing while it goes on.
   std::optional<ContactStatus> iterate(double tolerance);
@@ -150,7 +160,8 @@ class PolonskyKeerIteration {
   double enforce_load(Projected projected);
 
   SurfaceOperator& op_;
-  detail::FourierPreconditioner* preconditioner_;  // null: the classic, unpreconditioned iteration
+  detail::Preconditioner* preconditioner_;  // null: the classic, unpreconditioned iteration
+  const SolverRanks* ranks_;  // null: the fields are whole; otherwise every sum is over the ranks
   const Field& h_;
   ContactControl control_;
   bool load_control_;
@@ -205,12 +216,14 @@ class ScopedTimer {
 };
 
 PolonskyKeerIteration::PolonskyKeerIteration(SurfaceOperator& op,
-                                             detail::FourierPreconditioner* preconditioner,
-                                             const Field& h, ContactControl control, double value,
+                                             detail::Preconditioner* preconditioner,
+                                             const SolverRanks* ranks, const Field& h,
+                                             ContactControl control, double value,
                                              const ContactOptions& options,
                                              std::optional<Field> start_pressure)
     : op_(op),
       preconditioner_(preconditioner),
+      ranks_(ranks),
       h_(h),
       control_(control),
       load_control_(control == ContactControl::load),
@@ -237,7 +250,7 @@ PolonskyKeerIteration::PolonskyKeerIteration(SurfaceOperator& op,
 void PolonskyKeerIteration::start(bool warm) {
   if (warm) {
     p_ = p_.max(0.0);
-    if (p_.sum() > 0) {
+    if (detail::sum_over(ranks_, p_.sum()) > 0) {
       start_from_pressure();
       return;
     }
@@ -257,7 +270,7 @@ void PolonskyKeerIteration::start_from_pressure() {
     scale_to_approach();
     return;
   }
-  p_ *= value_ / (p_.sum() * cell_area_);
+  p_ *= value_ / (detail::sum_over(ranks_, p_.sum()) * cell_area_);
   recompute_displacement();
 }
 
@@ -266,7 +279,8 @@ void PolonskyKeerIteration::start_from_pressure() {
 // approach (one application).
 void PolonskyKeerIteration::start_uniform() {
   if (load_control_) {
-    p_.setConstant(value_ / (static_cast<double>(n_cells_) * cell_area_));
+    p_.setConstant(value_ /
+                   (static_cast<double>(detail::count_over(ranks_, n_cells_)) * cell_area_));
     return;
   }
   p_ = (h_ < delta_).cast<double>();
@@ -276,27 +290,28 @@ void PolonskyKeerIteration::start_uniform() {
 // A Hertzian start (initial_pressure.hpp): sqrt(level - h) on {h < level}. Under approach control
 // the level is half the overlap, Hertz's; under load control it is fitted by one application.
 void PolonskyKeerIteration::start_hertzian() {
-  const double h_min = h_.minCoeff();
+  const detail::RankExtrema h_range = detail::extrema_over(ranks_, h_);
+  const double h_min = h_range.min;
   if (!load_control_) {
     p_ = detail::hertzian_profile(h_, h_min + 0.5 * (delta_ - h_min));
     scale_to_approach();
     return;
   }
-  double level = detail::level_below(h_, detail::kTrialContactShare) - h_min;
+  double level = detail::level_below(h_, detail::kTrialContactShare, ranks_) - h_min;
   if (!(level > 0)) {  // a flat face holds a quarter of the cells: a level just above it
-    const double h_max = h_.maxCoeff();
+    const double h_max = h_range.max;
     level = h_max > h_min ? detail::kTrialContactShare * (h_max - h_min) : 1.0;
   }
   const auto carry_load = [&] {
     p_ = detail::hertzian_profile(h_, h_min + level);
     // A load whose displacements lie below the rounding of min(h) fits a level that h_min + level
     // cannot resolve: no cell is left, and the load rests on the lowest cells.
-    if (!(p_.sum() > 0)) p_ = (h_ == h_min).cast<double>();
-    p_ *= value_ / (p_.sum() * cell_area_);
+    if (!(detail::sum_over(ranks_, p_.sum()) > 0)) p_ = (h_ == h_min).cast<double>();
+    p_ *= value_ / (detail::sum_over(ranks_, p_.sum()) * cell_area_);
   };
   carry_load();
   recompute_displacement();
-  level *= detail::level_correction(h_, p_, u_);
+  level *= detail::level_correction(h_, p_, u_, ranks_);
   carry_load();
   exact_ = false;
 }
@@ -304,10 +319,10 @@ void PolonskyKeerIteration::start_hertzian() {
 // Approach control: p scaled so that the mean gap over its support vanishes (one application).
 void PolonskyKeerIteration::scale_to_approach() {
   const Mask support = p_ > 0;
-  const auto n_support = support.count();
+  const auto n_support = detail::count_over(ranks_, support.count());
   recompute_displacement();
-  const double scale =
-      masked_mean(delta_ - h_, support, n_support) / masked_mean(u_, support, n_support);
+  const double scale = masked_mean(delta_ - h_, support, n_support, ranks_) /
+                       masked_mean(u_, support, n_support, ranks_);
   COATFFT_REQUIRE(std::isfinite(scale) && scale > 0, "ContactSolver: operator '", op_.name(),
                   "' returned a non-positive mean displacement under a positive pressure");
   p_ *= scale;
@@ -385,8 +400,8 @@ std::ptrdiff_t PolonskyKeerIteration::update_gap() {
   const double* ud = u_.data();
   double* gd = g_.data();
   const double s = scale_;
-  const CountSum contact =
-      over_cells<CountSum>(n_cells_, workers_, [&](auto first, auto last, CountSum& sums) {
+  const CountSum contact = detail::over_ranks(
+      ranks_, over_cells<CountSum>(n_cells_, workers_, [&](auto first, auto last, CountSum& sums) {
         for (std::ptrdiff_t k = first; k < last; ++k) {
           gd[k] = hd[k] + s * ud[k] - delta_;
           if (pd[k] > 0) {
@@ -394,7 +409,7 @@ std::ptrdiff_t PolonskyKeerIteration::update_gap() {
             sums.sum += gd[k];
           }
         }
-      });
+      }));
   if (contact.count > 0)
     g_mean_ = load_control_ ? contact.sum / static_cast<double>(contact.count) : 0.0;
   return contact.count;
@@ -408,8 +423,8 @@ PolonskyKeerIteration::WorkingSet PolonskyKeerIteration::select_working_set() {
   const double* gd = g_.data();
   unsigned char* wd = working_.data();
   double* zd = preconditioner_ ? preconditioner_->data() : nullptr;
-  const CountSum working =
-      over_cells<CountSum>(n_cells_, workers_, [&](auto first, auto last, CountSum& sums) {
+  const CountSum working = detail::over_ranks(
+      ranks_, over_cells<CountSum>(n_cells_, workers_, [&](auto first, auto last, CountSum& sums) {
         for (std::ptrdiff_t k = first; k < last; ++k) {
           const double g = gd[k] - g_mean_;
           const bool in = pd[k] > 0 || (widen_ && g < 0.0);
@@ -420,7 +435,7 @@ PolonskyKeerIteration::WorkingSet PolonskyKeerIteration::select_working_set() {
           }
           if (zd) zd[k] = in ? g : 0.0;
         }
-      });
+      }));
   return {working.count, working.sum};
 }
 
@@ -441,14 +456,15 @@ bool PolonskyKeerIteration::complementary(double tolerance) {
       return *this;
     }
   };
-  const Maxima m = over_cells<Maxima>(n_cells_, workers_, [&](auto first, auto last, Maxima& s) {
-    for (std::ptrdiff_t k = first; k < last; ++k) {
-      const double g = gd[k] - g_mean_;
-      s.u = std::max(s.u, std::abs(ud[k]));
-      s.h = std::max(s.h, std::abs(hd[k]));
-      s.violation = std::max(s.violation, pd[k] > 0 ? std::abs(g) : -g);
-    }
-  });
+  const Maxima m = detail::over_ranks(
+      ranks_, over_cells<Maxima>(n_cells_, workers_, [&](auto first, auto last, Maxima& s) {
+        for (std::ptrdiff_t k = first; k < last; ++k) {
+          const double g = gd[k] - g_mean_;
+          s.u = std::max(s.u, std::abs(ud[k]));
+          s.h = std::max(s.h, std::abs(hd[k]));
+          s.violation = std::max(s.violation, pd[k] > 0 ? std::abs(g) : -g);
+        }
+      }));
   const double u_max = scale_ * m.u;
   const double largest_term = m.h + u_max + std::abs(delta_ + g_mean_);
   return m.violation <= detail::gap_tolerance(tolerance, u_max, largest_term);
@@ -488,20 +504,21 @@ void PolonskyKeerIteration::update_direction(std::ptrdiff_t n_working) {
       return *this;
     }
   };
-  const Sums sums = over_cells<Sums>(n_cells_, workers_, [&](auto first, auto last, Sums& s) {
-    for (std::ptrdiff_t k = first; k < last; ++k) {
-      if (!wd[k]) continue;
-      const double g = gd[k] - g_mean;
-      s.z += zd[k];
-      s.g += g;
-      s.t += td[k];
-      s.g_dot_z += g * zd[k];
-      if (qd) {
-        s.q += qd[k];
-        s.q_dot_z += qd[k] * zd[k];
-      }
-    }
-  });
+  const Sums sums = detail::over_ranks(
+      ranks_, over_cells<Sums>(n_cells_, workers_, [&](auto first, auto last, Sums& s) {
+        for (std::ptrdiff_t k = first; k < last; ++k) {
+          if (!wd[k]) continue;
+          const double g = gd[k] - g_mean;
+          s.z += zd[k];
+          s.g += g;
+          s.t += td[k];
+          s.g_dot_z += g * zd[k];
+          if (qd) {
+            s.q += qd[k];
+            s.q_dot_z += qd[k] * zd[k];
+          }
+        }
+      }));
   const auto n = static_cast<double>(n_working);
   // z's mean on the working set, removed under load control (P's zero-mean part).
   const double z_mean = !load_control_ ? 0.0 : preconditioner_ ? sums.z / n : g_mean;
@@ -557,15 +574,16 @@ std::optional<double> PolonskyKeerIteration::step_length(std::ptrdiff_t n_workin
       return *this;
     }
   };
-  const Sums sums = over_cells<Sums>(n_cells_, workers_, [&](auto first, auto last, Sums& s) {
-    for (std::ptrdiff_t k = first; k < last; ++k) {
-      if (!wd[k]) continue;
-      s.r += rd[k];
-      s.t += td[k];
-      s.g_dot_t += (gd[k] - g_mean) * td[k];
-      s.r_dot_t += rd[k] * td[k];
-    }
-  });
+  const Sums sums = detail::over_ranks(
+      ranks_, over_cells<Sums>(n_cells_, workers_, [&](auto first, auto last, Sums& s) {
+        for (std::ptrdiff_t k = first; k < last; ++k) {
+          if (!wd[k]) continue;
+          s.r += rd[k];
+          s.t += td[k];
+          s.g_dot_t += (gd[k] - g_mean) * td[k];
+          s.r_dot_t += rd[k] * td[k];
+        }
+      }));
   const double r_mean = load_control_ ? sums.r / static_cast<double>(n_working) : 0.0;
   const double denominator = sums.r_dot_t - r_mean * sums.t;
   if (!(denominator > 0) || !std::isfinite(sums.g_dot_t)) return std::nullopt;
@@ -598,25 +616,26 @@ PolonskyKeerIteration::Projected PolonskyKeerIteration::project(double tau) {
       return *this;
     }
   };
-  const Sums sums = over_cells<Sums>(n_cells_, workers_, [&](auto first, auto last, Sums& sum) {
-    for (std::ptrdiff_t k = first; k < last; ++k) {
-      const double p_old = s * pd[k];
-      double pk = wd[k] ? p_old - tau * td[k] : p_old;
-      if (pk < 0.0) {
-        pk = 0.0;
-        sum.projected = true;
-      }
-      if (pk == 0.0 && gd[k] < g_mean) {
-        pk = -tau * (gd[k] - g_mean);
-        sum.added = true;
-        sum.projected = true;
-      }
-      nd[k] = pk;
-      ud[k] = s * ud[k] - tau * rd[k];
-      sum.p += pk;
-      sum.change += std::abs(pk - p_old);
-    }
-  });
+  const Sums sums = detail::over_ranks(
+      ranks_, over_cells<Sums>(n_cells_, workers_, [&](auto first, auto last, Sums& sum) {
+        for (std::ptrdiff_t k = first; k < last; ++k) {
+          const double p_old = s * pd[k];
+          double pk = wd[k] ? p_old - tau * td[k] : p_old;
+          if (pk < 0.0) {
+            pk = 0.0;
+            sum.projected = true;
+          }
+          if (pk == 0.0 && gd[k] < g_mean) {
+            pk = -tau * (gd[k] - g_mean);
+            sum.added = true;
+            sum.projected = true;
+          }
+          nd[k] = pk;
+          ud[k] = s * ud[k] - tau * rd[k];
+          sum.p += pk;
+          sum.change += std::abs(pk - p_old);
+        }
+      }));
   p_.swap(p_old_);
   old_scale_ = s;
   scale_ = 1.0;
@@ -643,10 +662,11 @@ ContactResult PolonskyKeerIteration::result(ContactStatus status, int iterations
   u_ *= scale_;
   scale_ = 1.0;
   const Mask contact = p_ > 0;
-  const auto n_contact = contact.count();
+  const auto n_contact = detail::count_over(ranks_, contact.count());
   double approach = delta_;
   if (load_control_) {
-    approach = n_contact > 0 ? masked_mean(h_ + u_, contact, n_contact) : h_.minCoeff();
+    approach = n_contact > 0 ? masked_mean(h_ + u_, contact, n_contact, ranks_)
+                             : detail::extrema_over(ranks_, h_).min;
   }
   ContactResult result;
   result.control = control_;
@@ -654,19 +674,21 @@ ContactResult PolonskyKeerIteration::result(ContactStatus status, int iterations
   result.gap = h_ + u_ - approach;
   result.pressure = std::move(p_);
   result.displacement = std::move(u_);
-  result.load = result.pressure.sum() * cell_area_;
+  result.load = detail::sum_over(ranks_, result.pressure.sum()) * cell_area_;
   if (!load_control_ || compute_approach) result.approach = approach;
   result.contact_area = static_cast<double>(n_contact) * cell_area_;
   if (n_contact > 0) result.contact_radius = std::sqrt(result.contact_area / std::numbers::pi);
-  result.max_pressure = result.pressure.maxCoeff();
+  result.max_pressure = detail::extrema_over(ranks_, result.pressure).max;
   result.iterations = iterations;
   result.operator_applications = applications_;
   result.residual = residual_;
   result.status = status;
   result.converged = status == ContactStatus::converged;
   // A periodic surface has no edge: a contact crossing the period's border is just a contact.
-  result.touches_boundary = !op_.periodic() && pressure_on_border(result.pressure);
-  result.max_penetration = max_penetration(result.gap);
+  result.touches_boundary =
+      !op_.periodic() && pressure_on_border(result.pressure, ranks_, op_.grid().ny());
+  result.max_penetration = ranks_ ? std::max(0.0, -detail::extrema_over(ranks_, result.gap).min)
+                                  : max_penetration(result.gap);
   return result;
 }
 
@@ -680,9 +702,10 @@ std::string breakdown_message(ContactStatus status) {
 // log2 of the displacement [m] a pressure of 1 Pa over the whole domain gives, estimated from
 // one application: a unit pressure on one cell displaces by about dx / E*, a uniform one by the
 // domain's width over E*, about that times the cells per side (an order of magnitude is enough).
-double log2_compliance(SurfaceOperator& op) {
+double log2_compliance(SurfaceOperator& op, const SolverRanks* ranks) {
   const double cells_per_side = std::sqrt(static_cast<double>(op.grid().nb_cells()));
-  return std::log2(op.unit_response().abs().maxCoeff()) + std::log2(cells_per_side);
+  const Field unit = op.unit_response();
+  return std::log2(detail::extrema_over(ranks, unit.abs()).max) + std::log2(cells_per_side);
 }
 
 // Load control solves (h / s, W / s) and returns s times its solution: K is linear, so that is
@@ -694,14 +717,16 @@ double log2_compliance(SurfaceOperator& op) {
 // 1e+-38: every physical problem), so ordinary solves are untouched and cost no extra application;
 // otherwise the compliance costs one (`applications`). U / H itself cannot be scaled away: beyond
 // 2^+-600 (1e+-180) the problem is refused.
-double load_scale(SurfaceOperator& op, const Field& h, double load, int& applications) {
-  const double span = h.maxCoeff() - h.minCoeff();
+double load_scale(SurfaceOperator& op, const Field& h, double load, int& applications,
+                  const SolverRanks* ranks) {
+  const detail::RankExtrema h_range = detail::extrema_over(ranks, h);
+  const double span = h_range.max - h_range.min;
   // In logarithms: W / A itself may overflow or underflow.
   const double log2_p = std::log2(load) - std::log2(op.grid().lx() * op.grid().ly());
   // A flat face (span 0) is judged by P alone: its heights enter no product.
   if (std::abs(log2_p + (span > 0 ? std::log2(span) : 0.0)) <= 128) return 1.0;
   ++applications;
-  const double log2_u = log2_p + log2_compliance(op);
+  const double log2_u = log2_p + log2_compliance(op, ranks);
   const double log2_h = span > 0 ? std::log2(span) : log2_u;  // flat: only U matters
   COATFFT_REQUIRE(std::abs(log2_u - log2_h) <= 600, "ContactSolver: load = ", load,
                   " N displaces the surface by about ", std::exp2(log2_u),
@@ -716,7 +741,7 @@ double load_scale(SurfaceOperator& op, const Field& h, double load, int& applica
 // The solution of the unscaled problem (load or approach `value`) from that of the scaled one
 // (load_scale); refused, never returned as NaN or Inf, when it is not representable in double
 // precision.
-void unscale(ContactResult& result, double s, double value) {
+void unscale(ContactResult& result, double s, double value, const SolverRanks* ranks) {
   if (s != 1.0) {
     result.pressure *= s;
     result.displacement *= s;
@@ -726,12 +751,12 @@ void unscale(ContactResult& result, double s, double value) {
     result.max_pressure *= s;
     result.max_penetration *= s;
   }
-  COATFFT_REQUIRE(std::isfinite(result.load) && std::isfinite(result.max_pressure) &&
-                      result.displacement.allFinite() && result.gap.allFinite(),
-                  "ContactSolver: ", result.control == ContactControl::load ? "load" : "approach",
-                  " = ", value,
-                  ": the contact's pressure, displacement or gap leaves double precision; "
-                  "rescale the units of the load, the heights and the moduli");
+  COATFFT_REQUIRE(
+      std::isfinite(result.load) && std::isfinite(result.max_pressure) &&
+          detail::all_over(ranks, result.displacement.allFinite() && result.gap.allFinite()),
+      "ContactSolver: ", result.control == ContactControl::load ? "load" : "approach", " = ", value,
+      ": the contact's pressure, displacement or gap leaves double precision; "
+      "rescale the units of the load, the heights and the moduli");
 }
 
 }  // namespace
@@ -765,7 +790,11 @@ std::string describe(const ContactResult& result, double tolerance) {
 }
 
 ContactSolver::ContactSolver(SurfaceOperator& op, ContactOptions options)
-    : op_(op), options_(options) {
+    : ContactSolver(op, std::move(options), nullptr) {}
+
+ContactSolver::ContactSolver(SurfaceOperator& op, ContactOptions options,
+                             std::shared_ptr<const detail::SolverRanks> ranks)
+    : op_(op), options_(std::move(options)), ranks_(std::move(ranks)) {
   COATFFT_REQUIRE(std::isfinite(options_.tolerance) && options_.tolerance > 0,
                   "ContactSolver: tolerance = ", options_.tolerance,
                   ", but it must be finite and > 0");
@@ -780,8 +809,9 @@ ContactSolver::ContactSolver(SurfaceOperator& op, ContactOptions options)
     constexpr std::ptrdiff_t measured_cells = 2048 * 2048;
     const Planning planning = options_.preconditioner_planning.value_or(
         op_.grid().nb_cells() >= measured_cells ? Planning::measure : Planning::estimate);
-    preconditioner_ =
-        std::make_unique<detail::FourierPreconditioner>(op_.grid(), options_.threads, planning);
+    preconditioner_ = ranks_ ? ranks_->preconditioner(op_.grid(), options_.threads, planning)
+                             : std::make_unique<detail::FourierPreconditioner>(
+                                   op_.grid(), options_.threads, planning);
   }
 }
 
@@ -839,19 +869,25 @@ std::vector<ContactResult> ContactSolver::solve_sweep(const Field& height, Conta
 
 void ContactSolver::check_problem(const Field& h, ContactControl control, double value) const {
   const Grid& grid = op_.grid();
-  COATFFT_REQUIRE(h.rows() == grid.nx() && h.cols() == grid.ny(),
+  const SolverRanks* ranks = ranks_.get();
+  // Distributed: this rank's rows of the heights (every check is made by all ranks together).
+  const std::ptrdiff_t rows = ranks ? ranks->rows() : grid.ny();
+  COATFFT_REQUIRE(detail::all_over(ranks, h.rows() == grid.nx() && h.cols() == rows),
                   "ContactSolver: height field of shape (", h.rows(), ", ", h.cols(),
-                  "), but the operator's grid is (", grid.nx(), ", ", grid.ny(), ")");
-  COATFFT_REQUIRE(h.allFinite(), "ContactSolver: the height field has a non-finite entry");
+                  "), but the operator's grid is (", grid.nx(), ", ", grid.ny(), ")",
+                  ranks ? " (distributed: a rank's rows)" : "");
+  COATFFT_REQUIRE(detail::all_over(ranks, h.allFinite()),
+                  "ContactSolver: the height field has a non-finite entry");
   if (control == ContactControl::approach) {
-    const double h_min = h.minCoeff();
+    const double h_min = detail::extrema_over(ranks, h).min;
     COATFFT_REQUIRE(value > h_min, "ContactSolver: approach = ", value,
                     " m, but it must exceed min(height) = ", h_min,
                     " m, or the indenter does not touch the surface");
     // A periodic displacement has zero mean (docs/theory.md 4.8), so the mean gap is
     // mean(h) - delta whatever the pressure: an approach at or beyond mean(h) has no solution
     // (the pressure would grow without bound). Full contact is reached as delta -> mean(h).
-    const double h_mean = h.mean();
+    const double h_mean =
+        ranks ? detail::sum_over(ranks, h.sum()) / static_cast<double>(grid.nb_cells()) : h.mean();
     COATFFT_REQUIRE(!op_.periodic() || value < h_mean, "ContactSolver: approach = ", value,
                     " m, but on a periodic surface it must stay below mean(height) = ", h_mean,
                     " m (the displacement has zero mean: no contact solves a larger approach)");
@@ -868,7 +904,8 @@ ContactSolver::NestedStart ContactSolver::nested_start(const Field& h, ContactCo
   constexpr std::ptrdiff_t coarsest = 64;    // cells per side of the coarsest grid
   constexpr double coarse_tolerance = 1e-3;  // a start needs no more (docs/contact.md)
   const Grid& grid = op_.grid();
-  if (!options_.nested_start || grid.nx() % 2 != 0 || grid.ny() % 2 != 0 ||
+  // Not on distributed fields yet: their coarse grids' rows would not pair up within a rank.
+  if (ranks_ || !options_.nested_start || grid.nx() % 2 != 0 || grid.ny() % 2 != 0 ||
       std::min(grid.nx(), grid.ny()) < 2 * coarsest)
     return {};
   // One patch below the trial level (a smooth indenter) is what the Hertzian start describes
@@ -904,19 +941,21 @@ ContactResult ContactSolver::run(const Field& h, ContactControl control, double 
     start = std::move(nested.pressure);
   }
   int scale_applications = nested.applications;
-  const double s =
-      control == ContactControl::load ? load_scale(op_, h, value, scale_applications) : 1.0;
+  const double s = control == ContactControl::load
+                       ? load_scale(op_, h, value, scale_applications, ranks_.get())
+                       : 1.0;
   Field h_scaled;
   if (s != 1.0) {
     h_scaled = work_field(h);
     h_scaled = h / s;
   }
-  COATFFT_REQUIRE(s == 1.0 || (h_scaled.allFinite() && value / s > 0),
-                  "ContactSolver: load = ", value, " N and heights spanning ",
-                  h.maxCoeff() - h.minCoeff(),
-                  " m are too far apart for double precision; rescale their units");
-  PolonskyKeerIteration iteration(op_, preconditioner_.get(), s == 1.0 ? h : h_scaled, control,
-                                  value / s, options_, std::move(start));
+  COATFFT_REQUIRE(
+      s == 1.0 || (detail::all_over(ranks_.get(), h_scaled.allFinite()) && value / s > 0),
+      "ContactSolver: load = ", value, " N and heights spanning ",
+      detail::extrema_over(ranks_.get(), h).max - detail::extrema_over(ranks_.get(), h).min,
+      " m are too far apart for double precision; rescale their units");
+  PolonskyKeerIteration iteration(op_, preconditioner_.get(), ranks_.get(), s == 1.0 ? h : h_scaled,
+                                  control, value / s, options_, std::move(start));
   const double start_seconds = detail::seconds_since(solve_start);
   iteration.timings() = ContactTimings{};  // the start's recomputations are the start's
   ContactStatus status = ContactStatus::iteration_limit;
@@ -940,7 +979,7 @@ ContactResult ContactSolver::run(const Field& h, ContactControl control, double 
   result.timings.total = detail::seconds_since(solve_start);
   result.operator_applications += scale_applications;
   result.coarse_applications = nested.coarse_applications;
-  unscale(result, s, value);
+  unscale(result, s, value, ranks_.get());
   result.warning = describe(result, options_.tolerance);
   return result;
 }

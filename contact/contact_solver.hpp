@@ -170,14 +170,21 @@ std::string describe(const ContactResult& result, double tolerance);
 /// preconditioned) and, now and then, one more to recompute the displacement exactly
 /// (ContactResult::operator_applications counts them all).
 namespace detail {
-class FourierPreconditioner;
-}
+class Preconditioner;
+class SolverRanks;
+}  // namespace detail
 
 class ContactSolver {
  public:
   /// Throws InvalidArgument for tolerance not finite and > 0 or max_iterations < 1. Plans the
   /// preconditioner's FFTs (when enabled) once, for all solves.
   explicit ContactSolver(SurfaceOperator& op, ContactOptions options = {});
+  /// On fields distributed over `ranks` (distributed/distributed_contact.hpp builds it): the
+  /// heights, pressures, displacements and gaps are this rank's rows, the result's numbers are
+  /// the whole grid's, and every solve is collective. No nested start (ContactOptions::nested_start
+  /// is ignored).
+  ContactSolver(SurfaceOperator& op, ContactOptions options,
+                std::shared_ptr<const detail::SolverRanks> ranks);
   ~ContactSolver();
   ContactSolver(const ContactSolver&) = delete;
   ContactSolver& operator=(const ContactSolver&) = delete;
@@ -229,7 +236,8 @@ class ContactSolver {
 
   SurfaceOperator& op_;
   ContactOptions options_;
-  std::unique_ptr<detail::FourierPreconditioner> preconditioner_;
+  std::shared_ptr<const detail::SolverRanks> ranks_;  // null: whole fields
+  std::unique_ptr<detail::Preconditioner> preconditioner_;
 };
 
 }  // namespace coatfft

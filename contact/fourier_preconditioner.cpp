@@ -24,17 +24,19 @@ FourierPreconditioner::FourierPreconditioner(const Grid& grid, int threads, Plan
   backward_ = FftwPlan::create(threads, [&] {
     return fftw_plan_dft_c2r_2d(nyi, nxi, spectrum_.data(), real_.data(), flags);
   });
-  const double dkx = 2.0 * std::numbers::pi / grid.lx();
-  const double dky = 2.0 * std::numbers::pi / grid.ly();
   const double norm = 1.0 / static_cast<double>(nx_ * ny_);
   sigma_.resize(hx_, ny_);
-  for (std::ptrdiff_t j = 0; j < ny_; ++j) {
-    const double ky = dky * static_cast<double>(j <= ny_ / 2 ? j : j - ny_);
-    for (std::ptrdiff_t i = 0; i < hx_; ++i)
-      sigma_(i, j) = std::hypot(dkx * static_cast<double>(i), ky) * norm;
-  }
+  for (std::ptrdiff_t j = 0; j < ny_; ++j)
+    for (std::ptrdiff_t i = 0; i < hx_; ++i) sigma_(i, j) = preconditioner_symbol(grid, i, j, norm);
+}
+
+double preconditioner_symbol(const Grid& grid, std::ptrdiff_t i, std::ptrdiff_t j, double norm) {
+  const double dkx = 2.0 * std::numbers::pi / grid.lx();
+  const double dky = 2.0 * std::numbers::pi / grid.ly();
   // Mean of 1/|k| over the central cell [-dkx/2, dkx/2] x [-dky/2, dky/2] (docs/theory.md 3.1).
-  sigma_(0, 0) = norm / mean_inverse_wavenumber(dkx, dky);
+  if (i == 0 && j == 0) return norm / mean_inverse_wavenumber(dkx, dky);
+  const double ky = dky * static_cast<double>(j <= grid.ny() / 2 ? j : j - grid.ny());
+  return std::hypot(dkx * static_cast<double>(i), ky) * norm;
 }
 
 void FourierPreconditioner::apply(Field& field) {

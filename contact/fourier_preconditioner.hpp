@@ -4,13 +4,18 @@
 // The half-space compliance is 2/(E* k) (docs/conventions.md), so sigma K ~ identity, and the
 // condition number of the preconditioned contact block stays nearly independent of N. The scale of
 // sigma is irrelevant: the conjugate-gradient step length absorbs it.
+#include "contact/detail/solver_ranks.hpp"
 #include "convolution/fft/fftw_plan.hpp"
 #include "core/grid.hpp"
 #include "core/types.hpp"
 
 namespace coatfft::detail {
 
-class FourierPreconditioner {
+/// sigma(k) of the mode (i, j) (0 <= i <= nx/2, 0 <= j < ny, j the signed frequency) times
+/// `norm`: |k|, and at k = 0 the inverse of the mean of 1/|k| over the central frequency cell.
+double preconditioner_symbol(const Grid& grid, std::ptrdiff_t i, std::ptrdiff_t j, double norm);
+
+class FourierPreconditioner final : public Preconditioner {
  public:
   /// Plans the periodic r2c/c2r pair on `grid` (`planning`, `threads` FFTW threads). Double
   /// precision: single was measured to give the same iteration counts at 512^2 and 1024^2 with
@@ -22,9 +27,9 @@ class FourierPreconditioner {
 
   /// The preconditioner's own field, (nx, ny) x fastest: fill it, apply(), read the result. The
   /// contact iteration works in it, which spares a field of its own.
-  double* data() { return real_.data(); }
+  double* data() override { return real_.data(); }
   /// data() <- F^-1 [sigma F[data()]] in place.
-  void apply();
+  void apply() override;
   /// field <- F^-1 [sigma F[field]] in place; `field` has the grid's shape (nx, ny).
   /// sigma(k) = |k| [rad/m]; at k = 0, where |k| vanishes, sigma is the inverse of the mean of
   /// 1/|k| over the central frequency cell (docs/theory.md eq. 3.1), the same zero-frequency rule

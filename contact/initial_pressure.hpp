@@ -18,14 +18,18 @@ inline constexpr double kTrialContactShare = 0.25;
 /// sqrt(max(level - h, 0)) cell by cell [sqrt(m)]: the shape of the start, to be scaled.
 Field hertzian_profile(const Field& h, double level);
 
-/// The value of h below which the share `share` (in [0, 1)) of the cells lie [m].
-double level_below(const Field& h, double share);
+class SolverRanks;
+
+/// The value of h below which the share `share` (in [0, 1)) of the cells lie [m]: the k-th
+/// smallest, k = share * cells. With `ranks`, of the field distributed over them (the same value).
+double level_below(const Field& h, double share, const SolverRanks* ranks = nullptr);
 
 /// The factor that corrects the level of a load-controlled start from the displacement `u` of
 /// its trial pressure `p` (the profile at that level, scaled to the load). In contact, h + u is
 /// constant, so u falls along h with slope -1; the trial's slope is -B, B the least-squares slope
 /// of u against h over the support of p. For Hertz, a trial radius a' gives B = (a/a')^3 and the
 /// level scales as a^2: the factor is B^(2/3) (1 when B is not finite and positive).
-double level_correction(const Field& h, const Field& p, const Field& u);
+double level_correction(const Field& h, const Field& p, const Field& u,
+                        const SolverRanks* ranks = nullptr);
 
 }  // namespace coatfft::detail

@@ -76,6 +76,12 @@ bool Communicator::all(bool value) const {
   return v != 0;
 }
 
+void Communicator::all_gather(const void* mine, std::size_t size, void* all) const {
+  check(MPI_Allgather(mine, static_cast<int>(size), MPI_BYTE, all, static_cast<int>(size), MPI_BYTE,
+                      comm_of(*this)),
+        "MPI_Allgather");
+}
+
 void Communicator::broadcast(std::string& text, int root) const {
   auto size = static_cast<std::int64_t>(text.size());
   check(MPI_Bcast(&size, 1, MPI_INT64_T, root, comm_of(*this)), "MPI_Bcast");

@@ -28,6 +28,8 @@ class Communicator {
   double max(double value) const;
   /// Whether `value` holds on every rank.
   bool all(bool value) const;
+  /// Every rank's `size` bytes at `mine`, in rank order, into `all` (size() * size bytes).
+  void all_gather(const void* mine, std::size_t size, void* all) const;
   /// `text` as rank `root` has it, on every rank.
   void broadcast(std::string& text, int root = 0) const;
   void barrier() const;

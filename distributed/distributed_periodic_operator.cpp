@@ -50,16 +50,13 @@ std::vector<double> kernel_spectrum(const Communicator& comm, detail::SlabFft& f
 }  // namespace
 
 DistributedPeriodicOperator::~DistributedPeriodicOperator() = default;
-DistributedPeriodicOperator::DistributedPeriodicOperator(DistributedPeriodicOperator&&) noexcept =
-    default;
-DistributedPeriodicOperator& DistributedPeriodicOperator::operator=(
-    DistributedPeriodicOperator&&) noexcept = default;
 
 DistributedPeriodicOperator::DistributedPeriodicOperator(const Communicator& comm, const Grid& grid,
                                                          const Frf& frf,
                                                          const PeriodicKernelOptions& kernel,
-                                                         Planning planning, int threads)
-    : grid_(grid) {
+                                                         Planning planning, int threads,
+                                                         Method method)
+    : grid_(grid), method_(method) {
   COATFFT_REQUIRE(threads >= 1, "DistributedPeriodicOperator: threads = ", threads,
                   " must be >= 1");
   COATFFT_REQUIRE(grid.nx() % 2 == 0 && grid.ny() % 2 == 0,
@@ -95,10 +92,14 @@ double DistributedPeriodicOperator::communication_seconds() const {
   return t_->fft.transpose_seconds();
 }
 
-Field DistributedPeriodicOperator::apply(const Field& pressure) {
-  Field u;
-  apply(pressure, u);
-  return u;
+Field DistributedPeriodicOperator::unit_response() {
+  Field unit = slab().field();
+  if (slab().y0 == 0 && slab().rows > 0) unit(0, 0) = 1.0;
+  return apply(unit);
+}
+
+const Communicator& DistributedPeriodicOperator::communicator() const {
+  return t_->comm;
 }
 
 }  // namespace coatfft

@@ -10,6 +10,7 @@
 
 #include "../convolution/fft/planning.hpp"
 #include "../convolution/kernels/periodic_kernel.hpp"
+#include "../convolution/operators/surface_operator.hpp"
 #include "../core/grid.hpp"
 #include "../core/types.hpp"
 #include "../frf/frf.hpp"
@@ -18,25 +19,30 @@
 
 namespace coatfft {
 
-class DistributedPeriodicOperator {
+class DistributedPeriodicOperator final : public SurfaceOperator {
  public:
   /// InvalidArgument as periodic_influence_kernel for the grid, the FRF and `kernel`'s options;
-  /// `threads` (>= 1) FFTW's threads within each rank.
+  /// `threads` (>= 1) FFTW's threads within each rank; `method` what method() reports (the
+  /// periodic kernel is the exact one for dcfft and frf-split alike, as make_operator's).
   DistributedPeriodicOperator(const Communicator& comm, const Grid& grid, const Frf& frf,
                               const PeriodicKernelOptions& kernel = {},
-                              Planning planning = Planning::estimate, int threads = 1);
+                              Planning planning = Planning::estimate, int threads = 1,
+                              Method method = Method::frf_split);
   ~DistributedPeriodicOperator();
-  DistributedPeriodicOperator(DistributedPeriodicOperator&&) noexcept;
-  DistributedPeriodicOperator& operator=(DistributedPeriodicOperator&&) noexcept;
 
-  const Grid& grid() const { return grid_; }
+  const Grid& grid() const override { return grid_; }
+  Method method() const override { return method_; }
+  bool periodic() const override { return true; }
   /// This rank's rows and half-spectrum columns.
   const Slab& slab() const;
   /// `displacement` [m] (resized to (nx, rows)) under `pressure` [Pa], both this rank's rows, of
   /// zero mean over the period. InvalidArgument for a pressure of another shape, or one with a
   /// value that is not finite (on any rank: every rank throws).
-  void apply(const Field& pressure, Field& displacement);
-  Field apply(const Field& pressure);
+  void apply(const Field& pressure, Field& displacement) override;
+  using SurfaceOperator::apply;
+  /// This rank's rows of the displacement under 1 Pa on cell (0, 0). Collective.
+  Field unit_response() override;
+  const Communicator& communicator() const;
   /// The wall time apply() and the construction spent in the transforms' transposes so far [s]:
   /// the communication between the ranks, and the wait for the slowest.
   double communication_seconds() const;
@@ -44,6 +50,7 @@ class DistributedPeriodicOperator {
  private:
   struct Transforms;
   Grid grid_;
+  Method method_;
   std::unique_ptr<Transforms> t_;
 };
 

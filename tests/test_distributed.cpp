@@ -5,10 +5,12 @@
 #include <catch2/catch.hpp>
 #include <random>
 
+#include "contact/contact_solver.hpp"
 #include "convolution/kernels/periodic_kernel.hpp"
 #include "convolution/operators/periodic_operator.hpp"
 #include "core/error.hpp"
 #include "distributed/communicator.hpp"
+#include "distributed/distributed_contact.hpp"
 #include "distributed/distributed_periodic_operator.hpp"
 #include "distributed/self_affine_slab.hpp"
 #include "distributed/slab.hpp"
@@ -129,5 +131,49 @@ TEST_CASE(
     // The distributed spectral rms slope: Parseval over each rank's columns, summed.
     CHECK(spectral_rms_slope(comm, grid, slab) ==
           Approx(spectral_rms_slope(grid, whole)).epsilon(1e-13));
+  }
+}
+
+TEST_CASE("a distributed periodic rough contact of a coated body equals the serial solve") {
+  const Communicator comm = Communicator::world();
+  // A rough surface, whole on every rank (the reference) and in slabs; TiN 5 um on steel.
+  const Grid grid(64, 50, 1e-3, 0.8e-3);
+  SelfAffineSpec spec;
+  spec.hurst = 0.8;
+  spec.rms_slope = 0.05;
+  spec.seed = 3;
+  const Field z = self_affine_surface(grid, spec);
+  const Field h = z.maxCoeff() - z;
+  const auto frf = make_frf(LayerStack({Coating{tin, 5e-6, Interface::bonded}}, steel));
+  PeriodicOperator serial_op(grid, periodic_influence_kernel(grid, *frf), Method::frf_split);
+  DistributedPeriodicOperator op(comm, grid, *frf);
+  const Slab& s = op.slab();
+  ContactOptions options;
+  options.nested_start = false;  // not distributed yet: both solves start from the Hertzian start
+  options.compute_approach = true;
+  ContactSolver serial(serial_op, options);
+  const auto distributed = distributed_contact_solver(op, options);
+  // About 10 % contact: mean pressure 0.045 E* times the rms slope.
+  const double load = 0.045 * steel.plane_strain_modulus() * 0.05 * grid.lx() * grid.ly();
+  const double approach = h.mean() - 0.6 * (h.mean() - h.minCoeff());
+  for (const ContactControl control : {ContactControl::load, ContactControl::approach}) {
+    const double value = control == ContactControl::load ? load : approach;
+    const ContactResult a = serial.solve(h, control, value);
+    const ContactResult b = distributed->solve(rows_of(h, s), control, value);
+    REQUIRE(a.converged);
+    CHECK(b.converged);
+    // The same iterates up to the order of the sums (the ranks' partial sums added in rank order,
+    // the transforms' orders of operations): the same iteration count, fields to 1e-10.
+    CHECK(b.iterations == a.iterations);
+    CHECK(b.operator_applications == a.operator_applications);
+    CHECK(relative_difference(comm, b.pressure, rows_of(a.pressure, s)) < 1e-10);
+    CHECK(relative_difference(comm, b.displacement, rows_of(a.displacement, s)) < 1e-10);
+    CHECK(comm.max(b.gap.size() ? (b.gap - rows_of(a.gap, s)).abs().maxCoeff() : 0.0) <
+          1e-10 * a.displacement.abs().maxCoeff());
+    CHECK(b.load == Approx(a.load).epsilon(1e-10));
+    CHECK(*b.approach == Approx(*a.approach).epsilon(1e-10));
+    CHECK(b.contact_area == a.contact_area);
+    CHECK(b.max_pressure == Approx(a.max_pressure).epsilon(1e-10));
+    CHECK(b.touches_boundary == false);
   }
 }

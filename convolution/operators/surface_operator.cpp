@@ -7,7 +7,7 @@ namespace coatfft {
 // The fields are allocated on huge pages before their first touch: at 2048^2 cells a field's
 // 4 KiB page faults alone cost about three applications (core/detail/huge_pages.hpp).
 Field SurfaceOperator::apply(const Field& pressure) {
-  Field u = detail::untouched_array<Field>(grid().nx(), grid().ny());
+  Field u = detail::untouched_array<Field>(pressure.rows(), pressure.cols());
   apply(pressure, u);
   return u;
 }

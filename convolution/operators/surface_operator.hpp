@@ -22,7 +22,8 @@ class SurfaceOperator {
   /// The grid of the pressure and displacement fields.
   virtual const Grid& grid() const = 0;
   /// u = displacement [m, positive into the body] from p = pressure [Pa, positive compressive],
-  /// both Fields of shape (nx, ny). `u` is resized if needed; it must not alias `p`.
+  /// both Fields of shape (nx, ny) (a distributed operator's: this rank's rows, (nx, rows)). `u`
+  /// is resized if needed; it must not alias `p`.
   virtual void apply(const Field& pressure, Field& displacement) = 0;
   /// The method this operator runs (DC-FFT on a split kernel reports frf-split, not dcfft).
   virtual Method method() const = 0;
@@ -37,12 +38,13 @@ class SurfaceOperator {
   /// the operator kind offers none (only the periodic and DC-FFT operators do).
   virtual std::unique_ptr<SurfaceOperator> coarsened() { return nullptr; }
 
-  /// Allocating convenience form.
+  /// Allocating convenience form (the displacement of the pressure's shape).
   Field apply(const Field& pressure);
 
   /// The displacement of a unit pressure [1 Pa] on cell (0, 0) (one application): the kernel's
-  /// coefficients K(i, j) at the offsets i, j >= 0 (modulo the period on a periodic grid).
-  Field unit_response();
+  /// coefficients K(i, j) at the offsets i, j >= 0 (modulo the period on a periodic grid). A
+  /// distributed operator returns this rank's rows of it.
+  virtual Field unit_response();
 };
 
 }  // namespace coatfft

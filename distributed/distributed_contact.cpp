@@ -1,0 +1,68 @@
+#include "distributed/distributed_contact.hpp"
+
+#include <vector>
+
+#include "contact/detail/solver_ranks.hpp"
+#include "contact/fourier_preconditioner.hpp"
+#include "distributed/slab_fft.hpp"
+
+namespace coatfft {
+
+namespace {
+
+// The half-space preconditioner (contact/fourier_preconditioner.hpp) on this rank's rows: its
+// symbol on this rank's half-spectrum columns, applied by the slab transform.
+class SlabPreconditioner final : public detail::Preconditioner {
+ public:
+  SlabPreconditioner(const Communicator& comm, const Grid& grid, int threads, Planning planning)
+      : fft_(comm, grid.nx(), grid.ny(), planning, threads), field_(fft_.slab().field()) {
+    const Slab& s = fft_.slab();
+    const double norm = 1.0 / static_cast<double>(grid.nb_cells());
+    sigma_.resize(static_cast<std::size_t>(s.columns * s.ny));
+    for (std::ptrdiff_t c = 0; c < s.columns; ++c)
+      for (std::ptrdiff_t j = 0; j < s.ny; ++j)
+        sigma_[static_cast<std::size_t>(c * s.ny + j)] =
+            detail::preconditioner_symbol(grid, s.kx0 + c, j, norm);
+  }
+  double* data() override { return field_.data(); }
+  void apply() override {
+    fft_.forward(field_.data());
+    std::complex<double>* spectrum = fft_.spectrum();
+    for (std::size_t n = 0; n < sigma_.size(); ++n) spectrum[n] *= sigma_[n];
+    fft_.inverse(field_.data());
+  }
+
+ private:
+  detail::SlabFft fft_;
+  Field field_;
+  std::vector<double> sigma_;
+};
+
+class CommunicatorRanks final : public detail::SolverRanks {
+ public:
+  CommunicatorRanks(const Communicator& comm, const Slab& slab) : comm_(comm), slab_(slab) {}
+  int count() const override { return comm_.size(); }
+  void all_gather(const void* mine, std::size_t size, void* all) const override {
+    comm_.all_gather(mine, size, all);
+  }
+  std::ptrdiff_t first_row() const override { return slab_.y0; }
+  std::ptrdiff_t rows() const override { return slab_.rows; }
+  std::unique_ptr<detail::Preconditioner> preconditioner(const Grid& grid, int threads,
+                                                         Planning planning) const override {
+    return std::make_unique<SlabPreconditioner>(comm_, grid, threads, planning);
+  }
+
+ private:
+  Communicator comm_;
+  Slab slab_;
+};
+
+}  // namespace
+
+std::unique_ptr<ContactSolver> distributed_contact_solver(DistributedPeriodicOperator& op,
+                                                          ContactOptions options) {
+  return std::make_unique<ContactSolver>(
+      op, std::move(options), std::make_shared<CommunicatorRanks>(op.communicator(), op.slab()));
+}
+
+}  // namespace coatfft
