@@ -7,6 +7,12 @@
 // matrix of sizes and rank counts and writes bench/results/distributed_operator.csv.
 //   mpirun -np P bench_distributed --size N [--repeats R] [--threads T]
 //   bench_distributed --serial --size N
+// With --contact, a periodic rough contact instead (one CSV row: setup, iterations, applications,
+// solve time, the transposes' share of it, peak memory): the surface of scripts/rough_scale_run.sh
+// (H 0.8, rms slope 0.05, shortest wavelength 16 cells, roll-off 0.25 mm, seed 2004) made by the
+// ranks, pressed by a flat to a mean pressure of 0.045 E* times the rms slope (about 10 % contact),
+// tolerance 1e-10, no nested start in either (not distributed yet); written by
+// scripts/distributed_scale_run.sh to bench/results/distributed_contact.csv.
 // Body: TiN 5 um on steel, period 1 mm; pressure uniform random in [0, 1 GPa].
 #include <chrono>
 #include <cstdio>
@@ -18,14 +24,18 @@
 
 #include "bench/bench_report.hpp"
 #include "bench/command_line.hpp"
+#include "contact/contact_solver.hpp"
 #include "convolution/kernels/periodic_kernel.hpp"
 #include "convolution/operators/periodic_operator.hpp"
 #include "core/detail/timing.hpp"
+#include "distributed/distributed_contact.hpp"
 #include "distributed/distributed_periodic_operator.hpp"
 #include "distributed/mpi_session.hpp"
+#include "distributed/self_affine_slab.hpp"
 #include "frf/frf.hpp"
 #include "layers/layer_stack.hpp"
 #include "materials/material.hpp"
+#include "surfaces/self_affine_surface.hpp"
 
 namespace {
 
@@ -37,6 +47,7 @@ struct Options {
   int repeats = 5;
   int threads = 1;
   bool serial = false;
+  bool contact = false;
 };
 
 // Rows y0 <= j < y0 + rows of a random pressure field (each row from its own generator: the same
@@ -107,6 +118,81 @@ Row run_serial(const Options& o, const Frf& frf, const Grid& grid) {
   return row;
 }
 
+struct ContactRow {
+  double setup_s = 0, solve_s = 0, transpose_s = 0, area = 0, rss_max_mb = 0, rss_sum_mb = 0;
+  int iterations = 0, applications = 0;
+  bool converged = false;
+};
+
+SelfAffineSpec rough_spec(const Grid& grid) {
+  SelfAffineSpec spec;
+  spec.hurst = 0.8;
+  spec.rms_slope = 0.05;
+  spec.short_cutoff = 16 * grid.dx();
+  spec.long_cutoff = 2.5e-4;
+  spec.seed = 2004;
+  return spec;
+}
+
+ContactOptions rough_options(int threads) {
+  ContactOptions options;
+  options.nested_start = false;
+  options.threads = threads;
+  return options;
+}
+
+double rough_load(const Grid& grid) {
+  return 0.045 * Material(210e9, 0.3).plane_strain_modulus() * 0.05 * grid.lx() * grid.ly();
+}
+
+void fill(ContactRow& row, const ContactResult& r, const Grid& grid) {
+  row.iterations = r.iterations;
+  row.applications = r.operator_applications;
+  row.converged = r.converged;
+  row.area = r.contact_area / (grid.lx() * grid.ly());
+}
+
+ContactRow contact_distributed(const Options& o, const Frf& frf, const Grid& grid) {
+  const Communicator comm = Communicator::world();
+  ContactRow row;
+  comm.barrier();
+  auto start = Clock::now();
+  DistributedPeriodicOperator op(comm, grid, frf, {.threads = o.threads}, Planning::estimate,
+                                 o.threads);
+  row.setup_s = comm.max(detail::seconds_since(start));
+  const Field z = self_affine_slab(comm, grid, rough_spec(grid));
+  const Field h = comm.max(z.size() ? z.maxCoeff() : -1e300) - z;
+  const auto solver = distributed_contact_solver(op, rough_options(o.threads));
+  const double before = op.communication_seconds();
+  comm.barrier();
+  start = Clock::now();
+  const ContactResult r = solver->solve_load(h, rough_load(grid));
+  row.solve_s = comm.max(detail::seconds_since(start));
+  row.transpose_s = comm.max(op.communication_seconds() - before);
+  fill(row, r, grid);
+  row.rss_max_mb = comm.max(bench::peak_rss_mb());
+  row.rss_sum_mb = comm.sum(bench::peak_rss_mb());
+  return row;
+}
+
+ContactRow contact_serial(const Options& o, const Frf& frf, const Grid& grid) {
+  ContactRow row;
+  auto start = Clock::now();
+  PeriodicOperator op(grid, periodic_influence_kernel(grid, frf, {.threads = o.threads}),
+                      Method::frf_split, Planning::estimate, Precision::double_precision,
+                      o.threads);
+  row.setup_s = detail::seconds_since(start);
+  const Field z = self_affine_surface(grid, rough_spec(grid));
+  const Field h = z.maxCoeff() - z;
+  ContactSolver solver(op, rough_options(o.threads));
+  start = Clock::now();
+  const ContactResult r = solver.solve_load(h, rough_load(grid));
+  row.solve_s = detail::seconds_since(start);
+  fill(row, r, grid);
+  row.rss_max_mb = row.rss_sum_mb = bench::peak_rss_mb();
+  return row;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -116,6 +202,7 @@ int main(int argc, char** argv) {
   app.add("--repeats", o.repeats, "timed applications").show_default();
   app.add("--threads", o.threads, "FFTW threads per rank").show_default();
   app.flag("--serial", o.serial, "the serial PeriodicOperator, without MPI");
+  app.flag("--contact", o.contact, "a periodic rough contact instead of applications");
   if (const auto status = app.parse(argc, argv)) return *status;
   try {
     const LayerStack body({Coating{Material(400e9, 0.25), 5e-6, Interface::bonded}},
@@ -124,19 +211,26 @@ int main(int argc, char** argv) {
     const Grid grid(o.n, o.n, 1e-3, 1e-3);
     std::unique_ptr<MpiSession> session;
     int ranks = 0, rank = 0;
-    Row row;
-    if (o.serial) {
-      row = run_serial(o, *frf, grid);
-    } else {
+    if (!o.serial) {
       session = std::make_unique<MpiSession>(argc, argv);
       ranks = session->world().size();
       rank = session->world().rank();
-      row = run_distributed(o, *frf, grid);
     }
+    const std::string who = o.serial ? "serial" : std::to_string(ranks);
+    if (o.contact) {
+      const ContactRow c =
+          o.serial ? contact_serial(o, *frf, grid) : contact_distributed(o, *frf, grid);
+      if (rank == 0)
+        std::printf("%td,%s,%d,%.3f,%d,%d,%s,%.4f,%.2f,%.2f,%.3f,%.0f,%.0f\n", o.n, who.c_str(),
+                    o.threads, c.setup_s, c.iterations, c.applications,
+                    c.converged ? "true" : "false", c.area, c.solve_s, c.transpose_s,
+                    c.solve_s > 0 ? c.transpose_s / c.solve_s : 0.0, c.rss_max_mb, c.rss_sum_mb);
+      return 0;
+    }
+    const Row row = o.serial ? run_serial(o, *frf, grid) : run_distributed(o, *frf, grid);
     if (rank == 0)
-      std::printf("%td,%s,%d,%.3f,%.2f,%.2f,%.3f,%.0f,%.0f,%.0f\n", o.n,
-                  o.serial ? "serial" : std::to_string(ranks).c_str(), o.threads, row.setup_s,
-                  row.apply_ms, row.transpose_ms,
+      std::printf("%td,%s,%d,%.3f,%.2f,%.2f,%.3f,%.0f,%.0f,%.0f\n", o.n, who.c_str(), o.threads,
+                  row.setup_s, row.apply_ms, row.transpose_ms,
                   row.apply_ms > 0 ? row.transpose_ms / row.apply_ms : 0.0, row.rss_before_mb,
                   row.rss_max_mb, row.rss_sum_mb);
     return 0;

@@ -4,6 +4,7 @@
 
 #include "contact/detail/solver_ranks.hpp"
 #include "contact/fourier_preconditioner.hpp"
+#include "distributed/detail/communicator_ranks.hpp"
 #include "distributed/slab_fft.hpp"
 
 namespace coatfft {
@@ -38,31 +39,18 @@ class SlabPreconditioner final : public detail::Preconditioner {
   std::vector<double> sigma_;
 };
 
-class CommunicatorRanks final : public detail::SolverRanks {
- public:
-  CommunicatorRanks(const Communicator& comm, const Slab& slab) : comm_(comm), slab_(slab) {}
-  int count() const override { return comm_.size(); }
-  void all_gather(const void* mine, std::size_t size, void* all) const override {
-    comm_.all_gather(mine, size, all);
-  }
-  std::ptrdiff_t first_row() const override { return slab_.y0; }
-  std::ptrdiff_t rows() const override { return slab_.rows; }
-  std::unique_ptr<detail::Preconditioner> preconditioner(const Grid& grid, int threads,
-                                                         Planning planning) const override {
-    return std::make_unique<SlabPreconditioner>(comm_, grid, threads, planning);
-  }
-
- private:
-  Communicator comm_;
-  Slab slab_;
-};
-
 }  // namespace
+
+std::unique_ptr<detail::Preconditioner> detail::CommunicatorRanks::preconditioner(
+    const Grid& grid, int threads, Planning planning) const {
+  return std::make_unique<SlabPreconditioner>(comm_, grid, threads, planning);
+}
 
 std::unique_ptr<ContactSolver> distributed_contact_solver(DistributedPeriodicOperator& op,
                                                           ContactOptions options) {
   return std::make_unique<ContactSolver>(
-      op, std::move(options), std::make_shared<CommunicatorRanks>(op.communicator(), op.slab()));
+      op, std::move(options),
+      std::make_shared<detail::CommunicatorRanks>(op.communicator(), op.slab()));
 }
 
 }  // namespace coatfft

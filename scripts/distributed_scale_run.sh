@@ -1,42 +1,66 @@
 #!/usr/bin/env bash
-# The distributed periodic operator against the serial one, as docs/scale.md reports it: for each
-# grid, bench_distributed --serial, then under mpirun at each rank count (one process per row, so
-# each row's peak memory is its own). Writes bench/results/distributed_operator.csv.
+# The distributed periodic operator and contact solve against the serial ones, as docs/scale.md
+# reports them: for each grid, bench_distributed --serial, then under mpirun at each rank count
+# (one process per row, so each row's peak memory is its own). Writes
+# bench/results/distributed_operator.csv and (WHAT=contact or both) distributed_contact.csv.
 #   Body: TiN 5 um on steel, period 1 mm; one FFTW thread a rank; FFTW_ESTIMATE plans.
 # Usage: scripts/distributed_scale_run.sh [N ...]   (default 2048 4096; RANKS, default "1 2 4";
-#        BUILD_DIR, default build). As root, Open MPI's permission variables are set here.
+#        WHAT: operator, contact or both (default); BUILD_DIR, default build). As root, Open
+#        MPI's permission variables are set here.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${BUILD_DIR:-$root/build}
 sizes=("$@")
 [ ${#sizes[@]} -gt 0 ] || sizes=(2048 4096)
 read -r -a ranks <<<"${RANKS:-1 2 4}"
+what=${WHAT:-both}
 cmake --build "$build" --target bench_distributed >/dev/null
 bench=$build/bench/bench_distributed
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-results=$root/bench/results/distributed_operator.csv
 tmp=$(mktemp)
 trap 'rm -f "$tmp"' EXIT
-{
-  echo "# benchmark = scripts/distributed_scale_run.sh (bench_distributed: the distributed periodic operator)"
+header() {
+  echo "# benchmark = scripts/distributed_scale_run.sh (bench_distributed $1)"
   echo "# date = $(date -u +%Y-%m-%dT%H:%M:%SZ)"
   echo "# cpu = $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)"
   echo "# hardware_threads = $(nproc); memory = $(free -g | awk '/Mem:/{print $2}') GiB"
   echo "# mpi = $(mpirun --version | head -n 1); ranks on one machine (shared memory)"
   echo "# body = TiN 5 um on steel, period 1 mm; one FFTW thread a rank; FFTW_ESTIMATE"
+}
+# One CSV: its header lines, then a row per size and rank count (bench_distributed FLAGS).
+measure() {
+  local results=$1
+  shift
+  for n in "${sizes[@]}"; do
+    echo "== $n^2 serial $*" >&2
+    "$bench" --serial --size "$n" "$@" >>"$tmp"
+    for p in "${ranks[@]}"; do
+      echo "== $n^2 np $p $*" >&2
+      mpirun -np "$p" --oversubscribe "$bench" --size "$n" "$@" >>"$tmp"
+    done
+  done
+  mv "$tmp" "$results"
+  cat "$results"
+}
+if [ "$what" != contact ]; then
+{
+  header "the distributed periodic operator"
   echo "# apply_ms: median of 5 applications, each timed from a barrier to the slowest rank;"
   echo "#   transpose_ms: the transposes' share of one (communication and waits); rss_*: peak"
   echo "#   resident memory [MiB] before the operator (max over ranks), after (max, sum over ranks)"
   echo "N,ranks,threads,setup_s,apply_ms,transpose_ms,communication_share,rss_before_mb,rss_max_mb,rss_sum_mb"
 } >"$tmp"
-for n in "${sizes[@]}"; do
-  echo "== $n^2 serial" >&2
-  "$bench" --serial --size "$n" >>"$tmp"
-  for p in "${ranks[@]}"; do
-    echo "== $n^2 np $p" >&2
-    mpirun -np "$p" --oversubscribe "$bench" --size "$n" >>"$tmp"
-  done
-done
-mv "$tmp" "$results"
+measure "$root/bench/results/distributed_operator.csv"
+fi
+if [ "$what" != operator ]; then
+{
+  header "--contact: a periodic rough contact solved on distributed fields"
+  echo "# surface: H 0.8, rms slope 0.05, shortest wavelength 16 cells, roll-off 0.25 mm, seed 2004;"
+  echo "#   mean pressure 0.045 E* x rms slope; tolerance 1e-10; no nested start (serial and distributed)"
+  echo "# solve_s: the solve on the slowest rank; transpose_s: the operator's transposes within it"
+  echo "#   (the preconditioner's are not counted); rss_*: peak resident memory [MiB] of a rank, sum"
+  echo "N,ranks,threads,setup_s,iterations,applications,converged,area_fraction,solve_s,transpose_s,transpose_share,rss_max_mb,rss_sum_mb"
+} >"$tmp"
+measure "$root/bench/results/distributed_contact.csv" --contact
+fi
 trap - EXIT
-cat "$results"

@@ -6,10 +6,12 @@
 #include <random>
 
 #include "contact/contact_solver.hpp"
+#include "contact/initial_pressure.hpp"
 #include "convolution/kernels/periodic_kernel.hpp"
 #include "convolution/operators/periodic_operator.hpp"
 #include "core/error.hpp"
 #include "distributed/communicator.hpp"
+#include "distributed/detail/communicator_ranks.hpp"
 #include "distributed/distributed_contact.hpp"
 #include "distributed/distributed_periodic_operator.hpp"
 #include "distributed/self_affine_slab.hpp"
@@ -175,5 +177,30 @@ TEST_CASE("a distributed periodic rough contact of a coated body equals the seri
     CHECK(b.contact_area == a.contact_area);
     CHECK(b.max_pressure == Approx(a.max_pressure).epsilon(1e-10));
     CHECK(b.touches_boundary == false);
+  }
+}
+
+TEST_CASE("the distributed level of the heights is the serial quantile, ties and signs alike") {
+  const Communicator comm = Communicator::world();
+  // Fields with ties (values on a coarse lattice), both signs, -0 and +0, and grids whose rows
+  // leave a rank empty at 3 ranks (2 rows); each rank holds its rows of the same whole field.
+  std::mt19937_64 rng(11);
+  for (auto [nx, ny] : {std::pair{16, 12}, {7, 2}, {33, 5}}) {
+    for (double lattice : {0.0, 0.25}) {
+      Field h(nx, ny);
+      for (Eigen::Index n = 0; n < h.size(); ++n) {
+        const double v = -1.0 + 2.0 * static_cast<double>(rng() >> 11) * 0x1.0p-53;
+        h(n) = lattice > 0 ? lattice * std::round(v / lattice) : v;
+      }
+      h(0) = -0.0;
+      const Slab s = slab_of(comm, nx, ny);
+      const detail::CommunicatorRanks ranks(comm, s);
+      const Field mine = rows_of(h, s);
+      for (double share : {0.0, 0.1, 0.25, 0.5, 0.99}) {
+        const double serial = detail::level_below(h, share);
+        const double distributed = detail::level_below(mine, share, &ranks);
+        CHECK(comm.all(distributed == serial));
+      }
+    }
   }
 }
