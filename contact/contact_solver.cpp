@@ -963,7 +963,13 @@ ContactResult ContactSolver::run(const Field& h, ContactControl control, double 
   while (iterations < options_.max_iterations) {
     // The iterate lives here and is dropped on the way out: the operator and the solver are
     // left as they were, ready for another solve.
-    check_interrupt();
+    // Distributed, the ranks stop together: one that stopped alone would leave the others
+    // waiting in the next sum.
+    if (!ranks_) {
+      check_interrupt();
+    } else if (!detail::all_over(ranks_.get(), !detail::poll_interrupt())) {
+      throw Interrupted();
+    }
     ++iterations;
     const std::optional<ContactStatus> end = iteration.iterate(options_.tolerance);
     const bool stepped = !end || *end == ContactStatus::converged;

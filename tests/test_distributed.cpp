@@ -3,6 +3,8 @@
 // the distributed periodic operator equals PeriodicOperator on a coated and a homogeneous body, a
 // surface of a seed is the same at any rank count and equals self_affine_surface's.
 #include <catch2/catch.hpp>
+#include <chrono>
+#include <optional>
 #include <random>
 
 #include "contact/contact_solver.hpp"
@@ -10,6 +12,7 @@
 #include "convolution/kernels/periodic_kernel.hpp"
 #include "convolution/operators/periodic_operator.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "distributed/communicator.hpp"
 #include "distributed/detail/communicator_ranks.hpp"
 #include "distributed/distributed_contact.hpp"
@@ -203,4 +206,22 @@ TEST_CASE("the distributed level of the heights is the serial quantile, ties and
       }
     }
   }
+}
+
+TEST_CASE("a distributed contact solve stops on every rank when one rank is interrupted") {
+  const Communicator comm = Communicator::world();
+  const Grid grid(32, 30, 1e-3, 1e-3);
+  SelfAffineSpec spec;
+  spec.rms_slope = 0.05;
+  const Field z = self_affine_surface(grid, spec);
+  const auto frf = make_frf(LayerStack({}, steel));
+  DistributedPeriodicOperator op(comm, grid, *frf);
+  const auto solver = distributed_contact_solver(op);
+  // Ctrl-C seen by the last rank only (a hook asked at every check): every rank throws, none is
+  // left waiting in a sum.
+  std::optional<ScopedInterruptHook> hook;
+  if (comm.rank() == comm.size() - 1)
+    hook.emplace([] { return true; }, std::chrono::milliseconds(0));
+  const double load = 0.01 * steel.plane_strain_modulus() * 0.05 * grid.lx() * grid.ly();
+  CHECK_THROWS_AS(solver->solve_load(rows_of(z.maxCoeff() - z, op.slab()), load), Interrupted);
 }
