@@ -16,10 +16,11 @@ if ! command -v clang++ >/dev/null; then
   echo "fuzz.sh: clang++ not found (scripts/setup.sh installs clang and libclang-rt-14-dev)" >&2
   exit 2
 fi
-# Only the library, the CLI's readers and the targets: no tests, benchmarks or tables; the
-# libraries as unity builds (built once).
+# Only the library, the CLI's readers and the targets: no tests, benchmarks or tables, and no
+# distributed layer (no reader is distributed yet); the libraries as unity builds (built once).
 cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_COMPILER=clang++ -DCOATFFT_FUZZ=ON -DCOATFFT_UNITY=ON -DCOATFFT_BUILD_TESTS=OFF \
+  -DCOATFFT_MPI=OFF \
   -DCOATFFT_BUILD_BENCH=OFF -DCOATFFT_BUILD_TABLES=OFF -DCOATFFT_BUILD_EXAMPLES=OFF >/dev/null
 
 # The value of `stat::NAME: VALUE` (libFuzzer's -print_final_stats) in a log, or "?".
