@@ -9,8 +9,9 @@ mpiexec=$2
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail() { echo "FAILED: $*" >&2; exit 1; }
-# Each mpirun costs about half a second: all rank counts on the first case, 3 on the others.
-for case in "1 2 3: 64 50 --rms-slope 0.1" "3: 64 50 --rms-height 1e-6" "3: 30 14 --rms-slope 0.2"; do
+# Each mpirun costs about half a second: all rank counts on the first case, 3 on the other (the
+# library's test checks both rms kinds at every rank count).
+for case in "1 2 3: 64 50 --rms-slope 0.1" "3: 30 14 --rms-height 1e-6"; do
   read -r -a rank_counts <<<"${case%%:*}"
   read -r nx ny rms <<<"${case#*: }"
   args="--nx $nx --ny $ny --lx 1e-3 --ly 0.8e-3 --hurst 0.7 $rms --seed 2026"
