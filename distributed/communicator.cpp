@@ -19,20 +19,22 @@ MPI_Comm comm_of(const Communicator& c) {
   return detail::mpi_comm(c);
 }
 
+// The handle of one of MPI's predefined communicators, once MPI is initialised.
+std::shared_ptr<const Communicator::Handle> predefined(MPI_Comm comm) {
+  int initialised = 0;
+  MPI_Initialized(&initialised);
+  COATFFT_REQUIRE(initialised, "Communicator: MPI is not initialised (make an MpiSession first)");
+  return std::make_shared<const Communicator::Handle>(Communicator::Handle{comm});
+}
+
 }  // namespace
 
 Communicator Communicator::world() {
-  int initialised = 0;
-  MPI_Initialized(&initialised);
-  COATFFT_REQUIRE(initialised, "Communicator: MPI is not initialised (make an MpiSession first)");
-  return Communicator(std::make_shared<const Handle>(Handle{MPI_COMM_WORLD}));
+  return Communicator(predefined(MPI_COMM_WORLD));
 }
 
 Communicator Communicator::self() {
-  int initialised = 0;
-  MPI_Initialized(&initialised);
-  COATFFT_REQUIRE(initialised, "Communicator: MPI is not initialised (make an MpiSession first)");
-  return Communicator(std::make_shared<const Handle>(Handle{MPI_COMM_SELF}));
+  return Communicator(predefined(MPI_COMM_SELF));
 }
 
 int Communicator::rank() const {

@@ -1,5 +1,6 @@
 #include "distributed/distributed_periodic_operator.hpp"
 
+#include <array>
 #include <vector>
 
 #include "convolution/kernels/periodic_kernel_parts.hpp"
@@ -72,14 +73,19 @@ const Slab& DistributedPeriodicOperator::slab() const {
 }
 
 void DistributedPeriodicOperator::apply(const Field& pressure, Field& displacement) {
-  // Checked on every rank together: a rank that threw alone would leave the others waiting.
+  // Checked on every rank together (a rank that threw alone would leave the others waiting), in
+  // one reduction of the ranks' counts of bad shapes and of values that are not finite: an
+  // application's only collective besides its transposes.
   const Slab& s = slab();
-  COATFFT_REQUIRE(t_->comm.all(pressure.rows() == s.nx && pressure.cols() == s.rows &&
-                               &pressure != &displacement),
+  const bool shaped =
+      pressure.rows() == s.nx && pressure.cols() == s.rows && &pressure != &displacement;
+  std::array<double, 2> bad = {shaped ? 0.0 : 1.0, shaped && !pressure.allFinite() ? 1.0 : 0.0};
+  t_->comm.sum(bad);
+  COATFFT_REQUIRE(bad[0] == 0.0,
                   "DistributedPeriodicOperator::apply: a rank's pressure is not of its slab's "
                   "shape (nx, rows), or is its displacement");
   COATFFT_REQUIRE(
-      t_->comm.all(pressure.allFinite()),
+      bad[1] == 0.0,
       "DistributedPeriodicOperator::apply: the pressure has a value that is not finite");
   displacement.resize(s.nx, s.rows);
   t_->fft.forward(pressure.data());

@@ -25,14 +25,11 @@ void execute(const FftwPlan& p) {
 }  // namespace
 
 SlabFft::SlabFft(const Communicator& comm, std::ptrdiff_t nx, std::ptrdiff_t ny, Planning planning,
-                 int threads)
-    : slab_(slab_of(comm, nx, ny)) {
+                 int threads) {
+  std::ptrdiff_t doubles = 0;
+  slab_ = slab_of(comm, nx, ny, doubles);
   const std::ptrdiff_t hx = nx / 2 + 1;
-  const std::ptrdiff_t n[2] = {ny, hx};
-  std::ptrdiff_t rows = 0, y0 = 0, columns = 0, kx0 = 0;
-  const std::ptrdiff_t doubles =
-      fftw_mpi_local_size_many_transposed(2, n, 2, FFTW_MPI_DEFAULT_BLOCK, FFTW_MPI_DEFAULT_BLOCK,
-                                          mpi_comm(comm), &rows, &y0, &columns, &kx0);
+  const std::ptrdiff_t rows = slab_.rows, columns = slab_.columns;
   // FFTW-MPI's allocation covers both layouts (and the transposes' needs); at least one entry.
   const auto complex_entries = static_cast<std::size_t>(std::max<std::ptrdiff_t>(doubles / 2, 1));
   rows_ = FftwComplexBuffer(complex_entries);

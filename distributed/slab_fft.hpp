@@ -15,6 +15,10 @@
 
 namespace coatfft::detail {
 
+/// slab_of, and the doubles FFTW-MPI asks a rank to allocate for each of the transposes' arrays.
+Slab slab_of(const Communicator& comm, std::ptrdiff_t nx, std::ptrdiff_t ny,
+             std::ptrdiff_t& doubles);
+
 class SlabFft {
  public:
   /// `threads` (>= 1): FFTW's threads within this rank.
