@@ -18,7 +18,19 @@ namespace {
 using Medium = detail::ModeMedium;
 using Matrix64 = Eigen::Matrix<double, 6, 4>;
 using Matrix32 = Eigen::Matrix<double, 3, 2>;
-using PsvAmplitudes = Eigen::Matrix<double, Eigen::Dynamic, 2>;  // columns: unit q~, unit p
+
+// The global systems' matrices and amplitudes (columns: unit q~, unit p for P-SV). A stack of up
+// to kSmallCoatings coatings takes them with fixed maximum sizes, on the stack: one solve per
+// wavenumber allocated a dozen small heap blocks, which dominated stress kernels of a few coatings.
+template <int MaxN>
+struct System {
+  using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, MaxN, MaxN>;
+  using Psv = Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::ColMajor, MaxN, 2>;
+  using Sh = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, MaxN, 1>;
+};
+constexpr std::size_t kSmallCoatings = 3;
+using SmallSystem = System<int(4 * kSmallCoatings + 2)>;
+using AnySystem = System<Eigen::Dynamic>;
 
 // exp(-s) underflows beyond ~745; there exp(-s) and s exp(-s) are set to 0 explicitly, so that
 // s exp(-s) is never inf * 0 (s = +inf stands for "no bottom pair": the substrate).
@@ -126,8 +138,8 @@ Eigen::Index sh_width(const Medium& m) {
 }
 
 // Adds scale * row (its first `width` entries) to M at (i, col).
-template <typename Row>
-void add(Eigen::MatrixXd& M, Eigen::Index i, Eigen::Index col, Eigen::Index width,
+template <typename Matrix, typename Row>
+void add(Matrix& M, Eigen::Index i, Eigen::Index col, Eigen::Index width,
          const Eigen::MatrixBase<Row>& row, double scale) {
   M.block(i, col, 1, width) += scale * row.head(width);
 }
@@ -136,10 +148,11 @@ void add(Eigen::MatrixXd& M, Eigen::Index i, Eigen::Index col, Eigen::Index widt
 // interface, unknowns medium by medium. Displacement rows (2 mu k u) are divided by their mu and
 // multiplied by the smaller mu of the two media, so that every entry is <= 1 in magnitude (row
 // equilibration keeps partial pivoting meaningful for any modulus contrast).
-Eigen::MatrixXd psv_matrix(const std::vector<Medium>& media, double k) {
+template <typename Matrix>
+Matrix psv_matrix(const std::vector<Medium>& media, double k) {
   const std::size_t n_layers = media.size() - 1;
   const auto n = Eigen::Index(4 * n_layers + 2);
-  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(n, n);
+  Matrix M = Matrix::Zero(n, n);
   const Matrix64 top = psv_rows(media[0], k, 0.0, reduced_thickness(media[0], k));
   add(M, 0, 0, psv_width(media[0]), top.row(kSzz), 1.0);  // szz(0) = -p
   add(M, 1, 0, psv_width(media[0]), top.row(kSxz), 1.0);  // sxz~(0) = -q~
@@ -172,10 +185,11 @@ Eigen::MatrixXd psv_matrix(const std::vector<Medium>& media, double k) {
 
 // The anti-plane (SH) system of docs/theory.md §2.7: sTz(0) = -q_T, then per interface either
 // u_T and sTz continuous (bonded; u rows scaled as in psv_matrix) or sTz = 0 on both faces.
-Eigen::MatrixXd sh_matrix(const std::vector<Medium>& media, double k) {
+template <typename Matrix>
+Matrix sh_matrix(const std::vector<Medium>& media, double k) {
   const std::size_t n_layers = media.size() - 1;
   const auto n = Eigen::Index(2 * n_layers + 1);
-  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(n, n);
+  Matrix M = Matrix::Zero(n, n);
   const Matrix32 top = sh_rows(media[0], k, 0.0, reduced_thickness(media[0], k));
   add(M, 0, 0, sh_width(media[0]), top.row(1), 1.0);
   for (std::size_t j = 0; j < n_layers; ++j) {
@@ -202,25 +216,28 @@ Eigen::MatrixXd sh_matrix(const std::vector<Medium>& media, double k) {
 // Amplitudes for unit q~ and unit p (P-SV) and unit q_T (SH): the load enters the surface rows
 // only, szz(0) = -p, sxz~(0) = -q~, sTz(0) = -q_T. Partial pivoting suffices on the equilibrated
 // rows (docs/theory.md §2.7 lists the measured accuracy).
-PsvAmplitudes solve_psv(const std::vector<Medium>& media, double k) {
-  const Eigen::MatrixXd M = psv_matrix(media, k);
-  PsvAmplitudes rhs = PsvAmplitudes::Zero(M.rows(), 2);
+template <typename S>
+typename S::Psv solve_psv(const std::vector<Medium>& media, double k) {
+  const auto M = psv_matrix<typename S::Matrix>(media, k);
+  typename S::Psv rhs = S::Psv::Zero(M.rows(), 2);
   rhs(1, 0) = -1.0;
   rhs(0, 1) = -1.0;
   return M.partialPivLu().solve(rhs);
 }
 
-Eigen::VectorXd solve_sh(const std::vector<Medium>& media, double k) {
-  const Eigen::MatrixXd M = sh_matrix(media, k);
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(M.rows());
+template <typename S>
+typename S::Sh solve_sh(const std::vector<Medium>& media, double k) {
+  const auto M = sh_matrix<typename S::Matrix>(media, k);
+  typename S::Sh rhs = S::Sh::Zero(M.rows());
   rhs(0) = -1.0;
   return M.partialPivLu().solve(rhs);
 }
 
 // The fields of docs/theory.md §2.7 at depth z in medium j: its rows at s = k zeta, r = k eta
 // times its amplitudes; displacements from the 2 mu k u (P-SV) and mu k u_T (SH) rows.
+template <typename Psv, typename Sh>
 ModeFields fields_at(const std::vector<Medium>& media, std::size_t j, double k, double z,
-                     const PsvAmplitudes& psv, const Eigen::VectorXd& sh) {
+                     const Psv& psv, const Sh& sh) {
   const Medium& m = media[j];
   const double s = k * (z - m.top);
   const double r = is_substrate(m) ? m.thickness : std::max(k * (media[j + 1].top - z), 0.0);
@@ -258,8 +275,15 @@ std::vector<ModeFields> LayerModes::at(double k, std::span<const double> depths,
     COATFFT_REQUIRE(std::isfinite(depths[i]) && depths[i] >= 0, "LayerModes: depth ", i, " = ",
                     depths[i], " m, but depths must be finite and >= 0");
   }
-  const PsvAmplitudes psv = solve_psv(media_, k);
-  const Eigen::VectorXd sh = solve_sh(media_, k);
+  return media_.size() - 1 <= kSmallCoatings ? solve_at<SmallSystem>(k, depths, side)
+                                             : solve_at<AnySystem>(k, depths, side);
+}
+
+template <typename S>
+std::vector<ModeFields> LayerModes::solve_at(double k, std::span<const double> depths,
+                                             InterfaceSide side) const {
+  const typename S::Psv psv = solve_psv<S>(media_, k);
+  const typename S::Sh sh = solve_sh<S>(media_, k);
   std::vector<ModeFields> fields;
   fields.reserve(depths.size());
   for (const double z : depths) {

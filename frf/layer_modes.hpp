@@ -53,6 +53,10 @@ class LayerModes {
                              InterfaceSide side = InterfaceSide::below) const;
 
  private:
+  // at() on the global systems of one matrix kind (layer_modes.cpp).
+  template <typename System>
+  std::vector<ModeFields> solve_at(double k, std::span<const double> depths,
+                                   InterfaceSide side) const;
   LayerStack stack_;                       // where each depth lies (LayerStack::locate)
   std::vector<detail::ModeMedium> media_;  // coatings top first, then the substrate
 };
