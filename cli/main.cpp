@@ -47,6 +47,15 @@ struct Command {
   std::function<int()> run;
 };
 
+// `run` on this process, or on every rank of an MPI launch of several (docs/scale.md).
+coatfft::scene::RunStatus run_here(const coatfft::cli::RunOptions& options) {
+#ifdef COATFFT_WITH_MPI
+  if (coatfft::detail::mpi_launch().size > 1)
+    return coatfft::cli::run_command(options, coatfft::Communicator::world());
+#endif
+  return coatfft::cli::run_command(options);
+}
+
 // Each command's arguments live as long as its runner (shared with it), bound to its flags.
 Command add_run(CLI::App& app) {
   struct Args {
@@ -67,7 +76,7 @@ Command add_run(CLI::App& app) {
             if (!args->max_memory.empty())
               args->options.max_memory =
                   coatfft::scene::parse_memory_size(args->max_memory, "--max-memory");
-            if (coatfft::cli::run_command(args->options) != coatfft::scene::RunStatus::ok) {
+            if (run_here(args->options) != coatfft::scene::RunStatus::ok) {
               std::cerr << "coatfft: warning: the contact solver did not converge (see "
                            "summary.json)\n";
               return 3;
@@ -234,7 +243,7 @@ int main(int argc, char** argv) {
   // same output, so it is refused before it reads anything (docs/scale.md).
   const std::string chosen = chosen_name(commands);
 #ifdef COATFFT_WITH_MPI
-  if (chosen == "surface") {
+  if (chosen == "surface" || chosen == "run") {
     const coatfft::MpiSession mpi(argc, argv);
     return run_chosen(commands);
   }

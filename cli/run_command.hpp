@@ -4,6 +4,9 @@
 #include <filesystem>
 #include <optional>
 
+#ifdef COATFFT_WITH_MPI
+#include "distributed/communicator.hpp"
+#endif
 #include "scene/scene_run.hpp"  // RunStatus; what the run computes (run_scene without the writing)
 
 namespace coatfft::cli {
@@ -24,5 +27,13 @@ struct RunOptions {
 /// on stderr when it is a terminal, unless quiet (cli/progress.hpp), and the operator's warnings
 /// once computed. Throws InvalidArgument on bad input, and leaves OUTDIR as it was on any failure.
 scene::RunStatus run_command(const RunOptions& options);
+
+#ifdef COATFFT_WITH_MPI
+/// The same on the ranks of `comm` (`mpirun -np P coatfft run`, docs/scale.md): a scene that runs
+/// distributed (scene/distributed_run.hpp), every .npy and displacement.csv written by all ranks
+/// into rank 0's staging folder (each its rows, MPI-IO), summary.json by rank 0, which commits.
+/// Refusals are the same on every rank; rank 0 prints.
+scene::RunStatus run_command(const RunOptions& options, const Communicator& comm);
+#endif
 
 }  // namespace coatfft::cli

@@ -14,12 +14,12 @@ void require_length(double value, const char* what) {
                   " m, but it must be finite and > 0");
 }
 
-// Fills h(i, j) = f(x_i, y_j).
+// h(i, j - y0) = f(x_i, y_j) on the rows y0 <= j < y0 + rows.
 template <typename F>
-Field sample(const Grid& grid, F&& f) {
-  Field h(grid.nx(), grid.ny());
-  for (std::ptrdiff_t j = 0; j < grid.ny(); ++j) {
-    for (std::ptrdiff_t i = 0; i < grid.nx(); ++i) h(i, j) = f(grid.x(i), grid.y(j));
+Field sample(const Grid& grid, std::ptrdiff_t y0, std::ptrdiff_t rows, F&& f) {
+  Field h(grid.nx(), rows);
+  for (std::ptrdiff_t j = 0; j < rows; ++j) {
+    for (std::ptrdiff_t i = 0; i < grid.nx(); ++i) h(i, j) = f(grid.x(i), grid.y(y0 + j));
   }
   return h;
 }
@@ -70,41 +70,66 @@ void check_indenter(const Grid& grid, const Indenter& indenter) {
   std::visit([&grid](const auto& shape) { check_indenter(grid, shape); }, indenter);
 }
 
-Field height(const Grid& grid, const Sphere& sphere) {
-  check_indenter(grid, sphere);
+namespace {
+
+// The separation h(x, y) of each analytic shape, its parameters checked by check_indenter.
+auto profile(const Sphere& sphere) {
   const double R = sphere.radius;
   // R - sqrt(R^2 - r^2) rewritten as r^2 / (R + sqrt(R^2 - r^2)): no cancellation for r << R.
-  return sample(grid, [R](double x, double y) {
+  return [R](double x, double y) {
     const double r2 = x * x + y * y;
     return r2 / (R + std::sqrt(R * R - r2));
-  });
+  };
 }
 
-Field height(const Grid& grid, const Paraboloid& paraboloid) {
-  check_indenter(grid, paraboloid);
+auto profile(const Paraboloid& paraboloid) {
   const double R = paraboloid.radius;
-  return sample(grid, [R](double x, double y) { return (x * x + y * y) / (2.0 * R); });
+  return [R](double x, double y) { return (x * x + y * y) / (2.0 * R); };
 }
 
-Field height(const Grid& grid, const Cylinder& cylinder) {
-  check_indenter(grid, cylinder);
+auto profile(const Cylinder& cylinder) {
   const double R = cylinder.radius;
   const double L = cylinder.flat_length;
   const double Re = cylinder.end_radius;
-  return sample(grid, [=](double x, double y) {
+  return [=](double x, double y) {
     const double s = std::max(std::abs(x) - 0.5 * L, 0.0);
     return y * y / (2.0 * R) + s * s / (2.0 * Re);
-  });
+  };
 }
 
-Field height(const Grid& grid, const FlatPunch& punch) {
-  check_indenter(grid, punch);
+auto profile(const FlatPunch& punch) {
   const double a = punch.radius;
   const double rho = punch.edge_radius;
-  return sample(grid, [=](double x, double y) {
+  return [=](double x, double y) {
     const double s = std::max(std::hypot(x, y) - a, 0.0);
     return s * s / (2.0 * rho);
-  });
+  };
+}
+
+// The checked shape on the rows y0 <= j < y0 + rows.
+template <typename Shape>
+Field sampled(const Grid& grid, const Shape& shape, std::ptrdiff_t y0, std::ptrdiff_t rows) {
+  check_indenter(grid, shape);
+  return sample(grid, y0, rows, profile(shape));
+}
+Field sampled(const Grid& grid, const HeightMap& map, std::ptrdiff_t y0, std::ptrdiff_t rows) {
+  check_indenter(grid, map);
+  return map.heights.middleCols(y0, rows);
+}
+
+}  // namespace
+
+Field height(const Grid& grid, const Sphere& sphere) {
+  return sampled(grid, sphere, 0, grid.ny());
+}
+Field height(const Grid& grid, const Paraboloid& paraboloid) {
+  return sampled(grid, paraboloid, 0, grid.ny());
+}
+Field height(const Grid& grid, const Cylinder& cylinder) {
+  return sampled(grid, cylinder, 0, grid.ny());
+}
+Field height(const Grid& grid, const FlatPunch& punch) {
+  return sampled(grid, punch, 0, grid.ny());
 }
 
 Field height(const Grid& grid, const HeightMap& map) {
@@ -114,6 +139,13 @@ Field height(const Grid& grid, const HeightMap& map) {
 
 Field height(const Grid& grid, const Indenter& indenter) {
   return std::visit([&grid](const auto& shape) { return height(grid, shape); }, indenter);
+}
+
+Field height_rows(const Grid& grid, const Indenter& indenter, std::ptrdiff_t y0,
+                  std::ptrdiff_t rows) {
+  COATFFT_REQUIRE(y0 >= 0 && rows >= 0 && y0 + rows <= grid.ny(), "height_rows: rows ", y0, " to ",
+                  y0 + rows, " are not rows of the grid (ny = ", grid.ny(), ")");
+  return std::visit([&](const auto& shape) { return sampled(grid, shape, y0, rows); }, indenter);
 }
 
 bool is_axisymmetric(const Indenter& indenter) {

@@ -60,6 +60,11 @@ Field height(const Grid& grid, const Cylinder& cylinder);
 Field height(const Grid& grid, const FlatPunch& punch);
 Field height(const Grid& grid, const HeightMap& map);
 Field height(const Grid& grid, const Indenter& indenter);
+/// The rows y0 <= j < y0 + rows of height(grid, indenter): a Field (nx, rows), the part of a
+/// distributed solve's slab (distributed/slab.hpp) sampled without the whole field (a HeightMap's
+/// rows are taken from the map it holds). Throws as height(), and for rows outside the grid.
+Field height_rows(const Grid& grid, const Indenter& indenter, std::ptrdiff_t y0,
+                  std::ptrdiff_t rows);
 
 /// The checks of height() without sampling anything (no grid-sized allocation): for a reader of
 /// user input that must refuse a bad shape before it knows whether the grid fits in memory.

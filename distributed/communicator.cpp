@@ -96,4 +96,15 @@ void Communicator::barrier() const {
   check(MPI_Barrier(comm_of(*this)), "MPI_Barrier");
 }
 
+int Communicator::ranks_sharing_memory() const {
+  MPI_Comm shared;
+  check(MPI_Comm_split_type(comm_of(*this), MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &shared),
+        "MPI_Comm_split_type");
+  int s = 0;
+  const int status = MPI_Comm_size(shared, &s);
+  MPI_Comm_free(&shared);
+  check(status, "MPI_Comm_size");
+  return s;
+}
+
 }  // namespace coatfft

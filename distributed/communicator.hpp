@@ -33,6 +33,8 @@ class Communicator {
   /// `text` as rank `root` has it, on every rank.
   void broadcast(std::string& text, int root = 0) const;
   void barrier() const;
+  /// The ranks that share this rank's memory (its machine), itself included. Collective.
+  int ranks_sharing_memory() const;
 
   const Handle& handle() const { return *handle_; }
 

@@ -1,6 +1,7 @@
 #include "scene/grid_file.hpp"
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "core/error.hpp"
@@ -23,6 +24,17 @@ Field read_grid_file(const std::filesystem::path& file, const Grid& grid, std::s
       COATFFT_REQUIRE(std::isfinite(f(i, j)), file.string(), ": row ", j, ", column ", i, ": ",
                       value_word, " ", f(i, j), " is not finite");
   return f;
+}
+
+void check_grid_npy(const std::filesystem::path& file, const Grid& grid, std::string_view key) {
+  COATFFT_REQUIRE(file.extension() == ".npy", key, " = ", file.string(),
+                  ": a distributed run reads a height map from .npy only (`coatfft topography` "
+                  "converts other files)");
+  const NpyArray array = read_npy_header(file, std::numeric_limits<std::uintmax_t>::max());
+  COATFFT_REQUIRE(array.rows == static_cast<std::size_t>(grid.ny()) &&
+                      array.cols == static_cast<std::size_t>(grid.nx()),
+                  file.string(), ": shape (", array.rows, ", ", array.cols,
+                  ") but the grid needs (ny, nx) = (", grid.ny(), ", ", grid.nx(), ")");
 }
 
 }  // namespace coatfft::scene

@@ -347,6 +347,23 @@ void write_npy(const std::filesystem::path& path, const Field& field) {
   write_npy_array(path, shape, std::span<const double>(field.data(), std::size_t(field.size())));
 }
 
+NpyArray read_npy_header(const fs::path& path, std::uintmax_t max_bytes) {
+  InputFile file(path, "a .npy file", max_bytes);
+  const NpyStart npy = read_npy_start(file);
+  const NpyLayout layout = npy_layout(path, npy.header);
+  npy_data_bytes(path, npy, layout, file.size());
+  return {layout.shape.rows, layout.shape.cols, npy.data_offset,
+          layout.bytes,      layout.big_endian, layout.fortran};
+}
+
+void npy_to_doubles(const NpyArray& array, const unsigned char* bytes, std::size_t count,
+                    double* out) {
+  NpyLayout layout;
+  layout.bytes = array.value_bytes;
+  layout.big_endian = array.big_endian;
+  for (std::size_t n = 0; n < count; ++n) out[n] = npy_value(bytes, n, layout);
+}
+
 Field read_npy(const fs::path& path, std::uintmax_t max_bytes) {
   InputFile file(path, "a .npy file", max_bytes);
   const NpyStart npy = read_npy_start(file);

@@ -41,4 +41,24 @@ void write_npy(const std::filesystem::path& path, const Field& field);
 /// its padding).
 Field read_npy(const std::filesystem::path& path, std::uintmax_t max_bytes = kMaxArrayFileBytes);
 
+/// A 2-D .npy file's shape and where its values lie, for a reader of some of its rows only
+/// (scene/npy_slab.hpp).
+struct NpyArray {
+  std::size_t rows = 0, cols = 0;  ///< the array's shape (rows, cols)
+  std::uintmax_t data_offset = 0;  ///< the bytes before the values
+  std::size_t value_bytes = 8;     ///< of one value: 8, 4 or 2
+  bool big_endian = false;
+  bool fortran = false;  ///< fortran_order: the values column after column
+};
+
+/// The header of the .npy file at `path`, checked as read_npy checks it (the data's size
+/// included), without reading the values.
+NpyArray read_npy_header(const std::filesystem::path& path,
+                         std::uintmax_t max_bytes = kMaxArrayFileBytes);
+
+/// The `count` values of `array`'s type at `bytes` (count * value_bytes bytes of its file) as
+/// doubles into `out`.
+void npy_to_doubles(const NpyArray& array, const unsigned char* bytes, std::size_t count,
+                    double* out);
+
 }  // namespace coatfft::scene

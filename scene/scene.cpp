@@ -25,6 +25,7 @@
 #include "stress/stress_kernel.hpp"
 #include "stress/stress_operator.hpp"
 #include "surfaces/detrend.hpp"
+#include "validation/hertz_contact.hpp"
 
 namespace coatfft::scene {
 
@@ -209,7 +210,8 @@ struct SceneContext {
   bool periodic = false;
   const std::filesystem::path& scene_dir;
   const SceneTopography* topography = nullptr;
-  std::int64_t pad = 0;  ///< [grid] pad of the topography
+  std::int64_t pad = 0;           ///< [grid] pad of the topography
+  bool height_map_values = true;  ///< SceneReading::height_map_values
 };
 
 // [grid]: nx and ny, or refine = "auto" with tolerance_total (the grid is then chosen once the
@@ -502,7 +504,11 @@ void read_indenter(SectionReader& reader, const SceneContext& context, ContactSp
     std::filesystem::path file = reader.string("path");
     if (file.is_relative()) file = scene_dir / file;
     spec.height_file = file;
-    spec.indenter = HeightMap{read_grid_file(file, grid, "[contact] path", "height")};
+    spec.indenter = HeightMap{};
+    if (context.height_map_values)
+      spec.indenter = HeightMap{read_grid_file(file, grid, "[contact] path", "height")};
+    else
+      check_grid_npy(file, grid, "[contact] path");  // spec.indenter: an empty HeightMap
   }
 }
 
@@ -567,8 +573,10 @@ ContactSpec read_contact(const toml::table& table, const SceneContext& context,
   read_indenter(reader, context, spec);
   read_contact_control(reader, spec);
   read_elastic_indenter(reader, stack_body, spec);
-  // Catch geometry errors (a sphere smaller than the domain) before any work is done.
-  in_section("contact", [&] { check_indenter(grid, spec.indenter); });
+  // Catch geometry errors (a sphere smaller than the domain) before any work is done; a height
+  // map whose values were not read was checked as far as its header goes.
+  if (context.height_map_values || !std::holds_alternative<HeightMap>(spec.indenter))
+    in_section("contact", [&] { check_indenter(grid, spec.indenter); });
   reader.finish();
   return spec;
 }
@@ -879,7 +887,7 @@ auto with_file_name(const std::filesystem::path& path, Parse&& parse) {
 
 }  // namespace
 
-Scene read_scene(const std::filesystem::path& path) {
+Scene read_scene(const std::filesystem::path& path, const SceneReading& reading) {
   // read_input_file's messages start with the path already.
   const std::string text = read_input_file(path, "a scene file", max_scene_bytes);
   return with_file_name(path, [&] {
@@ -912,8 +920,9 @@ Scene read_scene(const std::filesystem::path& path) {
       scene.pressure = read_pressure(section(root, "pressure", true), scene.grid, scene_dir);
     else
       scene.contact = in_section("contact", [&] {
-        const SceneContext context{scene.grid, scene.periodic, scene_dir,
-                                   topography ? &*topography : nullptr, grid.pad};
+        const SceneContext context{scene.grid, scene.periodic,
+                                   scene_dir,  topography ? &*topography : nullptr,
+                                   grid.pad,   reading.height_map_values};
         return read_contact(section(root, "contact", true), context,
                             scene.frf ? nullptr : &*scene.body);
       });
@@ -976,6 +985,16 @@ StressPlanes stress_planes(const StressSpec& spec, const LayerStack& body) {
 std::shared_ptr<const Frf> body_frf(const Scene& scene) {
   if (scene.frf) return scene.frf;
   return make_frf(*scene.body);
+}
+
+void use_normal_compliance_body(Scene& scene) {
+  if (!scene.contact || !scene.contact->indenter_material) return;
+  // Two homogeneous elastic bodies in frictionless normal contact deform as one half-space of
+  // the composite modulus; only E* enters the normal compliance.
+  const Material& body = scene.body->substrate();
+  const double E_star = composite_modulus(body, *scene.contact->indenter_material);
+  const double nu = body.poisson_ratio();
+  scene.body = LayerStack(Material(E_star * (1 - nu * nu), nu));
 }
 
 }  // namespace coatfft::scene

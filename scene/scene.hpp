@@ -200,10 +200,23 @@ StressPlanes stress_planes(const StressSpec& spec, const LayerStack& body);
 /// The FRF of the scene's body: the [frf] table, or make_frf of [substrate] and [[coating]].
 std::shared_ptr<const Frf> body_frf(const Scene& scene);
 
+/// The body of a [contact] scene's normal compliance: with an elastic indenter, the half-space of
+/// the composite modulus replaces the (homogeneous) body (Johnson 1985, section 4.2); otherwise
+/// the scene is left as it is.
+void use_normal_compliance_body(Scene& scene);
+
 /// Parses and validates a scene file. Throws InvalidArgument with a one-line message
 /// ("scene.toml: [grid] nx = 0: ...") on any problem. Relative file paths in the scene are
 /// taken relative to the scene file's folder.
-Scene read_scene(const std::filesystem::path& path);
+/// How read_scene reads the files a scene names.
+struct SceneReading {
+  /// false: a height_map indenter's file is checked as far as its header (a .npy of the grid's
+  /// shape) and its values are left unread (an empty HeightMap): a distributed run reads its rows
+  /// on each rank (scene/npy_slab.hpp).
+  bool height_map_values = true;
+};
+
+Scene read_scene(const std::filesystem::path& path, const SceneReading& reading = {});
 
 /// Parses only the body of a scene ([substrate] and [[coating]]), for commands that need no
 /// grid or load (`coatfft frf`). Other sections must still be known ones.

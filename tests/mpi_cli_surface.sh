@@ -37,6 +37,6 @@ refused() {
 refused "NetCDF is not written by a distributed run" surface -o "$tmp/z.nc" --nx 8 --ny 8 \
   --lx 1e-3 --ly 1e-3 --hurst 0.8 --rms-height 1e-6
 [ ! -e "$tmp/z.nc" ] || fail "z.nc written"
-refused "\`run\` does not run distributed" run "$tmp/none.toml" -o "$tmp/out"
-[ ! -e "$tmp/out" ] || fail "out written"
+refused "\`topography\` does not run distributed" topography "$tmp/none.npy" -o "$tmp/out.npy"
+[ ! -e "$tmp/out.npy" ] || fail "out.npy written"
 echo "mpi_cli_surface: all checks passed"

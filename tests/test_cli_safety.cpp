@@ -379,17 +379,18 @@ TEST_CASE("coatfft check validates as run does, prints the plan and writes nothi
 TEST_CASE(
     "started by an MPI launcher with several ranks, the program refuses once and writes nothing",
     "[cli][safety]") {
-  // The launcher's variables as Open MPI's mpirun sets them for each rank (no MPI is started).
+  // The launcher's variables as Open MPI's mpirun sets them for each rank (no MPI is started:
+  // `check` does not run distributed; `run` and `surface` do, tests/mpi_cli_*).
   const fs::path dir = fresh("safety_mpi");
   const fs::path scene = write_scene(kGoodScene, "safety_mpi/scene", "", "");
-  const std::string args = "run " + scene.string() + " -o " + (dir / "out").string();
-  check_refusal(run_coatfft(args, "OMPI_COMM_WORLD_SIZE=3 OMPI_COMM_WORLD_RANK=0"),
-                "MPI launcher with 3 ranks, but `run`");
-  const ProcessResult other = run_coatfft(args, "OMPI_COMM_WORLD_SIZE=3 OMPI_COMM_WORLD_RANK=2");
+  const std::string check = "check " + scene.string();
+  check_refusal(run_coatfft(check, "OMPI_COMM_WORLD_SIZE=3 OMPI_COMM_WORLD_RANK=0"),
+                "MPI launcher with 3 ranks, but `check`");
+  const ProcessResult other = run_coatfft(check, "OMPI_COMM_WORLD_SIZE=3 OMPI_COMM_WORLD_RANK=2");
   CHECK(other.status == 2);
   CHECK(other.stderr_text.empty());
-  CHECK_FALSE(fs::exists(dir / "out"));
   // One rank is a serial run.
+  const std::string args = "run " + scene.string() + " -o " + (dir / "out").string();
   CHECK(run_coatfft(args, "OMPI_COMM_WORLD_SIZE=1 OMPI_COMM_WORLD_RANK=0").status == 0);
   CHECK(fs::exists(dir / "out" / "summary.json"));
 }

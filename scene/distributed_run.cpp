@@ -1,0 +1,164 @@
+#include "scene/distributed_run.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <string>
+#include <variant>
+
+#include "contact/indenter.hpp"
+#include "core/detail/timing.hpp"
+#include "core/error.hpp"
+#include "core/memory.hpp"
+#include "distributed/distributed_contact.hpp"
+#include "distributed/distributed_periodic_operator.hpp"
+#include "scene/npy_slab.hpp"
+#include "scene/operator_from_scene.hpp"
+#include "scene/resources.hpp"
+#include "scene/run_summary.hpp"
+
+namespace coatfft::scene {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using coatfft::detail::seconds_since;
+
+// A rank's memory against the serial run's at one rank: the slab transforms keep a spectrum of
+// rows and one of columns, and the preconditioner has its own (measured 132 against 113 bytes a
+// cell at 4096^2, docs/scale.md).
+constexpr double slab_overhead = 1.2;
+
+// The memory a rank needs: the serial estimate's arrays shared over the ranks, with the slabs'
+// overhead, and the program itself.
+MemoryNeed rank_memory(const Communicator& comm, const Scene& scene) {
+  MemoryNeed need = estimate_memory(scene);
+  need.bytes = (need.bytes - program_bytes) * slab_overhead / comm.size() + program_bytes;
+  return need;
+}
+
+// The first part of the scene that a distributed run refuses, or "" (check_distributable).
+std::string not_distributable(const Scene& scene) {
+  if (!scene.periodic) return "[grid] boundary = \"free\" (the free boundary's DC-FFT)";
+  if (!scene.contact) return "[pressure] (a known load)";
+  const ContactSpec& contact = *scene.contact;
+  if (!contact.topography.is_null())
+    return "[contact] topography (a measured surface: `coatfft topography FILE -o h.npy` writes "
+           "its heights for indenter = \"height_map\")";
+  if (!contact.sweep.empty()) return "[contact] a list of values (a sweep)";
+  if (contact.friction > 0.0) return "[contact] friction";
+  if (scene.stress) return "[stress]";
+  if (scene.output.in_plane) return "[output] ux, uy (the in-plane displacements)";
+  if (scene.output.netcdf) return "[output] format = \"netcdf\"";
+  if (!scene.method.wisdom.empty()) return "[method] wisdom (the FFTW wisdom file)";
+  return {};
+}
+
+// This rank's rows of the indenter's heights: a height map's read from its file.
+Field slab_heights(const Communicator& comm, const Scene& scene, const Slab& slab) {
+  const ContactSpec& spec = *scene.contact;
+  if (std::holds_alternative<HeightMap>(spec.indenter))
+    return read_npy_slab(comm, spec.height_file, slab, "height");
+  return height_rows(scene.grid, spec.indenter, slab.y0, slab.rows);
+}
+
+// summary.json's numbers of the fields, each over the ranks: uz_center from the rank that holds
+// the centre's row.
+FieldNumbers slab_numbers(const Communicator& comm, const Grid& grid, const Slab& slab,
+                          const Field& pressure, const Field& uz) {
+  const std::ptrdiff_t j = grid.centre_j() - slab.y0;
+  const bool centre = j >= 0 && j < slab.rows;
+  const double local_max = slab.rows > 0 ? uz.maxCoeff() : -std::numeric_limits<double>::infinity();
+  return {comm.sum(pressure.sum()) * grid.dx() * grid.dy(),
+          comm.sum(centre ? uz(grid.centre_i(), j) : 0.0), comm.max(local_max)};
+}
+
+// The distributed operator and what summary.json reports of it, as operator_from_scene's.
+std::unique_ptr<DistributedPeriodicOperator> distributed_operator(const Communicator& comm,
+                                                                  const Scene& scene,
+                                                                  OperatorReport& report) {
+  const auto start = Clock::now();
+  const std::shared_ptr<const Frf> frf = body_frf(scene);
+  const OperatorOptions& o = scene.method.options;
+  PeriodicKernelOptions kernel;
+  kernel.threads = o.threads;
+  auto op = std::make_unique<DistributedPeriodicOperator>(comm, scene.grid, *frf, kernel,
+                                                          o.planning, o.threads, o.method);
+  report.method = op->method();
+  report.frf = frf->name();
+  report.fft_nx = scene.grid.nx();
+  report.fft_ny = scene.grid.ny();
+  report.setup_seconds = seconds_since(start);
+  return op;
+}
+
+}  // namespace
+
+void check_distributable(const Scene& scene) {
+  const std::string part = not_distributable(scene);
+  COATFFT_REQUIRE(part.empty(), part,
+                  " does not run distributed yet (docs/scale.md): run this scene without mpirun");
+}
+
+PreparedScene prepare_distributed_scene(const Communicator& comm,
+                                        const std::filesystem::path& scene_file,
+                                        const SceneRunOptions& options) {
+  COATFFT_REQUIRE(options.repeat >= 1 && options.repeat <= max_repeat,
+                  "--repeat = ", options.repeat, " must be in 1..", max_repeat);
+  Scene scene = read_scene(scene_file, SceneReading{.height_map_values = false});
+  check_distributable(scene);
+  const int sharing = comm.ranks_sharing_memory();
+  std::optional<double> limit = options.max_memory;
+  if (!limit)
+    if (const std::optional<double> available = available_memory()) limit = *available / sharing;
+  require_memory(rank_memory(comm, scene), limit, "each rank", "--max-memory (per rank)",
+                 "use fewer cells or more ranks");
+  return {std::move(scene), std::nullopt};
+}
+
+DistributedSceneRun compute_distributed_scene(const Communicator& comm,
+                                              const PreparedScene& prepared,
+                                              const SceneRunOptions& options) {
+  ProgressObserver silent;
+  ProgressObserver& progress = options.progress ? *options.progress : silent;
+  Scene scene = prepared.scene;
+  use_normal_compliance_body(scene);
+  const ContactSpec& spec = *scene.contact;
+  const Slab slab = slab_of(comm, scene.grid.nx(), scene.grid.ny());
+  const Field heights = slab_heights(comm, scene, slab);
+  progress.stage(detail::concat("setting up the operator (", to_string(scene.method.options.method),
+                                ", ", comm.size(), " ranks)"));
+  OperatorReport report;
+  const auto op = distributed_operator(comm, scene, report);
+  const auto solver =
+      distributed_contact_solver(*op, solver_options(spec, scene.method.options.threads, progress));
+  progress.stage(
+      detail::concat("solving the contact (", spec.load ? "load" : "approach", " control)"));
+  const auto start = Clock::now();
+  ContactResult result =
+      solver->solve(heights, spec.load ? ContactControl::load : ContactControl::approach,
+                    spec.load ? *spec.load : *spec.approach);
+  const double solve_seconds = seconds_since(start);
+  progress.stage(detail::concat("applying the operator (", options.repeat,
+                                options.repeat == 1 ? " time)" : " times)"));
+  Field uz;  // only for the timing: the solver returned the displacement
+  const double apply_seconds =
+      coatfft::detail::time_applications(*op, result.pressure, uz, options.repeat);
+  const FieldNumbers numbers =
+      slab_numbers(comm, scene.grid, slab, result.pressure, result.displacement);
+  nlohmann::json summary =
+      common_summary(scene, std::nullopt, report, apply_seconds, options.repeat, numbers);
+  add_contact_summary(summary, scene, result, solve_seconds);
+  summary["ranks"] = comm.size();
+  summary["estimated_memory_bytes_per_rank"] = rank_memory(comm, scene).bytes;
+  summary["communication_seconds"] = comm.max(op->communication_seconds());
+  return {slab,
+          std::move(result.pressure),
+          std::move(result.displacement),
+          std::move(result.gap),
+          std::move(summary),
+          result.converged ? RunStatus::ok : RunStatus::not_converged};
+}
+
+}  // namespace coatfft::scene

@@ -1,0 +1,45 @@
+#pragma once
+// `coatfft run` on the ranks of a communicator (docs/scale.md): a periodic [contact] scene solved
+// on row slabs (distributed/slab.hpp) by the distributed periodic operator and contact solver,
+// each rank holding its rows of every field (a height map's rows read from its file by each rank,
+// scene/npy_slab.hpp). summary.json's object is the serial run's, the same on every rank, with
+// "ranks". What does not run distributed yet is refused by name before any work. Built with
+// COATFFT_MPI.
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "core/types.hpp"
+#include "distributed/communicator.hpp"
+#include "distributed/slab.hpp"
+#include "scene/scene_run.hpp"
+
+namespace coatfft::scene {
+
+/// What a distributed run computes: this rank's rows of the fields, and summary.json's object.
+struct DistributedSceneRun {
+  Slab slab;
+  Field pressure, uz, gap;  ///< (nx, slab.rows): [Pa], [m], [m]
+  nlohmann::json summary;   ///< the same on every rank
+  RunStatus status = RunStatus::ok;
+};
+
+/// Throws InvalidArgument naming the first part of `scene` that does not run distributed yet: a
+/// free boundary, a known [pressure], [stress], friction, a sweep, a measured topography, NetCDF
+/// output.
+void check_distributable(const Scene& scene);
+
+/// prepare_scene for the ranks of `comm` (the same on each): the scene read with a height map's
+/// values left unread, check_distributable, and the memory a rank needs (the serial estimate over
+/// the ranks, plus the slab transforms' overhead, docs/scale.md) checked against --max-memory
+/// (per rank) or the available memory shared by the ranks of this machine. Collective.
+PreparedScene prepare_distributed_scene(const Communicator& comm,
+                                        const std::filesystem::path& scene_file,
+                                        const SceneRunOptions& options);
+
+/// compute_scene on the ranks of `comm`: the contact solve and the timed applications, without
+/// the nested start (docs/scale.md). Collective.
+DistributedSceneRun compute_distributed_scene(const Communicator& comm,
+                                              const PreparedScene& prepared,
+                                              const SceneRunOptions& options);
+
+}  // namespace coatfft::scene

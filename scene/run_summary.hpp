@@ -1,0 +1,39 @@
+#pragma once
+// The keys of summary.json that every run of a scene reports (docs/scene_format.md), from the
+// scene, the operator's report and a few numbers of the fields: shared by the serial run
+// (scene/scene_run.hpp) and the distributed one (scene/distributed_run.hpp), whose fields no rank
+// holds whole.
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "contact/contact_solver.hpp"
+#include "convolution/operators/make_operator.hpp"
+#include "scene/automatic_method.hpp"
+#include "scene/progress_observer.hpp"
+#include "scene/scene.hpp"
+
+namespace coatfft::scene {
+
+/// The numbers of the fields summary.json reports: total_load [N], uz_center and uz_max [m].
+struct FieldNumbers {
+  double total_load = 0.0, uz_center = 0.0, uz_max = 0.0;
+};
+/// Those of whole fields (nx, ny) of `grid`.
+FieldNumbers field_numbers(const Grid& grid, const Field& pressure, const Field& uz);
+
+/// The keys of every run: the method and its report, the body, the grid, the timings, the
+/// fields' numbers, the memory estimate, the warnings (not printed), the automatic choice.
+nlohmann::json common_summary(const Scene& scene, const std::optional<AutomaticChoice>& automatic,
+                              const OperatorReport& report, double apply_seconds, int repeat,
+                              const FieldNumbers& fields);
+
+/// The contact solver's options of a [contact] scene, its iterations reported to `progress`
+/// (which must outlive the solver).
+ContactOptions solver_options(const ContactSpec& spec, int threads, ProgressObserver& progress);
+
+/// The contact's keys of summary.json, after common_summary's: the result's numbers (the same on
+/// every rank of a distributed solve), its warning, the Hertz solution where one applies.
+void add_contact_summary(nlohmann::json& summary, const Scene& scene, const ContactResult& result,
+                         double solve_seconds);
+
+}  // namespace coatfft::scene

@@ -1,0 +1,127 @@
+#!/usr/bin/python3
+"""`coatfft run` under mpirun (docs/scale.md) against the serial program.
+
+A periodic rough TiN-coated contact (a height map read by rows) at 2 and 3 ranks (3: uneven
+slabs) and a paraboloid on it at 3 ranks: summary.json has the serial run's keys and "ranks",
+the load, approach, pressure, displacement and gap equal the serial run's to 1e-10 (the serial
+program starts from a nested coarse solve, the distributed one from the Hertzian start: their
+iterates differ, their converged solutions agree to the tolerance), 2 and 3 ranks take the same
+iterations, displacement.csv holds the .npy files' values in the serial file's order. Scenes that
+do not run distributed, and bad height maps, are refused on one line with exit status 2 and no
+output. Usage: mpi_cli_run.py COATFFT MPIEXEC
+"""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+COATFFT, MPIEXEC = sys.argv[1], sys.argv[2]
+ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+
+BODY = """
+[substrate]
+material = "steel"
+
+[[coating]]
+material = "titanium_nitride"
+thickness = 1.0e-5
+"""
+
+
+def grid(nx, ny, boundary="periodic"):
+    return f'[grid]\nnx = {nx}\nny = {ny}\nlx = 0.5e-3\nly = 0.4e-3\nboundary = "{boundary}"\n'
+
+
+def run(args, ranks=None):
+    command = [COATFFT, *args] if ranks is None else [MPIEXEC, "-np", str(ranks),
+                                                       "--oversubscribe", COATFFT, *args]
+    return subprocess.run(command, env=ENV, capture_output=True, text=True, timeout=120)
+
+
+def fail(message):
+    print("FAILED:", message)
+    sys.exit(1)
+
+
+def check_equal(name, serial, distributed, ranks):
+    s, d = json.loads((serial / "summary.json").read_text()), json.loads(
+        (distributed / "summary.json").read_text())
+    if d["ranks"] != ranks or s["ranks"] != 1:
+        fail(f"{name}: ranks {d['ranks']} (serial {s['ranks']})")
+    if missing := set(s) - set(d):
+        fail(f"{name}: summary.json lacks the serial keys {sorted(missing)}")
+    if not d["converged"] or abs(d["load"] - s["load"]) > 1e-12 * s["load"]:
+        fail(f"{name}: load {d['load']} against {s['load']}, converged {d['converged']}")
+    if abs(d["approach"] - s["approach"]) > 1e-10 * abs(s["approach"]):
+        fail(f"{name}: approach {d['approach']} against {s['approach']}")
+    for field in ("pressure", "uz", "gap"):
+        a, b = np.load(serial / f"{field}.npy"), np.load(distributed / f"{field}.npy")
+        error = np.abs(a - b).max() / np.abs(a).max()
+        if a.shape != b.shape or error > 1e-10:
+            fail(f"{name} at {ranks} ranks: {field} differs by {error:.2e} of its largest value")
+    csv = np.loadtxt(distributed / "displacement.csv", delimiter=",", skiprows=1)
+    serial_csv = np.loadtxt(serial / "displacement.csv", delimiter=",", skiprows=1)
+    if csv.shape != serial_csv.shape or np.any(csv[:, :2] != serial_csv[:, :2]):
+        fail(f"{name}: displacement.csv's cells are not the serial file's")
+    if np.any(csv[:, 2] != np.load(distributed / "pressure.npy").ravel()) or np.any(
+            csv[:, 3] != np.load(distributed / "uz.npy").ravel()):
+        fail(f"{name}: displacement.csv's values are not those of pressure.npy and uz.npy")
+    return d["iterations"]
+
+
+def refused(tmp, expect, scene_text, files=()):
+    scene = tmp / "refused.toml"
+    scene.write_text(scene_text)
+    out = tmp / "refused_out"
+    r = run(["run", str(scene), "-o", str(out)], ranks=2)
+    lines = [line for line in r.stderr.splitlines() if line.startswith("coatfft: error")]
+    if r.returncode != 2 or len(lines) != 1 or expect not in lines[0] or out.exists():
+        fail(f"not refused with \"{expect}\": exit {r.returncode}, {r.stderr!r}")
+
+
+def main():
+    with tempfile.TemporaryDirectory() as name:
+        tmp = Path(name)
+        nx, ny = 64, 50
+        z = tmp / "z.npy"
+        r = run(["surface", "-o", str(z), "--nx", str(nx), "--ny", str(ny), "--lx", "0.5e-3",
+                 "--ly", "0.4e-3", "--hurst", "0.8", "--rms-height", "0.2e-6", "--seed", "7"])
+        if r.returncode != 0:
+            fail(r.stderr)
+        heights = np.load(z)
+        np.save(tmp / "gap.npy", heights.max() - heights)
+        rough = grid(nx, ny) + BODY + '[contact]\nindenter = "height_map"\npath = "gap.npy"\nload = 4.0\n'
+        sphere = grid(nx, ny) + BODY + '[contact]\nindenter = "paraboloid"\nradius = 2e-3\nload = 2.0\n'
+        iterations = {}
+        for name, text, rank_counts in (("rough", rough, (2, 3)), ("paraboloid", sphere, (3,))):
+            scene = tmp / f"{name}.toml"
+            scene.write_text(text)
+            if (r := run(["run", str(scene), "-o", str(tmp / f"{name}_serial"), "--quiet"])).returncode:
+                fail(r.stderr)
+            for ranks in rank_counts:
+                out = tmp / f"{name}_np{ranks}"
+                if (r := run(["run", str(scene), "-o", str(out)], ranks)).returncode:
+                    fail(f"{name} at {ranks} ranks: {r.stderr}")
+                iterations[name, ranks] = check_equal(name, tmp / f"{name}_serial", out, ranks)
+        if iterations["rough", 2] != iterations["rough", 3]:
+            fail(f"iterations differ between 2 and 3 ranks: {iterations}")
+
+        refused(tmp, 'boundary = "free"', grid(nx, ny, "free") + BODY +
+                '[contact]\nindenter = "paraboloid"\nradius = 2e-3\nload = 2.0\n')
+        refused(tmp, "[pressure] (a known load) does not run distributed yet", grid(nx, ny) + BODY +
+                '[pressure]\nkind = "hertz"\np0 = 1e9\na = 5e-5\n')
+        refused(tmp, "[contact] friction", rough + "friction = 0.3\n")
+        bad = heights.max() - heights
+        bad[37, 5] = np.nan
+        np.save(tmp / "gap.npy", bad)
+        refused(tmp, "gap.npy: row 37, column 5: height nan is not finite", rough)
+        np.savetxt(tmp / "gap.csv", bad, delimiter=",")
+        refused(tmp, "reads a height map from .npy only", rough.replace("gap.npy", "gap.csv"))
+        print("mpi_cli_run: all checks passed;", iterations)
+
+
+main()
