@@ -37,6 +37,8 @@
 #ifdef COATFFT_WITH_MPI  // a build with COATFFT_MPI (docs/scale.md)
 #include "distributed/communicator.hpp"
 #include "distributed/distributed_contact.hpp"
+#include "distributed/distributed_dcfft_operator.hpp"
+#include "distributed/distributed_operator.hpp"
 #include "distributed/distributed_periodic_operator.hpp"
 #include "distributed/mpi_session.hpp"
 #include "distributed/self_affine_slab.hpp"

@@ -46,7 +46,7 @@ std::unique_ptr<detail::Preconditioner> detail::CommunicatorRanks::preconditione
   return std::make_unique<SlabPreconditioner>(comm_, grid, threads, planning);
 }
 
-std::unique_ptr<ContactSolver> distributed_contact_solver(DistributedPeriodicOperator& op,
+std::unique_ptr<ContactSolver> distributed_contact_solver(DistributedOperator& op,
                                                           ContactOptions options) {
   return std::make_unique<ContactSolver>(
       op, std::move(options),

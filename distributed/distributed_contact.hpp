@@ -9,12 +9,12 @@
 #include <memory>
 
 #include "../contact/contact_solver.hpp"
-#include "distributed_periodic_operator.hpp"
+#include "distributed_operator.hpp"
 
 namespace coatfft {
 
 /// A solver bound to `op` (which must outlive it), on op's communicator and slabs.
-std::unique_ptr<ContactSolver> distributed_contact_solver(DistributedPeriodicOperator& op,
+std::unique_ptr<ContactSolver> distributed_contact_solver(DistributedOperator& op,
                                                           ContactOptions options = {});
 
 }  // namespace coatfft

@@ -1,6 +1,5 @@
 #include "distributed/distributed_periodic_operator.hpp"
 
-#include <array>
 #include <vector>
 
 #include "convolution/kernels/periodic_kernel_parts.hpp"
@@ -73,20 +72,9 @@ const Slab& DistributedPeriodicOperator::slab() const {
 }
 
 void DistributedPeriodicOperator::apply(const Field& pressure, Field& displacement) {
-  // Checked on every rank together (a rank that threw alone would leave the others waiting), in
-  // one reduction of the ranks' counts of bad shapes and of values that are not finite: an
-  // application's only collective besides its transposes.
+  // An application's only collective besides its transposes.
+  check_pressure(pressure, displacement, "DistributedPeriodicOperator");
   const Slab& s = slab();
-  const bool shaped =
-      pressure.rows() == s.nx && pressure.cols() == s.rows && &pressure != &displacement;
-  std::array<double, 2> bad = {shaped ? 0.0 : 1.0, shaped && !pressure.allFinite() ? 1.0 : 0.0};
-  t_->comm.sum(bad);
-  COATFFT_REQUIRE(bad[0] == 0.0,
-                  "DistributedPeriodicOperator::apply: a rank's pressure is not of its slab's "
-                  "shape (nx, rows), or is its displacement");
-  COATFFT_REQUIRE(
-      bad[1] == 0.0,
-      "DistributedPeriodicOperator::apply: the pressure has a value that is not finite");
   displacement.resize(s.nx, s.rows);
   t_->fft.forward(pressure.data());
   std::complex<double>* spectrum = t_->fft.spectrum();
@@ -96,12 +84,6 @@ void DistributedPeriodicOperator::apply(const Field& pressure, Field& displaceme
 
 double DistributedPeriodicOperator::communication_seconds() const {
   return t_->fft.transpose_seconds();
-}
-
-Field DistributedPeriodicOperator::unit_response() {
-  Field unit = slab().field();
-  if (slab().y0 == 0 && slab().rows > 0) unit(0, 0) = 1.0;
-  return apply(unit);
 }
 
 const Communicator& DistributedPeriodicOperator::communicator() const {

@@ -10,16 +10,14 @@
 
 #include "../convolution/fft/planning.hpp"
 #include "../convolution/kernels/periodic_kernel.hpp"
-#include "../convolution/operators/surface_operator.hpp"
 #include "../core/grid.hpp"
 #include "../core/types.hpp"
 #include "../frf/frf.hpp"
-#include "communicator.hpp"
-#include "slab.hpp"
+#include "distributed_operator.hpp"
 
 namespace coatfft {
 
-class DistributedPeriodicOperator final : public SurfaceOperator {
+class DistributedPeriodicOperator final : public DistributedOperator {
  public:
   /// InvalidArgument as periodic_influence_kernel for the grid, the FRF and `kernel`'s options;
   /// `threads` (>= 1) FFTW's threads within each rank; `method` what method() reports (the
@@ -33,19 +31,14 @@ class DistributedPeriodicOperator final : public SurfaceOperator {
   const Grid& grid() const override { return grid_; }
   Method method() const override { return method_; }
   bool periodic() const override { return true; }
-  /// This rank's rows and half-spectrum columns.
-  const Slab& slab() const;
+  const Slab& slab() const override;
   /// `displacement` [m] (resized to (nx, rows)) under `pressure` [Pa], both this rank's rows, of
   /// zero mean over the period. InvalidArgument for a pressure of another shape, or one with a
   /// value that is not finite (on any rank: every rank throws).
   void apply(const Field& pressure, Field& displacement) override;
   using SurfaceOperator::apply;
-  /// This rank's rows of the displacement under 1 Pa on cell (0, 0). Collective.
-  Field unit_response() override;
-  const Communicator& communicator() const;
-  /// The wall time apply() and the construction spent in the transforms' transposes so far [s]:
-  /// the communication between the ranks, and the wait for the slowest.
-  double communication_seconds() const;
+  const Communicator& communicator() const override;
+  double communication_seconds() const override;
 
  private:
   struct Transforms;

@@ -8,14 +8,18 @@
 #include <random>
 
 #include "contact/contact_solver.hpp"
+#include "contact/indenter.hpp"
 #include "contact/initial_pressure.hpp"
+#include "convolution/kernels/influence_kernel.hpp"
 #include "convolution/kernels/periodic_kernel.hpp"
+#include "convolution/operators/dcfft_operator.hpp"
 #include "convolution/operators/periodic_operator.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "distributed/communicator.hpp"
 #include "distributed/detail/communicator_ranks.hpp"
 #include "distributed/distributed_contact.hpp"
+#include "distributed/distributed_dcfft_operator.hpp"
 #include "distributed/distributed_periodic_operator.hpp"
 #include "distributed/self_affine_slab.hpp"
 #include "distributed/slab.hpp"
@@ -93,6 +97,60 @@ TEST_CASE(
     const double d = relative_difference(comm, u, reference);
     CHECK(d < 1e-13);
   }
+}
+
+TEST_CASE("the distributed DC-FFT operator equals the serial one on the free surface") {
+  const Communicator comm = Communicator::world();
+  // 44 x 50 cells: 45 half-spectrum columns of the padded rows and 50 rows, uneven at 3 ranks;
+  // 8 x 2: a rank without rows at 3 ranks.
+  for (const Grid& grid : {Grid(44, 50, 1e-3, 1.2e-3), Grid(8, 2, 1e-3, 0.3e-3)}) {
+    const double e_star = steel.plane_strain_modulus();
+    DcfftOperator serial(love_kernel(grid, e_star));
+    DistributedDcfftOperator distributed(comm, grid, e_star);
+    const Field p = random_pressure(grid, 5);
+    const Field u = distributed.apply(rows_of(p, distributed.slab()));
+    const Field reference = rows_of(serial.apply(p), distributed.slab());
+    // Both exact to rounding; the pruned transform's order of operations differs from the padded
+    // 2-D one's (a few ulp of the largest displacement).
+    CHECK(relative_difference(comm, u, reference) < 1e-13);
+    CHECK_FALSE(distributed.periodic());
+    CHECK(distributed.method() == Method::dcfft);
+  }
+}
+
+TEST_CASE("a distributed free Hertz contact equals the serial solve") {
+  const Communicator comm = Communicator::world();
+  // A paraboloid on steel, the contact radius about a quarter of the domain.
+  const Grid grid(48, 42, 1e-3, 0.9e-3);
+  const double e_star = steel.plane_strain_modulus(), radius = 5e-3;
+  const Field h = height(grid, Paraboloid{radius});
+  DcfftOperator serial_op(love_kernel(grid, e_star));
+  DistributedDcfftOperator op(comm, grid, e_star);
+  const Slab& s = op.slab();
+  ContactOptions options;
+  options.nested_start = false;  // one patch: the serial solve takes none either
+  options.compute_approach = true;
+  ContactSolver serial(serial_op, options);
+  const auto distributed = distributed_contact_solver(op, options);
+  const double load = 4.0 * e_star * std::pow(0.25e-3, 3) / (3.0 * radius);  // Hertz, a = 0.25 mm
+  for (const ContactControl control : {ContactControl::load, ContactControl::approach}) {
+    const double value = control == ContactControl::load ? load : 0.25e-3 * 0.25e-3 / radius;
+    const ContactResult a = serial.solve(h, control, value);
+    const ContactResult b = distributed->solve(rows_of(h, s), control, value);
+    REQUIRE(a.converged);
+    CHECK(b.converged);
+    CHECK(b.iterations == a.iterations);
+    CHECK(b.operator_applications == a.operator_applications);
+    CHECK(relative_difference(comm, b.pressure, rows_of(a.pressure, s)) < 1e-10);
+    CHECK(relative_difference(comm, b.displacement, rows_of(a.displacement, s)) < 1e-10);
+    CHECK(b.load == Approx(a.load).epsilon(1e-10));
+    CHECK(*b.approach == Approx(*a.approach).epsilon(1e-10));
+    CHECK(b.contact_area == a.contact_area);
+    CHECK(b.touches_boundary == a.touches_boundary);
+  }
+  // A contact reaching the domain's edge is seen by the rank that holds the border rows.
+  const ContactResult edge = distributed->solve(rows_of(h, s), ContactControl::load, 50 * load);
+  CHECK(edge.touches_boundary);
 }
 
 TEST_CASE("the distributed periodic operator refuses a bad pressure on every rank together") {

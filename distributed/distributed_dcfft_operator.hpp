@@ -1,0 +1,46 @@
+#pragma once
+// DC-FFT (Liu, Wang and Liu 2000; docs/theory.md section 1.3) on fields held in row slabs by the
+// ranks of a communicator (distributed/slab.hpp): the free surface's linear convolution with
+// Love's (1929) coefficients of a homogeneous half-space, by a pruned slab transform of the
+// zero-padded (2nx, 2ny) lattice. Only the nx real values of each row are transformed (FFTW's r2c
+// of length 2nx on the row and its zeros), FFTW-MPI transposes the (ny, nx + 1) half spectrum's
+// rows into columns, and each column's ny entries, padded to 2ny, take a c2c of length 2ny; back
+// the same way, keeping the first ny entries of each column and nx of each row. The padded rows
+// are never distributed: every rank holds about ny / P of the real rows, where a padded slab
+// would give the real rows to the first half of the ranks. The coefficients' spectrum is
+// computed distributed too (each rank its rows of the wrap-around lattice, the slab transform of
+// the padded grid). Construction and apply() are collective.
+#include <memory>
+
+#include "../convolution/fft/planning.hpp"
+#include "../core/grid.hpp"
+#include "distributed_operator.hpp"
+
+namespace coatfft {
+
+class DistributedDcfftOperator final : public DistributedOperator {
+ public:
+  /// Love's coefficients of a homogeneous half-space of plane-strain modulus E* [Pa] (finite,
+  /// > 0) on `grid`; `threads` (>= 1) FFTW's threads within each rank. InvalidArgument otherwise.
+  DistributedDcfftOperator(const Communicator& comm, const Grid& grid, double plane_strain_modulus,
+                           Planning planning = Planning::estimate, int threads = 1);
+  ~DistributedDcfftOperator();
+
+  const Grid& grid() const override { return grid_; }
+  Method method() const override { return Method::dcfft; }
+  const Slab& slab() const override;
+  /// `displacement` [m] (resized to (nx, rows)) under `pressure` [Pa], both this rank's rows: the
+  /// free surface's. InvalidArgument for a pressure of another shape, or one with a value that is
+  /// not finite (on any rank: every rank throws).
+  void apply(const Field& pressure, Field& displacement) override;
+  using SurfaceOperator::apply;
+  const Communicator& communicator() const override;
+  double communication_seconds() const override;
+
+ private:
+  struct Transforms;
+  Grid grid_;
+  std::unique_ptr<Transforms> t_;
+};
+
+}  // namespace coatfft

@@ -1,0 +1,33 @@
+#pragma once
+// A surface operator on fields held in row slabs (distributed/slab.hpp) by the ranks of a
+// communicator: a pressure and its displacement are this rank's rows (nx, rows), and apply() is
+// collective. What the distributed contact solver (distributed_contact.hpp) needs of an operator:
+// its slab, its communicator, and the time its transposes took.
+#include <string_view>
+
+#include "../convolution/operators/surface_operator.hpp"
+#include "../core/types.hpp"
+#include "communicator.hpp"
+#include "slab.hpp"
+
+namespace coatfft {
+
+class DistributedOperator : public SurfaceOperator {
+ public:
+  /// This rank's rows and half-spectrum columns.
+  virtual const Slab& slab() const = 0;
+  virtual const Communicator& communicator() const = 0;
+  /// The wall time apply() and the construction spent in the transforms' transposes so far [s]:
+  /// the communication between the ranks, and the wait for the slowest.
+  virtual double communication_seconds() const = 0;
+  /// This rank's rows of the displacement under 1 Pa on cell (0, 0). Collective.
+  Field unit_response() override;
+
+ protected:
+  /// Refuses, on every rank together (a rank that threw alone would leave the others waiting), a
+  /// rank's pressure that is not of its slab's shape or is its displacement, and a value that is
+  /// not finite on any rank, in one reduction; `who` names the operator in the message.
+  void check_pressure(const Field& pressure, const Field& displacement, std::string_view who) const;
+};
+
+}  // namespace coatfft
