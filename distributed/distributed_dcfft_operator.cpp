@@ -20,6 +20,7 @@
 namespace coatfft {
 
 struct DistributedDcfftOperator::Transforms {
+  explicit Transforms(const Communicator& c) : comm(c) {}
   Communicator comm;
   Slab slab;                         // the grid's rows; columns of the (nx + 1)-entry half spectrum
   FftwRealBuffer padded;             // rows x 2nx: each row, then nx zeros
@@ -81,7 +82,7 @@ DistributedDcfftOperator::~DistributedDcfftOperator() = default;
 DistributedDcfftOperator::DistributedDcfftOperator(const Communicator& comm, const Grid& grid,
                                                    double plane_strain_modulus, Planning planning,
                                                    int threads)
-    : grid_(grid), t_(std::make_unique<Transforms>(Transforms{comm})) {
+    : grid_(grid), t_(std::make_unique<Transforms>(comm)) {
   COATFFT_REQUIRE(std::isfinite(plane_strain_modulus) && plane_strain_modulus > 0,
                   "DistributedDcfftOperator: E* = ", plane_strain_modulus,
                   " Pa, but it must be finite and > 0");

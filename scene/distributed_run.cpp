@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "core/memory.hpp"
 #include "distributed/distributed_contact.hpp"
+#include "distributed/distributed_dcfft_operator.hpp"
 #include "distributed/distributed_periodic_operator.hpp"
 #include "scene/npy_slab.hpp"
 #include "scene/operator_from_scene.hpp"
@@ -40,8 +41,16 @@ MemoryNeed rank_memory(const Communicator& comm, const Scene& scene) {
 
 // The first part of the scene that a distributed run refuses, or "" (check_distributable).
 std::string not_distributable(const Scene& scene) {
-  if (!scene.periodic) return "[grid] boundary = \"free\" (the free boundary's DC-FFT)";
   if (!scene.contact) return "[pressure] (a known load)";
+  if (scene.method.automatic)
+    return "[method] name = \"auto\" (its reference computations; name the method: \"dcfft\" "
+           "on a free boundary)";
+  if (!scene.periodic && (scene.frf || !scene.body->is_homogeneous()))
+    return "[grid] boundary = \"free\" on a coated body or an [frf] table (the FRF-split "
+           "kernel's spectrum)";
+  if (!scene.periodic && scene.method.options.method != Method::dcfft)
+    return detail::concat("[method] name = \"", to_string(scene.method.options.method),
+                          "\" on a free boundary (there a distributed run takes \"dcfft\")");
   const ContactSpec& contact = *scene.contact;
   if (!contact.topography.is_null())
     return "[contact] topography (a measured surface: `coatfft topography FILE -o h.npy` writes "
@@ -74,21 +83,30 @@ FieldNumbers slab_numbers(const Communicator& comm, const Grid& grid, const Slab
           comm.sum(centre ? uz(grid.centre_i(), j) : 0.0), comm.max(local_max)};
 }
 
-// The distributed operator and what summary.json reports of it, as operator_from_scene's.
-std::unique_ptr<DistributedPeriodicOperator> distributed_operator(const Communicator& comm,
-                                                                  const Scene& scene,
-                                                                  OperatorReport& report) {
+// The distributed operator and what summary.json reports of it, as operator_from_scene's: the
+// periodic kernel of the body's FRF, or on a free boundary DC-FFT with Love's coefficients on
+// the padded lattice.
+std::unique_ptr<DistributedOperator> distributed_operator(const Communicator& comm,
+                                                          const Scene& scene,
+                                                          OperatorReport& report) {
   const auto start = Clock::now();
-  const std::shared_ptr<const Frf> frf = body_frf(scene);
   const OperatorOptions& o = scene.method.options;
-  PeriodicKernelOptions kernel;
-  kernel.threads = o.threads;
-  auto op = std::make_unique<DistributedPeriodicOperator>(comm, scene.grid, *frf, kernel,
-                                                          o.planning, o.threads, o.method);
+  const Grid& grid = scene.grid;
+  std::unique_ptr<DistributedOperator> op;
+  if (scene.periodic) {
+    const std::shared_ptr<const Frf> frf = body_frf(scene);
+    PeriodicKernelOptions kernel;
+    kernel.threads = o.threads;
+    op = std::make_unique<DistributedPeriodicOperator>(comm, grid, *frf, kernel, o.planning,
+                                                       o.threads, o.method);
+    report.frf = frf->name();
+  } else {
+    op = std::make_unique<DistributedDcfftOperator>(
+        comm, grid, scene.body->substrate().plane_strain_modulus(), o.planning, o.threads);
+  }
   report.method = op->method();
-  report.frf = frf->name();
-  report.fft_nx = scene.grid.nx();
-  report.fft_ny = scene.grid.ny();
+  report.fft_nx = scene.periodic ? grid.nx() : 2 * grid.nx();
+  report.fft_ny = scene.periodic ? grid.ny() : 2 * grid.ny();
   report.setup_seconds = seconds_since(start);
   return op;
 }
@@ -140,6 +158,8 @@ DistributedSceneRun compute_distributed_scene(const Communicator& comm,
       solver->solve(heights, spec.load ? ContactControl::load : ContactControl::approach,
                     spec.load ? *spec.load : *spec.approach);
   const double solve_seconds = seconds_since(start);
+  COATFFT_REQUIRE(!result.touches_boundary,  // the serial run's refusal (scene/scene_run.cpp)
+                  domain_edge_refusal);
   progress.stage(detail::concat("applying the operator (", options.repeat,
                                 options.repeat == 1 ? " time)" : " times)"));
   Field uz;  // only for the timing: the solver returned the displacement

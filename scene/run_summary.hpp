@@ -14,6 +14,13 @@
 
 namespace coatfft::scene {
 
+/// Why a contact on a free boundary that reaches the domain's edge (pressure on a border cell) is
+/// refused: the domain truncates it.
+inline constexpr const char* domain_edge_refusal =
+    "[contact] the contact reaches the domain edge (pressure > 0 on a border cell): the domain is "
+    "too small for this contact; enlarge [grid] lx and ly (and nx, ny to keep the cell size) or "
+    "lower the load";
+
 /// The numbers of the fields summary.json reports: total_load [N], uz_center and uz_max [m].
 struct FieldNumbers {
   double total_load = 0.0, uz_center = 0.0, uz_max = 0.0;

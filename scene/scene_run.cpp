@@ -250,10 +250,7 @@ SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat,
   // gap is out of reach, so contact on its edge cells is the map's own (reported, not refused).
   const bool topography = !spec.topography.is_null();
   const bool map_edge = topography && topography_edge_contact(results, spec.topography_pad);
-  COATFFT_REQUIRE(!touches || topography,
-                  "[contact] the contact reaches the domain edge (pressure > 0 on a border cell): "
-                  "the domain is too small for this contact; enlarge [grid] lx and ly (and nx, ny "
-                  "to keep the cell size) or lower the load");
+  COATFFT_REQUIRE(!touches || topography, domain_edge_refusal);
   // The largest value's: the summary's contact keys (a sweep keeps every value's fields too).
   ContactResult result = spec.sweep.empty() ? std::move(results.back()) : results.back();
 

@@ -2,11 +2,11 @@
 """`coatfft run` under mpirun (docs/scale.md) against the serial program.
 
 A periodic rough TiN-coated contact (a height map read by rows) at 2 and 3 ranks (3: uneven
-slabs) and a paraboloid on it at 3 ranks: summary.json has the serial run's keys and "ranks",
-the load, approach, pressure, displacement and gap equal the serial run's to 1e-10 (the serial
-program starts from a nested coarse solve, the distributed one from the Hertzian start: their
-iterates differ, their converged solutions agree to the tolerance), 2 and 3 ranks take the same
-iterations, displacement.csv holds the .npy files' values in the serial file's order. Scenes that
+slabs), a paraboloid on it and a free Hertz contact on steel (DC-FFT) at 3 ranks: summary.json has
+the serial run's keys and "ranks", the same iterations, and the load, approach, pressure,
+displacement and gap equal the serial run's to 1e-10 (the grids are below the nested start's 128
+cells a side, which the distributed solve does not take yet: docs/scale.md); displacement.csv
+holds the .npy files' values in the serial file's order. Scenes that
 do not run distributed, and bad height maps, are refused on one line with exit status 2 and no
 output. Usage: mpi_cli_run.py COATFFT MPIEXEC
 """
@@ -54,15 +54,21 @@ def check_equal(name, serial, distributed, ranks):
         fail(f"{name}: ranks {d['ranks']} (serial {s['ranks']})")
     if missing := set(s) - set(d):
         fail(f"{name}: summary.json lacks the serial keys {sorted(missing)}")
+    if d["iterations"] != s["iterations"]:
+        fail(f"{name}: {d['iterations']} iterations, serially {s['iterations']}")
     if not d["converged"] or abs(d["load"] - s["load"]) > 1e-12 * s["load"]:
         fail(f"{name}: load {d['load']} against {s['load']}, converged {d['converged']}")
     if abs(d["approach"] - s["approach"]) > 1e-10 * abs(s["approach"]):
         fail(f"{name}: approach {d['approach']} against {s['approach']}")
+    largest = 0.0
     for field in ("pressure", "uz", "gap"):
         a, b = np.load(serial / f"{field}.npy"), np.load(distributed / f"{field}.npy")
         error = np.abs(a - b).max() / np.abs(a).max()
         if a.shape != b.shape or error > 1e-10:
             fail(f"{name} at {ranks} ranks: {field} differs by {error:.2e} of its largest value")
+        largest = max(largest, error)
+    print(f"{name} at {ranks} ranks: {d['iterations']} iterations (serial {s['iterations']}), "
+          f"fields within {largest:.1e} of their largest values")
     csv = np.loadtxt(distributed / "displacement.csv", delimiter=",", skiprows=1)
     serial_csv = np.loadtxt(serial / "displacement.csv", delimiter=",", skiprows=1)
     if csv.shape != serial_csv.shape or np.any(csv[:, :2] != serial_csv[:, :2]):
@@ -96,8 +102,10 @@ def main():
         np.save(tmp / "gap.npy", heights.max() - heights)
         rough = grid(nx, ny) + BODY + '[contact]\nindenter = "height_map"\npath = "gap.npy"\nload = 4.0\n'
         sphere = grid(nx, ny) + BODY + '[contact]\nindenter = "paraboloid"\nradius = 2e-3\nload = 2.0\n'
-        iterations = {}
-        for name, text, rank_counts in (("rough", rough, (2, 3)), ("paraboloid", sphere, (3,))):
+        hertz = (grid(nx, ny, "free") + '[substrate]\nmaterial = "steel"\n[method]\nname = "dcfft"\n'
+                 '[contact]\nindenter = "paraboloid"\nradius = 5e-3\nload = 0.5\n')
+        for name, text, rank_counts in (("rough", rough, (2, 3)), ("paraboloid", sphere, (3,)),
+                                        ("hertz", hertz, (3,))):
             scene = tmp / f"{name}.toml"
             scene.write_text(text)
             if (r := run(["run", str(scene), "-o", str(tmp / f"{name}_serial"), "--quiet"])).returncode:
@@ -106,12 +114,12 @@ def main():
                 out = tmp / f"{name}_np{ranks}"
                 if (r := run(["run", str(scene), "-o", str(out)], ranks)).returncode:
                     fail(f"{name} at {ranks} ranks: {r.stderr}")
-                iterations[name, ranks] = check_equal(name, tmp / f"{name}_serial", out, ranks)
-        if iterations["rough", 2] != iterations["rough", 3]:
-            fail(f"iterations differ between 2 and 3 ranks: {iterations}")
+                check_equal(name, tmp / f"{name}_serial", out, ranks)
 
-        refused(tmp, 'boundary = "free"', grid(nx, ny, "free") + BODY +
-                '[contact]\nindenter = "paraboloid"\nradius = 2e-3\nload = 2.0\n')
+        refused(tmp, 'boundary = "free" on a coated body', grid(nx, ny, "free") + BODY +
+                '[method]\nname = "frf-split"\n[contact]\nindenter = "paraboloid"\nradius = 2e-3\nload = 2.0\n')
+        refused(tmp, '[method] name = "auto"', hertz.replace('name = "dcfft"', 'name = "auto"'))
+        refused(tmp, "the contact reaches the domain edge", hertz.replace("load = 0.5", "load = 500.0"))
         refused(tmp, "[pressure] (a known load) does not run distributed yet", grid(nx, ny) + BODY +
                 '[pressure]\nkind = "hertz"\np0 = 1e9\na = 5e-5\n')
         refused(tmp, "[contact] friction", rough + "friction = 0.3\n")
@@ -121,7 +129,7 @@ def main():
         refused(tmp, "gap.npy: row 37, column 5: height nan is not finite", rough)
         np.savetxt(tmp / "gap.csv", bad, delimiter=",")
         refused(tmp, "reads a height map from .npy only", rough.replace("gap.npy", "gap.csv"))
-        print("mpi_cli_run: all checks passed;", iterations)
+        print("mpi_cli_run: all checks passed")
 
 
 main()
