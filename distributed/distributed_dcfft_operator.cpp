@@ -20,8 +20,6 @@
 namespace coatfft {
 
 struct DistributedDcfftOperator::Transforms {
-  explicit Transforms(const Communicator& c) : comm(c) {}
-  Communicator comm;
   Slab slab;                         // the grid's rows; columns of the (nx + 1)-entry half spectrum
   FftwRealBuffer padded;             // rows x 2nx: each row, then nx zeros
   FftwComplexBuffer rows, columns;   // rows x (nx + 1) and columns x ny (FFTW-MPI's allocation)
@@ -32,16 +30,6 @@ struct DistributedDcfftOperator::Transforms {
 };
 
 namespace {
-
-// FFTW's planning of `howmany` 1-D transforms: none when this rank holds nothing.
-template <typename Make>
-FftwPlan plan_many(std::ptrdiff_t howmany, int threads, Make&& make) {
-  return howmany > 0 ? FftwPlan::create(threads, std::forward<Make>(make)) : FftwPlan();
-}
-
-void execute(const FftwPlan& p) {
-  if (p.valid()) p.execute();
-}
 
 std::size_t entries(std::ptrdiff_t n) {
   return static_cast<std::size_t>(std::max<std::ptrdiff_t>(n, 1));
@@ -82,7 +70,7 @@ DistributedDcfftOperator::~DistributedDcfftOperator() = default;
 DistributedDcfftOperator::DistributedDcfftOperator(const Communicator& comm, const Grid& grid,
                                                    double plane_strain_modulus, Planning planning,
                                                    int threads)
-    : grid_(grid), t_(std::make_unique<Transforms>(comm)) {
+    : DistributedOperator(comm), grid_(grid), t_(std::make_unique<Transforms>()) {
   COATFFT_REQUIRE(std::isfinite(plane_strain_modulus) && plane_strain_modulus > 0,
                   "DistributedDcfftOperator: E* = ", plane_strain_modulus,
                   " Pa, but it must be finite and > 0");
@@ -105,11 +93,11 @@ DistributedDcfftOperator::DistributedDcfftOperator(const Communicator& comm, con
   // Out of place, with FFTW_DESTROY_INPUT where the input is rewritten before its next use.
   const unsigned destroy = flags | FFTW_DESTROY_INPUT;
   const int n2x = static_cast<int>(2 * nx), n2y = static_cast<int>(2 * ny), h = int(hx);
-  t.r2c = plan_many(rows, threads, [&] {
+  t.r2c = detail::plan_many(rows, threads, [&] {
     return fftw_plan_many_dft_r2c(1, &n2x, int(rows), t.padded.data(), nullptr, 1, n2x,
                                   t.rows.data(), nullptr, 1, h, flags);
   });
-  t.c2r = plan_many(rows, threads, [&] {
+  t.c2r = detail::plan_many(rows, threads, [&] {
     return fftw_plan_many_dft_c2r(1, &n2x, int(rows), t.rows.data(), nullptr, 1, h, t.padded.data(),
                                   nullptr, 1, n2x, destroy);
   });
@@ -125,7 +113,7 @@ DistributedDcfftOperator::DistributedDcfftOperator(const Communicator& comm, con
   t.to_columns = transpose(ny, hx, t.rows, t.columns);
   t.to_rows = transpose(hx, ny, t.columns, t.rows);
   for (int sign : {FFTW_FORWARD, FFTW_BACKWARD}) {
-    (sign == FFTW_FORWARD ? t.forward_y : t.inverse_y) = plan_many(columns, threads, [&] {
+    (sign == FFTW_FORWARD ? t.forward_y : t.inverse_y) = detail::plan_many(columns, threads, [&] {
       return fftw_plan_many_dft(1, &n2y, int(columns), t.padded_columns.data(), nullptr, 1, n2y,
                                 t.padded_columns.data(), nullptr, 1, n2y, sign, flags);
     });
@@ -135,10 +123,6 @@ DistributedDcfftOperator::DistributedDcfftOperator(const Communicator& comm, con
 
 const Slab& DistributedDcfftOperator::slab() const {
   return t_->slab;
-}
-
-const Communicator& DistributedDcfftOperator::communicator() const {
-  return t_->comm;
 }
 
 double DistributedDcfftOperator::communication_seconds() const {
@@ -162,7 +146,7 @@ void DistributedDcfftOperator::apply(const Field& pressure, Field& displacement)
     std::copy_n(&pressure(0, r), nx, row);
     std::fill_n(row + nx, nx, 0.0);
   }
-  execute(t.r2c);
+  detail::execute_if_planned(t.r2c);
   timed_transpose(t.to_columns);
   std::complex<double>* pc = as_complex(t.padded_columns.data());
   std::complex<double>* columns_of = as_complex(t.columns.data());
@@ -170,13 +154,13 @@ void DistributedDcfftOperator::apply(const Field& pressure, Field& displacement)
     std::copy_n(columns_of + ny * c, ny, pc + 2 * ny * c);
     std::fill_n(pc + 2 * ny * c + ny, ny, std::complex<double>(0.0));
   }
-  execute(t.forward_y);
+  detail::execute_if_planned(t.forward_y);
   for (std::size_t n = 0; n < t.multiplier.size(); ++n) pc[n] *= t.multiplier[n];
-  execute(t.inverse_y);
+  detail::execute_if_planned(t.inverse_y);
   for (std::ptrdiff_t c = 0; c < columns; ++c)
     std::copy_n(pc + 2 * ny * c, ny, columns_of + ny * c);
   timed_transpose(t.to_rows);
-  execute(t.c2r);
+  detail::execute_if_planned(t.c2r);
   for (std::ptrdiff_t r = 0; r < rows; ++r)
     std::copy_n(t.padded.data() + 2 * nx * r, nx, &displacement(0, r));
 }

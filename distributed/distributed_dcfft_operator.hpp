@@ -34,7 +34,6 @@ class DistributedDcfftOperator final : public DistributedOperator {
   /// not finite (on any rank: every rank throws).
   void apply(const Field& pressure, Field& displacement) override;
   using SurfaceOperator::apply;
-  const Communicator& communicator() const override;
   double communication_seconds() const override;
 
  private:

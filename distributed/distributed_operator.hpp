@@ -16,7 +16,7 @@ class DistributedOperator : public SurfaceOperator {
  public:
   /// This rank's rows and half-spectrum columns.
   virtual const Slab& slab() const = 0;
-  virtual const Communicator& communicator() const = 0;
+  const Communicator& communicator() const { return comm_; }
   /// The wall time apply() and the construction spent in the transforms' transposes so far [s]:
   /// the communication between the ranks, and the wait for the slowest.
   virtual double communication_seconds() const = 0;
@@ -24,10 +24,14 @@ class DistributedOperator : public SurfaceOperator {
   Field unit_response() override;
 
  protected:
+  explicit DistributedOperator(const Communicator& comm) : comm_(comm) {}
   /// Refuses, on every rank together (a rank that threw alone would leave the others waiting), a
   /// rank's pressure that is not of its slab's shape or is its displacement, and a value that is
   /// not finite on any rank, in one reduction; `who` names the operator in the message.
   void check_pressure(const Field& pressure, const Field& displacement, std::string_view who) const;
+
+ private:
+  Communicator comm_;
 };
 
 }  // namespace coatfft

@@ -10,7 +10,6 @@
 namespace coatfft {
 
 struct DistributedPeriodicOperator::Transforms {
-  Communicator comm;
   detail::SlabFft fft;
   std::vector<double> multiplier;  // this rank's columns of the kernel's real spectrum, over nx ny
 };
@@ -56,14 +55,14 @@ DistributedPeriodicOperator::DistributedPeriodicOperator(const Communicator& com
                                                          const PeriodicKernelOptions& kernel,
                                                          Planning planning, int threads,
                                                          Method method)
-    : grid_(grid), method_(method) {
+    : DistributedOperator(comm), grid_(grid), method_(method) {
   COATFFT_REQUIRE(threads >= 1, "DistributedPeriodicOperator: threads = ", threads,
                   " must be >= 1");
   COATFFT_REQUIRE(grid.nx() % 2 == 0 && grid.ny() % 2 == 0,
                   "DistributedPeriodicOperator: nx = ", grid.nx(), " and ny = ", grid.ny(),
                   " must be even");
   t_ = std::make_unique<Transforms>(
-      Transforms{comm, detail::SlabFft(comm, grid.nx(), grid.ny(), planning, threads), {}});
+      Transforms{detail::SlabFft(comm, grid.nx(), grid.ny(), planning, threads), {}});
   t_->multiplier = kernel_spectrum(comm, t_->fft, grid, frf, kernel);
 }
 
@@ -84,10 +83,6 @@ void DistributedPeriodicOperator::apply(const Field& pressure, Field& displaceme
 
 double DistributedPeriodicOperator::communication_seconds() const {
   return t_->fft.transpose_seconds();
-}
-
-const Communicator& DistributedPeriodicOperator::communicator() const {
-  return t_->comm;
 }
 
 }  // namespace coatfft

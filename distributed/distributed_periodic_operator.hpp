@@ -37,7 +37,6 @@ class DistributedPeriodicOperator final : public DistributedOperator {
   /// value that is not finite (on any rank: every rank throws).
   void apply(const Field& pressure, Field& displacement) override;
   using SurfaceOperator::apply;
-  const Communicator& communicator() const override;
   double communication_seconds() const override;
 
  private:

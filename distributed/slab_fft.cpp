@@ -10,20 +10,6 @@
 
 namespace coatfft::detail {
 
-namespace {
-
-// FFTW's planning of `howmany` 1-D transforms: none when this rank holds nothing.
-template <typename Make>
-FftwPlan plan_many(std::ptrdiff_t howmany, int threads, Make&& make) {
-  return howmany > 0 ? FftwPlan::create(threads, std::forward<Make>(make)) : FftwPlan();
-}
-
-void execute(const FftwPlan& p) {
-  if (p.valid()) p.execute();
-}
-
-}  // namespace
-
 SlabFft::SlabFft(const Communicator& comm, std::ptrdiff_t nx, std::ptrdiff_t ny, Planning planning,
                  int threads) {
   std::ptrdiff_t doubles = 0;
@@ -108,11 +94,11 @@ void SlabFft::transpose(const FftwPlan& plan) {
 void SlabFft::forward(const double* field) {
   rows_r2c(field);
   transpose(to_columns_);
-  execute(forward_y_);
+  execute_if_planned(forward_y_);
 }
 
 void SlabFft::inverse(double* field) {
-  execute(inverse_y_);
+  execute_if_planned(inverse_y_);
   transpose(to_rows_);
   rows_c2r(field);
 }

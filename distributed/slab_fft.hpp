@@ -7,6 +7,7 @@
 // FFTW's c2r. Every step is collective: all ranks of the communicator call it together.
 #include <complex>
 #include <cstddef>
+#include <utility>
 
 #include "convolution/fft/fftw_plan.hpp"
 #include "convolution/fft/planning.hpp"
@@ -14,6 +15,18 @@
 #include "distributed/slab.hpp"
 
 namespace coatfft::detail {
+
+/// FFTW's plan of `howmany` 1-D transforms, made by `make`: none (an empty plan) when this rank
+/// holds no row or column to transform.
+template <typename Make>
+FftwPlan plan_many(std::ptrdiff_t howmany, int threads, Make&& make) {
+  return howmany > 0 ? FftwPlan::create(threads, std::forward<Make>(make)) : FftwPlan();
+}
+
+/// Executes a plan of plan_many, unless it is empty.
+inline void execute_if_planned(const FftwPlan& plan) {
+  if (plan.valid()) plan.execute();
+}
 
 /// slab_of, and the doubles FFTW-MPI asks a rank to allocate for each of the transposes' arrays.
 Slab slab_of(const Communicator& comm, std::ptrdiff_t nx, std::ptrdiff_t ny,

@@ -5,8 +5,9 @@
 # bench/results/distributed_operator.csv and (WHAT=contact or both) distributed_contact.csv.
 #   Body: TiN 5 um on steel, period 1 mm; one FFTW thread a rank; FFTW_ESTIMATE plans.
 # Usage: scripts/distributed_scale_run.sh [N ...]   (default 2048 4096; RANKS, default "1 2 4";
-#        WHAT: operator, contact or both (default); BUILD_DIR, default build). As root, Open
-#        MPI's permission variables are set here.
+#        WHAT: operator, contact or both (default); SERIAL=0 leaves out the serial rows; TAG
+#        names other result files, distributed_operatorTAG.csv and distributed_contactTAG.csv;
+#        BUILD_DIR, default build). As root, Open MPI's permission variables are set here.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${BUILD_DIR:-$root/build}
@@ -14,6 +15,8 @@ sizes=("$@")
 [ ${#sizes[@]} -gt 0 ] || sizes=(2048 4096)
 read -r -a ranks <<<"${RANKS:-1 2 4}"
 what=${WHAT:-both}
+serial=${SERIAL:-1}
+tag=${TAG:-}
 cmake --build "$build" --target bench_distributed >/dev/null
 bench=$build/bench/bench_distributed
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
@@ -32,8 +35,10 @@ measure() {
   local results=$1
   shift
   for n in "${sizes[@]}"; do
-    echo "== $n^2 serial $*" >&2
-    "$bench" --serial --size "$n" "$@" >>"$tmp"
+    if [ "$serial" != 0 ]; then
+      echo "== $n^2 serial $*" >&2
+      "$bench" --serial --size "$n" "$@" >>"$tmp"
+    fi
     for p in "${ranks[@]}"; do
       echo "== $n^2 np $p $*" >&2
       mpirun -np "$p" --oversubscribe "$bench" --size "$n" "$@" >>"$tmp"
@@ -50,7 +55,7 @@ if [ "$what" != contact ]; then
   echo "#   resident memory [MiB] before the operator (max over ranks), after (max, sum over ranks)"
   echo "N,ranks,threads,setup_s,apply_ms,transpose_ms,communication_share,rss_before_mb,rss_max_mb,rss_sum_mb"
 } >"$tmp"
-measure "$root/bench/results/distributed_operator.csv"
+measure "$root/bench/results/distributed_operator$tag.csv"
 fi
 if [ "$what" != operator ]; then
 {
@@ -61,6 +66,6 @@ if [ "$what" != operator ]; then
   echo "#   (the preconditioner's are not counted); rss_*: peak resident memory [MiB] of a rank, sum"
   echo "N,ranks,threads,setup_s,iterations,applications,converged,area_fraction,solve_s,transpose_s,transpose_share,rss_max_mb,rss_sum_mb"
 } >"$tmp"
-measure "$root/bench/results/distributed_contact.csv" --contact
+measure "$root/bench/results/distributed_contact$tag.csv" --contact
 fi
 trap - EXIT

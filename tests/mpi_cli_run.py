@@ -79,7 +79,7 @@ def check_equal(name, serial, distributed, ranks):
     return d["iterations"]
 
 
-def refused(tmp, expect, scene_text, files=()):
+def refused(tmp, expect, scene_text):
     scene = tmp / "refused.toml"
     scene.write_text(scene_text)
     out = tmp / "refused_out"
@@ -104,8 +104,11 @@ def main():
         sphere = grid(nx, ny) + BODY + '[contact]\nindenter = "paraboloid"\nradius = 2e-3\nload = 2.0\n'
         hertz = (grid(nx, ny, "free") + '[substrate]\nmaterial = "steel"\n[method]\nname = "dcfft"\n'
                  '[contact]\nindenter = "paraboloid"\nradius = 5e-3\nload = 0.5\n')
+        # The same map as big-endian float32: each rank converts its rows as the serial reader does.
+        np.save(tmp / "gap32.npy", (heights.max() - heights).astype(">f4"))
+        rough32 = rough.replace("gap.npy", "gap32.npy")
         for name, text, rank_counts in (("rough", rough, (2, 3)), ("paraboloid", sphere, (3,)),
-                                        ("hertz", hertz, (3,))):
+                                        ("hertz", hertz, (3,)), ("rough_float32", rough32, (3,))):
             scene = tmp / f"{name}.toml"
             scene.write_text(text)
             if (r := run(["run", str(scene), "-o", str(tmp / f"{name}_serial"), "--quiet"])).returncode:
@@ -127,6 +130,8 @@ def main():
         bad[37, 5] = np.nan
         np.save(tmp / "gap.npy", bad)
         refused(tmp, "gap.npy: row 37, column 5: height nan is not finite", rough)
+        np.save(tmp / "gap_f.npy", np.asfortranarray(heights.max() - heights))
+        refused(tmp, "fortran_order is True", rough.replace("gap.npy", "gap_f.npy"))
         np.savetxt(tmp / "gap.csv", bad, delimiter=",")
         refused(tmp, "reads a height map from .npy only", rough.replace("gap.npy", "gap.csv"))
         print("mpi_cli_run: all checks passed")

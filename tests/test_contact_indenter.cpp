@@ -119,6 +119,23 @@ TEST_CASE("Height map is passed through; the Indenter variant dispatches", "[con
   CHECK((height(grid, map) == m).all());
 }
 
+TEST_CASE("A slab's rows of any indenter are those rows of its whole height field",
+          "[contact][indenter]") {
+  // Rows sampled alone (a distributed solve's slab) against the whole field's, bit for bit.
+  const Grid grid(9, 7, 2.0e-3, 1.5e-3);
+  Field m = Field::Random(9, 7);
+  for (const Indenter& ind : {Indenter{Sphere{5e-3}}, Indenter{Paraboloid{4e-3}},
+                              Indenter{Cylinder{3e-3, 0.5e-3, 1e-3}},
+                              Indenter{FlatPunch{0.4e-3, 1e-3}}, Indenter{HeightMap{m}}}) {
+    const Field whole = height(grid, ind);
+    for (auto [y0, rows] : {std::pair{0, 7}, {2, 3}, {6, 1}, {7, 0}})
+      CHECK((height_rows(grid, ind, y0, rows) == whole.middleCols(y0, rows)).all());
+  }
+  CHECK_THROWS_WITH(height_rows(grid, Paraboloid{4e-3}, 5, 3), Catch::Contains("ny = 7"));
+  CHECK_THROWS_AS(height_rows(grid, Paraboloid{4e-3}, -1, 2), InvalidArgument);
+  CHECK_THROWS_AS(height_rows(grid, Sphere{1e-4}, 0, 1), InvalidArgument);  // checked as height()
+}
+
 TEST_CASE("Indenters refuse bad input with a message naming the value",
           "[contact][indenter][bad_input]") {
   const Grid grid(8, 8, 2.0e-3, 2.0e-3);  // farthest centre at r = 0.875e-3 * sqrt(2) = 1.237e-3

@@ -53,6 +53,26 @@ Field random_pressure(const Grid& g, unsigned seed) {
   return p;
 }
 
+// A distributed solve `b` against the serial solve `a` of the same problem: the same iterates up
+// to the order of the sums (the ranks' partial sums added in rank order, the transforms' orders
+// of operations), so the same iteration count, fields and numbers to 1e-10.
+void check_same_solve(const Communicator& comm, const ContactResult& a, const ContactResult& b,
+                      const Slab& s) {
+  REQUIRE(a.converged);
+  CHECK(b.converged);
+  CHECK(b.iterations == a.iterations);
+  CHECK(b.operator_applications == a.operator_applications);
+  CHECK(relative_difference(comm, b.pressure, rows_of(a.pressure, s)) < 1e-10);
+  CHECK(relative_difference(comm, b.displacement, rows_of(a.displacement, s)) < 1e-10);
+  CHECK(comm.max(b.gap.size() ? (b.gap - rows_of(a.gap, s)).abs().maxCoeff() : 0.0) <
+        1e-10 * a.displacement.abs().maxCoeff());
+  CHECK(b.load == Approx(a.load).epsilon(1e-10));
+  CHECK(*b.approach == Approx(*a.approach).epsilon(1e-10));
+  CHECK(b.contact_area == a.contact_area);
+  CHECK(b.max_pressure == Approx(a.max_pressure).epsilon(1e-10));
+  CHECK(b.touches_boundary == a.touches_boundary);
+}
+
 }  // namespace
 
 TEST_CASE("the ranks' slabs tile the grid's rows and its half spectrum's columns") {
@@ -135,18 +155,8 @@ TEST_CASE("a distributed free Hertz contact equals the serial solve") {
   const double load = 4.0 * e_star * std::pow(0.25e-3, 3) / (3.0 * radius);  // Hertz, a = 0.25 mm
   for (const ContactControl control : {ContactControl::load, ContactControl::approach}) {
     const double value = control == ContactControl::load ? load : 0.25e-3 * 0.25e-3 / radius;
-    const ContactResult a = serial.solve(h, control, value);
-    const ContactResult b = distributed->solve(rows_of(h, s), control, value);
-    REQUIRE(a.converged);
-    CHECK(b.converged);
-    CHECK(b.iterations == a.iterations);
-    CHECK(b.operator_applications == a.operator_applications);
-    CHECK(relative_difference(comm, b.pressure, rows_of(a.pressure, s)) < 1e-10);
-    CHECK(relative_difference(comm, b.displacement, rows_of(a.displacement, s)) < 1e-10);
-    CHECK(b.load == Approx(a.load).epsilon(1e-10));
-    CHECK(*b.approach == Approx(*a.approach).epsilon(1e-10));
-    CHECK(b.contact_area == a.contact_area);
-    CHECK(b.touches_boundary == a.touches_boundary);
+    check_same_solve(comm, serial.solve(h, control, value),
+                     distributed->solve(rows_of(h, s), control, value), s);
   }
   // A contact reaching the domain's edge is seen by the rank that holds the border rows.
   const ContactResult edge = distributed->solve(rows_of(h, s), ContactControl::load, 50 * load);
@@ -221,23 +231,9 @@ TEST_CASE("a distributed periodic rough contact of a coated body equals the seri
   const double approach = h.mean() - 0.6 * (h.mean() - h.minCoeff());
   for (const ContactControl control : {ContactControl::load, ContactControl::approach}) {
     const double value = control == ContactControl::load ? load : approach;
-    const ContactResult a = serial.solve(h, control, value);
     const ContactResult b = distributed->solve(rows_of(h, s), control, value);
-    REQUIRE(a.converged);
-    CHECK(b.converged);
-    // The same iterates up to the order of the sums (the ranks' partial sums added in rank order,
-    // the transforms' orders of operations): the same iteration count, fields to 1e-10.
-    CHECK(b.iterations == a.iterations);
-    CHECK(b.operator_applications == a.operator_applications);
-    CHECK(relative_difference(comm, b.pressure, rows_of(a.pressure, s)) < 1e-10);
-    CHECK(relative_difference(comm, b.displacement, rows_of(a.displacement, s)) < 1e-10);
-    CHECK(comm.max(b.gap.size() ? (b.gap - rows_of(a.gap, s)).abs().maxCoeff() : 0.0) <
-          1e-10 * a.displacement.abs().maxCoeff());
-    CHECK(b.load == Approx(a.load).epsilon(1e-10));
-    CHECK(*b.approach == Approx(*a.approach).epsilon(1e-10));
-    CHECK(b.contact_area == a.contact_area);
-    CHECK(b.max_pressure == Approx(a.max_pressure).epsilon(1e-10));
-    CHECK(b.touches_boundary == false);
+    check_same_solve(comm, serial.solve(h, control, value), b, s);
+    CHECK(b.touches_boundary == false);  // a periodic surface has no edge
   }
 }
 
