@@ -39,6 +39,7 @@
 #include "distributed/distributed_contact.hpp"
 #include "distributed/distributed_dcfft_operator.hpp"
 #include "distributed/distributed_operator.hpp"
+#include "distributed/fftw_mpi_wisdom.hpp"
 #include "distributed/distributed_periodic_operator.hpp"
 #include "distributed/mpi_session.hpp"
 #include "distributed/self_affine_slab.hpp"

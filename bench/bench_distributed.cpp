@@ -13,7 +13,10 @@
 // ranks, pressed by a flat to a mean pressure of 0.045 E* times the rms slope (about 10 % contact),
 // tolerance 1e-10, no nested start in either (not distributed yet); written by
 // scripts/distributed_scale_run.sh to bench/results/distributed_contact.csv.
-// Body: TiN 5 um on steel, period 1 mm; pressure uniform random in [0, 1 GPa].
+// With --free, the free surface's DC-FFT instead of the periodic operator: DistributedDcfftOperator
+// against the serial DcfftOperator with Love's coefficients, on steel (written by
+// scripts/distributed_scale_run.sh to bench/results/distributed_dcfft.csv).
+// Body: TiN 5 um on steel, period 1 mm (--free: steel); pressure uniform random in [0, 1 GPa].
 #include <chrono>
 #include <cstdio>
 #include <exception>
@@ -25,10 +28,13 @@
 #include "bench/bench_report.hpp"
 #include "bench/command_line.hpp"
 #include "contact/contact_solver.hpp"
+#include "convolution/kernels/influence_kernel.hpp"
 #include "convolution/kernels/periodic_kernel.hpp"
+#include "convolution/operators/dcfft_operator.hpp"
 #include "convolution/operators/periodic_operator.hpp"
 #include "core/detail/timing.hpp"
 #include "distributed/distributed_contact.hpp"
+#include "distributed/distributed_dcfft_operator.hpp"
 #include "distributed/distributed_periodic_operator.hpp"
 #include "distributed/mpi_session.hpp"
 #include "distributed/self_affine_slab.hpp"
@@ -48,7 +54,31 @@ struct Options {
   int threads = 1;
   bool serial = false;
   bool contact = false;
+  bool free = false;  // DC-FFT of the free surface on steel
 };
+
+const Material steel(210e9, 0.3);
+
+// The operator measured: the periodic one of the coated body, or DC-FFT on steel (--free).
+std::unique_ptr<DistributedOperator> distributed_operator(const Options& o,
+                                                          const Communicator& comm, const Frf& frf,
+                                                          const Grid& grid) {
+  if (o.free)
+    return std::make_unique<DistributedDcfftOperator>(comm, grid, steel.plane_strain_modulus(),
+                                                      Planning::estimate, o.threads);
+  return std::make_unique<DistributedPeriodicOperator>(
+      comm, grid, frf, PeriodicKernelOptions{.threads = o.threads}, Planning::estimate, o.threads);
+}
+
+std::unique_ptr<SurfaceOperator> serial_operator(const Options& o, const Frf& frf,
+                                                 const Grid& grid) {
+  if (o.free)
+    return std::make_unique<DcfftOperator>(
+        love_kernel(grid, steel.plane_strain_modulus(), o.threads), Planning::estimate, o.threads);
+  return std::make_unique<PeriodicOperator>(
+      grid, periodic_influence_kernel(grid, frf, {.threads = o.threads}), Method::frf_spectral,
+      Planning::estimate, Precision::double_precision, o.threads);
+}
 
 // Rows y0 <= j < y0 + rows of a random pressure field (each row from its own generator: the same
 // field at any rank count).
@@ -87,16 +117,15 @@ Row run_distributed(const Options& o, const Frf& frf, const Grid& grid) {
   row.rss_before_mb = comm.max(bench::peak_rss_mb());
   comm.barrier();
   const auto start = Clock::now();
-  DistributedPeriodicOperator op(comm, grid, frf, {.threads = o.threads}, Planning::estimate,
-                                 o.threads);
+  const std::unique_ptr<DistributedOperator> op = distributed_operator(o, comm, frf, grid);
   row.setup_s = comm.max(detail::seconds_since(start));
-  const Field p = random_rows(grid.nx(), op.slab().y0, op.slab().rows);
+  const Field p = random_rows(grid.nx(), op->slab().y0, op->slab().rows);
   Field u;
-  const double before = op.communication_seconds();
+  const double before = op->communication_seconds();
   row.apply_ms = median_ms(
-      o.repeats, [&] { op.apply(p, u); }, [&] { comm.barrier(); },
+      o.repeats, [&] { op->apply(p, u); }, [&] { comm.barrier(); },
       [&](double t) { return comm.max(t); });
-  row.transpose_ms = comm.max(1e3 * (op.communication_seconds() - before) / (o.repeats + 1));
+  row.transpose_ms = comm.max(1e3 * (op->communication_seconds() - before) / (o.repeats + 1));
   row.rss_max_mb = comm.max(bench::peak_rss_mb());
   row.rss_sum_mb = comm.sum(bench::peak_rss_mb());
   return row;
@@ -106,14 +135,12 @@ Row run_serial(const Options& o, const Frf& frf, const Grid& grid) {
   Row row;
   row.rss_before_mb = bench::peak_rss_mb();
   const auto start = Clock::now();
-  PeriodicOperator op(grid, periodic_influence_kernel(grid, frf, {.threads = o.threads}),
-                      Method::frf_spectral, Planning::estimate, Precision::double_precision,
-                      o.threads);
+  const std::unique_ptr<SurfaceOperator> op = serial_operator(o, frf, grid);
   row.setup_s = detail::seconds_since(start);
   const Field p = random_rows(grid.nx(), 0, grid.ny());
   Field u;
   row.apply_ms = median_ms(
-      o.repeats, [&] { op.apply(p, u); }, [] {}, [](double t) { return t; });
+      o.repeats, [&] { op->apply(p, u); }, [] {}, [](double t) { return t; });
   row.rss_max_mb = row.rss_sum_mb = bench::peak_rss_mb();
   return row;
 }
@@ -142,7 +169,7 @@ ContactOptions rough_options(int threads) {
 }
 
 double rough_load(const Grid& grid) {
-  return 0.045 * Material(210e9, 0.3).plane_strain_modulus() * 0.05 * grid.lx() * grid.ly();
+  return 0.045 * steel.plane_strain_modulus() * 0.05 * grid.lx() * grid.ly();
 }
 
 void fill(ContactRow& row, const ContactResult& r, const Grid& grid) {
@@ -203,10 +230,14 @@ int main(int argc, char** argv) {
   app.add("--threads", o.threads, "FFTW threads per rank").show_default();
   app.flag("--serial", o.serial, "the serial PeriodicOperator, without MPI");
   app.flag("--contact", o.contact, "a periodic rough contact instead of applications");
+  app.flag("--free", o.free, "the free surface's DC-FFT on steel instead of the periodic operator");
   if (const auto status = app.parse(argc, argv)) return *status;
+  if (o.free && o.contact) {
+    std::cerr << "bench_distributed: --free measures the operator alone; the contact is periodic\n";
+    return 2;
+  }
   try {
-    const LayerStack body({Coating{Material(400e9, 0.25), 5e-6, Interface::bonded}},
-                          Material(210e9, 0.3));
+    const LayerStack body({Coating{Material(400e9, 0.25), 5e-6, Interface::bonded}}, steel);
     const auto frf = make_frf(body);
     const Grid grid(o.n, o.n, 1e-3, 1e-3);
     std::unique_ptr<MpiSession> session;

@@ -24,7 +24,7 @@ struct DistributedDcfftOperator::Transforms {
   FftwRealBuffer padded;             // rows x 2nx: each row, then nx zeros
   FftwComplexBuffer rows, columns;   // rows x (nx + 1) and columns x ny (FFTW-MPI's allocation)
   FftwComplexBuffer padded_columns;  // columns x 2ny: each column, then ny zeros
-  std::vector<std::complex<double>> multiplier;  // the coefficients' spectrum / (4 nx ny)
+  std::vector<double> multiplier;    // the coefficients' (real) spectrum / (4 nx ny)
   FftwPlan r2c, c2r, to_columns, to_rows, forward_y, inverse_y;
   double transpose_seconds = 0.0;
 };
@@ -37,10 +37,10 @@ std::size_t entries(std::ptrdiff_t n) {
 
 // This rank's rows of the (2nx, 2ny) wrap-around array of Love's coefficients (slot d for d >= 0,
 // 2n + d for d < 0, slots nx and ny 0: InfluenceKernel::wrapped), by the slab transform of the
-// padded grid to its spectrum, over 4 nx ny: the spectrum's columns are the operator's.
-std::vector<std::complex<double>> love_spectrum(const Communicator& comm, const Grid& g,
-                                                double e_star, const Slab& slab, Planning planning,
-                                                int threads) {
+// padded grid to its spectrum, over 4 nx ny: the spectrum's columns are the operator's. The array
+// is even in both offsets, so its spectrum is real: its real part is kept.
+std::vector<double> love_spectrum(const Communicator& comm, const Grid& g, double e_star,
+                                  const Slab& slab, Planning planning, int threads) {
   const std::ptrdiff_t nx = g.nx(), ny = g.ny();
   detail::SlabFft fft(comm, 2 * nx, 2 * ny, planning, threads);
   const Slab& s = fft.slab();
@@ -58,8 +58,8 @@ std::vector<std::complex<double>> love_spectrum(const Communicator& comm, const 
   });
   fft.forward(k.data());
   const double norm = 1.0 / static_cast<double>(4 * nx * ny);
-  std::vector<std::complex<double>> m(fft.spectrum(), fft.spectrum() + s.columns * s.ny);
-  for (auto& v : m) v *= norm;
+  std::vector<double> m(static_cast<std::size_t>(s.columns * s.ny));
+  for (std::size_t n = 0; n < m.size(); ++n) m[n] = norm * fft.spectrum()[n].real();
   return m;
 }
 

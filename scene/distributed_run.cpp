@@ -60,7 +60,6 @@ std::string not_distributable(const Scene& scene) {
   if (scene.stress) return "[stress]";
   if (scene.output.in_plane) return "[output] ux, uy (the in-plane displacements)";
   if (scene.output.netcdf) return "[output] format = \"netcdf\"";
-  if (!scene.method.wisdom.empty()) return "[method] wisdom (the FFTW wisdom file)";
   return {};
 }
 

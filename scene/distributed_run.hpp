@@ -25,7 +25,7 @@ struct DistributedSceneRun {
 
 /// Throws InvalidArgument naming the first part of `scene` that does not run distributed yet: a
 /// free boundary, a known [pressure], [stress], friction, a sweep, a measured topography, NetCDF
-/// output.
+/// output (docs/scale.md lists them).
 void check_distributable(const Scene& scene);
 
 /// prepare_scene for the ranks of `comm` (the same on each): the scene read with a height map's

@@ -2,10 +2,12 @@
 # The distributed periodic operator and contact solve against the serial ones, as docs/scale.md
 # reports them: for each grid, bench_distributed --serial, then under mpirun at each rank count
 # (one process per row, so each row's peak memory is its own). Writes
-# bench/results/distributed_operator.csv and (WHAT=contact or both) distributed_contact.csv.
+# bench/results/distributed_operator.csv and (WHAT=contact or both) distributed_contact.csv; with
+# WHAT=free, the free surface's DC-FFT on steel against the serial DcfftOperator,
+# bench/results/distributed_dcfft.csv.
 #   Body: TiN 5 um on steel, period 1 mm; one FFTW thread a rank; FFTW_ESTIMATE plans.
 # Usage: scripts/distributed_scale_run.sh [N ...]   (default 2048 4096; RANKS, default "1 2 4";
-#        WHAT: operator, contact or both (default); SERIAL=0 leaves out the serial rows; TAG
+#        WHAT: operator, contact or both (default), or free; SERIAL=0 leaves out the serial rows; TAG
 #        names other result files, distributed_operatorTAG.csv and distributed_contactTAG.csv;
 #        BUILD_DIR, default build). As root, Open MPI's permission variables are set here.
 set -euo pipefail
@@ -28,7 +30,7 @@ header() {
   echo "# cpu = $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)"
   echo "# hardware_threads = $(nproc); memory = $(free -g | awk '/Mem:/{print $2}') GiB"
   echo "# mpi = $(mpirun --version | head -n 1); ranks on one machine (shared memory)"
-  echo "# body = TiN 5 um on steel, period 1 mm; one FFTW thread a rank; FFTW_ESTIMATE"
+  echo "# body = ${2:-TiN 5 um on steel, period 1 mm}; one FFTW thread a rank; FFTW_ESTIMATE"
 }
 # One CSV: its header lines, then a row per size and rank count (bench_distributed FLAGS).
 measure() {
@@ -47,6 +49,19 @@ measure() {
   mv "$tmp" "$results"
   cat "$results"
 }
+if [ "$what" = free ]; then
+{
+  header "--free: the distributed DC-FFT of the free surface against DcfftOperator" \
+    "steel, a free surface of 1 mm x 1 mm"
+  echo "# apply_ms: median of 5 applications, each timed from a barrier to the slowest rank;"
+  echo "#   transpose_ms: the transposes' share of one (communication and waits); rss_*: peak"
+  echo "#   resident memory [MiB] before the operator (max over ranks), after (max, sum over ranks)"
+  echo "N,ranks,threads,setup_s,apply_ms,transpose_ms,communication_share,rss_before_mb,rss_max_mb,rss_sum_mb"
+} >"$tmp"
+measure "$root/bench/results/distributed_dcfft$tag.csv" --free
+trap - EXIT
+exit 0
+fi
 if [ "$what" != contact ]; then
 {
   header "the distributed periodic operator"

@@ -6,7 +6,8 @@ slabs), a paraboloid on it and a free Hertz contact on steel (DC-FFT) at 3 ranks
 the serial run's keys and "ranks", the same iterations, and the load, approach, pressure,
 displacement and gap equal the serial run's to 1e-10 (the grids are below the nested start's 128
 cells a side, which the distributed solve does not take yet: docs/scale.md); displacement.csv
-holds the .npy files' values in the serial file's order. Scenes that
+holds the .npy files' values in the serial file's order. A wisdom file is written by rank 0 and
+read by the next run; one that does not hold wisdom is refused and left as it is. Scenes that
 do not run distributed, and bad height maps, are refused on one line with exit status 2 and no
 output. Usage: mpi_cli_run.py COATFFT MPIEXEC
 """
@@ -119,6 +120,19 @@ def main():
                     fail(f"{name} at {ranks} ranks: {r.stderr}")
                 check_equal(name, tmp / f"{name}_serial", out, ranks)
 
+        # A wisdom file: written by rank 0 with every rank's plans, read again by the next run.
+        wisdom = tmp / "plans.wisdom"
+        scene = tmp / "wisdom.toml"
+        scene.write_text(rough.replace("[contact]", f'[method]\nwisdom = "{wisdom}"\n[contact]'))
+        for attempt in (1, 2):
+            if (r := run(["run", str(scene), "-o", str(tmp / "wisdom_out")], 2)).returncode:
+                fail(f"wisdom run {attempt}: {r.stderr}")
+            if not wisdom.read_text().startswith("(fftw-3"):
+                fail(f"wisdom run {attempt}: {wisdom} holds no FFTW wisdom")
+        wisdom.write_text("not wisdom")
+        refused(tmp, "does not hold FFTW wisdom", scene.read_text())
+        if wisdom.read_text() != "not wisdom":
+            fail("a file that is not wisdom was overwritten")
         refused(tmp, 'boundary = "free" on a coated body', grid(nx, ny, "free") + BODY +
                 '[method]\nname = "frf-split"\n[contact]\nindenter = "paraboloid"\nradius = 2e-3\nload = 2.0\n')
         refused(tmp, '[method] name = "auto"', hertz.replace('name = "dcfft"', 'name = "auto"'))

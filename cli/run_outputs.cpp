@@ -1,0 +1,62 @@
+#include "cli/run_outputs.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+
+#include "core/error.hpp"
+#include "scene/scene_netcdf.hpp"
+
+namespace coatfft::cli {
+
+void write_displacement_rows(std::ostream& out, const Grid& grid, std::ptrdiff_t y0, const Field& p,
+                             const Field& uz, bool header) {
+  if (header) out << "x,y,pressure,uz\n";
+  out << std::setprecision(17);
+  for (Eigen::Index j = 0; j < p.cols(); ++j)
+    for (Eigen::Index i = 0; i < grid.nx(); ++i)
+      out << grid.x(i) << ',' << grid.y(y0 + j) << ',' << p(i, j) << ',' << uz(i, j) << '\n';
+}
+
+std::vector<std::string> output_names(const scene::OutputSpec& spec) {
+  std::vector<std::string> names;
+  if (spec.uz) names.push_back("uz.npy");
+  if (spec.pressure) names.push_back("pressure.npy");
+  if (spec.displacement_csv) names.push_back("displacement.csv");
+  names.push_back("summary.json");
+  if (spec.gap) names.push_back("gap.npy");
+  if (spec.sweep) names.push_back("sweep.csv");
+  if (spec.in_plane) names.insert(names.end(), {"ux.npy", "uy.npy"});
+  if (spec.stress) names.push_back("stress.npy");
+  if (spec.von_mises) names.push_back("von_mises.npy");
+  if (spec.stress_section) names.push_back("stress_section.npy");
+  if (spec.von_mises_section) names.push_back("von_mises_section.npy");
+  if (!spec.netcdf) return names;
+  const auto is_npy = [](const std::string& name) { return name.ends_with(".npy"); };
+  const auto first = std::find_if(names.begin(), names.end(), is_npy);
+  if (first == names.end()) return names;
+  *first = scene::netcdf_output_name;
+  names.erase(std::remove_if(first + 1, names.end(), is_npy), names.end());
+  return names;
+}
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string text;
+  for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
+  return text;
+}
+
+void write_summary(const std::filesystem::path& path, const nlohmann::json& summary) {
+  std::ofstream json(path);
+  json << std::setw(2) << summary << '\n';
+  COATFFT_REQUIRE(json.good(), "failed writing summary.json");
+}
+
+void print_warnings(const nlohmann::json& summary) {
+  for (const auto& warning : summary["warnings"]) {
+    std::cerr << "coatfft: warning: " << warning.get<std::string>() << '\n';
+  }
+}
+
+}  // namespace coatfft::cli
