@@ -6,7 +6,6 @@
 #include <chrono>
 #include <cmath>
 #include <complex>
-#include <cstdlib>
 #include <vector>
 
 #include "convolution/fft/fftw_plan.hpp"
@@ -19,47 +18,81 @@
 
 namespace coatfft {
 
+// The layout of the serial DcfftOperator's pruned transform (convolution/operators/
+// dcfft_operator.cpp) on slabs: the rows' half spectra in place, the columns in cache-sized
+// blocks padded to 2ny, the coefficients' real spectrum on its quarter.
 struct DistributedDcfftOperator::Transforms {
-  Slab slab;                         // the grid's rows; columns of the (nx + 1)-entry half spectrum
-  FftwRealBuffer padded;             // rows x 2nx: each row, then nx zeros
-  FftwComplexBuffer rows, columns;   // rows x (nx + 1) and columns x ny (FFTW-MPI's allocation)
-  FftwComplexBuffer padded_columns;  // columns x 2ny: each column, then ny zeros
-  std::vector<double> multiplier;    // the coefficients' (real) spectrum / (4 nx ny)
+  Slab slab;                        // the grid's rows; columns of the (nx + 1)-entry half spectrum
+  FftwComplexBuffer rows, columns;  // rows x (nx + 1), each row's 2nx reals in place; columns x ny
+  FftwComplexBuffer block;          // block_columns x 2ny: columns padded for their transforms
+  std::ptrdiff_t block_columns = 0;
+  std::vector<double> multiplier;  // columns x (ny + 1): the spectrum / (4 nx ny) for ky <= ny
   FftwPlan r2c, c2r, to_columns, to_rows, forward_y, inverse_y;
   double transpose_seconds = 0.0;
 };
 
 namespace {
 
+// Columns of a block: 256 KiB of padded columns (as the serial operator's blocks), so that a block
+// stays in cache from its gather to its scatter.
+constexpr std::ptrdiff_t block_bytes = 256 * 1024;
+
 std::size_t entries(std::ptrdiff_t n) {
   return static_cast<std::size_t>(std::max<std::ptrdiff_t>(n, 1));
 }
 
-// This rank's rows of the (2nx, 2ny) wrap-around array of Love's coefficients (slot d for d >= 0,
-// 2n + d for d < 0, slots nx and ny 0: InfluenceKernel::wrapped), by the slab transform of the
-// padded grid to its spectrum, over 4 nx ny: the spectrum's columns are the operator's. The array
-// is even in both offsets, so its spectrum is real: its real part is kept.
-std::vector<double> love_spectrum(const Communicator& comm, const Grid& g, double e_star,
-                                  const Slab& slab, Planning planning, int threads) {
-  const std::ptrdiff_t nx = g.nx(), ny = g.ny();
-  detail::SlabFft fft(comm, 2 * nx, 2 * ny, planning, threads);
-  const Slab& s = fft.slab();
-  COATFFT_REQUIRE(s.kx0 == slab.kx0 && s.columns == slab.columns,
-                  "DistributedDcfftOperator: FFTW-MPI split the padded grid's columns otherwise");
-  Field k = s.field();
-  detail::parallel_for(0, s.rows, threads, [&](std::ptrdiff_t r) {
-    const std::ptrdiff_t j = s.y0 + r;
-    if (j == ny) return;  // the slot between the offsets +-(ny - 1)
-    std::vector<double> row(static_cast<std::size_t>(nx));
-    detail::love_influence_row(static_cast<double>(std::abs(j < ny ? j : j - 2 * ny)) * g.dy(),
-                               g.dx(), g.dy(), nx, row.data());
-    for (std::ptrdiff_t i = 0; i < nx; ++i) k(i, r) = row[std::size_t(i)] / e_star;
-    for (std::ptrdiff_t m = 1; m < nx; ++m) k(2 * nx - m, r) = row[std::size_t(m)] / e_star;
+// This rank's rows j of the quarter K(i, j), 0 <= i, j <= n (Love's coefficients over E*, 0 in the
+// slots nx and ny), x fastest: the first n + 1 entries of the (2nx, 2ny) wrap-around array, which
+// is even in both offsets.
+void love_quarter_rows(const Grid& g, double e_star, std::ptrdiff_t y0, std::ptrdiff_t rows,
+                       int threads, double* out) {
+  const std::ptrdiff_t nx = g.nx(), qx = nx + 1;
+  detail::parallel_for(0, rows, threads, [&](std::ptrdiff_t r) {
+    double* row = out + r * qx;
+    std::fill_n(row, qx, 0.0);
+    if (y0 + r >= g.ny()) return;
+    detail::love_influence_row(static_cast<double>(y0 + r) * g.dy(), g.dx(), g.dy(), nx, row);
+    for (std::ptrdiff_t i = 0; i < nx; ++i) row[i] /= e_star;
   });
-  fft.forward(k.data());
-  const double norm = 1.0 / static_cast<double>(4 * nx * ny);
-  std::vector<double> m(static_cast<std::size_t>(s.columns * s.ny));
-  for (std::size_t n = 0; n < m.size(); ++n) m[n] = norm * fft.spectrum()[n].real();
+}
+
+// The DFT of the even (2nx, 2ny) wrap-around array is the 2-D DCT-I (FFTW's REDFT00) of its
+// quarter, as in DcfftOperator::transform_coefficients: here on the quarter's rows, FFTW-MPI's
+// transpose, then its columns, which are the operator's (FFTW-MPI splits nx + 1 columns alike for
+// any count of rows; checked). Returns this rank's columns x (ny + 1), over 4 nx ny.
+std::vector<double> love_spectrum(const Communicator& comm, const Grid& g, double e_star,
+                                  const Slab& slab, int threads) {
+  const std::ptrdiff_t qx = g.nx() + 1, qy = g.ny() + 1;
+  const std::ptrdiff_t n[2] = {qy, qx};
+  std::ptrdiff_t rows = 0, y0 = 0, columns = 0, kx0 = 0;
+  const std::ptrdiff_t doubles =
+      fftw_mpi_local_size_many_transposed(2, n, 1, FFTW_MPI_DEFAULT_BLOCK, FFTW_MPI_DEFAULT_BLOCK,
+                                          detail::mpi_comm(comm), &rows, &y0, &columns, &kx0);
+  COATFFT_REQUIRE(columns == slab.columns && (columns == 0 || kx0 == slab.kx0),
+                  "DistributedDcfftOperator: FFTW-MPI split the quarter's columns otherwise");
+  FftwRealBuffer quarter(entries(doubles)), transposed(entries(doubles));
+  love_quarter_rows(g, e_star, y0, rows, threads, quarter.data());
+  const fftw_r2r_kind kind = FFTW_REDFT00;
+  const int nqx = static_cast<int>(qx), nqy = static_cast<int>(qy);
+  const FftwPlan along_x = detail::plan_many(rows, threads, [&] {
+    return fftw_plan_many_r2r(1, &nqx, static_cast<int>(rows), quarter.data(), nullptr, 1, nqx,
+                              quarter.data(), nullptr, 1, nqx, &kind, FFTW_ESTIMATE);
+  });
+  const FftwPlan transpose = FftwPlan::create(threads, [&] {
+    return fftw_mpi_plan_many_transpose(qy, qx, 1, FFTW_MPI_DEFAULT_BLOCK, FFTW_MPI_DEFAULT_BLOCK,
+                                        quarter.data(), transposed.data(), detail::mpi_comm(comm),
+                                        FFTW_ESTIMATE | FFTW_DESTROY_INPUT);
+  });
+  const FftwPlan along_y = detail::plan_many(columns, threads, [&] {
+    return fftw_plan_many_r2r(1, &nqy, static_cast<int>(columns), transposed.data(), nullptr, 1,
+                              nqy, transposed.data(), nullptr, 1, nqy, &kind, FFTW_ESTIMATE);
+  });
+  detail::execute_if_planned(along_x);
+  transpose.execute();
+  detail::execute_if_planned(along_y);
+  const double norm = 1.0 / static_cast<double>(4 * g.nx() * g.ny());
+  std::vector<double> m(static_cast<std::size_t>(columns * qy));
+  for (std::size_t k = 0; k < m.size(); ++k) m[k] = norm * transposed.data()[k];
   return m;
 }
 
@@ -82,43 +115,40 @@ DistributedDcfftOperator::DistributedDcfftOperator(const Communicator& comm, con
   t.slab = detail::slab_of(comm, 2 * nx, ny, doubles);
   t.slab.nx = nx;
   const std::ptrdiff_t rows = t.slab.rows, columns = t.slab.columns;
-  t.padded = FftwRealBuffer(entries(2 * nx * rows));
   t.rows = FftwComplexBuffer(entries(doubles / 2));
   t.columns = FftwComplexBuffer(entries(doubles / 2));
-  t.padded_columns = FftwComplexBuffer(entries(2 * ny * columns));
-  std::fill_n(t.padded.data(), t.padded.size(), 0.0);
-  std::fill_n(as_complex(t.padded_columns.data()), t.padded_columns.size(),
-              std::complex<double>(0.0));
+  t.block_columns = std::clamp<std::ptrdiff_t>(block_bytes / (32 * ny), 1, std::max(columns, std::ptrdiff_t{1}));
+  t.block = FftwComplexBuffer(entries(2 * ny * t.block_columns));
   const unsigned flags = fftw_flags(planning);
-  // Out of place, with FFTW_DESTROY_INPUT where the input is rewritten before its next use.
-  const unsigned destroy = flags | FFTW_DESTROY_INPUT;
   const int n2x = static_cast<int>(2 * nx), n2y = static_cast<int>(2 * ny), h = int(hx);
+  double* real_rows = reinterpret_cast<double*>(t.rows.data());
   t.r2c = detail::plan_many(rows, threads, [&] {
-    return fftw_plan_many_dft_r2c(1, &n2x, int(rows), t.padded.data(), nullptr, 1, n2x,
-                                  t.rows.data(), nullptr, 1, h, flags);
+    return fftw_plan_many_dft_r2c(1, &n2x, int(rows), real_rows, nullptr, 1, 2 * h, t.rows.data(),
+                                  nullptr, 1, h, flags);
   });
   t.c2r = detail::plan_many(rows, threads, [&] {
-    return fftw_plan_many_dft_c2r(1, &n2x, int(rows), t.rows.data(), nullptr, 1, h, t.padded.data(),
-                                  nullptr, 1, n2x, destroy);
+    return fftw_plan_many_dft_c2r(1, &n2x, int(rows), t.rows.data(), nullptr, 1, h, real_rows,
+                                  nullptr, 1, 2 * h, flags);
   });
+  // Out of place, with FFTW_DESTROY_INPUT: each transpose's input is rewritten before its next use.
   const auto transpose = [&](std::ptrdiff_t n0, std::ptrdiff_t n1, FftwComplexBuffer& in,
                              FftwComplexBuffer& out) {
     return FftwPlan::create(threads, [&] {
       return fftw_mpi_plan_many_transpose(n0, n1, 2, FFTW_MPI_DEFAULT_BLOCK, FFTW_MPI_DEFAULT_BLOCK,
                                           reinterpret_cast<double*>(in.data()),
                                           reinterpret_cast<double*>(out.data()),
-                                          detail::mpi_comm(comm), destroy);
+                                          detail::mpi_comm(comm), flags | FFTW_DESTROY_INPUT);
     });
   };
   t.to_columns = transpose(ny, hx, t.rows, t.columns);
   t.to_rows = transpose(hx, ny, t.columns, t.rows);
   for (int sign : {FFTW_FORWARD, FFTW_BACKWARD}) {
-    (sign == FFTW_FORWARD ? t.forward_y : t.inverse_y) = detail::plan_many(columns, threads, [&] {
-      return fftw_plan_many_dft(1, &n2y, int(columns), t.padded_columns.data(), nullptr, 1, n2y,
-                                t.padded_columns.data(), nullptr, 1, n2y, sign, flags);
+    (sign == FFTW_FORWARD ? t.forward_y : t.inverse_y) = detail::plan_many(columns, 1, [&] {
+      return fftw_plan_many_dft(1, &n2y, int(t.block_columns), t.block.data(), nullptr, 1, n2y,
+                                t.block.data(), nullptr, 1, n2y, sign, flags);
     });
   }
-  t.multiplier = love_spectrum(comm, grid, plane_strain_modulus, t.slab, planning, threads);
+  t.multiplier = love_spectrum(comm, grid, plane_strain_modulus, t.slab, threads);
 }
 
 const Slab& DistributedDcfftOperator::slab() const {
@@ -129,40 +159,55 @@ double DistributedDcfftOperator::communication_seconds() const {
   return t_->transpose_seconds;
 }
 
+// Each block of this rank's columns: gathered with its zero padding to 2ny, transformed,
+// multiplied by the real, even spectrum (ky > ny mirrors 2ny - ky), transformed back, and its first
+// ny entries scattered back: the entries ny..2ny - 1 are outside the crop.
+void DistributedDcfftOperator::convolve_columns() {
+  Transforms& t = *t_;
+  const std::ptrdiff_t ny = t.slab.ny, columns = t.slab.columns, bw = t.block_columns;
+  std::complex<double>* block = as_complex(t.block.data());
+  std::complex<double>* cols = as_complex(t.columns.data());
+  for (std::ptrdiff_t c0 = 0; c0 < columns; c0 += bw) {
+    const std::ptrdiff_t width = std::min(bw, columns - c0);
+    std::fill_n(block, 2 * ny * bw, std::complex<double>(0.0));
+    for (std::ptrdiff_t c = 0; c < width; ++c)
+      std::copy_n(cols + (c0 + c) * ny, ny, block + 2 * ny * c);
+    t.forward_y.execute();
+    for (std::ptrdiff_t c = 0; c < width; ++c) {
+      std::complex<double>* col = block + 2 * ny * c;
+      const double* k = t.multiplier.data() + (c0 + c) * (ny + 1);
+      for (std::ptrdiff_t ky = 0; ky <= ny; ++ky) col[ky] *= k[ky];
+      for (std::ptrdiff_t ky = ny + 1; ky < 2 * ny; ++ky) col[ky] *= k[2 * ny - ky];
+    }
+    t.inverse_y.execute();
+    for (std::ptrdiff_t c = 0; c < width; ++c)
+      std::copy_n(block + 2 * ny * c, ny, cols + (c0 + c) * ny);
+  }
+}
+
 void DistributedDcfftOperator::apply(const Field& pressure, Field& displacement) {
   check_pressure(pressure, displacement, "DistributedDcfftOperator");
   Transforms& t = *t_;
-  const std::ptrdiff_t nx = t.slab.nx, ny = t.slab.ny, rows = t.slab.rows;
-  const std::ptrdiff_t columns = t.slab.columns;
+  const std::ptrdiff_t nx = t.slab.nx, rows = t.slab.rows, stride = 2 * (nx + 1);
   displacement.resize(nx, rows);
   const auto timed_transpose = [&t](const FftwPlan& plan) {
     const auto start = std::chrono::steady_clock::now();
     plan.execute();
     t.transpose_seconds += detail::seconds_since(start);
   };
-  // Each row, then zeros (the last inverse left its rows' second halves in the buffer).
+  // Each row's nx values, then its zeros, in place of its half spectrum.
+  double* real_rows = reinterpret_cast<double*>(t.rows.data());
   for (std::ptrdiff_t r = 0; r < rows; ++r) {
-    double* row = t.padded.data() + 2 * nx * r;
-    std::copy_n(&pressure(0, r), nx, row);
-    std::fill_n(row + nx, nx, 0.0);
+    std::copy_n(&pressure(0, r), nx, real_rows + stride * r);
+    std::fill_n(real_rows + stride * r + nx, stride - nx, 0.0);
   }
   detail::execute_if_planned(t.r2c);
   timed_transpose(t.to_columns);
-  std::complex<double>* pc = as_complex(t.padded_columns.data());
-  std::complex<double>* columns_of = as_complex(t.columns.data());
-  for (std::ptrdiff_t c = 0; c < columns; ++c) {
-    std::copy_n(columns_of + ny * c, ny, pc + 2 * ny * c);
-    std::fill_n(pc + 2 * ny * c + ny, ny, std::complex<double>(0.0));
-  }
-  detail::execute_if_planned(t.forward_y);
-  for (std::size_t n = 0; n < t.multiplier.size(); ++n) pc[n] *= t.multiplier[n];
-  detail::execute_if_planned(t.inverse_y);
-  for (std::ptrdiff_t c = 0; c < columns; ++c)
-    std::copy_n(pc + 2 * ny * c, ny, columns_of + ny * c);
+  convolve_columns();
   timed_transpose(t.to_rows);
   detail::execute_if_planned(t.c2r);
   for (std::ptrdiff_t r = 0; r < rows; ++r)
-    std::copy_n(t.padded.data() + 2 * nx * r, nx, &displacement(0, r));
+    std::copy_n(real_rows + stride * r, nx, &displacement(0, r));
 }
 
 }  // namespace coatfft

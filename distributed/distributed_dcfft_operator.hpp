@@ -7,9 +7,10 @@
 // rows into columns, and each column's ny entries, padded to 2ny, take a c2c of length 2ny; back
 // the same way, keeping the first ny entries of each column and nx of each row. The padded rows
 // are never distributed: every rank holds about ny / P of the real rows, where a padded slab
-// would give the real rows to the first half of the ranks. The coefficients' spectrum is
-// computed distributed too (each rank its rows of the wrap-around lattice, the slab transform of
-// the padded grid). Construction and apply() are collective.
+// would give the real rows to the first half of the ranks; the rows' half spectra are taken in
+// place and the columns in cache-sized blocks, as the serial DcfftOperator does. The coefficients'
+// real spectrum is computed distributed too, as the 2-D DCT-I of their quarter (each rank its
+// rows, FFTW-MPI's transpose, each rank its columns). Construction and apply() are collective.
 #include <memory>
 
 #include "../convolution/fft/planning.hpp"
@@ -38,6 +39,7 @@ class DistributedDcfftOperator final : public DistributedOperator {
 
  private:
   struct Transforms;
+  void convolve_columns();
   Grid grid_;
   std::unique_ptr<Transforms> t_;
 };
