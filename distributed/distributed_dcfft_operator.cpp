@@ -103,7 +103,7 @@ DistributedDcfftOperator::~DistributedDcfftOperator() = default;
 DistributedDcfftOperator::DistributedDcfftOperator(const Communicator& comm, const Grid& grid,
                                                    double plane_strain_modulus, Planning planning,
                                                    int threads)
-    : DistributedOperator(comm), grid_(grid), t_(std::make_unique<Transforms>()) {
+    : DistributedOperator(comm, grid), t_(std::make_unique<Transforms>()) {
   COATFFT_REQUIRE(std::isfinite(plane_strain_modulus) && plane_strain_modulus > 0,
                   "DistributedDcfftOperator: E* = ", plane_strain_modulus,
                   " Pa, but it must be finite and > 0");
@@ -117,7 +117,8 @@ DistributedDcfftOperator::DistributedDcfftOperator(const Communicator& comm, con
   const std::ptrdiff_t rows = t.slab.rows, columns = t.slab.columns;
   t.rows = FftwComplexBuffer(entries(doubles / 2));
   t.columns = FftwComplexBuffer(entries(doubles / 2));
-  t.block_columns = std::clamp<std::ptrdiff_t>(block_bytes / (32 * ny), 1, std::max(columns, std::ptrdiff_t{1}));
+  t.block_columns =
+      std::clamp<std::ptrdiff_t>(block_bytes / (32 * ny), 1, std::max(columns, std::ptrdiff_t{1}));
   t.block = FftwComplexBuffer(entries(2 * ny * t.block_columns));
   const unsigned flags = fftw_flags(planning);
   const int n2x = static_cast<int>(2 * nx), n2y = static_cast<int>(2 * ny), h = int(hx);

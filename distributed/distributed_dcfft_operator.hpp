@@ -27,12 +27,9 @@ class DistributedDcfftOperator final : public DistributedOperator {
                            Planning planning = Planning::estimate, int threads = 1);
   ~DistributedDcfftOperator();
 
-  const Grid& grid() const override { return grid_; }
   Method method() const override { return Method::dcfft; }
   const Slab& slab() const override;
-  /// `displacement` [m] (resized to (nx, rows)) under `pressure` [Pa], both this rank's rows: the
-  /// free surface's. InvalidArgument for a pressure of another shape, or one with a value that is
-  /// not finite (on any rank: every rank throws).
+  /// The free surface's displacement (distributed/distributed_operator.hpp).
   void apply(const Field& pressure, Field& displacement) override;
   using SurfaceOperator::apply;
   double communication_seconds() const override;
@@ -40,7 +37,6 @@ class DistributedDcfftOperator final : public DistributedOperator {
  private:
   struct Transforms;
   void convolve_columns();
-  Grid grid_;
   std::unique_ptr<Transforms> t_;
 };
 

@@ -1,11 +1,14 @@
 #pragma once
 // A surface operator on fields held in row slabs (distributed/slab.hpp) by the ranks of a
-// communicator: a pressure and its displacement are this rank's rows (nx, rows), and apply() is
-// collective. What the distributed contact solver (distributed_contact.hpp) needs of an operator:
-// its slab, its communicator, and the time its transposes took.
+// communicator: apply() takes this rank's rows (nx, rows) of the pressure [Pa] and resizes the
+// displacement [m] to them; it is collective, and refuses a pressure of another shape, or one with
+// a value that is not finite on any rank, with InvalidArgument on every rank (check_pressure). What
+// the distributed contact solver (distributed_contact.hpp) needs of an operator: its slab, its
+// communicator, and the time its transposes took.
 #include <string_view>
 
 #include "../convolution/operators/surface_operator.hpp"
+#include "../core/grid.hpp"
 #include "../core/types.hpp"
 #include "communicator.hpp"
 #include "slab.hpp"
@@ -14,6 +17,7 @@ namespace coatfft {
 
 class DistributedOperator : public SurfaceOperator {
  public:
+  const Grid& grid() const final { return grid_; }
   /// This rank's rows and half-spectrum columns.
   virtual const Slab& slab() const = 0;
   const Communicator& communicator() const { return comm_; }
@@ -24,7 +28,7 @@ class DistributedOperator : public SurfaceOperator {
   Field unit_response() override;
 
  protected:
-  explicit DistributedOperator(const Communicator& comm) : comm_(comm) {}
+  DistributedOperator(const Communicator& comm, const Grid& grid) : comm_(comm), grid_(grid) {}
   /// Refuses, on every rank together (a rank that threw alone would leave the others waiting), a
   /// rank's pressure that is not of its slab's shape or is its displacement, and a value that is
   /// not finite on any rank, in one reduction; `who` names the operator in the message.
@@ -32,6 +36,7 @@ class DistributedOperator : public SurfaceOperator {
 
  private:
   Communicator comm_;
+  Grid grid_;
 };
 
 }  // namespace coatfft

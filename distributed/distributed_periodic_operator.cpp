@@ -55,7 +55,7 @@ DistributedPeriodicOperator::DistributedPeriodicOperator(const Communicator& com
                                                          const PeriodicKernelOptions& kernel,
                                                          Planning planning, int threads,
                                                          Method method)
-    : DistributedOperator(comm), grid_(grid), method_(method) {
+    : DistributedOperator(comm, grid), method_(method) {
   COATFFT_REQUIRE(threads >= 1, "DistributedPeriodicOperator: threads = ", threads,
                   " must be >= 1");
   COATFFT_REQUIRE(grid.nx() % 2 == 0 && grid.ny() % 2 == 0,

@@ -28,20 +28,16 @@ class DistributedPeriodicOperator final : public DistributedOperator {
                               Method method = Method::frf_split);
   ~DistributedPeriodicOperator();
 
-  const Grid& grid() const override { return grid_; }
   Method method() const override { return method_; }
   bool periodic() const override { return true; }
   const Slab& slab() const override;
-  /// `displacement` [m] (resized to (nx, rows)) under `pressure` [Pa], both this rank's rows, of
-  /// zero mean over the period. InvalidArgument for a pressure of another shape, or one with a
-  /// value that is not finite (on any rank: every rank throws).
+  /// The displacement of zero mean over the period (distributed/distributed_operator.hpp).
   void apply(const Field& pressure, Field& displacement) override;
   using SurfaceOperator::apply;
   double communication_seconds() const override;
 
  private:
   struct Transforms;
-  Grid grid_;
   Method method_;
   std::unique_ptr<Transforms> t_;
 };
