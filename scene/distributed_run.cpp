@@ -142,12 +142,12 @@ DistributedSceneRun compute_distributed_scene(const Communicator& comm,
   Scene scene = prepared.scene;
   use_normal_compliance_body(scene);
   const ContactSpec& spec = *scene.contact;
-  const Slab slab = slab_of(comm, scene.grid.nx(), scene.grid.ny());
-  const Field heights = slab_heights(comm, scene, slab);
   progress.stage(detail::concat("setting up the operator (", to_string(scene.method.options.method),
                                 ", ", comm.size(), " ranks)"));
   OperatorReport report;
   const auto op = distributed_operator(comm, scene, report);
+  const Slab slab = op->slab();  // this rank's rows of every field
+  const Field heights = slab_heights(comm, scene, slab);
   const auto solver =
       distributed_contact_solver(*op, solver_options(spec, scene.method.options.threads, progress));
   progress.stage(
@@ -164,6 +164,10 @@ DistributedSceneRun compute_distributed_scene(const Communicator& comm,
   Field uz;  // only for the timing: the solver returned the displacement
   const double apply_seconds =
       coatfft::detail::time_applications(*op, result.pressure, uz, options.repeat);
+  // Finite inputs can still overflow (|u| ~ p L / E*), as the serial run checks.
+  COATFFT_REQUIRE(comm.all(uz.allFinite()),
+                  "the displacement overflows double precision: rescale the units of the load "
+                  "and the moduli");
   const FieldNumbers numbers =
       slab_numbers(comm, scene.grid, slab, result.pressure, result.displacement);
   nlohmann::json summary =
