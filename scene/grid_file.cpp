@@ -35,6 +35,10 @@ void check_grid_npy(const std::filesystem::path& file, const Grid& grid, std::st
                       array.cols == static_cast<std::size_t>(grid.nx()),
                   file.string(), ": shape (", array.rows, ", ", array.cols,
                   ") but the grid needs (ny, nx) = (", grid.ny(), ", ", grid.nx(), ")");
+  // Refused here, before any work, as scene/npy_slab.hpp would refuse it after the set-up.
+  COATFFT_REQUIRE(!array.fortran, file.string(),
+                  ": fortran_order is True; a distributed run reads C-order rows: save it with "
+                  "numpy.ascontiguousarray");
 }
 
 }  // namespace coatfft::scene

@@ -7,7 +7,6 @@
 #include <sstream>
 #include <string>
 #include <utility>
-#include <variant>
 #include <vector>
 
 #include "contact/contact_solver.hpp"
@@ -19,7 +18,6 @@
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
 #include "scene/a_posteriori.hpp"
-#include "scene/frf_table_file.hpp"
 #include "scene/load_error_report.hpp"
 #include "scene/operator_from_scene.hpp"
 #include "scene/resources.hpp"
@@ -27,7 +25,6 @@
 #include "scene/scene_pressure.hpp"
 #include "scene/scene_topography.hpp"
 #include "validation/hertz.hpp"
-#include "validation/hertz_contact.hpp"
 
 namespace coatfft::scene {
 
