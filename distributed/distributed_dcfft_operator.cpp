@@ -3,7 +3,6 @@
 #include <fftw3-mpi.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <complex>
 #include <vector>
@@ -11,7 +10,6 @@
 #include "convolution/fft/fftw_plan.hpp"
 #include "convolution/kernels/love_influence.hpp"
 #include "core/detail/parallel_for.hpp"
-#include "core/detail/timing.hpp"
 #include "core/error.hpp"
 #include "distributed/detail/mpi_handle.hpp"
 #include "distributed/slab_fft.hpp"
@@ -191,11 +189,6 @@ void DistributedDcfftOperator::apply(const Field& pressure, Field& displacement)
   Transforms& t = *t_;
   const std::ptrdiff_t nx = t.slab.nx, rows = t.slab.rows, stride = 2 * (nx + 1);
   displacement.resize(nx, rows);
-  const auto timed_transpose = [&t](const FftwPlan& plan) {
-    const auto start = std::chrono::steady_clock::now();
-    plan.execute();
-    t.transpose_seconds += detail::seconds_since(start);
-  };
   // Each row's nx values, then its zeros, in place of its half spectrum.
   double* real_rows = reinterpret_cast<double*>(t.rows.data());
   for (std::ptrdiff_t r = 0; r < rows; ++r) {
@@ -203,9 +196,9 @@ void DistributedDcfftOperator::apply(const Field& pressure, Field& displacement)
     std::fill_n(real_rows + stride * r + nx, stride - nx, 0.0);
   }
   detail::execute_if_planned(t.r2c);
-  timed_transpose(t.to_columns);
+  detail::execute_timed(t.to_columns, t.transpose_seconds);
   convolve_columns();
-  timed_transpose(t.to_rows);
+  detail::execute_timed(t.to_rows, t.transpose_seconds);
   detail::execute_if_planned(t.c2r);
   for (std::ptrdiff_t r = 0; r < rows; ++r)
     std::copy_n(real_rows + stride * r, nx, &displacement(0, r));

@@ -85,10 +85,14 @@ void SlabFft::rows_c2r(double* field) {
   std::copy_n(planned_field_.data(), slab_.cells(), field);
 }
 
-void SlabFft::transpose(const FftwPlan& plan) {
+void execute_timed(const FftwPlan& plan, double& seconds) {
   const auto start = std::chrono::steady_clock::now();
   plan.execute();
-  transpose_seconds_ += seconds_since(start);
+  seconds += seconds_since(start);
+}
+
+void SlabFft::transpose(const FftwPlan& plan) {
+  execute_timed(plan, transpose_seconds_);
 }
 
 void SlabFft::forward(const double* field) {

@@ -28,6 +28,10 @@ inline void execute_if_planned(const FftwPlan& plan) {
   if (plan.valid()) plan.execute();
 }
 
+/// Executes a transpose's plan, adding its wall time to `seconds` (the communication between the
+/// ranks, and the wait for the slowest).
+void execute_timed(const FftwPlan& plan, double& seconds);
+
 /// slab_of, and the doubles FFTW-MPI asks a rank to allocate for each of the transposes' arrays.
 Slab slab_of(const Communicator& comm, std::ptrdiff_t nx, std::ptrdiff_t ny,
              std::ptrdiff_t& doubles);

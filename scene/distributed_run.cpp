@@ -121,8 +121,7 @@ void check_distributable(const Scene& scene) {
 PreparedScene prepare_distributed_scene(const Communicator& comm,
                                         const std::filesystem::path& scene_file,
                                         const SceneRunOptions& options) {
-  COATFFT_REQUIRE(options.repeat >= 1 && options.repeat <= max_repeat,
-                  "--repeat = ", options.repeat, " must be in 1..", max_repeat);
+  check_repeat(options.repeat);
   Scene scene = read_scene(scene_file, SceneReading{.height_map_values = false});
   check_distributable(scene);
   const int sharing = comm.ranks_sharing_memory();
@@ -142,8 +141,7 @@ DistributedSceneRun compute_distributed_scene(const Communicator& comm,
   Scene scene = prepared.scene;
   use_normal_compliance_body(scene);
   const ContactSpec& spec = *scene.contact;
-  progress.stage(detail::concat("setting up the operator (", to_string(scene.method.options.method),
-                                ", ", comm.size(), " ranks)"));
+  progress.stage(setup_stage(scene));
   OperatorReport report;
   const auto op = distributed_operator(comm, scene, report);
   const Slab slab = op->slab();  // this rank's rows of every field
@@ -159,8 +157,7 @@ DistributedSceneRun compute_distributed_scene(const Communicator& comm,
   const double solve_seconds = seconds_since(start);
   COATFFT_REQUIRE(!result.touches_boundary,  // the serial run's refusal (scene/scene_run.cpp)
                   domain_edge_refusal);
-  progress.stage(detail::concat("applying the operator (", options.repeat,
-                                options.repeat == 1 ? " time)" : " times)"));
+  progress.stage(applications_stage(options.repeat));
   Field uz;  // only for the timing: the solver returned the displacement
   const double apply_seconds =
       coatfft::detail::time_applications(*op, result.pressure, uz, options.repeat);

@@ -1,7 +1,6 @@
 #include "scene/grid_file.hpp"
 
 #include <cmath>
-#include <limits>
 #include <string>
 
 #include "core/error.hpp"
@@ -30,15 +29,9 @@ void check_grid_npy(const std::filesystem::path& file, const Grid& grid, std::st
   COATFFT_REQUIRE(file.extension() == ".npy", key, " = ", file.string(),
                   ": a distributed run reads a height map from .npy only (`coatfft topography` "
                   "converts other files)");
-  const NpyArray array = read_npy_header(file, std::numeric_limits<std::uintmax_t>::max());
-  COATFFT_REQUIRE(array.rows == static_cast<std::size_t>(grid.ny()) &&
-                      array.cols == static_cast<std::size_t>(grid.nx()),
-                  file.string(), ": shape (", array.rows, ", ", array.cols,
-                  ") but the grid needs (ny, nx) = (", grid.ny(), ", ", grid.nx(), ")");
   // Refused here, before any work, as scene/npy_slab.hpp would refuse it after the set-up.
-  COATFFT_REQUIRE(!array.fortran, file.string(),
-                  ": fortran_order is True; a distributed run reads C-order rows: save it with "
-                  "numpy.ascontiguousarray");
+  read_npy_row_header(file, static_cast<std::size_t>(grid.ny()),
+                      static_cast<std::size_t>(grid.nx()));
 }
 
 }  // namespace coatfft::scene

@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -354,6 +355,16 @@ NpyArray read_npy_header(const fs::path& path, std::uintmax_t max_bytes) {
   npy_data_bytes(path, npy, layout, file.size());
   return {layout.shape.rows, layout.shape.cols, npy.data_offset,
           layout.bytes,      layout.big_endian, layout.fortran};
+}
+
+NpyArray read_npy_row_header(const fs::path& path, std::size_t ny, std::size_t nx) {
+  const NpyArray array = read_npy_header(path, std::numeric_limits<std::uintmax_t>::max());
+  COATFFT_REQUIRE(array.rows == ny && array.cols == nx, path.string(), ": shape (", array.rows,
+                  ", ", array.cols, ") but the grid needs (ny, nx) = (", ny, ", ", nx, ")");
+  COATFFT_REQUIRE(!array.fortran, path.string(),
+                  ": fortran_order is True; a distributed run reads C-order rows: save it with "
+                  "numpy.ascontiguousarray");
+  return array;
 }
 
 void npy_to_doubles(const NpyArray& array, const unsigned char* bytes, std::size_t count,

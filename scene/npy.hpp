@@ -56,6 +56,10 @@ struct NpyArray {
 NpyArray read_npy_header(const std::filesystem::path& path,
                          std::uintmax_t max_bytes = kMaxArrayFileBytes);
 
+/// read_npy_header for a reader of rows (ny rows of nx values) apart, whose file may exceed
+/// read_npy's limit (no process holds all of it): also refuses another shape and Fortran order.
+NpyArray read_npy_row_header(const std::filesystem::path& path, std::size_t ny, std::size_t nx);
+
 /// The `count` values of `array`'s type at `bytes` (count * value_bytes bytes of its file) as
 /// doubles into `out`.
 void npy_to_doubles(const NpyArray& array, const unsigned char* bytes, std::size_t count,

@@ -107,14 +107,8 @@ void require_finite(const Communicator& comm, const std::filesystem::path& path,
 
 Field read_npy_slab(const Communicator& comm, const std::filesystem::path& path, const Slab& slab,
                     std::string_view value_word) {
-  // The whole file is never held by a rank: its size is not the memory limit read_npy's is.
-  const NpyArray array = read_npy_header(path, std::numeric_limits<std::uintmax_t>::max());
   const auto ny = static_cast<std::size_t>(slab.ny), nx = static_cast<std::size_t>(slab.nx);
-  COATFFT_REQUIRE(array.rows == ny && array.cols == nx, path.string(), ": shape (", array.rows,
-                  ", ", array.cols, ") but the grid needs (ny, nx) = (", ny, ", ", nx, ")");
-  COATFFT_REQUIRE(!array.fortran, path.string(),
-                  ": fortran_order is True; a distributed run reads C-order rows: save it with "
-                  "numpy.ascontiguousarray");
+  const NpyArray array = read_npy_row_header(path, ny, nx);
   MPI_File file;
   const int opened =
       MPI_File_open(detail::mpi_comm(comm), path.c_str(), MPI_MODE_RDONLY, MPI_INFO_NULL, &file);

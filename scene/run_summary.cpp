@@ -1,7 +1,9 @@
 #include "scene/run_summary.hpp"
 
+#include <string>
 #include <variant>
 
+#include "core/error.hpp"
 #include "scene/a_posteriori.hpp"
 #include "scene/frf_table_file.hpp"
 #include "scene/operator_from_scene.hpp"
@@ -49,6 +51,19 @@ nlohmann::json hertz_json(const Scene& scene) {
 }
 
 }  // namespace
+
+std::string setup_stage(const Scene& scene) {
+  return detail::concat("setting up the operator (", to_string(scene.method.options.method), ")");
+}
+
+std::string applications_stage(int repeat) {
+  return detail::concat("applying the operator (", repeat, repeat == 1 ? " time)" : " times)");
+}
+
+void check_repeat(int repeat) {
+  COATFFT_REQUIRE(repeat >= 1 && repeat <= max_repeat, "--repeat = ", repeat, " must be in 1..",
+                  max_repeat);
+}
 
 FieldNumbers field_numbers(const Grid& grid, const Field& pressure, const Field& uz) {
   return {pressure.sum() * grid.dx() * grid.dy(), uz(grid.centre_i(), grid.centre_j()),

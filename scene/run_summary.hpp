@@ -5,6 +5,7 @@
 // holds whole.
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <string>
 
 #include "contact/contact_solver.hpp"
 #include "convolution/operators/make_operator.hpp"
@@ -33,6 +34,14 @@ FieldNumbers field_numbers(const Grid& grid, const Field& pressure, const Field&
 nlohmann::json common_summary(const Scene& scene, const std::optional<AutomaticChoice>& automatic,
                               const OperatorReport& report, double apply_seconds, int repeat,
                               const FieldNumbers& fields);
+
+/// The progress stages of every run: "setting up the operator (dcfft)", "applying the operator
+/// (5 times)".
+std::string setup_stage(const Scene& scene);
+std::string applications_stage(int repeat);
+
+/// Refuses --repeat outside 1..max_repeat (scene/resources.hpp).
+void check_repeat(int repeat);
 
 /// The contact solver's options of a [contact] scene, its iterations reported to `progress`
 /// (which must outlive the solver).

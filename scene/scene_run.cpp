@@ -54,15 +54,6 @@ double max_error_vs_hertz(const Grid& grid, const Field& uz, double p0, double a
   return (uz - hertz_displacement_field(grid, p0, a, E_star)).abs().maxCoeff() / u0;
 }
 
-// "setting up the operator (dcfft)".
-std::string setup_stage(const Scene& scene) {
-  return detail::concat("setting up the operator (", to_string(scene.method.options.method), ")");
-}
-
-std::string applications_stage(int repeat) {
-  return detail::concat("applying the operator (", repeat, repeat == 1 ? " time)" : " times)");
-}
-
 SceneRun compute_pressure(const Scene& scene, const Automatic& automatic, int repeat,
                           ProgressObserver& progress) {
   const Grid& grid = scene.grid;
@@ -289,8 +280,7 @@ void import_wisdom_read_only(const Scene& scene) {
 }  // namespace
 
 PreparedScene prepare_scene(const fs::path& scene_file, const SceneRunOptions& options) {
-  COATFFT_REQUIRE(options.repeat >= 1 && options.repeat <= max_repeat,
-                  "--repeat = ", options.repeat, " must be in 1..", max_repeat);
+  check_repeat(options.repeat);
   Scene scene = read_scene(scene_file);
   // name = "auto" chooses the body and the method first, and the memory estimate is the chosen
   // one's; before it, the estimate of the scene as read (DC-FFT's padded lattice, the least any
