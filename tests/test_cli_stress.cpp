@@ -287,8 +287,8 @@ TEST_CASE("[stress] a section row on a running-sum interface lies on the at_inte
   const std::string scene = R"([grid]
 nx = 24
 ny = 20
-lx = 0.3e-3
-ly = 0.25e-3
+lx = 0.12e-3
+ly = 0.1e-3
 [substrate]
 material = "steel"
 [[coating]]
@@ -301,7 +301,7 @@ thickness = 20e-6
 [pressure]
 kind = "hertz"
 p0 = 1.0e9
-a = 0.1e-3
+a = 0.04e-3
 sampling = "cell_average"
 [method]
 name = "frf-split"
