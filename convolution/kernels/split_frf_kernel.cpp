@@ -121,10 +121,11 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
   SplitKernelReport rep;
   detail::split::report_plan(plan, rep);
   Field quarter(plan.nx + 1, plan.ny + 1);
-  std::vector<double> spare;                            // scratch shared by the two parts of R
-  detail::split::assign_singular_terms(plan, quarter);  // (a) + (b)
-  if (plan.long_range) detail::split::add_long_range(plan, quarter, spare, rep);    // (c) R w
-  if (plan.short_range) detail::split::add_short_range(plan, quarter, spare, rep);  // (c) R (1 - w)
+  std::vector<double> spare;  // scratch shared by the two parts of R
+  const detail::split::QuarterRows rows{quarter, 0};
+  detail::split::assign_singular_terms(plan, rows);                              // (a) + (b)
+  if (plan.long_range) detail::split::add_long_range(plan, rows, spare, rep);    // (c) R w
+  if (plan.short_range) detail::split::add_short_range(plan, rows, spare, rep);  // (c) R (1 - w)
   // The offsets nx and ny are never used by the convolution: 0 by convention.
   quarter.row(plan.nx).setZero();
   quarter.col(plan.ny).setZero();

@@ -233,17 +233,18 @@ double cell_integral(const RadialTable& g, CellQuadrature& q, std::ptrdiff_t i, 
 }
 
 // Point values (times the cell area) of g + Cinf/(2 pi r) + A/(2 pi sqrt(r^2 + beta^2)) at
-// i in [0, ex), j in [0, ey), into point[j * ex + i]; the kernel is even, so negative offsets
-// read |i|, |j|. The origin's singular terms are left out: only near cells reach it. Square
-// cells on a square grid: point(i, j) = point(j, i), only i >= j is evaluated.
+// i in [0, ex), j in [j0, j1), into point[(j - j0) * ex + i]; the kernel is even, so negative
+// offsets read |i|, |j|. The origin's singular terms are left out: only near cells reach it.
+// Square cells on a square grid, all rows: point(i, j) = point(j, i), only i >= j is evaluated.
 void far_point_values(const SplitPlan& p, const RadialTable& g, double* point, std::ptrdiff_t ex,
-                      std::ptrdiff_t ey) {
+                      std::ptrdiff_t j0, std::ptrdiff_t j1) {
   const double fa = p.c_inf / (2.0 * pi) * p.dx * p.dy;
   const double fb = p.A / (2.0 * pi) * p.dx * p.dy;
   const double b2 = p.beta * p.beta;
-  const bool symmetric = p.dx == p.dy && p.nx == p.ny;
-  detail::parallel_for(0, ey, p.threads, [&](std::ptrdiff_t j) {
+  const bool symmetric = p.dx == p.dy && p.nx == p.ny && j0 == 0 && j1 == ex;
+  detail::parallel_for(j0, j1, p.threads, [&](std::ptrdiff_t j) {
     const double y2 = (static_cast<double>(j) * p.dy) * (static_cast<double>(j) * p.dy);
+    double* row = point + (j - j0) * ex;
     for (std::ptrdiff_t i = symmetric ? j : 0; i < ex; ++i) {
       const double x = static_cast<double>(i) * p.dx;
       const double r2 = x * x + y2;
@@ -253,10 +254,10 @@ void far_point_values(const SplitPlan& p, const RadialTable& g, double* point, s
         f += fa / r;
         if (p.A != 0.0) f += fb / std::sqrt(r2 + b2);
       }
-      point[j * ex + i] = f;
+      row[i] = f;
     }
   });
-  if (symmetric) fill_lower_triangle(point, ey, ex, p.threads);
+  if (symmetric) fill_lower_triangle(point, j1, ex, p.threads);
 }
 
 // Stencil route (ell >= 8 d): the point values of far_point_values, averaged over each cell by
@@ -267,16 +268,20 @@ void far_point_values(const SplitPlan& p, const RadialTable& g, double* point, s
 // (docs/split_kernel.md, section 5). The far cells' (a) + (b) are smooth over a cell beyond 32 d
 // and go through the same stencil (error ~E 10! (d/r)^10 of the coefficient there): one pass,
 // one table lookup and one or two square roots per cell.
+// The rows j of `quarter` read the point rows |j + a|, |a| <= m: [max(0, begin - m), end + m).
 void add_long_range_by_stencil(const SplitPlan& p, const RadialTable& g, const AxisCells& cx,
-                               const AxisCells& cy, Field& quarter, std::vector<double>& spare) {
+                               const AxisCells& cy, QuarterRows quarter,
+                               std::vector<double>& spare) {
   constexpr std::ptrdiff_t m = detail::cell_average_half_width;
   const auto& c = detail::cell_average_weights;
   const std::ptrdiff_t ex = p.nx + m;
-  const std::ptrdiff_t ey = p.ny + m;
-  double* const point = scratch(spare, ex * ey);
-  far_point_values(p, g, point, ex, ey);
+  const std::ptrdiff_t j0 = std::max<std::ptrdiff_t>(quarter.begin(p) - m, 0);
+  const std::ptrdiff_t j1 = quarter.end(p) + m;
+  if (quarter.begin(p) == quarter.end(p)) return;
+  double* const point = scratch(spare, ex * (j1 - j0));
+  far_point_values(p, g, point, ex, j0, j1);
   // Along x, in place: row j of `point` becomes its x average at i in [0, nx).
-  detail::parallel_for(0, ey, p.threads, [&](std::ptrdiff_t j) {
+  detail::parallel_for(0, j1 - j0, p.threads, [&](std::ptrdiff_t j) {
     double* row = point + j * ex;
     const std::vector<double> in(row, row + ex);
     for (std::ptrdiff_t i = 0; i < p.nx; ++i) {
@@ -289,11 +294,11 @@ void add_long_range_by_stencil(const SplitPlan& p, const RadialTable& g, const A
   });
   // Along y into the far cells; the near cells add the Gauss rule to their closed forms.
   const double near2 = p.near_r * p.near_r;
-  detail::parallel_for(0, p.ny, p.threads, [&](std::ptrdiff_t j) {
+  detail::parallel_for(quarter.begin(p), quarter.end(p), p.threads, [&](std::ptrdiff_t j) {
     std::array<const double*, 2 * m + 1> rows{};
     for (std::ptrdiff_t a = -m; a <= m; ++a)
-      rows[static_cast<std::size_t>(a + m)] = point + std::abs(j + a) * ex;
-    double* out = &quarter(0, j);
+      rows[static_cast<std::size_t>(a + m)] = point + (std::abs(j + a) - j0) * ex;
+    double* out = quarter.row(j);
     const double y = static_cast<double>(j) * p.dy;
     std::ptrdiff_t i = 0;
     CellQuadrature q{cx, cy, {}, {}};
@@ -314,7 +319,7 @@ void add_long_range_by_stencil(const SplitPlan& p, const RadialTable& g, const A
 
 }  // namespace
 
-void add_long_range(const SplitPlan& p, Field& quarter, std::vector<double>& spare,
+void add_long_range(const SplitPlan& p, QuarterRows quarter, std::vector<double>& spare,
                     SplitKernelReport& rep) {
   const auto start = std::chrono::steady_clock::now();
   const RadialTable g = long_range_table(p);
@@ -325,9 +330,10 @@ void add_long_range(const SplitPlan& p, Field& quarter, std::vector<double>& spa
   if (p.stencil) {
     add_long_range_by_stencil(p, g, cx, cy, quarter, spare);
   } else {
-    detail::parallel_for(0, p.ny, p.threads, [&](std::ptrdiff_t j) {
+    detail::parallel_for(quarter.begin(p), quarter.end(p), p.threads, [&](std::ptrdiff_t j) {
       CellQuadrature q{cx, cy, {}, {}};
-      for (std::ptrdiff_t i = 0; i < p.nx; ++i) quarter(i, j) += cell_integral(g, q, i, j);
+      double* out = quarter.row(j);
+      for (std::ptrdiff_t i = 0; i < p.nx; ++i) out[i] += cell_integral(g, q, i, j);
     });
   }
   rep.seconds_long = detail::seconds_since(start);

@@ -158,32 +158,35 @@ double alias_sum(const AliasAxis& ax, const AliasAxis& ay, std::size_t ix0, std:
   return sum;
 }
 
-// fold[n * sx + m] = sum over the aliases (p, q) of sinc sinc S(|k|), m in [0, sx), n in [0, sy),
-// the cell-averaged spectrum of the short-range part on the lattice; returns the number of
-// leading rows n with a nonzero entry. Terms with |k| > k_r are zero, and the smallest |k| of
-// (m, n) is that of p = q = 0 (|xi + p| >= xi for xi in [0, 1/2]), which grows with m: a row ends
-// at the first m whose p = q = 0 term is beyond k_r (at 1024^2 for TiN 50 um, k_r dx / 2 pi =
-// 0.34: 63 % of the lattice is zero).
+// fold[(n - n0) * sx + m] = sum over the aliases (p, q) of sinc sinc S(|k|), m in [0, sx), n in
+// [n0, n0 + count), the cell-averaged spectrum of the short-range part on the lattice; returns
+// the number of leading rows with a nonzero entry. Terms with |k| > k_r are zero, and the smallest
+// |k| of (m, n) is that of p = q = 0 (|xi + p| >= xi for xi in [0, 1/2]), which grows with m: a
+// row ends at the first m whose p = q = 0 term is beyond k_r (at 1024^2 for TiN 50 um,
+// k_r dx / 2 pi = 0.34: 63 % of the lattice is zero). `symmetric` (every row): only m >= n.
 std::ptrdiff_t fold_aliases(const SplitPlan& p, const ShortRangeSpectrum& spectrum,
                             const AliasAxis& ax, const AliasAxis& ay, bool symmetric, double* fold,
-                            std::ptrdiff_t sx, std::ptrdiff_t sy) {
+                            std::ptrdiff_t sx, std::ptrdiff_t n0, std::ptrdiff_t count) {
   const double k_s2 = p.k_r * p.k_r;
   const std::size_t npx = ax.count;
   const std::size_t npy = ay.count;
-  std::vector<std::ptrdiff_t> row_end(static_cast<std::size_t>(sy), 0);
-  detail::parallel_for(0, sy, p.threads, [&](std::ptrdiff_t n) {
+  std::vector<std::ptrdiff_t> row_end(static_cast<std::size_t>(count), 0);
+  detail::parallel_for(0, count, p.threads, [&](std::ptrdiff_t r) {
+    const std::ptrdiff_t n = n0 + r;
     const auto iy0 = static_cast<std::size_t>(n) * npy;
+    double* row = fold + r * sx;
     std::ptrdiff_t m = symmetric ? n : 0;
     for (; m < sx; ++m) {
       const auto ix0 = static_cast<std::size_t>(m) * npx;
       const double kx0 = ax.k[ix0 + npx / 2];
       const double ky0 = ay.k[iy0 + npy / 2];
       if (kx0 * kx0 + ky0 * ky0 > k_s2) break;
-      fold[n * sx + m] = alias_sum(ax, ay, ix0, iy0, k_s2, spectrum);
+      row[m] = alias_sum(ax, ay, ix0, iy0, k_s2, spectrum);
     }
-    row_end[static_cast<std::size_t>(n)] = m;
-    std::fill(fold + n * sx + m, fold + (n + 1) * sx, 0.0);
+    row_end[static_cast<std::size_t>(r)] = m;
+    std::fill(row + m, row + sx, 0.0);
   });
+  const std::ptrdiff_t sy = count;
   if (symmetric) fill_lower_triangle(fold, sy, sx, p.threads);
   std::ptrdiff_t rows = 0;
   for (std::ptrdiff_t n = 0; n < sy; ++n)
@@ -221,36 +224,61 @@ double lattice_k_max(const LatticeAxis& a, double d) {
   return a.h == 0 ? 0.0 : 2.0 * pi * (a.p_max + 0.5) / d;
 }
 
+// The fold's spectrum table and alias axes: built once per fold, from the plan alone.
+struct FoldInputs {
+  explicit FoldInputs(const SplitPlan& p)
+      : spectrum(p, std::min(p.k_r, std::hypot(lattice_k_max(p.lattice_x, p.dx),
+                                               lattice_k_max(p.lattice_y, p.dy)))),
+        ax(alias_axis(p.lattice_x.h, p.lattice_x.p_max, p.dx)),
+        ay(alias_axis(p.lattice_y.h, p.lattice_y.p_max, p.dy)) {}
+  ShortRangeSpectrum spectrum;
+  AliasAxis ax;
+  AliasAxis ay;
+};
+
 }  // namespace
 
-void add_short_range(const SplitPlan& p, Field& quarter, std::vector<double>& spare,
-                     SplitKernelReport& rep) {
-  const auto start = std::chrono::steady_clock::now();
-  // Both axes wide: only S(0) = R(0) (1 - w(0)) = 0 is left.
-  if (p.lattice_x.h == 0 && p.lattice_y.h == 0) return;
+ShortRangeLattice short_range_lattice(const SplitPlan& p) {
   const LatticeAxis& lx = p.lattice_x;
   const LatticeAxis& ly = p.lattice_y;
-  const double k_table =
-      std::min(p.k_r, std::hypot(lattice_k_max(lx, p.dx), lattice_k_max(ly, p.dy)));
-  const ShortRangeSpectrum spectrum(p, k_table);
-  const std::ptrdiff_t sx = lx.h + 1;
-  const std::ptrdiff_t sy = ly.h + 1;
-  double* const fold = scratch(spare, sx * sy);
-  // Square cells on a square lattice: F(m, n) = F(n, m) (R is radial), fold half of it.
-  const bool symmetric = p.dx == p.dy && lx.h == ly.h && lx.p_max == ly.p_max;
-  const std::ptrdiff_t rows =
-      fold_aliases(p, spectrum, alias_axis(lx.h, lx.p_max, p.dx), alias_axis(ly.h, ly.p_max, p.dy),
-                   symmetric, fold, sx, sy);
-  dct1_in_place(fold, sx, sy, rows, p.threads);
+  ShortRangeLattice l;
+  // Both axes wide: only S(0) = R(0) (1 - w(0)) = 0 is left.
+  l.empty = !p.short_range || (lx.h == 0 && ly.h == 0);
+  l.sx = lx.h + 1;
+  l.sy = ly.h + 1;
   // DCT-I of the even spectrum = the sum over the full period (1/(Mx My) = 1/(4 hx hy)); a wide
   // axis contributes its cell's row only, with weight 1.
-  const double norm = (lx.h > 0 ? 0.5 / static_cast<double>(lx.h) : 1.0) *
-                      (ly.h > 0 ? 0.5 / static_cast<double>(ly.h) : 1.0);
-  const std::ptrdiff_t mx = lx.h > 0 ? p.nx : 1;
-  const std::ptrdiff_t my = ly.h > 0 ? p.ny : 1;
-  detail::parallel_for(0, my, p.threads, [&](std::ptrdiff_t j) {
-    for (std::ptrdiff_t i = 0; i < mx; ++i) quarter(i, j) += norm * fold[j * sx + i];
-  });
+  l.norm = (lx.h > 0 ? 0.5 / static_cast<double>(lx.h) : 1.0) *
+           (ly.h > 0 ? 0.5 / static_cast<double>(ly.h) : 1.0);
+  l.mx = lx.h > 0 ? p.nx : 1;
+  l.my = ly.h > 0 ? p.ny : 1;
+  return l;
+}
+
+void fold_lattice_rows(const SplitPlan& p, std::ptrdiff_t n0, std::ptrdiff_t count, double* fold) {
+  const FoldInputs in(p);
+  fold_aliases(p, in.spectrum, in.ax, in.ay, false, fold, p.lattice_x.h + 1, n0, count);
+}
+
+void add_short_range(const SplitPlan& p, QuarterRows quarter, std::vector<double>& spare,
+                     SplitKernelReport& rep) {
+  const auto start = std::chrono::steady_clock::now();
+  const ShortRangeLattice l = short_range_lattice(p);
+  if (l.empty) return;
+  const FoldInputs in(p);
+  double* const fold = scratch(spare, l.sx * l.sy);
+  // Square cells on a square lattice: F(m, n) = F(n, m) (R is radial), fold half of it.
+  const bool symmetric =
+      p.dx == p.dy && p.lattice_x.h == p.lattice_y.h && p.lattice_x.p_max == p.lattice_y.p_max;
+  const std::ptrdiff_t rows =
+      fold_aliases(p, in.spectrum, in.ax, in.ay, symmetric, fold, l.sx, 0, l.sy);
+  dct1_in_place(fold, l.sx, l.sy, rows, p.threads);
+  detail::parallel_for(quarter.begin(p), std::min(quarter.end(p), l.my), p.threads,
+                       [&](std::ptrdiff_t j) {
+                         double* out = quarter.row(j);
+                         for (std::ptrdiff_t i = 0; i < l.mx; ++i)
+                           out[i] += l.norm * fold[j * l.sx + i];
+                       });
   rep.seconds_short = detail::seconds_since(start);
 }
 

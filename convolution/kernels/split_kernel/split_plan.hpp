@@ -3,6 +3,7 @@
 // and the options (split_frf_kernel.hpp), and the three parts that fill the kernel's quarter:
 // the singular terms (a) + (b), the long range R w and the short range R (1 - w) of the remainder
 // (docs/theory.md 4.5).
+#include <algorithm>
 #include <vector>
 
 #include "convolution/kernels/split_frf_kernel.hpp"
@@ -103,17 +104,51 @@ int nodes_for_ratio(double ratio);
 // The plan of the kernel of `frf` on `grid` (InvalidArgument for bad options or FRF constants).
 SplitPlan make_split_plan(const Grid& grid, const Frf& frf, const SplitKernelOptions& options);
 
+// Rows [y0, y0 + values.cols()) of the kernel's quarter K(i, j), 0 <= i <= nx, held as
+// values(i, j - y0). The serial kernel fills the whole quarter (y0 = 0, ny + 1 rows); a rank of a
+// distributed operator fills its own rows (distributed/distributed_split_kernel.cpp). Rows from ny
+// on are never used by the convolution and are left to the caller.
+struct QuarterRows {
+  Field& values;
+  std::ptrdiff_t y0 = 0;
+
+  // The rows j < ny held here: [begin, end).
+  std::ptrdiff_t begin(const SplitPlan& p) const { return std::min(y0, p.ny); }
+  std::ptrdiff_t end(const SplitPlan& p) const { return std::min(y0 + values.cols(), p.ny); }
+  double* row(std::ptrdiff_t j) { return &values(0, j - y0); }
+  // Every row j < ny: the serial kernel, which may use the quarter's symmetry in i and j.
+  bool whole(const SplitPlan& p) const { return y0 == 0 && values.cols() >= p.ny; }
+};
+
 // (a) + (b) at every offset of `quarter`, or at the near cells only on the stencil route
 // (singular_terms.cpp).
-void assign_singular_terms(const SplitPlan& p, Field& quarter);
+void assign_singular_terms(const SplitPlan& p, QuarterRows quarter);
 
 // Adds (c) R w, the long range, by its Hankel table and a rule over each cell (long_range.cpp).
-void add_long_range(const SplitPlan& p, Field& quarter, std::vector<double>& spare,
+void add_long_range(const SplitPlan& p, QuarterRows quarter, std::vector<double>& spare,
                     SplitKernelReport& rep);
 
 // Adds (c) R (1 - w), the short range, on a periodic lattice with the aliases folded
-// (short_range.cpp).
-void add_short_range(const SplitPlan& p, Field& quarter, std::vector<double>& spare,
+// (short_range.cpp): the whole lattice on this process.
+void add_short_range(const SplitPlan& p, QuarterRows quarter, std::vector<double>& spare,
                      SplitKernelReport& rep);
+
+// The short range's lattice, for a caller that transforms it itself (a distributed one): sx x sy
+// entries (1 along a wide axis); after the 2-D DCT-I of the fold, quarter(i, j) += norm * the
+// entry (i, j) for i < mx, j < my (mx = 1 or my = 1 along a wide axis: that axis keeps its cell's
+// row only). `empty`: both axes wide, nothing to add.
+struct ShortRangeLattice {
+  std::ptrdiff_t sx = 1;
+  std::ptrdiff_t sy = 1;
+  std::ptrdiff_t mx = 0;
+  std::ptrdiff_t my = 0;
+  double norm = 0.0;
+  bool empty = true;
+};
+ShortRangeLattice short_range_lattice(const SplitPlan& p);
+
+// The alias fold of lattice rows [n0, n0 + count) into fold[(n - n0) * sx + m], every entry
+// (short_range.cpp).
+void fold_lattice_rows(const SplitPlan& p, std::ptrdiff_t n0, std::ptrdiff_t count, double* fold);
 
 }  // namespace coatfft::detail::split
