@@ -12,6 +12,7 @@
 #include "core/detail/parallel_for.hpp"
 #include "core/error.hpp"
 #include "distributed/detail/mpi_handle.hpp"
+#include "distributed/distributed_split_kernel.hpp"
 #include "distributed/slab_fft.hpp"
 
 namespace coatfft {
@@ -39,7 +40,7 @@ std::size_t entries(std::ptrdiff_t n) {
   return static_cast<std::size_t>(std::max<std::ptrdiff_t>(n, 1));
 }
 
-// This rank's rows j of the quarter K(i, j), 0 <= i, j <= n (Love's coefficients over E*, 0 in the
+// This rank's rows j of Love's quarter K(i, j), 0 <= i, j <= n (his coefficients over E*, 0 in the
 // slots nx and ny), x fastest: the first n + 1 entries of the (2nx, 2ny) wrap-around array, which
 // is even in both offsets.
 void love_quarter_rows(const Grid& g, double e_star, std::ptrdiff_t y0, std::ptrdiff_t rows,
@@ -55,11 +56,13 @@ void love_quarter_rows(const Grid& g, double e_star, std::ptrdiff_t y0, std::ptr
 }
 
 // The DFT of the even (2nx, 2ny) wrap-around array is the 2-D DCT-I (FFTW's REDFT00) of its
-// quarter, as in DcfftOperator::transform_coefficients: here on the quarter's rows, FFTW-MPI's
-// transpose, then its columns, which are the operator's (FFTW-MPI splits nx + 1 columns alike for
-// any count of rows; checked). Returns this rank's columns x (ny + 1), over 4 nx ny.
-std::vector<double> love_spectrum(const Communicator& comm, const Grid& g, double e_star,
-                                  const Slab& slab, int threads) {
+// quarter, as in DcfftOperator::transform_coefficients: here on the quarter's rows (written by
+// `quarter_rows(y0, rows, out)`, collectively), FFTW-MPI's transpose, then its columns, which are
+// the operator's (FFTW-MPI splits nx + 1 columns alike for any count of rows; checked). Returns
+// this rank's columns x (ny + 1), over 4 nx ny.
+std::vector<double> coefficient_spectrum(
+    const Communicator& comm, const Grid& g, const Slab& slab, int threads,
+    const DistributedDcfftOperator::QuarterRowsFunction& quarter_rows) {
   const std::ptrdiff_t qx = g.nx() + 1, qy = g.ny() + 1;
   const std::ptrdiff_t n[2] = {qy, qx};
   std::ptrdiff_t rows = 0, y0 = 0, columns = 0, kx0 = 0;
@@ -69,25 +72,9 @@ std::vector<double> love_spectrum(const Communicator& comm, const Grid& g, doubl
   COATFFT_REQUIRE(columns == slab.columns && (columns == 0 || kx0 == slab.kx0),
                   "DistributedDcfftOperator: FFTW-MPI split the quarter's columns otherwise");
   FftwRealBuffer quarter(entries(doubles)), transposed(entries(doubles));
-  love_quarter_rows(g, e_star, y0, rows, threads, quarter.data());
-  const fftw_r2r_kind kind = FFTW_REDFT00;
-  const int nqx = static_cast<int>(qx), nqy = static_cast<int>(qy);
-  const FftwPlan along_x = detail::plan_many(rows, threads, [&] {
-    return fftw_plan_many_r2r(1, &nqx, static_cast<int>(rows), quarter.data(), nullptr, 1, nqx,
-                              quarter.data(), nullptr, 1, nqx, &kind, FFTW_ESTIMATE);
-  });
-  const FftwPlan transpose = FftwPlan::create(threads, [&] {
-    return fftw_mpi_plan_many_transpose(qy, qx, 1, FFTW_MPI_DEFAULT_BLOCK, FFTW_MPI_DEFAULT_BLOCK,
-                                        quarter.data(), transposed.data(), detail::mpi_comm(comm),
-                                        FFTW_ESTIMATE | FFTW_DESTROY_INPUT);
-  });
-  const FftwPlan along_y = detail::plan_many(columns, threads, [&] {
-    return fftw_plan_many_r2r(1, &nqy, static_cast<int>(columns), transposed.data(), nullptr, 1,
-                              nqy, transposed.data(), nullptr, 1, nqy, &kind, FFTW_ESTIMATE);
-  });
-  detail::execute_if_planned(along_x);
-  transpose.execute();
-  detail::execute_if_planned(along_y);
+  quarter_rows(y0, rows, quarter.data());
+  detail::dct1_rows_then_columns(comm, qy, qx, rows, columns, quarter.data(), transposed.data(),
+                                 threads);
   const double norm = 1.0 / static_cast<double>(4 * g.nx() * g.ny());
   std::vector<double> m(static_cast<std::size_t>(columns * qy));
   for (std::size_t k = 0; k < m.size(); ++k) m[k] = norm * transposed.data()[k];
@@ -98,13 +85,39 @@ std::vector<double> love_spectrum(const Communicator& comm, const Grid& g, doubl
 
 DistributedDcfftOperator::~DistributedDcfftOperator() = default;
 
+namespace {
+
+double checked_modulus(double e_star) {
+  COATFFT_REQUIRE(std::isfinite(e_star) && e_star > 0, "DistributedDcfftOperator: E* = ", e_star,
+                  " Pa, but it must be finite and > 0");
+  return e_star;
+}
+
+}  // namespace
+
 DistributedDcfftOperator::DistributedDcfftOperator(const Communicator& comm, const Grid& grid,
                                                    double plane_strain_modulus, Planning planning,
                                                    int threads)
-    : DistributedOperator(comm, grid), t_(std::make_unique<Transforms>()) {
-  COATFFT_REQUIRE(std::isfinite(plane_strain_modulus) && plane_strain_modulus > 0,
-                  "DistributedDcfftOperator: E* = ", plane_strain_modulus,
-                  " Pa, but it must be finite and > 0");
+    : DistributedDcfftOperator(comm, grid, Method::dcfft, planning, threads,
+                               [&grid, e_star = checked_modulus(plane_strain_modulus), threads](
+                                   std::ptrdiff_t y0, std::ptrdiff_t rows, double* out) {
+                                 love_quarter_rows(grid, e_star, y0, rows, threads, out);
+                               }) {}
+
+DistributedDcfftOperator::DistributedDcfftOperator(const Communicator& comm, const Grid& grid,
+                                                   const Frf& frf,
+                                                   const SplitKernelOptions& options,
+                                                   Planning planning, int threads)
+    : DistributedDcfftOperator(comm, grid, Method::frf_split, planning, threads,
+                               [&](std::ptrdiff_t y0, std::ptrdiff_t rows, double* out) {
+                                 detail::split_quarter_rows(comm, grid, frf, options, y0, rows,
+                                                            out);
+                               }) {}
+
+DistributedDcfftOperator::DistributedDcfftOperator(const Communicator& comm, const Grid& grid,
+                                                   Method method, Planning planning, int threads,
+                                                   const QuarterRowsFunction& quarter_rows)
+    : DistributedOperator(comm, grid), method_(method), t_(std::make_unique<Transforms>()) {
   COATFFT_REQUIRE(threads >= 1, "DistributedDcfftOperator: threads = ", threads, " must be >= 1");
   Transforms& t = *t_;
   const std::ptrdiff_t nx = grid.nx(), ny = grid.ny(), hx = nx + 1;
@@ -147,7 +160,7 @@ DistributedDcfftOperator::DistributedDcfftOperator(const Communicator& comm, con
                                 t.block.data(), nullptr, 1, n2y, sign, flags);
     });
   }
-  t.multiplier = love_spectrum(comm, grid, plane_strain_modulus, t.slab, threads);
+  t.multiplier = coefficient_spectrum(comm, grid, t.slab, threads, quarter_rows);
 }
 
 const Slab& DistributedDcfftOperator::slab() const {

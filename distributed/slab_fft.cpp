@@ -113,3 +113,30 @@ void SlabFft::inverse_from_rows(double* field) {
 }
 
 }  // namespace coatfft::detail
+
+namespace coatfft::detail {
+
+void dct1_rows_then_columns(const Communicator& comm, std::ptrdiff_t n_rows, std::ptrdiff_t n_cols,
+                            std::ptrdiff_t rows, std::ptrdiff_t columns, double* in, double* out,
+                            int threads) {
+  const fftw_r2r_kind kind = FFTW_REDFT00;
+  const int nx = static_cast<int>(n_cols), ny = static_cast<int>(n_rows);
+  const FftwPlan along_x = plan_many(rows, threads, [&] {
+    return fftw_plan_many_r2r(1, &nx, static_cast<int>(rows), in, nullptr, 1, nx, in, nullptr, 1,
+                              nx, &kind, FFTW_ESTIMATE);
+  });
+  const FftwPlan transpose = FftwPlan::create(threads, [&] {
+    return fftw_mpi_plan_many_transpose(n_rows, n_cols, 1, FFTW_MPI_DEFAULT_BLOCK,
+                                        FFTW_MPI_DEFAULT_BLOCK, in, out, mpi_comm(comm),
+                                        FFTW_ESTIMATE | FFTW_DESTROY_INPUT);
+  });
+  const FftwPlan along_y = plan_many(columns, threads, [&] {
+    return fftw_plan_many_r2r(1, &ny, static_cast<int>(columns), out, nullptr, 1, ny, out, nullptr,
+                              1, ny, &kind, FFTW_ESTIMATE);
+  });
+  execute_if_planned(along_x);
+  transpose.execute();
+  execute_if_planned(along_y);
+}
+
+}  // namespace coatfft::detail

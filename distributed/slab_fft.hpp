@@ -32,6 +32,14 @@ inline void execute_if_planned(const FftwPlan& plan) {
 /// ranks, and the wait for the slowest).
 void execute_timed(const FftwPlan& plan, double& seconds);
 
+/// The 2-D DCT-I (FFTW's REDFT00 along both axes, unnormalised) of a real (n_rows, n_cols) array,
+/// n_rows, n_cols >= 2, held by rows as fftw_mpi_local_size_many_transposed splits it: this rank's
+/// `rows` rows of `in` (n_cols each) are transformed along x in place and transposed into `out`,
+/// whose `columns` columns (n_rows each) are transformed along y. `in` is destroyed. Collective.
+void dct1_rows_then_columns(const Communicator& comm, std::ptrdiff_t n_rows, std::ptrdiff_t n_cols,
+                            std::ptrdiff_t rows, std::ptrdiff_t columns, double* in, double* out,
+                            int threads);
+
 /// slab_of, and the doubles FFTW-MPI asks a rank to allocate for each of the transposes' arrays.
 Slab slab_of(const Communicator& comm, std::ptrdiff_t nx, std::ptrdiff_t ny,
              std::ptrdiff_t& doubles);

@@ -1,7 +1,9 @@
 // The distributed fields, transforms and operators (distributed/) against the serial library on
 // the same problem, run by mpirun at 1, 2 and 3 ranks (3 gives uneven slabs): slabs tile the grid,
-// the distributed periodic operator equals PeriodicOperator on a coated and a homogeneous body, a
-// surface of a seed is the same at any rank count and equals self_affine_surface's.
+// the distributed periodic operator equals PeriodicOperator on a coated and a homogeneous body, the
+// distributed DC-FFT equals DcfftOperator with Love's and frf-split's coefficients, contact solves
+// equal the serial ones, a surface of a seed is the same at any rank count and equals
+// self_affine_surface's.
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <optional>
@@ -12,6 +14,7 @@
 #include "contact/initial_pressure.hpp"
 #include "convolution/kernels/influence_kernel.hpp"
 #include "convolution/kernels/periodic_kernel.hpp"
+#include "convolution/kernels/split_frf_kernel.hpp"
 #include "convolution/operators/dcfft_operator.hpp"
 #include "convolution/operators/periodic_operator.hpp"
 #include "core/error.hpp"
@@ -138,6 +141,39 @@ TEST_CASE("the distributed DC-FFT operator equals the serial one on the free sur
   }
 }
 
+TEST_CASE("the distributed frf-split operator equals the serial one on a coated free surface") {
+  const Communicator comm = Communicator::world();
+  struct Case {
+    Grid grid;
+    double thickness;
+    double sigma = 0.0;  // the split's window; 0: automatic
+  };
+  // 44 x 50 cells of TiN 20 um: a lattice of 49 x 50 entries for the quarter's 45 x 51 (the
+  // short range's reach is 32 sigma), each rank's lattice rows sent to other ranks' quarter rows;
+  // 20 x 16: a lattice three times the quarter's rows; a window of 12 cells: the long range by its
+  // stencil;
+  // cells 200 times longer than wide: a wide axis, its 1-D lattice folded on every rank.
+  for (const Case& c :
+       {Case{Grid(44, 50, 1e-3, 1.2e-3), 20e-6}, Case{Grid(20, 16, 1e-3, 0.8e-3), 50e-6},
+        Case{Grid(40, 36, 1e-3, 0.9e-3), 300e-6, 0.3e-3},
+        Case{Grid(6, 40, 1.2e-3, 0.04e-3), 5e-6}}) {
+    const auto frf = make_frf(LayerStack({Coating{tin, c.thickness, Interface::bonded}}, steel));
+    SplitKernelOptions options;
+    options.sigma = c.sigma;
+    SplitKernelReport report;
+    DcfftOperator serial(split_frf_kernel(c.grid, *frf, options, &report));
+    DistributedDcfftOperator distributed(comm, c.grid, *frf, options);
+    CHECK(distributed.method() == Method::frf_split);
+    const Field p = random_pressure(c.grid, 5);
+    const Field u = distributed.apply(rows_of(p, distributed.slab()));
+    const Field reference = rows_of(serial.apply(p), distributed.slab());
+    INFO(c.grid.nx() << " x " << c.grid.ny() << ", h = " << c.thickness << ": cell rule "
+                     << report.cell_rule << ", wide " << report.wide_x << report.wide_y);
+    // The same coefficients to rounding (the lattice's transforms' orders of operations differ).
+    CHECK(relative_difference(comm, u, reference) < 1e-13);
+  }
+}
+
 TEST_CASE("a distributed free Hertz contact equals the serial solve") {
   const Communicator comm = Communicator::world();
   // A paraboloid on steel, the contact radius about a quarter of the domain.
@@ -161,6 +197,30 @@ TEST_CASE("a distributed free Hertz contact equals the serial solve") {
   // A contact reaching the domain's edge is seen by the rank that holds the border rows.
   const ContactResult edge = distributed->solve(rows_of(h, s), ContactControl::load, 50 * load);
   CHECK(edge.touches_boundary);
+}
+
+TEST_CASE("a distributed free contact of a coated body equals the serial solve") {
+  const Communicator comm = Communicator::world();
+  // A paraboloid on TiN 20 um on steel, the contact radius about a quarter of the domain.
+  const Grid grid(48, 42, 1e-3, 0.9e-3);
+  const double radius = 5e-3;
+  const Field h = height(grid, Paraboloid{radius});
+  const auto frf = make_frf(LayerStack({Coating{tin, 20e-6, Interface::bonded}}, steel));
+  DcfftOperator serial_op(split_frf_kernel(grid, *frf));
+  DistributedDcfftOperator op(comm, grid, *frf);
+  const Slab& s = op.slab();
+  ContactOptions options;
+  options.nested_start = false;  // one patch: the serial solve takes none either
+  options.compute_approach = true;
+  ContactSolver serial(serial_op, options);
+  const auto distributed = distributed_contact_solver(op, options);
+  const double e_star = steel.plane_strain_modulus();
+  const double load = 4.0 * e_star * std::pow(0.25e-3, 3) / (3.0 * radius);  // a ~ 0.25 mm
+  for (const ContactControl control : {ContactControl::load, ContactControl::approach}) {
+    const double value = control == ContactControl::load ? load : 0.25e-3 * 0.25e-3 / radius;
+    check_same_solve(comm, serial.solve(h, control, value),
+                     distributed->solve(rows_of(h, s), control, value), s);
+  }
 }
 
 TEST_CASE("the distributed periodic operator refuses a bad pressure on every rank together") {

@@ -107,7 +107,7 @@ void choose_lattice(SplitPlan& p) {
   const double hy =
       std::max(static_cast<double>(p.ny), std::ceil(lattice_reach(p, p.wide_x) / p.dy));
   p.lattice_entries = (p.wide_x ? 1.0 : hx + 1.0) * (p.wide_y ? 1.0 : hy + 1.0);
-  if (p.lattice_entries > max_lattice_entries) return;
+  if (p.lattice_entries > p.lattice_limit) return;
   p.lattice_x = lattice_axis(p, p.nx, p.dx, p.wide_x, p.wide_y);
   p.lattice_y = lattice_axis(p, p.ny, p.dy, p.wide_y, p.wide_x);
 }
@@ -118,10 +118,10 @@ void choose_lattice(SplitPlan& p) {
 // that is huge against a cell, or a grid of more than ~11585^2 cells (the lattice covers every
 // offset of the domain); the automatic sigma keeps the half sizes <= max(2n, 96).
 void require_lattice(const SplitPlan& p) {
-  COATFFT_REQUIRE(p.lattice_entries <= max_lattice_entries, "split_frf_kernel: sigma = ", p.sigma,
+  COATFFT_REQUIRE(p.lattice_entries <= p.lattice_limit, "split_frf_kernel: sigma = ", p.sigma,
                   " m against cells of ", p.dx, " x ", p.dy, " m on ", p.nx, " x ", p.ny,
                   " cells needs a short-range lattice of ", p.lattice_entries,
-                  " entries (more than ", max_lattice_entries,
+                  " entries (more than ", p.lattice_limit,
                   "); use fewer cells, leave sigma automatic (0), or use frf-spectral");
 }
 
@@ -193,9 +193,11 @@ void choose_long_range_rules(SplitPlan& p) {
 
 }  // namespace
 
-SplitPlan make_split_plan(const Grid& grid, const Frf& frf, const SplitKernelOptions& options) {
+SplitPlan make_split_plan(const Grid& grid, const Frf& frf, const SplitKernelOptions& options,
+                          int lattice_ranks) {
   check_options(options);
   SplitPlan p;
+  p.lattice_limit = max_lattice_entries * lattice_ranks;
   p.nx = grid.nx();
   p.ny = grid.ny();
   p.dx = grid.dx();

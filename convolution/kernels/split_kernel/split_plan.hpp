@@ -70,6 +70,7 @@ struct SplitPlan {
   LatticeAxis lattice_x;
   LatticeAxis lattice_y;
   double lattice_entries = 0.0;  // of the short-range fold (require_lattice)
+  double lattice_limit = 0.0;    // max_lattice_entries times the ranks that share the lattice
   // The long-range part: Hankel panels in k, radial steps, and the rule over each cell.
   std::vector<double> panel_edges;  // of the uniform table
   double r_max = 0.0;               // the domain's diagonal plus the stencil's reach
@@ -101,8 +102,10 @@ std::vector<double> hankel_panel_edges(double k_c, double r_max, double k_lo);
 // with c_2 = 2e-4, c_3 = 7e-7, c_4 = 7e-9, c_5 = 3e-11, c_6 = 2e-12: ~1e-13 relative.
 int nodes_for_ratio(double ratio);
 
-// The plan of the kernel of `frf` on `grid` (InvalidArgument for bad options or FRF constants).
-SplitPlan make_split_plan(const Grid& grid, const Frf& frf, const SplitKernelOptions& options);
+// The plan of the kernel of `frf` on `grid` (InvalidArgument for bad options or FRF constants);
+// its lattice is held by `lattice_ranks` processes (a distributed kernel's), each a share.
+SplitPlan make_split_plan(const Grid& grid, const Frf& frf, const SplitKernelOptions& options,
+                          int lattice_ranks = 1);
 
 // Rows [y0, y0 + values.cols()) of the kernel's quarter K(i, j), 0 <= i <= nx, held as
 // values(i, j - y0). The serial kernel fills the whole quarter (y0 = 0, ny + 1 rows); a rank of a

@@ -1,0 +1,133 @@
+#include "distributed/distributed_split_kernel.hpp"
+
+#include <fftw3-mpi.h>
+#include <mpi.h>
+
+#include <algorithm>
+#include <climits>
+#include <cstdint>
+#include <vector>
+
+#include "convolution/fft/fftw_plan.hpp"
+#include "convolution/kernels/split_kernel/split_plan.hpp"
+#include "core/error.hpp"
+#include "distributed/detail/mpi_handle.hpp"
+#include "distributed/slab_fft.hpp"
+
+namespace coatfft::detail {
+namespace {
+
+// Rows [first, first + count) of an array, as one rank holds them.
+struct RowBlock {
+  std::int64_t first = 0;
+  std::int64_t count = 0;
+};
+
+std::vector<RowBlock> every_rank(const Communicator& comm, RowBlock mine) {
+  std::vector<RowBlock> all(static_cast<std::size_t>(comm.size()));
+  comm.all_gather(&mine, sizeof mine, all.data());
+  return all;
+}
+
+RowBlock overlap(RowBlock a, RowBlock b) {
+  const std::int64_t first = std::max(a.first, b.first);
+  const std::int64_t end = std::min(a.first + a.count, b.first + b.count);
+  return {first, std::max<std::int64_t>(end - first, 0)};
+}
+
+int checked_count(std::int64_t n) {
+  COATFFT_REQUIRE(n <= INT_MAX, "split_frf_kernel: ", n,
+                  " lattice entries to send to one rank, more than MPI's counts take");
+  return static_cast<int>(n);
+}
+
+// The transformed lattice rows `held` (sx entries each, in `lattice`) that are quarter rows j < my
+// go to the ranks that hold those rows of the quarter, which add norm times their first mx
+// entries, as the serial kernel adds its lattice's (split_kernel/short_range.cpp).
+void add_to_quarter(const Communicator& comm, const split::SplitPlan& p,
+                    const split::ShortRangeLattice& l, RowBlock held, const double* lattice,
+                    split::QuarterRows quarter) {
+  const std::ptrdiff_t begin = quarter.begin(p);
+  const RowBlock wanted{begin, std::max<std::ptrdiff_t>(std::min(quarter.end(p), l.my) - begin, 0)};
+  const std::vector<RowBlock> lattices = every_rank(comm, held);
+  const std::vector<RowBlock> quarters = every_rank(comm, wanted);
+  const auto ranks = static_cast<std::size_t>(comm.size());
+  std::vector<int> send_counts(ranks), send_offsets(ranks), receive_counts(ranks),
+      receive_offsets(ranks);
+  std::vector<double> send;
+  std::int64_t received = 0;
+  for (std::size_t r = 0; r < ranks; ++r) {
+    const RowBlock out = overlap(held, quarters[r]);
+    send_offsets[r] = checked_count(static_cast<std::int64_t>(send.size()));
+    for (std::int64_t j = out.first; j < out.first + out.count; ++j) {
+      const double* row = lattice + (j - held.first) * l.sx;
+      send.insert(send.end(), row, row + l.mx);
+    }
+    send_counts[r] = checked_count(out.count * l.mx);
+    receive_offsets[r] = checked_count(received);
+    receive_counts[r] = checked_count(overlap(lattices[r], wanted).count * l.mx);
+    received += receive_counts[r];
+  }
+  std::vector<double> receive(static_cast<std::size_t>(std::max<std::int64_t>(received, 1)));
+  MPI_Alltoallv(send.data(), send_counts.data(), send_offsets.data(), MPI_DOUBLE, receive.data(),
+                receive_counts.data(), receive_offsets.data(), MPI_DOUBLE, mpi_comm(comm));
+  for (std::size_t r = 0; r < ranks; ++r) {
+    const RowBlock in = overlap(lattices[r], wanted);
+    const double* values = receive.data() + receive_offsets[r];
+    for (std::int64_t j = in.first; j < in.first + in.count; ++j, values += l.mx) {
+      double* row = quarter.row(j);
+      for (std::ptrdiff_t i = 0; i < l.mx; ++i) row[i] += l.norm * values[i];
+    }
+  }
+}
+
+// (c) R (1 - w) on the quarter's rows. A lattice with a wide axis is one row or column, folded
+// whole on every rank; otherwise each rank folds its rows of the (sy, sx) lattice, the 2-D DCT-I
+// is taken over the ranks and transposed back to rows, and the rows go where the quarter has them.
+void add_short_range(const Communicator& comm, const split::SplitPlan& p,
+                     split::QuarterRows quarter) {
+  const split::ShortRangeLattice l = split::short_range_lattice(p);
+  if (l.empty) return;
+  if (l.sx == 1 || l.sy == 1) {
+    std::vector<double> spare;
+    SplitKernelReport report;
+    split::add_short_range(p, quarter, spare, report);
+    return;
+  }
+  const std::ptrdiff_t n[2] = {l.sy, l.sx};
+  std::ptrdiff_t rows = 0, n0 = 0, columns = 0, m0 = 0;
+  const std::ptrdiff_t doubles =
+      fftw_mpi_local_size_many_transposed(2, n, 1, FFTW_MPI_DEFAULT_BLOCK, FFTW_MPI_DEFAULT_BLOCK,
+                                          mpi_comm(comm), &rows, &n0, &columns, &m0);
+  const auto size = static_cast<std::size_t>(std::max<std::ptrdiff_t>(doubles, 1));
+  FftwRealBuffer lattice(size), transposed(size);
+  if (rows > 0) split::fold_lattice_rows(p, n0, rows, lattice.data());
+  dct1_rows_then_columns(comm, l.sy, l.sx, rows, columns, lattice.data(), transposed.data(),
+                         p.threads);
+  const FftwPlan to_rows = FftwPlan::create(p.threads, [&] {
+    return fftw_mpi_plan_many_transpose(l.sx, l.sy, 1, FFTW_MPI_DEFAULT_BLOCK,
+                                        FFTW_MPI_DEFAULT_BLOCK, transposed.data(), lattice.data(),
+                                        mpi_comm(comm), FFTW_ESTIMATE | FFTW_DESTROY_INPUT);
+  });
+  to_rows.execute();
+  add_to_quarter(comm, p, l, {n0, rows}, lattice.data(), quarter);
+}
+
+}  // namespace
+
+void split_quarter_rows(const Communicator& comm, const Grid& grid, const Frf& frf,
+                        const SplitKernelOptions& options, std::ptrdiff_t y0, std::ptrdiff_t rows,
+                        double* out) {
+  const split::SplitPlan plan = split::make_split_plan(grid, frf, options, comm.size());
+  split::require_lattice(plan);
+  Field values = Field::Zero(grid.nx() + 1, rows);
+  const split::QuarterRows quarter{values, y0};
+  std::vector<double> spare;
+  SplitKernelReport report;
+  split::assign_singular_terms(plan, quarter);                               // (a) + (b)
+  if (plan.long_range) split::add_long_range(plan, quarter, spare, report);  // (c) R w
+  if (plan.short_range) add_short_range(comm, plan, quarter);                // (c) R (1 - w)
+  std::copy_n(values.data(), values.size(), out);
+}
+
+}  // namespace coatfft::detail
