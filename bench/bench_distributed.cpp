@@ -15,7 +15,10 @@
 // scripts/distributed_scale_run.sh to bench/results/distributed_contact.csv.
 // With --free, the free surface's DC-FFT instead of the periodic operator: DistributedDcfftOperator
 // against the serial DcfftOperator with Love's coefficients, on steel (written by
-// scripts/distributed_scale_run.sh to bench/results/distributed_dcfft.csv).
+// scripts/distributed_scale_run.sh to bench/results/distributed_dcfft.csv). With --free-split, the
+// free surface of the coated body by frf-split: DistributedDcfftOperator with the split kernel's
+// coefficients (its lattice transformed over the ranks) against DcfftOperator(split_frf_kernel)
+// (bench/results/distributed_split.csv); its setup is the kernel's.
 // Body: TiN 5 um on steel, period 1 mm (--free: steel); pressure uniform random in [0, 1 GPa].
 #include <chrono>
 #include <cstdio>
@@ -30,6 +33,7 @@
 #include "contact/contact_solver.hpp"
 #include "convolution/kernels/influence_kernel.hpp"
 #include "convolution/kernels/periodic_kernel.hpp"
+#include "convolution/kernels/split_frf_kernel.hpp"
 #include "convolution/operators/dcfft_operator.hpp"
 #include "convolution/operators/periodic_operator.hpp"
 #include "core/detail/timing.hpp"
@@ -54,7 +58,8 @@ struct Options {
   int threads = 1;
   bool serial = false;
   bool contact = false;
-  bool free = false;  // DC-FFT of the free surface on steel
+  bool free = false;        // DC-FFT of the free surface on steel
+  bool free_split = false;  // the free surface of the coated body by frf-split
 };
 
 const Material steel(210e9, 0.3);
@@ -66,6 +71,9 @@ std::unique_ptr<DistributedOperator> distributed_operator(const Options& o,
   if (o.free)
     return std::make_unique<DistributedDcfftOperator>(comm, grid, steel.plane_strain_modulus(),
                                                       Planning::estimate, o.threads);
+  if (o.free_split)
+    return std::make_unique<DistributedDcfftOperator>(
+        comm, grid, frf, SplitKernelOptions{.threads = o.threads}, Planning::estimate, o.threads);
   return std::make_unique<DistributedPeriodicOperator>(
       comm, grid, frf, PeriodicKernelOptions{.threads = o.threads}, Planning::estimate, o.threads);
 }
@@ -75,6 +83,10 @@ std::unique_ptr<SurfaceOperator> serial_operator(const Options& o, const Frf& fr
   if (o.free)
     return std::make_unique<DcfftOperator>(
         love_kernel(grid, steel.plane_strain_modulus(), o.threads), Planning::estimate, o.threads);
+  if (o.free_split)
+    return std::make_unique<DcfftOperator>(
+        split_frf_kernel(grid, frf, SplitKernelOptions{.threads = o.threads}), Planning::estimate,
+        o.threads);
   return std::make_unique<PeriodicOperator>(
       grid, periodic_influence_kernel(grid, frf, {.threads = o.threads}), Method::frf_spectral,
       Planning::estimate, Precision::double_precision, o.threads);
@@ -231,9 +243,16 @@ int main(int argc, char** argv) {
   app.flag("--serial", o.serial, "the serial PeriodicOperator, without MPI");
   app.flag("--contact", o.contact, "a periodic rough contact instead of applications");
   app.flag("--free", o.free, "the free surface's DC-FFT on steel instead of the periodic operator");
+  app.flag("--free-split", o.free_split,
+           "the free surface of the coated body by frf-split instead of the periodic operator");
   if (const auto status = app.parse(argc, argv)) return *status;
-  if (o.free && o.contact) {
-    std::cerr << "bench_distributed: --free measures the operator alone; the contact is periodic\n";
+  if ((o.free || o.free_split) && o.contact) {
+    std::cerr << "bench_distributed: --free and --free-split measure the operator alone; the "
+                 "contact is periodic\n";
+    return 2;
+  }
+  if (o.free && o.free_split) {
+    std::cerr << "bench_distributed: --free or --free-split, not both\n";
     return 2;
   }
   try {

@@ -71,8 +71,10 @@ std::vector<double> coefficient_spectrum(
                                           detail::mpi_comm(comm), &rows, &y0, &columns, &kx0);
   COATFFT_REQUIRE(columns == slab.columns && (columns == 0 || kx0 == slab.kx0),
                   "DistributedDcfftOperator: FFTW-MPI split the quarter's columns otherwise");
-  FftwRealBuffer quarter(entries(doubles)), transposed(entries(doubles));
+  // The transpose's second array after the rows: the split kernel's own arrays are freed by then.
+  FftwRealBuffer quarter(entries(doubles));
   quarter_rows(y0, rows, quarter.data());
+  FftwRealBuffer transposed(entries(doubles));
   detail::dct1_rows_then_columns(comm, qy, qx, rows, columns, quarter.data(), transposed.data(),
                                  threads);
   const double norm = 1.0 / static_cast<double>(4 * g.nx() * g.ny());
@@ -107,11 +109,12 @@ DistributedDcfftOperator::DistributedDcfftOperator(const Communicator& comm, con
 DistributedDcfftOperator::DistributedDcfftOperator(const Communicator& comm, const Grid& grid,
                                                    const Frf& frf,
                                                    const SplitKernelOptions& options,
-                                                   Planning planning, int threads)
+                                                   Planning planning, int threads,
+                                                   SplitKernelReport* report)
     : DistributedDcfftOperator(comm, grid, Method::frf_split, planning, threads,
                                [&](std::ptrdiff_t y0, std::ptrdiff_t rows, double* out) {
-                                 detail::split_quarter_rows(comm, grid, frf, options, y0, rows,
-                                                            out);
+                                 detail::split_quarter_rows(comm, grid, frf, options, y0, rows, out,
+                                                            report);
                                }) {}
 
 DistributedDcfftOperator::DistributedDcfftOperator(const Communicator& comm, const Grid& grid,
@@ -125,6 +128,8 @@ DistributedDcfftOperator::DistributedDcfftOperator(const Communicator& comm, con
   std::ptrdiff_t doubles = 0;
   t.slab = detail::slab_of(comm, 2 * nx, ny, doubles);
   t.slab.nx = nx;
+  // The coefficients first: their construction's arrays are freed before the transforms' are made.
+  t.multiplier = coefficient_spectrum(comm, grid, t.slab, threads, quarter_rows);
   const std::ptrdiff_t rows = t.slab.rows, columns = t.slab.columns;
   t.rows = FftwComplexBuffer(entries(doubles / 2));
   t.columns = FftwComplexBuffer(entries(doubles / 2));
@@ -160,7 +165,6 @@ DistributedDcfftOperator::DistributedDcfftOperator(const Communicator& comm, con
                                 t.block.data(), nullptr, 1, n2y, sign, flags);
     });
   }
-  t.multiplier = coefficient_spectrum(comm, grid, t.slab, threads, quarter_rows);
 }
 
 const Slab& DistributedDcfftOperator::slab() const {

@@ -35,9 +35,11 @@ class DistributedDcfftOperator final : public DistributedOperator {
   /// frf-split's coefficients of `frf` on `grid` (split_frf_kernel's, to rounding: the quarter's
   /// rows are the serial kernel's, the short range's lattice is transformed over the ranks);
   /// `options.threads` its loops' threads, `threads` FFTW's. InvalidArgument as split_frf_kernel.
+  /// `report`, when given, receives split_frf_kernel's diagnostics (this rank's seconds).
   DistributedDcfftOperator(const Communicator& comm, const Grid& grid, const Frf& frf,
                            const SplitKernelOptions& options = {},
-                           Planning planning = Planning::estimate, int threads = 1);
+                           Planning planning = Planning::estimate, int threads = 1,
+                           SplitKernelReport* report = nullptr);
   ~DistributedDcfftOperator();
 
   Method method() const override { return method_; }

@@ -4,12 +4,14 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <chrono>
 #include <climits>
 #include <cstdint>
 #include <vector>
 
 #include "convolution/fft/fftw_plan.hpp"
 #include "convolution/kernels/split_kernel/split_plan.hpp"
+#include "core/detail/timing.hpp"
 #include "core/error.hpp"
 #include "distributed/detail/mpi_handle.hpp"
 #include "distributed/slab_fft.hpp"
@@ -42,8 +44,9 @@ int checked_count(std::int64_t n) {
 }
 
 // The transformed lattice rows `held` (sx entries each, in `lattice`) that are quarter rows j < my
-// go to the ranks that hold those rows of the quarter, which add norm times their first mx
-// entries, as the serial kernel adds its lattice's (split_kernel/short_range.cpp).
+// go, whole and straight from the lattice, to the ranks that hold those rows of the quarter, which
+// add norm times their first mx entries, as the serial kernel adds its lattice's
+// (split_kernel/short_range.cpp).
 void add_to_quarter(const Communicator& comm, const split::SplitPlan& p,
                     const split::ShortRangeLattice& l, RowBlock held, const double* lattice,
                     split::QuarterRows quarter) {
@@ -54,27 +57,22 @@ void add_to_quarter(const Communicator& comm, const split::SplitPlan& p,
   const auto ranks = static_cast<std::size_t>(comm.size());
   std::vector<int> send_counts(ranks), send_offsets(ranks), receive_counts(ranks),
       receive_offsets(ranks);
-  std::vector<double> send;
   std::int64_t received = 0;
   for (std::size_t r = 0; r < ranks; ++r) {
     const RowBlock out = overlap(held, quarters[r]);
-    send_offsets[r] = checked_count(static_cast<std::int64_t>(send.size()));
-    for (std::int64_t j = out.first; j < out.first + out.count; ++j) {
-      const double* row = lattice + (j - held.first) * l.sx;
-      send.insert(send.end(), row, row + l.mx);
-    }
-    send_counts[r] = checked_count(out.count * l.mx);
+    send_offsets[r] = checked_count(out.count > 0 ? (out.first - held.first) * l.sx : 0);
+    send_counts[r] = checked_count(out.count * l.sx);
     receive_offsets[r] = checked_count(received);
-    receive_counts[r] = checked_count(overlap(lattices[r], wanted).count * l.mx);
+    receive_counts[r] = checked_count(overlap(lattices[r], wanted).count * l.sx);
     received += receive_counts[r];
   }
   std::vector<double> receive(static_cast<std::size_t>(std::max<std::int64_t>(received, 1)));
-  MPI_Alltoallv(send.data(), send_counts.data(), send_offsets.data(), MPI_DOUBLE, receive.data(),
+  MPI_Alltoallv(lattice, send_counts.data(), send_offsets.data(), MPI_DOUBLE, receive.data(),
                 receive_counts.data(), receive_offsets.data(), MPI_DOUBLE, mpi_comm(comm));
   for (std::size_t r = 0; r < ranks; ++r) {
     const RowBlock in = overlap(lattices[r], wanted);
     const double* values = receive.data() + receive_offsets[r];
-    for (std::int64_t j = in.first; j < in.first + in.count; ++j, values += l.mx) {
+    for (std::int64_t j = in.first; j < in.first + in.count; ++j, values += l.sx) {
       double* row = quarter.row(j);
       for (std::ptrdiff_t i = 0; i < l.mx; ++i) row[i] += l.norm * values[i];
     }
@@ -117,17 +115,20 @@ void add_short_range(const Communicator& comm, const split::SplitPlan& p,
 
 void split_quarter_rows(const Communicator& comm, const Grid& grid, const Frf& frf,
                         const SplitKernelOptions& options, std::ptrdiff_t y0, std::ptrdiff_t rows,
-                        double* out) {
+                        double* out, SplitKernelReport* report_out) {
+  const auto start = std::chrono::steady_clock::now();
   const split::SplitPlan plan = split::make_split_plan(grid, frf, options, comm.size());
   split::require_lattice(plan);
-  Field values = Field::Zero(grid.nx() + 1, rows);
-  const split::QuarterRows quarter{values, y0};
+  std::fill_n(out, (grid.nx() + 1) * rows, 0.0);
+  const split::QuarterRows quarter{out, grid.nx(), y0, rows};
   std::vector<double> spare;
   SplitKernelReport report;
+  split::report_plan(plan, report);
   split::assign_singular_terms(plan, quarter);                               // (a) + (b)
   if (plan.long_range) split::add_long_range(plan, quarter, spare, report);  // (c) R w
   if (plan.short_range) add_short_range(comm, plan, quarter);                // (c) R (1 - w)
-  std::copy_n(values.data(), values.size(), out);
+  report.seconds = seconds_since(start);
+  if (report_out != nullptr) *report_out = report;
 }
 
 }  // namespace coatfft::detail

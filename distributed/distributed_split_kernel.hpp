@@ -17,9 +17,10 @@ namespace coatfft::detail {
 
 /// Rows [y0, y0 + rows) of the quarter K(i, j), 0 <= i <= nx, of split_frf_kernel(grid, frf,
 /// options) into `out` (rows x (nx + 1), x fastest; 0 in the slots nx and ny). Collective: every
-/// rank calls it with its own rows. InvalidArgument as split_frf_kernel.
+/// rank calls it with its own rows. InvalidArgument as split_frf_kernel. `report`, when given,
+/// receives the plan's choices and this rank's seconds.
 void split_quarter_rows(const Communicator& comm, const Grid& grid, const Frf& frf,
                         const SplitKernelOptions& options, std::ptrdiff_t y0, std::ptrdiff_t rows,
-                        double* out);
+                        double* out, SplitKernelReport* report = nullptr);
 
 }  // namespace coatfft::detail

@@ -8,6 +8,7 @@
 #include <variant>
 
 #include "contact/indenter.hpp"
+#include "convolution/operators/make_operator.hpp"
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
 #include "core/memory.hpp"
@@ -44,13 +45,12 @@ std::string not_distributable(const Scene& scene) {
   if (!scene.contact) return "[pressure] (a known load)";
   if (scene.method.automatic)
     return "[method] name = \"auto\" (its reference computations; name the method: \"dcfft\" "
-           "on a free boundary)";
-  if (!scene.periodic && (scene.frf || !scene.body->is_homogeneous()))
-    return "[grid] boundary = \"free\" on a coated body or an [frf] table (the FRF-split "
-           "kernel's spectrum)";
-  if (!scene.periodic && scene.method.options.method != Method::dcfft)
-    return detail::concat("[method] name = \"", to_string(scene.method.options.method),
-                          "\" on a free boundary (there a distributed run takes \"dcfft\")");
+           "or \"frf-split\" on a free boundary)";
+  const Method method = scene.method.options.method;
+  if (!scene.periodic && method != Method::dcfft && method != Method::frf_split)
+    return detail::concat("[method] name = \"", to_string(method),
+                          "\" on a free boundary (there a distributed run takes \"dcfft\" or "
+                          "\"frf-split\")");
   const ContactSpec& contact = *scene.contact;
   if (!contact.topography.is_null())
     return "[contact] topography (a measured surface: `coatfft topography FILE -o h.npy` writes "
@@ -83,8 +83,8 @@ FieldNumbers slab_numbers(const Communicator& comm, const Grid& grid, const Slab
 }
 
 // The distributed operator and what summary.json reports of it, as operator_from_scene's: the
-// periodic kernel of the body's FRF, or on a free boundary DC-FFT with Love's coefficients on
-// the padded lattice.
+// periodic kernel of the body's FRF, or on a free boundary DC-FFT with Love's coefficients
+// (dcfft) or frf-split's of the body's FRF.
 std::unique_ptr<DistributedOperator> distributed_operator(const Communicator& comm,
                                                           const Scene& scene,
                                                           OperatorReport& report) {
@@ -99,6 +99,15 @@ std::unique_ptr<DistributedOperator> distributed_operator(const Communicator& co
     op = std::make_unique<DistributedPeriodicOperator>(comm, grid, *frf, kernel, o.planning,
                                                        o.threads, o.method);
     report.frf = frf->name();
+  } else if (o.method == Method::frf_split) {
+    const std::shared_ptr<const Frf> frf = body_frf(scene);
+    SplitKernelOptions split = o.split;
+    split.threads = o.threads;
+    SplitKernelReport split_report;
+    op = std::make_unique<DistributedDcfftOperator>(comm, grid, *frf, split, o.planning, o.threads,
+                                                    &split_report);
+    report.frf = frf->name();
+    report.split = split_report;
   } else {
     op = std::make_unique<DistributedDcfftOperator>(
         comm, grid, scene.body->substrate().plane_strain_modulus(), o.planning, o.threads);
@@ -124,6 +133,8 @@ PreparedScene prepare_distributed_scene(const Communicator& comm,
   check_repeat(options.repeat);
   Scene scene = read_scene(scene_file, SceneReading{.height_map_values = false});
   check_distributable(scene);
+  // The serial run's refusal, before the set-up here (its operator is built otherwise).
+  if (!scene.periodic && !scene.frf) check_love_body(*scene.body, scene.method.options.method);
   const int sharing = comm.ranks_sharing_memory();
   std::optional<double> limit = options.max_memory;
   if (!limit)

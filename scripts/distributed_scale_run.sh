@@ -4,10 +4,11 @@
 # (one process per row, so each row's peak memory is its own). Writes
 # bench/results/distributed_operator.csv and (WHAT=contact or both) distributed_contact.csv; with
 # WHAT=free, the free surface's DC-FFT on steel against the serial DcfftOperator,
-# bench/results/distributed_dcfft.csv.
+# bench/results/distributed_dcfft.csv; with WHAT=split, the free surface of the coated body by
+# frf-split against DcfftOperator(split_frf_kernel), bench/results/distributed_split.csv.
 #   Body: TiN 5 um on steel, period 1 mm; one FFTW thread a rank; FFTW_ESTIMATE plans.
 # Usage: scripts/distributed_scale_run.sh [N ...]   (default 2048 4096; RANKS, default "1 2 4";
-#        WHAT: operator, contact or both (default), or free; SERIAL=0 leaves out the serial rows; TAG
+#        WHAT: operator, contact or both (default), free or split; SERIAL=0 leaves out the serial rows; TAG
 #        names other result files, distributed_operatorTAG.csv and distributed_contactTAG.csv;
 #        BUILD_DIR, default build). As root, Open MPI's permission variables are set here.
 set -euo pipefail
@@ -59,6 +60,20 @@ if [ "$what" = free ]; then
   echo "N,ranks,threads,setup_s,apply_ms,transpose_ms,communication_share,rss_before_mb,rss_max_mb,rss_sum_mb"
 } >"$tmp"
 measure "$root/bench/results/distributed_dcfft$tag.csv" --free
+trap - EXIT
+exit 0
+fi
+if [ "$what" = split ]; then
+{
+  header "--free-split: the coated body's free surface by frf-split against DcfftOperator(split_frf_kernel)" \
+    "TiN 5 um on steel, a free surface of 1 mm x 1 mm"
+  echo "# setup_s: the coefficients (the split kernel: its quarter's rows, its lattice over the ranks)"
+  echo "#   and their spectrum, the slowest rank; apply_ms: median of 5 applications, each timed from"
+  echo "#   a barrier to the slowest rank; transpose_ms: the transposes' share of one; rss_*: peak"
+  echo "#   resident memory [MiB] before the operator (max over ranks), after (max, sum over ranks)"
+  echo "N,ranks,threads,setup_s,apply_ms,transpose_ms,communication_share,rss_before_mb,rss_max_mb,rss_sum_mb"
+} >"$tmp"
+measure "$root/bench/results/distributed_split$tag.csv" --free-split
 trap - EXIT
 exit 0
 fi

@@ -45,25 +45,6 @@ double split_rectangle_integral(double x, double y, double dx, double dy, double
 namespace detail::split {
 namespace {
 
-// What the plan chose, for the report.
-void report_plan(const SplitPlan& p, SplitKernelReport& rep) {
-  rep.c0 = p.c0;
-  rep.c_inf = p.c_inf;
-  rep.beta = p.beta;
-  rep.remainder_zero = p.remainder_zero;
-  if (p.remainder_zero) return;
-  rep.sigma = p.sigma;
-  rep.alias_order = std::max(p.lattice_x.p_max, p.lattice_y.p_max);
-  rep.alias_capped = p.lattice_x.capped || p.lattice_y.capped;
-  rep.wide_x = p.wide_x;
-  rep.wide_y = p.wide_y;
-  if (!p.long_range) return;
-  const bool graded = p.quad_x.graded || p.quad_y.graded;
-  rep.cell_rule = p.stencil ? 1
-                  : graded  ? 0
-                           : std::max(p.quad_x.nodes * p.quad_x.sub, p.quad_y.nodes * p.quad_y.sub);
-}
-
 // Work counts of the plan (split_frf_kernel_work): the fold visits the lattice entries inside
 // |k| < k_r (spacing pi/(h d) along an axis), each summing its (2 p_max + 1) aliases per axis
 // (half of them on a symmetric lattice); the long part evaluates its Hankel table and a rule of
@@ -122,7 +103,7 @@ InfluenceKernel split_frf_kernel(const Grid& grid, const Frf& frf,
   detail::split::report_plan(plan, rep);
   Field quarter(plan.nx + 1, plan.ny + 1);
   std::vector<double> spare;  // scratch shared by the two parts of R
-  const detail::split::QuarterRows rows{quarter, 0};
+  const detail::split::QuarterRows rows{quarter.data(), plan.nx, 0, plan.ny + 1};
   detail::split::assign_singular_terms(plan, rows);                              // (a) + (b)
   if (plan.long_range) detail::split::add_long_range(plan, rows, spare, rep);    // (c) R w
   if (plan.short_range) detail::split::add_short_range(plan, rows, spare, rep);  // (c) R (1 - w)

@@ -128,6 +128,14 @@ Method exact_method(const LayerStack& body) {
   return body.is_homogeneous() ? Method::dcfft : Method::frf_split;
 }
 
+// Love's coefficients exist in closed form only for the homogeneous half-space.
+void check_love_body(const LayerStack& body, Method method) {
+  COATFFT_REQUIRE(!uses_love_coefficients(method) || body.is_homogeneous(), "method \"",
+                  to_string(method),
+                  "\" uses Love's coefficients of a homogeneous half-space; for a coated body "
+                  "use \"frf-split\", \"frf-dcfft\" or \"frf-spectral\"");
+}
+
 void check_operator_options(const Grid& grid, const OperatorOptions& o) {
   COATFFT_REQUIRE(o.threads >= 1 && o.threads <= max_threads, "threads = ", o.threads,
                   " must be in 1..", max_threads);
@@ -158,10 +166,7 @@ BuiltOperator make_operator(const Grid& grid, const LayerStack& body,
       return periodic_operator(grid, *make_frf(body), options, report);
     if (!uses_love_coefficients(options.method))
       return frf_operator(grid, *make_frf(body), options, report);
-    // Love's coefficients exist in closed form only for the homogeneous half-space.
-    COATFFT_REQUIRE(body.is_homogeneous(), "method \"", to_string(options.method),
-                    "\" uses Love's coefficients of a homogeneous half-space; for a coated body "
-                    "use \"frf-split\", \"frf-dcfft\" or \"frf-spectral\"");
+    check_love_body(body, options.method);
     const InfluenceKernel kernel = timed_kernel(report, [&] {
       return love_kernel(grid, body.substrate().plane_strain_modulus(), options.threads);
     });

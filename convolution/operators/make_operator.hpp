@@ -77,6 +77,11 @@ struct BuiltOperator {
 /// also the two methods a periodic boundary takes.
 Method exact_method(const LayerStack& body);
 
+/// Throws InvalidArgument unless `method` can be used on `body`'s free surface: Love's coefficients
+/// (dcfft, direct) exist for a homogeneous body only. make_operator checks it; so does a caller
+/// that builds the operator otherwise (the distributed run).
+void check_love_body(const LayerStack& body, Method method);
+
 /// Throws InvalidArgument, with a message naming the option ("alpha = 1.5: ..."), unless
 /// `options` can be used on `grid` (alpha, tolerances, threads, a method the boundary allows).
 /// make_operator calls it first; a reader of user input calls it to refuse bad input before any

@@ -193,6 +193,24 @@ void choose_long_range_rules(SplitPlan& p) {
 
 }  // namespace
 
+void report_plan(const SplitPlan& p, SplitKernelReport& rep) {
+  rep.c0 = p.c0;
+  rep.c_inf = p.c_inf;
+  rep.beta = p.beta;
+  rep.remainder_zero = p.remainder_zero;
+  if (p.remainder_zero) return;
+  rep.sigma = p.sigma;
+  rep.alias_order = std::max(p.lattice_x.p_max, p.lattice_y.p_max);
+  rep.alias_capped = p.lattice_x.capped || p.lattice_y.capped;
+  rep.wide_x = p.wide_x;
+  rep.wide_y = p.wide_y;
+  if (!p.long_range) return;
+  const bool graded = p.quad_x.graded || p.quad_y.graded;
+  rep.cell_rule = p.stencil ? 1
+                  : graded  ? 0
+                           : std::max(p.quad_x.nodes * p.quad_x.sub, p.quad_y.nodes * p.quad_y.sub);
+}
+
 SplitPlan make_split_plan(const Grid& grid, const Frf& frf, const SplitKernelOptions& options,
                           int lattice_ranks) {
   check_options(options);

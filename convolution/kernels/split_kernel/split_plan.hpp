@@ -107,21 +107,25 @@ int nodes_for_ratio(double ratio);
 SplitPlan make_split_plan(const Grid& grid, const Frf& frf, const SplitKernelOptions& options,
                           int lattice_ranks = 1);
 
-// Rows [y0, y0 + values.cols()) of the kernel's quarter K(i, j), 0 <= i <= nx, held as
-// values(i, j - y0). The serial kernel fills the whole quarter (y0 = 0, ny + 1 rows); a rank of a
-// distributed operator fills its own rows (distributed/distributed_split_kernel.cpp). Rows from ny
-// on are never used by the convolution and are left to the caller.
+// Rows [y0, y0 + rows) of the kernel's quarter K(i, j), 0 <= i <= nx, row j at values + (j - y0)
+// (nx + 1), x fastest (a Field (nx + 1, rows)'s layout). The serial kernel fills the whole quarter
+// (y0 = 0, ny + 1 rows); a rank of a distributed operator fills its own rows
+// (distributed/distributed_split_kernel.cpp). Rows from ny on are never used by the convolution
+// and are left to the caller.
 struct QuarterRows {
-  Field& values;
+  double* values = nullptr;
+  std::ptrdiff_t nx = 0;
   std::ptrdiff_t y0 = 0;
+  std::ptrdiff_t rows = 0;
 
   // The rows j < ny held here: [begin, end).
   std::ptrdiff_t begin(const SplitPlan& p) const { return std::min(y0, p.ny); }
-  std::ptrdiff_t end(const SplitPlan& p) const { return std::min(y0 + values.cols(), p.ny); }
-  double* row(std::ptrdiff_t j) { return &values(0, j - y0); }
-  // Every row j < ny: the serial kernel, which may use the quarter's symmetry in i and j.
-  bool whole(const SplitPlan& p) const { return y0 == 0 && values.cols() >= p.ny; }
+  std::ptrdiff_t end(const SplitPlan& p) const { return std::min(y0 + rows, p.ny); }
+  double* row(std::ptrdiff_t j) const { return values + (j - y0) * (nx + 1); }
 };
+
+// What the plan chose, into the report (split_frf_kernel's diagnostics).
+void report_plan(const SplitPlan& p, SplitKernelReport& rep);
 
 // (a) + (b) at every offset of `quarter`, or at the near cells only on the stencil route
 // (singular_terms.cpp).
