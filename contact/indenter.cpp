@@ -143,8 +143,7 @@ Field height(const Grid& grid, const Indenter& indenter) {
 
 Field height_rows(const Grid& grid, const Indenter& indenter, std::ptrdiff_t y0,
                   std::ptrdiff_t rows) {
-  COATFFT_REQUIRE(y0 >= 0 && rows >= 0 && y0 + rows <= grid.ny(), "height_rows: rows ", y0, " to ",
-                  y0 + rows, " are not rows of the grid (ny = ", grid.ny(), ")");
+  detail::require_rows(grid, y0, rows, "height_rows");
   return std::visit([&](const auto& shape) { return sampled(grid, shape, y0, rows); }, indenter);
 }
 

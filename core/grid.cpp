@@ -30,4 +30,13 @@ void require_load_radius(const Grid& grid, double radius, std::string_view key) 
                   " m must be finite and > 0, and at most half the domain (", half_domain, " m)");
 }
 
+namespace detail {
+
+void require_rows(const Grid& grid, std::ptrdiff_t y0, std::ptrdiff_t rows, std::string_view who) {
+  COATFFT_REQUIRE(y0 >= 0 && rows >= 0 && y0 + rows <= grid.ny(), who, ": rows ", y0, " to ",
+                  y0 + rows, " are not rows of the grid (ny = ", grid.ny(), ")");
+}
+
+}  // namespace detail
+
 }  // namespace coatfft

@@ -52,4 +52,10 @@ class Grid {
 /// to judge: cell averages keep its force, centre samples do not.
 void require_load_radius(const Grid& grid, double radius, std::string_view key);
 
+namespace detail {
+/// Refuses rows [y0, y0 + rows) that are not rows of `grid` (a slab's sampling functions), naming
+/// `who`. Throws InvalidArgument.
+void require_rows(const Grid& grid, std::ptrdiff_t y0, std::ptrdiff_t rows, std::string_view who);
+}  // namespace detail
+
 }  // namespace coatfft

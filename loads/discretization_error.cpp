@@ -48,14 +48,36 @@ void check_analytic_load(const AnalyticLoad& load) {
 }
 
 Field sample_load(const Grid& grid, const AnalyticLoad& load, Sampling sampling) {
+  return sample_load_rows(grid, load, sampling, 0, grid.ny());
+}
+
+Field sample_load_rows(const Grid& grid, const AnalyticLoad& load, Sampling sampling,
+                       std::ptrdiff_t y0, std::ptrdiff_t rows) {
   check_analytic_load(load);
   switch (load.kind) {
     case AnalyticLoad::Kind::hertz:
-      return hertz_pressure(grid, load.amplitude, load.radius, sampling);
+      return hertz_pressure_rows(grid, load.amplitude, load.radius, sampling, y0, rows);
     case AnalyticLoad::Kind::uniform_disk:
-      return uniform_disk_pressure(grid, load.amplitude, load.radius, sampling);
+      return uniform_disk_pressure_rows(grid, load.amplitude, load.radius, sampling, y0, rows);
   }
   throw InvalidArgument("sample_load: unknown load kind");
+}
+
+LoadDifference load_discretization_difference(const Grid& grid, const AnalyticLoad& load,
+                                              const Field& pressure, std::ptrdiff_t y0) {
+  const std::ptrdiff_t rows = pressure.cols();
+  if (load.sampling == Sampling::centre)
+    return {pressure - sample_load_rows(grid, load, Sampling::cell_average, y0, rows),
+            centre_factor};
+  // The blocks start on even rows: the rows' first may pair with the row before, their last with
+  // the row after (unless it is the grid's last).
+  const std::ptrdiff_t before = y0 % 2, after = (y0 + rows) % 2 == 1 && y0 + rows < grid.ny();
+  Field blocks(pressure.rows(), before + rows + after);
+  if (before) blocks.col(0) = sample_load_rows(grid, load, load.sampling, y0 - 1, 1).col(0);
+  blocks.middleCols(before, rows) = pressure;
+  if (after)
+    blocks.col(before + rows) = sample_load_rows(grid, load, load.sampling, y0 + rows, 1).col(0);
+  return {block_average(blocks).middleCols(before, rows) - pressure, coarse_factor};
 }
 
 LoadDiscretizationEstimate estimate_load_discretization_error(SurfaceOperator& op,
@@ -78,17 +100,9 @@ LoadDiscretizationEstimate estimate_load_discretization_error(SurfaceOperator& o
                   "estimate_load_discretization_error: the pressure has shape (", pressure.rows(),
                   ", ", pressure.cols(), "), but the operator's grid has (", grid.nx(), ", ",
                   grid.ny(), ")");
-  Field difference;
-  double factor = 0.0;
-  if (load.sampling == Sampling::centre) {
-    difference = pressure - sample_load(grid, load, Sampling::cell_average);
-    factor = centre_factor;
-  } else {
-    difference = block_average(pressure) - pressure;
-    factor = coarse_factor;
-  }
+  const LoadDifference d = load_discretization_difference(grid, load, pressure, 0);
   LoadDiscretizationEstimate estimate;
-  estimate.absolute_error = factor * op.apply(difference).abs().maxCoeff();
+  estimate.absolute_error = d.factor * op.apply(d.difference).abs().maxCoeff();
   estimate.relative_error = estimate.absolute_error / max_abs_displacement;
   return estimate;
 }

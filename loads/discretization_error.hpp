@@ -31,6 +31,22 @@ void check_analytic_load(const AnalyticLoad& load);
 /// hertz_pressure or uniform_disk_pressure. Throws InvalidArgument on a bad amplitude or radius.
 Field sample_load(const Grid& grid, const AnalyticLoad& load, Sampling sampling);
 
+/// Rows [y0, y0 + rows) of sample_load(grid, load, sampling): a distributed rank's slab.
+Field sample_load_rows(const Grid& grid, const AnalyticLoad& load, Sampling sampling,
+                       std::ptrdiff_t y0, std::ptrdiff_t rows);
+
+/// The load difference whose displacement, times `factor`, estimates the error of the cell-wise
+/// load (docs/theory.md 4.7): with centre sampling p_centre - p_average, with cell averages the
+/// averages over 2 x 2 blocks (from cell (0, 0)) less p. On rows [y0, y0 + pressure.cols()) of
+/// `grid`, `pressure` those rows of `load` as sampled; a block that reaches a row beyond them
+/// samples that row again.
+struct LoadDifference {
+  Field difference;
+  double factor = 0.0;
+};
+LoadDifference load_discretization_difference(const Grid& grid, const AnalyticLoad& load,
+                                              const Field& pressure, std::ptrdiff_t y0);
+
 /// Estimated error of the cell-wise load at the cell centres.
 struct LoadDiscretizationEstimate {
   double absolute_error = 0.0;  ///< estimated max |u_cellwise - u_continuous| [m]

@@ -53,22 +53,28 @@ double hertz_integral_in_cell(const detail::ScaledCell& cell,
 }  // namespace
 
 Field hertz_pressure(const Grid& grid, double p0, double a, Sampling sampling) {
+  return hertz_pressure_rows(grid, p0, a, sampling, 0, grid.ny());
+}
+
+Field hertz_pressure_rows(const Grid& grid, double p0, double a, Sampling sampling,
+                          std::ptrdiff_t y0, std::ptrdiff_t rows) {
   COATFFT_REQUIRE(std::isfinite(p0), "hertz_pressure: p0 = ", p0, " Pa, but p0 must be finite");
   COATFFT_REQUIRE(std::isfinite(a) && a > 0, "hertz_pressure: a = ", a,
                   " m, but the contact radius must be finite and > 0");
-  Field out = Field::Zero(grid.nx(), grid.ny());
+  detail::require_rows(grid, y0, rows, "hertz_pressure");
+  Field out = Field::Zero(grid.nx(), rows);
   const double hx = 0.5 * grid.dx() / a, hy = 0.5 * grid.dy() / a;
   if (sampling == Sampling::centre) {
-    for (std::ptrdiff_t j = 0; j < grid.ny(); ++j)
+    for (std::ptrdiff_t j = y0; j < y0 + rows; ++j)
       for (std::ptrdiff_t i = 0; i < grid.nx(); ++i) {
         const double x = grid.x(i) / a, y = grid.y(j) / a;
         const double s = (1.0 - x * x - y * y);
-        out(i, j) = s > 0.0 ? p0 * std::sqrt(s) : 0.0;
+        out(i, j - y0) = s > 0.0 ? p0 * std::sqrt(s) : 0.0;
       }
     return out;
   }
   boost::math::quadrature::tanh_sinh<double> quad;
-  for (std::ptrdiff_t j = 0; j < grid.ny(); ++j) {
+  for (std::ptrdiff_t j = y0; j < y0 + rows; ++j) {
     const double yc = grid.y(j) / a;
     for (std::ptrdiff_t i = 0; i < grid.nx(); ++i) {
       const double xc = grid.x(i) / a;
@@ -86,7 +92,7 @@ Field hertz_pressure(const Grid& grid, double p0, double a, Sampling sampling) {
       } else {
         integral = hertz_integral_in_cell(cell, quad);
       }
-      out(i, j) = p0 * integral / (4.0 * hx * hy);
+      out(i, j - y0) = p0 * integral / (4.0 * hx * hy);
     }
   }
   return out;

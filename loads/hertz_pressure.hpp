@@ -13,4 +13,9 @@ namespace coatfft {
 /// ~1e-14), so cells cut by the circle carry exactly their share of the load.
 Field hertz_pressure(const Grid& grid, double p0, double a, Sampling sampling);
 
+/// Rows [y0, y0 + rows) of hertz_pressure(grid, p0, a, sampling), the same values: a distributed
+/// rank's slab (nx, rows). Throws InvalidArgument as hertz_pressure, or for rows outside the grid.
+Field hertz_pressure_rows(const Grid& grid, double p0, double a, Sampling sampling,
+                          std::ptrdiff_t y0, std::ptrdiff_t rows);
+
 }  // namespace coatfft

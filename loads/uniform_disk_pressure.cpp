@@ -41,27 +41,33 @@ double disk_area_in_cell(const detail::ScaledCell& cell) {
 }  // namespace
 
 Field uniform_disk_pressure(const Grid& grid, double p, double a, Sampling sampling) {
+  return uniform_disk_pressure_rows(grid, p, a, sampling, 0, grid.ny());
+}
+
+Field uniform_disk_pressure_rows(const Grid& grid, double p, double a, Sampling sampling,
+                                 std::ptrdiff_t y0, std::ptrdiff_t rows) {
   COATFFT_REQUIRE(std::isfinite(p), "uniform_disk_pressure: p = ", p, " Pa, but p must be finite");
   COATFFT_REQUIRE(std::isfinite(a) && a > 0, "uniform_disk_pressure: a = ", a,
                   " m, but the disk radius must be finite and > 0");
-  Field out = Field::Zero(grid.nx(), grid.ny());
+  detail::require_rows(grid, y0, rows, "uniform_disk_pressure");
+  Field out = Field::Zero(grid.nx(), rows);
   const double hx = 0.5 * grid.dx() / a, hy = 0.5 * grid.dy() / a;
-  for (std::ptrdiff_t j = 0; j < grid.ny(); ++j) {
+  for (std::ptrdiff_t j = y0; j < y0 + rows; ++j) {
     const double yc = grid.y(j) / a;
     for (std::ptrdiff_t i = 0; i < grid.nx(); ++i) {
       const double xc = grid.x(i) / a;
       if (sampling == Sampling::centre) {
         const double r2 = xc * xc + yc * yc;
-        out(i, j) = r2 < 1.0 ? p : (r2 == 1.0 ? 0.5 * p : 0.0);
+        out(i, j - y0) = r2 < 1.0 ? p : (r2 == 1.0 ? 0.5 * p : 0.0);
         continue;
       }
       const detail::ScaledCell cell{xc - hx, xc + hx, yc - hy, yc + hy};
       if (detail::min_radius(cell) >= 1.0) continue;
       if (detail::max_radius(cell) <= 1.0) {
-        out(i, j) = p;
+        out(i, j - y0) = p;
         continue;
       }
-      out(i, j) = p * disk_area_in_cell(cell) / (4.0 * hx * hy);
+      out(i, j - y0) = p * disk_area_in_cell(cell) / (4.0 * hx * hy);
     }
   }
   return out;

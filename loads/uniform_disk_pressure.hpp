@@ -12,4 +12,10 @@ namespace coatfft {
 /// whose centre lies exactly on the circle gets p / 2 (the mean of the one-sided limits).
 Field uniform_disk_pressure(const Grid& grid, double p, double a, Sampling sampling);
 
+/// Rows [y0, y0 + rows) of uniform_disk_pressure(grid, p, a, sampling), the same values: a
+/// distributed rank's slab (nx, rows). Throws InvalidArgument as uniform_disk_pressure, or for
+/// rows outside the grid.
+Field uniform_disk_pressure_rows(const Grid& grid, double p, double a, Sampling sampling,
+                                 std::ptrdiff_t y0, std::ptrdiff_t rows);
+
 }  // namespace coatfft

@@ -18,4 +18,8 @@ namespace coatfft::scene {
 /// that work (accurate_work_limit, model/body_reduction.hpp).
 nlohmann::json a_posteriori_check(const Scene& scene, const Field& uz);
 
+/// The same from the two numbers it reads: uz at the centre cell (Grid::centre_i, centre_j) and
+/// max |uz| [m] (a distributed run's, gathered over the ranks).
+nlohmann::json a_posteriori_check(const Scene& scene, double uz_at_centre, double max_abs_uz);
+
 }  // namespace coatfft::scene

@@ -15,10 +15,16 @@
 #include "distributed/distributed_contact.hpp"
 #include "distributed/distributed_dcfft_operator.hpp"
 #include "distributed/distributed_periodic_operator.hpp"
+#include "distributed/slab_fft.hpp"
+#include "loads/discretization_error.hpp"
+#include "scene/a_posteriori.hpp"
+#include "scene/grid_file.hpp"
+#include "scene/load_error_report.hpp"
 #include "scene/npy_slab.hpp"
 #include "scene/operator_from_scene.hpp"
 #include "scene/resources.hpp"
 #include "scene/run_summary.hpp"
+#include "scene/scene_pressure.hpp"
 
 namespace coatfft::scene {
 
@@ -42,7 +48,6 @@ MemoryNeed rank_memory(const Communicator& comm, const Scene& scene) {
 
 // The first part of the scene that a distributed run refuses, or "" (check_distributable).
 std::string not_distributable(const Scene& scene) {
-  if (!scene.contact) return "[pressure] (a known load)";
   if (scene.method.automatic)
     return "[method] name = \"auto\" (its reference computations; name the method: \"dcfft\" "
            "or \"frf-split\" on a free boundary)";
@@ -51,16 +56,30 @@ std::string not_distributable(const Scene& scene) {
     return detail::concat("[method] name = \"", to_string(method),
                           "\" on a free boundary (there a distributed run takes \"dcfft\" or "
                           "\"frf-split\")");
-  const ContactSpec& contact = *scene.contact;
-  if (!contact.topography.is_null())
-    return "[contact] topography (a measured surface: `coatfft topography FILE -o h.npy` writes "
-           "its heights for indenter = \"height_map\")";
-  if (!contact.sweep.empty()) return "[contact] a list of values (a sweep)";
-  if (contact.friction > 0.0) return "[contact] friction";
+  if (scene.contact) {
+    const ContactSpec& contact = *scene.contact;
+    if (!contact.topography.is_null())
+      return "[contact] topography (a measured surface: `coatfft topography FILE -o h.npy` writes "
+             "its heights for indenter = \"height_map\")";
+    if (!contact.sweep.empty()) return "[contact] a list of values (a sweep)";
+    if (contact.friction > 0.0) return "[contact] friction";
+  }
+  if (scene.shear) return "[shear]";
   if (scene.stress) return "[stress]";
   if (scene.output.in_plane) return "[output] ux, uy (the in-plane displacements)";
   if (scene.output.netcdf) return "[output] format = \"netcdf\"";
   return {};
+}
+
+// This rank's rows of a known load: a file's read from it, a closed form's sampled, checked as the
+// serial run checks its whole field (scene_pressure).
+Field slab_pressure(const Communicator& comm, const Scene& scene, const Slab& slab) {
+  const PressureSpec& spec = *scene.pressure;
+  Field p = spec.kind == PressureKind::file ? read_npy_slab(comm, spec.file, slab, "value")
+                                            : sample_load_rows(scene.grid, analytic_load(spec),
+                                                               spec.sampling, slab.y0, slab.rows);
+  require_load(scene, !comm.all(!(p != 0.0).any()));
+  return p;
 }
 
 // This rank's rows of the indenter's heights: a height map's read from its file.
@@ -135,6 +154,8 @@ PreparedScene prepare_distributed_scene(const Communicator& comm,
   check_distributable(scene);
   // The serial run's refusal, before the set-up here (its operator is built otherwise).
   if (!scene.periodic && !scene.frf) check_love_body(*scene.body, scene.method.options.method);
+  if (scene.pressure && scene.pressure->kind == PressureKind::file)
+    check_grid_npy(scene.pressure->file, scene.grid, "[pressure] path", "a pressure");
   const int sharing = comm.ranks_sharing_memory();
   std::optional<double> limit = options.max_memory;
   if (!limit)
@@ -144,12 +165,79 @@ PreparedScene prepare_distributed_scene(const Communicator& comm,
   return {std::move(scene), std::nullopt};
 }
 
-DistributedSceneRun compute_distributed_scene(const Communicator& comm,
-                                              const PreparedScene& prepared,
-                                              const SceneRunOptions& options) {
-  ProgressObserver silent;
-  ProgressObserver& progress = options.progress ? *options.progress : silent;
-  Scene scene = prepared.scene;
+namespace {
+
+// The keys only a distributed run has, after the serial run's.
+void add_rank_summary(nlohmann::json& summary, const Communicator& comm, const Scene& scene,
+                      const DistributedOperator& op) {
+  summary["ranks"] = comm.size();
+  summary["estimated_memory_bytes_per_rank"] = rank_memory(comm, scene).bytes;
+  summary["communication_seconds"] = comm.max(op.communication_seconds());
+}
+
+// The timed applications of the serial run (scene/scene_run.cpp), their result refused on every
+// rank if it overflowed.
+double timed_applications(const Communicator& comm, DistributedOperator& op, const Field& pressure,
+                          Field& uz, int repeat, ProgressObserver& progress) {
+  progress.stage(applications_stage(repeat));
+  const double seconds = coatfft::detail::time_applications(op, pressure, uz, repeat);
+  // Finite inputs can still overflow (|u| ~ p L / E*), as the serial run checks.
+  COATFFT_REQUIRE(comm.all(uz.allFinite()),
+                  "the displacement overflows double precision: rescale the units of the load "
+                  "and the moduli");
+  return seconds;
+}
+
+// The load-discretisation estimate of the serial run (loads/discretization_error.hpp) on the
+// ranks' rows, its maximum over the ranks.
+nlohmann::json slab_load_discretization(const Communicator& comm, const Scene& scene,
+                                        DistributedOperator& op, const Field& pressure,
+                                        std::ptrdiff_t y0, double max_abs_uz) {
+  const PressureSpec& load = *scene.pressure;
+  if (load.kind == PressureKind::file) return nullptr;
+  const LoadDifference d =
+      load_discretization_difference(scene.grid, analytic_load(load), pressure, y0);
+  const Field u = op.apply(d.difference);
+  LoadDiscretizationEstimate e;
+  e.absolute_error = d.factor * comm.max(u.size() ? u.abs().maxCoeff() : 0.0);
+  e.relative_error = e.absolute_error / max_abs_uz;
+  return load_discretization_json(load, e);
+}
+
+// A known load: its rows, the timed applications, and the serial run's reports over the ranks.
+DistributedSceneRun compute_pressure(const Communicator& comm, const Scene& scene,
+                                     const SceneRunOptions& options, ProgressObserver& progress) {
+  std::ptrdiff_t unused = 0;
+  const Slab rows = detail::slab_of(comm, scene.grid.nx(), scene.grid.ny(), unused);
+  Field pressure = slab_pressure(comm, scene, rows);  // before the set-up, as serially
+  progress.stage(setup_stage(scene));
+  OperatorReport report;
+  const auto op = distributed_operator(comm, scene, report);
+  const Slab slab = op->slab();
+  COATFFT_REQUIRE(slab.y0 == rows.y0 && slab.rows == rows.rows,
+                  "distributed run: the operator's rows are not the load's");
+  Field uz;
+  const double apply_seconds =
+      timed_applications(comm, *op, pressure, uz, options.repeat, progress);
+  const FieldNumbers numbers = slab_numbers(comm, scene.grid, slab, pressure, uz);
+  const double max_abs_uz = comm.max(slab.rows > 0 ? uz.abs().maxCoeff() : 0.0);
+  nlohmann::json summary =
+      common_summary(scene, std::nullopt, report, apply_seconds, options.repeat, numbers);
+  summary["a_posteriori"] =
+      scene.periodic ? nlohmann::json() : a_posteriori_check(scene, numbers.uz_center, max_abs_uz);
+  summary["load_discretization"] =
+      slab_load_discretization(comm, scene, *op, pressure, slab.y0, max_abs_uz);
+  summary["refinement"] = refinement_json(scene);
+  if (reports_hertz_error(scene))
+    summary["max_error_vs_hertz"] =
+        comm.max(slab.rows > 0 ? hertz_error_rows(scene, uz, slab.y0) : 0.0);
+  add_rank_summary(summary, comm, scene, *op);
+  return {slab, std::move(pressure), std::move(uz), Field(), std::move(summary), RunStatus::ok};
+}
+
+// A contact: the heights' rows, the solve, the timed applications.
+DistributedSceneRun compute_contact(const Communicator& comm, Scene scene,
+                                    const SceneRunOptions& options, ProgressObserver& progress) {
   use_normal_compliance_body(scene);
   const ContactSpec& spec = *scene.contact;
   progress.stage(setup_stage(scene));
@@ -168,28 +256,32 @@ DistributedSceneRun compute_distributed_scene(const Communicator& comm,
   const double solve_seconds = seconds_since(start);
   COATFFT_REQUIRE(!result.touches_boundary,  // the serial run's refusal (scene/scene_run.cpp)
                   domain_edge_refusal);
-  progress.stage(applications_stage(options.repeat));
   Field uz;  // only for the timing: the solver returned the displacement
   const double apply_seconds =
-      coatfft::detail::time_applications(*op, result.pressure, uz, options.repeat);
-  // Finite inputs can still overflow (|u| ~ p L / E*), as the serial run checks.
-  COATFFT_REQUIRE(comm.all(uz.allFinite()),
-                  "the displacement overflows double precision: rescale the units of the load "
-                  "and the moduli");
+      timed_applications(comm, *op, result.pressure, uz, options.repeat, progress);
   const FieldNumbers numbers =
       slab_numbers(comm, scene.grid, slab, result.pressure, result.displacement);
   nlohmann::json summary =
       common_summary(scene, std::nullopt, report, apply_seconds, options.repeat, numbers);
   add_contact_summary(summary, scene, result, solve_seconds);
-  summary["ranks"] = comm.size();
-  summary["estimated_memory_bytes_per_rank"] = rank_memory(comm, scene).bytes;
-  summary["communication_seconds"] = comm.max(op->communication_seconds());
+  add_rank_summary(summary, comm, scene, *op);
   return {slab,
           std::move(result.pressure),
           std::move(result.displacement),
           std::move(result.gap),
           std::move(summary),
           result.converged ? RunStatus::ok : RunStatus::not_converged};
+}
+
+}  // namespace
+
+DistributedSceneRun compute_distributed_scene(const Communicator& comm,
+                                              const PreparedScene& prepared,
+                                              const SceneRunOptions& options) {
+  ProgressObserver silent;
+  ProgressObserver& progress = options.progress ? *options.progress : silent;
+  return prepared.scene.contact ? compute_contact(comm, prepared.scene, options, progress)
+                                : compute_pressure(comm, prepared.scene, options, progress);
 }
 
 }  // namespace coatfft::scene

@@ -25,10 +25,12 @@ Field read_grid_file(const std::filesystem::path& file, const Grid& grid, std::s
   return f;
 }
 
-void check_grid_npy(const std::filesystem::path& file, const Grid& grid, std::string_view key) {
+void check_grid_npy(const std::filesystem::path& file, const Grid& grid, std::string_view key,
+                    std::string_view what) {
   COATFFT_REQUIRE(file.extension() == ".npy", key, " = ", file.string(),
-                  ": a distributed run reads a height map from .npy only (`coatfft topography` "
-                  "converts other files)");
+                  ": a distributed run reads ", what,
+                  " from .npy only (numpy.save writes one; `coatfft topography` converts a "
+                  "measured surface)");
   // Refused here, before any work, as scene/npy_slab.hpp would refuse it after the set-up.
   read_npy_row_header(file, static_cast<std::size_t>(grid.ny()),
                       static_cast<std::size_t>(grid.nx()));

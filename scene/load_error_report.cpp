@@ -8,11 +8,15 @@ nlohmann::json load_discretization_json(const Scene& scene, SurfaceOperator& op,
                                         const Field& pressure, const Field& uz) {
   if (!scene.pressure || scene.pressure->kind == PressureKind::file) return nullptr;
   const PressureSpec& p = *scene.pressure;
-  const LoadDiscretizationEstimate e =
-      estimate_load_discretization_error(op, analytic_load(p), pressure, uz.abs().maxCoeff());
-  return {{"estimated_error", e.relative_error},
-          {"absolute_error", e.absolute_error},
-          {"sampling", p.sampling == Sampling::centre ? "centre" : "cell_average"}};
+  return load_discretization_json(
+      p, estimate_load_discretization_error(op, analytic_load(p), pressure, uz.abs().maxCoeff()));
+}
+
+nlohmann::json load_discretization_json(const PressureSpec& load,
+                                        const LoadDiscretizationEstimate& estimate) {
+  return {{"estimated_error", estimate.relative_error},
+          {"absolute_error", estimate.absolute_error},
+          {"sampling", load.sampling == Sampling::centre ? "centre" : "cell_average"}};
 }
 
 nlohmann::json refinement_json(const Scene& scene) {

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "convolution/operators/surface_operator.hpp"
+#include "loads/discretization_error.hpp"
 #include "scene/scene.hpp"
 
 namespace coatfft::scene {
@@ -13,6 +14,10 @@ namespace coatfft::scene {
 /// [m], "sampling"}, or null for a load given as a file.
 nlohmann::json load_discretization_json(const Scene& scene, SurfaceOperator& op,
                                         const Field& pressure, const Field& uz);
+
+/// The same object from an estimate made otherwise (a distributed run's, over its ranks).
+nlohmann::json load_discretization_json(const PressureSpec& load,
+                                        const LoadDiscretizationEstimate& estimate);
 
 /// {"tolerance_total", "load_tolerance", "operator_tolerance", "estimate", "tried": [{nx, ny,
 /// estimate}]}, or null without refine = "auto".

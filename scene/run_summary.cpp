@@ -1,5 +1,7 @@
 #include "scene/run_summary.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <variant>
 
@@ -8,6 +10,7 @@
 #include "scene/frf_table_file.hpp"
 #include "scene/operator_from_scene.hpp"
 #include "scene/resources.hpp"
+#include "validation/hertz.hpp"
 #include "validation/hertz_contact.hpp"
 
 namespace coatfft::scene {
@@ -159,6 +162,25 @@ void add_contact_summary(nlohmann::json& summary, const Scene& scene, const Cont
   }
   // Absent, not null, when it does not apply: summary.json has always been so.
   if (nlohmann::json hertz = hertz_json(scene); !hertz.is_null()) summary["hertz"] = hertz;
+}
+
+bool reports_hertz_error(const Scene& scene) {
+  return scene.pressure && scene.pressure->kind == PressureKind::hertz && !scene.frf &&
+         scene.body->is_homogeneous() && !scene.periodic;
+}
+
+double hertz_error_rows(const Scene& scene, const Field& uz, std::ptrdiff_t y0) {
+  const Grid& grid = scene.grid;
+  const PressureSpec& load = *scene.pressure;
+  const double e_star = scene.body->substrate().plane_strain_modulus();
+  double error = 0.0;
+  for (Eigen::Index j = 0; j < uz.cols(); ++j)
+    for (Eigen::Index i = 0; i < uz.rows(); ++i) {
+      const double r = std::hypot(grid.x(i), grid.y(y0 + j));
+      error = std::max(
+          error, std::abs(uz(i, j) - hertz_displacement(r, load.amplitude, load.radius, e_star)));
+    }
+  return error / hertz_displacement(0.0, load.amplitude, load.radius, e_star);
 }
 
 }  // namespace coatfft::scene

@@ -52,4 +52,12 @@ ContactOptions solver_options(const ContactSpec& spec, int threads, ProgressObse
 void add_contact_summary(nlohmann::json& summary, const Scene& scene, const ContactResult& result,
                          double solve_seconds);
 
+/// Whether a known-load run reports max_error_vs_hertz: a Hertz load on a homogeneous body's free
+/// surface, whose displacement has a closed form.
+bool reports_hertz_error(const Scene& scene);
+
+/// The error measure of Spinu (2021), section 5, max |u - u_Hertz| / u_Hertz(0), over the rows
+/// [y0, y0 + uz.cols()) of the scene's grid (a distributed run takes the maximum over the ranks).
+double hertz_error_rows(const Scene& scene, const Field& uz, std::ptrdiff_t y0);
+
 }  // namespace coatfft::scene

@@ -508,7 +508,8 @@ void read_indenter(SectionReader& reader, const SceneContext& context, ContactSp
     if (context.height_map_values)
       spec.indenter = HeightMap{read_grid_file(file, grid, "[contact] path", "height")};
     else
-      check_grid_npy(file, grid, "[contact] path");  // spec.indenter: an empty HeightMap
+      check_grid_npy(file, grid, "[contact] path",
+                     "a height map");  // spec.indenter: an empty HeightMap
   }
 }
 

@@ -23,24 +23,24 @@ Field pressure_from_scene(const Scene& scene) {
   throw InvalidArgument("[pressure] kind: unknown");
 }
 
+}  // namespace
+
 // The disk's limits on the scene's final grid (loads/load_limits.hpp), and a pressure that is not
 // zero everywhere.
-void require_load(const Scene& scene, const Field& pressure) {
+void require_load(const Scene& scene, bool nonzero) {
   const PressureSpec& load = *scene.pressure;
   if (load.kind != PressureKind::file)
     require_disk_load(scene.grid, load.amplitude, load.radius, load.sampling,
                       {load.kind == PressureKind::hertz ? "[pressure] p0" : "[pressure] p",
                        "[pressure] a", "[grid] lx, ly, nx, ny"});
-  COATFFT_REQUIRE((pressure != 0.0).any(),
+  COATFFT_REQUIRE(nonzero,
                   load.kind == PressureKind::file ? load.file.string() : std::string("[pressure]"),
                   ": the pressure is zero on every cell: nothing to compute");
 }
 
-}  // namespace
-
 Field scene_pressure(const Scene& scene) {
   Field pressure = pressure_from_scene(scene);
-  require_load(scene, pressure);
+  require_load(scene, (pressure != 0.0).any());
   return pressure;
 }
 

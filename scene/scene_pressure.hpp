@@ -13,6 +13,11 @@ namespace coatfft::scene {
 /// InvalidArgument naming the key or the file.
 Field scene_pressure(const Scene& scene);
 
+/// The checks scene_pressure makes of the load it read or sampled: the disk's limits on the grid,
+/// and `nonzero`, whether the pressure is not zero on some cell (a distributed run's, over its
+/// ranks). Throws InvalidArgument naming the key or the file.
+void require_load(const Scene& scene, bool nonzero);
+
 /// Tangential tractions q_x, q_y [Pa] the surface receives; an absent one is zero.
 struct Tractions {
   std::optional<Field> qx, qy;

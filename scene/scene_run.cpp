@@ -24,7 +24,6 @@
 #include "scene/run_summary.hpp"
 #include "scene/scene_pressure.hpp"
 #include "scene/scene_topography.hpp"
-#include "validation/hertz.hpp"
 
 namespace coatfft::scene {
 
@@ -48,12 +47,6 @@ double time_applications(const Scene& scene, SurfaceOperator& op, const Field& p
   return seconds;
 }
 
-// The error measure of Spinu (2021), section 5: max |u_num - u_exact| / u_exact(0).
-double max_error_vs_hertz(const Grid& grid, const Field& uz, double p0, double a, double E_star) {
-  const double u0 = hertz_displacement(0.0, p0, a, E_star);
-  return (uz - hertz_displacement_field(grid, p0, a, E_star)).abs().maxCoeff() / u0;
-}
-
 SceneRun compute_pressure(const Scene& scene, const Automatic& automatic, int repeat,
                           ProgressObserver& progress) {
   const Grid& grid = scene.grid;
@@ -70,12 +63,7 @@ SceneRun compute_pressure(const Scene& scene, const Automatic& automatic, int re
   summary["a_posteriori"] = scene.periodic ? nlohmann::json() : a_posteriori_check(scene, uz);
   summary["load_discretization"] = load_discretization_json(scene, *built.op, pressure, uz);
   summary["refinement"] = refinement_json(scene);
-  const PressureSpec& load = *scene.pressure;
-  if (load.kind == PressureKind::hertz && !scene.frf && scene.body->is_homogeneous() &&
-      !scene.periodic) {
-    summary["max_error_vs_hertz"] = max_error_vs_hertz(
-        grid, uz, load.amplitude, load.radius, scene.body->substrate().plane_strain_modulus());
-  }
+  if (reports_hertz_error(scene)) summary["max_error_vs_hertz"] = hertz_error_rows(scene, uz, 0);
   return {grid,         std::move(pressure), std::move(uz),
           std::nullopt, std::move(summary),  RunStatus::ok};
 }

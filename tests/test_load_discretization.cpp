@@ -291,3 +291,28 @@ TEST_CASE("choose_grid_for_tolerance refuses what it cannot reach", "[loads][ref
   CHECK_THROWS_AS(choose_grid_for_tolerance(3 * a, 3 * a, load, 1e-2, 1.0), InvalidArgument);
   CHECK_THROWS_AS(choose_grid_for_tolerance(1.5 * a, 3 * a, load, 1e-2, 0.5), InvalidArgument);
 }
+
+TEST_CASE("A slab's load rows and load difference are the whole grid's rows", "[loads][estimate]") {
+  // Every split of 13 rows into two slabs (odd and even first rows, a slab of one row, an empty
+  // one), both loads and samplings: a distributed rank's rows must be the serial field's, bit
+  // for bit, including the 2 x 2 blocks that straddle the slabs' border (docs/theory.md 4.7).
+  const Grid grid(12, 13, 1e-3, 1.1e-3);
+  for (const auto kind : {AnalyticLoad::Kind::hertz, AnalyticLoad::Kind::uniform_disk})
+    for (const auto sampling : {Sampling::centre, Sampling::cell_average}) {
+      const AnalyticLoad load{kind, 1e9, 0.4e-3, sampling};
+      const Field whole = sample_load(grid, load, sampling);
+      const LoadDifference reference = load_discretization_difference(grid, load, whole, 0);
+      for (std::ptrdiff_t y0 = 0; y0 <= grid.ny(); ++y0)
+        for (const std::ptrdiff_t rows :
+             {grid.ny() - y0, std::min<std::ptrdiff_t>(1, grid.ny() - y0)}) {
+          const Field p = sample_load_rows(grid, load, sampling, y0, rows);
+          CHECK((p == whole.middleCols(y0, rows)).all());
+          const LoadDifference d = load_discretization_difference(grid, load, p, y0);
+          CHECK(d.factor == reference.factor);
+          CHECK((d.difference == reference.difference.middleCols(y0, rows)).all());
+        }
+    }
+  const AnalyticLoad hertz{AnalyticLoad::Kind::hertz, 1e9, 0.4e-3, Sampling::centre};
+  CHECK_THROWS_AS(sample_load_rows(grid, hertz, Sampling::centre, 12, 2), InvalidArgument);
+  CHECK_THROWS_AS(sample_load_rows(grid, hertz, Sampling::centre, -1, 1), InvalidArgument);
+}
