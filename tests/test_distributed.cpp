@@ -174,53 +174,55 @@ TEST_CASE("the distributed frf-split operator equals the serial one on a coated 
   }
 }
 
-TEST_CASE("a distributed free Hertz contact equals the serial solve") {
-  const Communicator comm = Communicator::world();
-  // A paraboloid on steel, the contact radius about a quarter of the domain.
-  const Grid grid(48, 42, 1e-3, 0.9e-3);
-  const double e_star = steel.plane_strain_modulus(), radius = 5e-3;
-  const Field h = height(grid, Paraboloid{radius});
-  DcfftOperator serial_op(love_kernel(grid, e_star));
-  DistributedDcfftOperator op(comm, grid, e_star);
+namespace {
+
+// A paraboloid (R = 5 mm) pressed into the free surface of the grid of `op` (1 mm x 0.9 mm) by
+// `serial_op` and by `op` alike, under load and approach control (a contact radius of about 0.25
+// mm, a quarter of the domain): the same solve. Returns the distributed solver.
+std::unique_ptr<ContactSolver> check_free_paraboloid(const Communicator& comm,
+                                                     SurfaceOperator& serial_op,
+                                                     DistributedOperator& op) {
+  const double radius = 5e-3, e_star = steel.plane_strain_modulus();
+  const Field h = height(op.grid(), Paraboloid{radius});
   const Slab& s = op.slab();
   ContactOptions options;
   options.nested_start = false;  // one patch: the serial solve takes none either
   options.compute_approach = true;
   ContactSolver serial(serial_op, options);
-  const auto distributed = distributed_contact_solver(op, options);
+  auto distributed = distributed_contact_solver(op, options);
   const double load = 4.0 * e_star * std::pow(0.25e-3, 3) / (3.0 * radius);  // Hertz, a = 0.25 mm
   for (const ContactControl control : {ContactControl::load, ContactControl::approach}) {
     const double value = control == ContactControl::load ? load : 0.25e-3 * 0.25e-3 / radius;
     check_same_solve(comm, serial.solve(h, control, value),
                      distributed->solve(rows_of(h, s), control, value), s);
   }
+  return distributed;
+}
+
+}  // namespace
+
+TEST_CASE("a distributed free Hertz contact equals the serial solve") {
+  const Communicator comm = Communicator::world();
+  const Grid grid(48, 42, 1e-3, 0.9e-3);
+  const double e_star = steel.plane_strain_modulus();
+  DcfftOperator serial_op(love_kernel(grid, e_star));
+  DistributedDcfftOperator op(comm, grid, e_star);
+  const auto distributed = check_free_paraboloid(comm, serial_op, op);
   // A contact reaching the domain's edge is seen by the rank that holds the border rows.
-  const ContactResult edge = distributed->solve(rows_of(h, s), ContactControl::load, 50 * load);
-  CHECK(edge.touches_boundary);
+  const Field h = height(grid, Paraboloid{5e-3});
+  const double load = 4.0 * e_star * std::pow(0.25e-3, 3) / (3.0 * 5e-3);
+  CHECK(
+      distributed->solve(rows_of(h, op.slab()), ContactControl::load, 50 * load).touches_boundary);
 }
 
 TEST_CASE("a distributed free contact of a coated body equals the serial solve") {
   const Communicator comm = Communicator::world();
-  // A paraboloid on TiN 20 um on steel, the contact radius about a quarter of the domain.
+  // TiN 20 um on steel, by frf-split's coefficients.
   const Grid grid(48, 42, 1e-3, 0.9e-3);
-  const double radius = 5e-3;
-  const Field h = height(grid, Paraboloid{radius});
   const auto frf = make_frf(LayerStack({Coating{tin, 20e-6, Interface::bonded}}, steel));
   DcfftOperator serial_op(split_frf_kernel(grid, *frf));
   DistributedDcfftOperator op(comm, grid, *frf);
-  const Slab& s = op.slab();
-  ContactOptions options;
-  options.nested_start = false;  // one patch: the serial solve takes none either
-  options.compute_approach = true;
-  ContactSolver serial(serial_op, options);
-  const auto distributed = distributed_contact_solver(op, options);
-  const double e_star = steel.plane_strain_modulus();
-  const double load = 4.0 * e_star * std::pow(0.25e-3, 3) / (3.0 * radius);  // a ~ 0.25 mm
-  for (const ContactControl control : {ContactControl::load, ContactControl::approach}) {
-    const double value = control == ContactControl::load ? load : 0.25e-3 * 0.25e-3 / radius;
-    check_same_solve(comm, serial.solve(h, control, value),
-                     distributed->solve(rows_of(h, s), control, value), s);
-  }
+  check_free_paraboloid(comm, serial_op, op);
 }
 
 TEST_CASE("the distributed periodic operator refuses a bad pressure on every rank together") {
