@@ -37,10 +37,13 @@ RowBlock overlap(RowBlock a, RowBlock b) {
   return {first, std::max<std::int64_t>(end - first, 0)};
 }
 
-int checked_count(std::int64_t n) {
-  COATFFT_REQUIRE(n <= INT_MAX, "split_frf_kernel: ", n,
-                  " lattice entries to send to one rank, more than MPI's counts take");
-  return static_cast<int>(n);
+// MPI's counts and offsets, refused on every rank together where one does not fit an int (the
+// lattice's limit per rank, require_lattice, keeps them far below).
+std::vector<int> mpi_counts(const Communicator& comm, const std::vector<std::int64_t>& n) {
+  const bool fit = std::all_of(n.begin(), n.end(), [](std::int64_t v) { return v <= INT_MAX; });
+  COATFFT_REQUIRE(comm.all(fit), "split_frf_kernel: more lattice entries to exchange between two "
+                                 "ranks than MPI's counts take; use more ranks");
+  return std::vector<int>(n.begin(), n.end());
 }
 
 // The transformed lattice rows `held` (sx entries each, in `lattice`) that are quarter rows j < my
@@ -55,20 +58,21 @@ void add_to_quarter(const Communicator& comm, const split::SplitPlan& p,
   const std::vector<RowBlock> lattices = every_rank(comm, held);
   const std::vector<RowBlock> quarters = every_rank(comm, wanted);
   const auto ranks = static_cast<std::size_t>(comm.size());
-  std::vector<int> send_counts(ranks), send_offsets(ranks), receive_counts(ranks),
-      receive_offsets(ranks);
+  std::vector<std::int64_t> sends(ranks), send_at(ranks), receives(ranks), receive_at(ranks);
   std::int64_t received = 0;
   for (std::size_t r = 0; r < ranks; ++r) {
     const RowBlock out = overlap(held, quarters[r]);
-    send_offsets[r] = checked_count(out.count > 0 ? (out.first - held.first) * l.sx : 0);
-    send_counts[r] = checked_count(out.count * l.sx);
-    receive_offsets[r] = checked_count(received);
-    receive_counts[r] = checked_count(overlap(lattices[r], wanted).count * l.sx);
-    received += receive_counts[r];
+    send_at[r] = out.count > 0 ? (out.first - held.first) * l.sx : 0;
+    sends[r] = out.count * l.sx;
+    receive_at[r] = received;
+    receives[r] = overlap(lattices[r], wanted).count * l.sx;
+    received += receives[r];
   }
   std::vector<double> receive(static_cast<std::size_t>(std::max<std::int64_t>(received, 1)));
-  MPI_Alltoallv(lattice, send_counts.data(), send_offsets.data(), MPI_DOUBLE, receive.data(),
-                receive_counts.data(), receive_offsets.data(), MPI_DOUBLE, mpi_comm(comm));
+  const std::vector<int> receive_offsets = mpi_counts(comm, receive_at);
+  MPI_Alltoallv(lattice, mpi_counts(comm, sends).data(), mpi_counts(comm, send_at).data(),
+                MPI_DOUBLE, receive.data(), mpi_counts(comm, receives).data(),
+                receive_offsets.data(), MPI_DOUBLE, mpi_comm(comm));
   for (std::size_t r = 0; r < ranks; ++r) {
     const RowBlock in = overlap(lattices[r], wanted);
     const double* values = receive.data() + receive_offsets[r];

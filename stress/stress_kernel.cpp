@@ -204,6 +204,11 @@ std::vector<Quarters> sample_quarters(const Sampling& s, int threads, long long&
     for (int c = 0; c < 6; ++c)
       for (int ld = 0; ld < s.nb_loads; ++ld) q[c][ld] = Field::Zero(hx, hy);
   std::atomic<long long> count{0};
+  // Wavevectors beyond every plane's cut-off add nothing (add_wavevector): skipped before their
+  // sincs, window and radius are computed. Most aliases of a lattice point are beyond it; the
+  // margin leaves the points at the cut-off itself to add_wavevector's own test.
+  const double k_max = *std::max_element(l.k_cut.begin(), l.k_cut.end());
+  const double beyond = k_max * k_max * (1.0 + 1e-12);
   detail::parallel_for(0, hy, threads, [&](std::ptrdiff_t jy) {
     long long local = 0;
     std::vector<Sums> acc(s.depths.size());
@@ -215,9 +220,11 @@ std::vector<Quarters> sample_quarters(const Sampling& s, int threads, long long&
       std::fill(acc.begin(), acc.end(), Sums{});
       for (int p = -l.px; p <= l.px; ++p) {
         const double kx = static_cast<double>(jx) * l.dkx + 2.0 * pi * p / l.dx;
+        if (kx * kx > beyond) continue;
         const double wx = sinc(0.5 * kx * l.dx);
         for (int q = -l.py; q <= l.py; ++q) {
           const double ky = static_cast<double>(jy) * l.dky + 2.0 * pi * q / l.dy;
+          if (kx * kx + ky * ky > beyond) continue;
           add_wavevector(s, kx, ky, wx * sinc(0.5 * ky * l.dy), acc, active, index, local);
         }
       }
