@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets of fuzz/ with clang (ASan + UBSan) in build-fuzz and runs each for
 # SECONDS seconds on a copy of its seed corpus (fuzz/corpus/TARGET), so the repository is left as
-# it is. Prints one line per target and exits non-zero if any target found a crash, a sanitizer
+# it is; the targets run side by side, as many at a time as there are cores. Prints one line per target and exits non-zero if any target found a crash, a sanitizer
 # report or an exception other than InvalidArgument; its input is kept under
 # build-fuzz/fuzz/run/findings/TARGET/, the log in build-fuzz/fuzz/run/TARGET.log. docs/fuzz_report.md has more.
 # Usage: scripts/fuzz.sh [seconds-per-target]   (default 60)
@@ -32,36 +32,56 @@ coverage() {
 
 work="$(cd "$build_dir" && pwd)/fuzz/run"
 status=0
-for target in "${targets[@]}"; do
-  corpus="$work/corpus/$target"
-  findings="$work/findings/$target"
-  log="$work/$target.log"
-  rm -rf "$corpus" "$findings" "$work/tmp/$target"
-  mkdir -p "$corpus" "$findings" "$work/tmp/$target"
-  cp fuzz/corpus/"$target"/* "$corpus"/
-  dict=()
+
+# fuzz TARGET: SECONDS of libFuzzer on a fresh copy of its seed corpus; its summary line into
+# $work/TARGET.line, and a non-zero exit on a finding.
+fuzz() {
+  local target=$1 corpus="$work/corpus/$1" findings="$work/findings/$1" log="$work/$1.log"
+  local dict=() start=$SECONDS result="ok" found=0
   [ -f "fuzz/dict/$target.dict" ] && dict=(-dict="fuzz/dict/$target.dict")
-  # Each target is built on its own, so that one that does not build leaves the others running.
-  if ! cmake --build "$build_dir" -j "$(nproc)" --target "$target" >"$work/$target.build.log" 2>&1
-  then
-    echo "$target: BUILD FAILED, see $work/$target.build.log"
-    status=1
-    continue
-  fi
-  start=$SECONDS
   # TMPDIR: the targets' scratch folders stay inside the build folder, even after a crash.
-  if TMPDIR="$work/tmp/$target" "$build_dir/fuzz/$target" -max_total_time="$seconds" \
+  if ! TMPDIR="$work/tmp/$target" "$build_dir/fuzz/$target" -max_total_time="$seconds" \
     -rss_limit_mb=2048 -timeout=10 -print_final_stats=1 -artifact_prefix="$findings/" \
     "${dict[@]}" "$corpus" >"$log" 2>&1; then
-    result="ok"
-  else
     result="FINDING: see $log and $findings/"
-    status=1
+    found=1
   fi
   echo "$target: $result; $(fuzz_stat number_of_executed_units "$log") runs" \
     "in $((SECONDS - start)) s," \
     "coverage $(coverage INITED "$log") -> $(coverage DONE "$log") edges," \
     "$(fuzz_stat new_units_added "$log") new inputs, corpus $(ls "$corpus" | wc -l) files," \
-    "peak RSS $(fuzz_stat peak_rss_mb "$log") MB"
+    "peak RSS $(fuzz_stat peak_rss_mb "$log") MB" >"$work/$target.line"
+  return $found
+}
+
+# Each target is built on its own, so that one that does not build leaves the others running.
+built=()
+for target in "${targets[@]}"; do
+  rm -rf "$work/corpus/$target" "$work/findings/$target" "$work/tmp/$target" "$work/$target.line"
+  mkdir -p "$work/corpus/$target" "$work/findings/$target" "$work/tmp/$target"
+  cp fuzz/corpus/"$target"/* "$work/corpus/$target"/
+  if cmake --build "$build_dir" -j "$(nproc)" --target "$target" >"$work/$target.build.log" 2>&1
+  then
+    built+=("$target")
+  else
+    echo "$target: BUILD FAILED, see $work/$target.build.log"
+    status=1
+  fi
 done
+# The targets fuzz side by side, one a core (each libFuzzer run is one process on one thread):
+# every target still gets its SECONDS.
+running=0
+for target in "${built[@]}"; do
+  if [ "$running" -ge "$(nproc)" ]; then
+    wait -n || status=1
+    running=$((running - 1))
+  fi
+  fuzz "$target" &
+  running=$((running + 1))
+done
+while [ "$running" -gt 0 ]; do
+  wait -n || status=1
+  running=$((running - 1))
+done
+for target in "${built[@]}"; do cat "$work/$target.line"; done
 exit $status
