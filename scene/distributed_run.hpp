@@ -1,8 +1,9 @@
 #pragma once
-// `coatfft run` on the ranks of a communicator (docs/scale.md): a periodic [contact] scene solved
-// on row slabs (distributed/slab.hpp) by the distributed periodic operator and contact solver,
-// each rank holding its rows of every field (a height map's rows read from its file by each rank,
-// scene/npy_slab.hpp). summary.json's object is the serial run's, the same on every rank, with
+// `coatfft run` on the ranks of a communicator (docs/scale.md): a [contact] or known-[pressure]
+// scene on row slabs (distributed/slab.hpp), by the distributed periodic or free-surface operator
+// and the distributed contact solver, each rank holding its rows of every field (a height map's
+// or a pressure file's rows read by each rank, scene/npy_slab.hpp; a closed-form load sampled by
+// rows). summary.json's object is the serial run's, the same on every rank, with
 // "ranks". What does not run distributed yet is refused by name before any work. Built with
 // COATFFT_MPI.
 #include <filesystem>
@@ -23,9 +24,9 @@ struct DistributedSceneRun {
   RunStatus status = RunStatus::ok;
 };
 
-/// Throws InvalidArgument naming the first part of `scene` that does not run distributed yet: a
-/// free boundary, a known [pressure], [stress], friction, a sweep, a measured topography, NetCDF
-/// output (docs/scale.md lists them).
+/// Throws InvalidArgument naming the first part of `scene` that does not run distributed yet:
+/// "auto", a free boundary's method other than dcfft or frf-split, a measured topography, a sweep,
+/// friction, [shear], [stress], ux/uy, NetCDF output (docs/scale.md lists them).
 void check_distributable(const Scene& scene);
 
 /// prepare_scene for the ranks of `comm` (the same on each): the scene read with a height map's
@@ -36,8 +37,9 @@ PreparedScene prepare_distributed_scene(const Communicator& comm,
                                         const std::filesystem::path& scene_file,
                                         const SceneRunOptions& options);
 
-/// compute_scene on the ranks of `comm`: the contact solve and the timed applications, without
-/// the nested start (docs/scale.md). Collective.
+/// compute_scene on the ranks of `comm`: the contact solve (without the nested start,
+/// docs/scale.md) or the known load's displacement and reports, and the timed applications.
+/// Collective.
 DistributedSceneRun compute_distributed_scene(const Communicator& comm,
                                               const PreparedScene& prepared,
                                               const SceneRunOptions& options);
