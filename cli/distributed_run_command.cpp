@@ -20,7 +20,9 @@
 #include "core/error.hpp"
 #include "distributed/fftw_mpi_wisdom.hpp"
 #include "scene/distributed_run.hpp"
+#include "scene/netcdf_slab.hpp"
 #include "scene/npy_slab.hpp"
+#include "scene/scene_netcdf.hpp"
 
 namespace coatfft::cli {
 
@@ -66,9 +68,14 @@ void write_distributed_outputs(const Communicator& comm, DistributedOutput& out,
                                const scene::OutputSpec& spec, const Grid& grid,
                                const scene::DistributedSceneRun& run) {
   const auto path = [&out](const char* name) { return out.paths.at(name); };
-  if (spec.uz) scene::write_npy_slab(comm, path("uz.npy"), run.uz, run.slab);
-  if (spec.pressure) scene::write_npy_slab(comm, path("pressure.npy"), run.pressure, run.slab);
-  if (spec.gap) scene::write_npy_slab(comm, path("gap.npy"), run.gap, run.slab);
+  if (spec.netcdf) {
+    if (out.paths.contains(scene::netcdf_output_name))
+      scene::write_run_netcdf_slab(comm, path(scene::netcdf_output_name), spec, grid, run);
+  } else {
+    if (spec.uz) scene::write_npy_slab(comm, path("uz.npy"), run.uz, run.slab);
+    if (spec.pressure) scene::write_npy_slab(comm, path("pressure.npy"), run.pressure, run.slab);
+    if (spec.gap) scene::write_npy_slab(comm, path("gap.npy"), run.gap, run.slab);
+  }
   if (spec.displacement_csv) {
     std::ostringstream text;
     write_displacement_rows(text, grid, run.slab.y0, run.pressure, run.uz, comm.rank() == 0);

@@ -16,6 +16,7 @@
 #ifdef COATFFT_WITH_MPI
 #include "distributed/self_affine_slab.hpp"
 #include "scene/npy_slab.hpp"
+#include "topography/netcdf_collective.hpp"
 #endif
 
 namespace coatfft::cli {
@@ -61,6 +62,12 @@ SurfaceRequest request(const SurfaceOptions& o) {
   return {grid, spec, format};
 }
 
+// A NetCDF file in SurfaceTopography's layout says its size and that it is periodic; these say
+// how it was made.
+topography::NetcdfAttributes surface_attributes(const SurfaceOptions& o) {
+  return {{{"source", "coatfft surface"}, {"seed", o.seed}}, {{"hurst", o.hurst}}};
+}
+
 void report(const SurfaceOptions& o, double rms_height, double rms_slope) {
   std::cout << "wrote " << o.output.string() << ": " << o.ny << " x " << o.nx
             << " heights [m], rms height " << rms_height << " m, rms slope " << rms_slope << "\n";
@@ -73,10 +80,7 @@ void surface_command(const SurfaceOptions& o) {
   // The output is checked before any work: a file that cannot be written is refused at once.
   StagedFile file(o.output, "output file", {});
   const Field h = self_affine_surface(grid, spec);
-  // A NetCDF file in SurfaceTopography's layout says its size and that it is periodic.
-  topography::write_heights(
-      file.path(), format, h, grid, true,
-      {{{"source", "coatfft surface"}, {"seed", o.seed}}, {{"hurst", o.hurst}}});
+  topography::write_heights(file.path(), format, h, grid, true, surface_attributes(o));
   file.commit();
   report(o, std::sqrt(h.square().mean()), spectral_rms_slope(grid, h));
 }
@@ -84,8 +88,6 @@ void surface_command(const SurfaceOptions& o) {
 #ifdef COATFFT_WITH_MPI
 void surface_command(const SurfaceOptions& o, const Communicator& comm) {
   const auto [grid, spec, format] = request(o);  // the same on every rank
-  COATFFT_REQUIRE(format == topography::HeightsFormat::npy, "--output ", o.output.string(),
-                  ": NetCDF is not written by a distributed run yet (docs/scale.md); write .npy");
   // Rank 0 checks and stages the file; its path, or its refusal, goes to every rank.
   std::optional<StagedFile> file;
   std::string staged, refusal;
@@ -101,7 +103,16 @@ void surface_command(const SurfaceOptions& o, const Communicator& comm) {
   if (!refusal.empty()) throw InvalidArgument(refusal);
   comm.broadcast(staged);
   const Field h = self_affine_slab(comm, grid, spec);
-  scene::write_npy_slab(comm, staged, h, slab_of(comm, grid.nx(), grid.ny()));
+  const Slab slab = slab_of(comm, grid.nx(), grid.ny());
+  if (format == topography::HeightsFormat::npy) {
+    scene::write_npy_slab(comm, staged, h, slab);
+  } else {
+    topography::NetcdfDataset d = topography::heights_dataset(
+        grid, true, {h.data(), static_cast<std::size_t>(h.size())}, surface_attributes(o));
+    d.first_row = slab.y0;
+    d.rows = slab.rows;
+    topography::write_netcdf_collective(comm, staged, d);
+  }
   const double rms_height =
       std::sqrt(comm.sum(h.square().sum()) / static_cast<double>(grid.nb_cells()));
   const double rms_slope = spectral_rms_slope(comm, grid, h);

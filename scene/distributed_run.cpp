@@ -67,7 +67,6 @@ std::string not_distributable(const Scene& scene) {
   if (scene.shear) return "[shear]";
   if (scene.stress) return "[stress]";
   if (scene.output.in_plane) return "[output] ux, uy (the in-plane displacements)";
-  if (scene.output.netcdf) return "[output] format = \"netcdf\"";
   return {};
 }
 

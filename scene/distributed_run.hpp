@@ -26,7 +26,7 @@ struct DistributedSceneRun {
 
 /// Throws InvalidArgument naming the first part of `scene` that does not run distributed yet:
 /// "auto", a free boundary's method other than dcfft or frf-split, a measured topography, a sweep,
-/// friction, [shear], [stress], ux/uy, NetCDF output (docs/scale.md lists them).
+/// friction, [shear], [stress], ux/uy (docs/scale.md lists them).
 void check_distributable(const Scene& scene);
 
 /// prepare_scene for the ranks of `comm` (the same on each): the scene read with a height map's

@@ -1,6 +1,8 @@
 #include "scene/scene_netcdf.hpp"
 
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "topography/netcdf_writer.hpp"
@@ -63,10 +65,25 @@ void add_stress(NetcdfDataset& d, const OutputSpec& spec, const StressRun& s) {
 }
 }  // namespace
 
+NetcdfDataset run_dataset(const Grid& grid, const nlohmann::json& summary) {
+  const bool periodic = summary.value("boundary", "free") == "periodic";
+  return {grid, periodic, {}, {}, {{{"summary", summary.dump()}}, {}}};
+}
+
+NetcdfVariable field_variable(std::string_view name, std::span<const double> values,
+                              std::vector<std::string> leading) {
+  static const std::map<std::string_view, NetcdfAttributes> attributes = {
+      {"uz", described("m", "normal surface displacement, into the body")},
+      {"pressure", described("Pa", "surface pressure")},
+      {"gap", described("m", "gap after loading")},
+      {"ux", described("m", "surface displacement along x")},
+      {"uy", described("m", "surface displacement along y")}};
+  return {std::string(name), std::move(leading), values, attributes.at(name)};
+}
+
 void write_run_netcdf(const std::filesystem::path& path, const OutputSpec& spec,
                       const SceneRun& run) {
-  const bool periodic = run.summary.value("boundary", "free") == "periodic";
-  NetcdfDataset d{run.grid, periodic, {}, {}, {{{"summary", run.summary.dump()}}, {}}};
+  NetcdfDataset d = run_dataset(run.grid, run.summary);
   std::vector<double> uz, pressure, gap, loads, approaches;
   if (run.sweep) {
     const auto& rows = run.summary.at("sweep");
@@ -82,22 +99,18 @@ void write_run_netcdf(const std::filesystem::path& path, const OutputSpec& spec,
   const std::vector<std::string> sweep =
       run.sweep ? std::vector<std::string>{"sweep"} : std::vector<std::string>{};
   if (spec.uz)
-    d.variables.push_back({"uz", sweep, run.sweep ? stacked(run.sweep->uz, uz) : values(run.uz),
-                           described("m", "normal surface displacement, into the body")});
+    d.variables.push_back(
+        field_variable("uz", run.sweep ? stacked(run.sweep->uz, uz) : values(run.uz), sweep));
   if (spec.pressure)
-    d.variables.push_back(
-        {"pressure", sweep,
-         run.sweep ? stacked(run.sweep->pressure, pressure) : values(run.pressure),
-         described("Pa", "surface pressure")});
+    d.variables.push_back(field_variable(
+        "pressure", run.sweep ? stacked(run.sweep->pressure, pressure) : values(run.pressure),
+        sweep));
   if (spec.gap && (run.gap || run.sweep))
-    d.variables.push_back({"gap", sweep,
-                           run.sweep ? stacked(run.sweep->gap, gap) : values(*run.gap),
-                           described("m", "gap after loading")});
+    d.variables.push_back(
+        field_variable("gap", run.sweep ? stacked(run.sweep->gap, gap) : values(*run.gap), sweep));
   if (spec.in_plane && run.ux && run.uy) {
-    d.variables.push_back(
-        {"ux", {}, values(*run.ux), described("m", "surface displacement along x")});
-    d.variables.push_back(
-        {"uy", {}, values(*run.uy), described("m", "surface displacement along y")});
+    d.variables.push_back(field_variable("ux", values(*run.ux)));
+    d.variables.push_back(field_variable("uy", values(*run.uy)));
   }
   if (run.stress) add_stress(d, spec, *run.stress);
   topography::write_netcdf(path, d);

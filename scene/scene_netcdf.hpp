@@ -4,14 +4,26 @@
 // coordinates, units and long names, the stress planes' depths and components and a sweep's
 // values as their own dimensions, and summary.json's object as the file's attribute `summary`.
 #include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string_view>
 
 #include "scene/scene.hpp"
 #include "scene/scene_run.hpp"
+#include "topography/netcdf_writer.hpp"
 
 namespace coatfft::scene {
 
 /// The file's name in the output folder.
 inline constexpr const char* netcdf_output_name = "fields.nc";
+
+/// A run's file before its variables: the grid's axes, periodic or not as summary.json's
+/// "boundary" says, and summary.json's object as the file's attribute `summary`.
+topography::NetcdfDataset run_dataset(const Grid& grid, const nlohmann::json& summary);
+
+/// The variable of a run's surface field "uz", "pressure", "gap", "ux" or "uy" over (x, y), with
+/// its units and long name, holding `values`.
+topography::NetcdfVariable field_variable(std::string_view name, std::span<const double> values,
+                                          std::vector<std::string> leading = {});
 
 /// Writes the arrays of `run` that `spec` asks for (the .npy files' arrays) into the new file
 /// `path`.

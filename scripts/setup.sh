@@ -10,12 +10,13 @@ build_dir=${1:-build}
 # are for scripts/fuzz.sh; python3-dev and pybind11 build the Python module, pytest tests it, and
 # pip, setuptools and wheel install it as a package (the packaging test); NetCDF, libzip and
 # tinyxml2 read and write measured topographies (topography/), python3-netcdf4 writes the test files;
-# Open MPI and FFTW's MPI library run the distributed operators and solves (docs/scale.md).
+# Open MPI and FFTW's MPI library run the distributed operators and solves, NetCDF's PnetCDF build
+# writes their NetCDF files collectively (docs/scale.md).
 packages=(cmake g++ ninja-build pkg-config libfftw3-dev libeigen3-dev libgsl-dev libboost-dev
           catch2 libtomlplusplus-dev libcli11-dev nlohmann-json3-dev python3-numpy python3-matplotlib
           clang libclang-rt-14-dev python3-dev pybind11-dev python3-pybind11 python3-pytest
           python3-pip python3-setuptools python3-wheel libnetcdf-dev libzip-dev libtinyxml2-dev
-          python3-netcdf4 libfftw3-mpi-dev libopenmpi-dev openmpi-bin)
+          python3-netcdf4 libfftw3-mpi-dev libopenmpi-dev openmpi-bin libnetcdf-pnetcdf-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -7,7 +7,9 @@ on the coated body (frf-split) at 2 and 3 ranks: summary.json has
 the serial run's keys and "ranks", the same iterations, and the load, approach, pressure,
 displacement and gap equal the serial run's to 1e-10 (the grids are below the nested start's 128
 cells a side, which the distributed solve does not take yet: docs/scale.md); displacement.csv
-holds the .npy files' values in the serial file's order. A wisdom file is written by rank 0 and
+holds the .npy files' values in the serial file's order. The rough contact and a pressure map
+again with fields.nc (written by the ranks together): the serial file's format, variables,
+coordinates and attributes, summary.json as its `summary`, the fields as above. A wisdom file is written by rank 0 and
 read by the next run; one that does not hold wisdom is refused and left as it is. Scenes that
 do not run distributed, and bad height maps, are refused on one line with exit status 2 and no
 output. Usage: mpi_cli_run.py COATFFT MPIEXEC
@@ -19,6 +21,7 @@ import sys
 import tempfile
 from pathlib import Path
 
+import netCDF4
 import numpy as np
 
 COATFFT, MPIEXEC = sys.argv[1], sys.argv[2]
@@ -33,6 +36,10 @@ material = "steel"
 material = "titanium_nitride"
 thickness = 1.0e-5
 """
+
+
+# fields.nc instead of the .npy files (written by the ranks together under mpirun).
+NETCDF = '[output]\nformat = "netcdf"\n'
 
 
 def grid(nx, ny, boundary="periodic"):
@@ -50,6 +57,32 @@ def fail(message):
     sys.exit(1)
 
 
+def fields(folder, names):
+    """The run's fields as (ny, nx) arrays: its .npy files, or fields.nc's variables over (x, y)."""
+    if not (folder / "fields.nc").exists():
+        return {field: np.load(folder / f"{field}.npy") for field in names}
+    with netCDF4.Dataset(folder / "fields.nc") as nc:
+        return {field: np.asarray(nc[field][:]).T for field in names}
+
+
+def check_netcdf(name, serial, distributed):
+    """fields.nc of the ranks against the serial one: the same format, dimensions, coordinates
+    and attributes; its `summary` attribute is the run's summary.json."""
+    with netCDF4.Dataset(serial / "fields.nc") as s, netCDF4.Dataset(distributed / "fields.nc") as d:
+        if (s.data_model, d.data_model) != ("NETCDF3_64BIT_OFFSET",) * 2:
+            fail(f"{name}: fields.nc is {d.data_model} (serial {s.data_model})")
+        if list(s.variables) != list(d.variables) or s.dimensions.keys() != d.dimensions.keys():
+            fail(f"{name}: fields.nc holds {list(d.variables)} (serial {list(s.variables)})")
+        for v in s.variables:
+            if s[v].dimensions != d[v].dimensions or s[v].__dict__ != d[v].__dict__:
+                fail(f"{name}: fields.nc's {v} is not the serial file's")
+        for axis in ("x", "y"):
+            if np.any(s[axis][:] != d[axis][:]):
+                fail(f"{name}: fields.nc's {axis} coordinates differ")
+        if json.loads(d.summary) != json.loads((distributed / "summary.json").read_text()):
+            fail(f"{name}: fields.nc's summary is not summary.json")
+
+
 def check_equal(name, serial, distributed, ranks):
     s, d = json.loads((serial / "summary.json").read_text()), json.loads(
         (distributed / "summary.json").read_text())
@@ -62,9 +95,13 @@ def check_equal(name, serial, distributed, ranks):
         check_contact_numbers(name, s, d)
     else:
         check_load_reports(name, s, d)
+    names = ("pressure", "uz", "gap") if contact else ("pressure", "uz")
+    if (serial / "fields.nc").exists():
+        check_netcdf(name, serial, distributed)
+    s_fields, d_fields = fields(serial, names), fields(distributed, names)
     largest = 0.0
-    for field in ("pressure", "uz", "gap") if contact else ("pressure", "uz"):
-        a, b = np.load(serial / f"{field}.npy"), np.load(distributed / f"{field}.npy")
+    for field in names:
+        a, b = s_fields[field], d_fields[field]
         error = np.abs(a - b).max() / np.abs(a).max()
         if a.shape != b.shape or error > 1e-10:
             fail(f"{name} at {ranks} ranks: {field} differs by {error:.2e} of its largest value")
@@ -75,9 +112,9 @@ def check_equal(name, serial, distributed, ranks):
     serial_csv = np.loadtxt(serial / "displacement.csv", delimiter=",", skiprows=1)
     if csv.shape != serial_csv.shape or np.any(csv[:, :2] != serial_csv[:, :2]):
         fail(f"{name}: displacement.csv's cells are not the serial file's")
-    if np.any(csv[:, 2] != np.load(distributed / "pressure.npy").ravel()) or np.any(
-            csv[:, 3] != np.load(distributed / "uz.npy").ravel()):
-        fail(f"{name}: displacement.csv's values are not those of pressure.npy and uz.npy")
+    if np.any(csv[:, 2] != d_fields["pressure"].ravel()) or np.any(
+            csv[:, 3] != d_fields["uz"].ravel()):
+        fail(f"{name}: displacement.csv's values are not those of the pressure and uz files")
 
 
 def check_contact_numbers(name, s, d):
@@ -146,7 +183,9 @@ def main():
                                         ("coated_free", coated_free, (2, 3)),
                                         ("hertz_example", hertz_example, (3,)),
                                         ("coated_hertz_example", coated_example, (2, 3)),
-                                        ("pressure_map", pressure_map, (3,))):
+                                        ("pressure_map", pressure_map, (3,)),
+                                        ("rough_netcdf", rough + NETCDF, (3,)),
+                                        ("pressure_map_netcdf", pressure_map + NETCDF, (2,))):
             scene = tmp / f"{name}.toml"
             scene.write_text(text)
             if (r := run(["run", str(scene), "-o", str(tmp / f"{name}_serial"), "--quiet"])).returncode:

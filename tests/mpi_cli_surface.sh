@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `coatfft surface` under mpirun (docs/scale.md): at 1, 2 and 3 ranks (3: uneven slabs) the same
 # .npy file as the serial command, byte for byte, over sizes whose rows split unevenly; a NetCDF
-# output and a command that does not run distributed are refused on one line, writing nothing.
+# file too (written by the ranks together), also where a rank holds no rows; a command that does not
+# run distributed is refused on one line, writing nothing.
 # Usage: mpi_cli_surface.sh COATFFT MPIEXEC
 set -euo pipefail
 coatfft=$1
@@ -24,6 +25,15 @@ for case in "1 2 3: 64 50 --rms-slope 0.1" "3: 30 14 --rms-height 1e-6"; do
     [ "$(wc -l <"$tmp/out.txt")" -eq 1 ] || fail "$(cat "$tmp/out.txt")"
   done
 done
+# NetCDF at 3 ranks: 14 rows split 5, 5, 4; 4 rows split 2, 2, 0.
+for size in "30 14" "8 4"; do
+  read -r nx ny <<<"$size"
+  args="--nx $nx --ny $ny --lx 1e-3 --ly 0.8e-3 --hurst 0.7 --rms-height 1e-6 --seed 2026"
+  "$coatfft" surface -o "$tmp/serial.nc" $args >/dev/null
+  "$mpiexec" -np 3 --oversubscribe "$coatfft" surface -o "$tmp/np3.nc" $args >/dev/null
+  cmp -s "$tmp/serial.nc" "$tmp/np3.nc" || fail "$nx x $ny NetCDF at 3 ranks differs"
+  rm "$tmp/serial.nc" "$tmp/np3.nc"
+done
 # Refusals: exit status 2, one line on stderr naming the cause, no file.
 refused() {
   local expect=$1
@@ -34,9 +44,11 @@ refused() {
   grep -q "$expect" "$tmp/err.txt" || fail "no \"$expect\" in: $(cat "$tmp/err.txt")"
   [ "$(grep -c '^coatfft: error' "$tmp/err.txt")" -eq 1 ] || fail "not one line: $(cat "$tmp/err.txt")"
 }
-refused "NetCDF is not written by a distributed run" surface -o "$tmp/z.nc" --nx 8 --ny 8 \
-  --lx 1e-3 --ly 1e-3 --hurst 0.8 --rms-height 1e-6
-[ ! -e "$tmp/z.nc" ] || fail "z.nc written"
+# A folder in the output's place is left as it is.
+mkdir "$tmp/z.nc"
+refused "z.nc" surface -o "$tmp/z.nc" --nx 8 --ny 8 --lx 1e-3 --ly 1e-3 --hurst 0.8 \
+  --rms-height 1e-6
+[ -d "$tmp/z.nc" ] && [ -z "$(ls -A "$tmp/z.nc")" ] || fail "z.nc changed"
 refused "\`topography\` does not run distributed" topography "$tmp/none.npy" -o "$tmp/out.npy"
 [ ! -e "$tmp/out.npy" ] || fail "out.npy written"
 echo "mpi_cli_surface: all checks passed"

@@ -26,7 +26,10 @@ NetcdfFile NetcdfFile::create(const std::filesystem::path& path) {
 }
 
 NetcdfFile::NetcdfFile(NetcdfFile&& other) noexcept
-    : path_(std::move(other.path_)), id_(other.id_) {
+    : path_(std::move(other.path_)),
+      id_(other.id_),
+      defers_errors_(other.defers_errors_),
+      error_(std::move(other.error_)) {
   other.id_ = -1;
 }
 
@@ -37,7 +40,13 @@ NetcdfFile::~NetcdfFile() {
 void NetcdfFile::close() {
   const int id = id_;
   id_ = -1;
-  check_netcdf(nc_close(id), path_, "cannot write");
+  check(nc_close(id), "cannot write");
+}
+
+void NetcdfFile::check(int status, std::string_view what) {
+  if (!defers_errors_) return check_netcdf(status, path_, what);
+  if (status != NC_NOERR && error_.empty())
+    error_ = detail::concat(path_.string(), ": ", what, ": ", nc_strerror(status));
 }
 
 }  // namespace coatfft::topography

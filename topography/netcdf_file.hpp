@@ -1,6 +1,6 @@
 #pragma once
 // A NetCDF dataset handle that is closed whatever happens (RAII over netcdf-c's ncid), and the
-// one check of netcdf-c's status codes, for the NetCDF reader and writer of the scene layer.
+// one check of netcdf-c's status codes, for the NetCDF reader and writers of the scene layer.
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -18,6 +18,9 @@ class NetcdfFile {
   /// Creates `path` as a NetCDF-3 file with 64-bit offsets (the format SurfaceTopography writes
   /// and its serial reader takes), refusing to overwrite an existing file.
   static NetcdfFile create(const std::filesystem::path& path);
+  /// Takes the handle `id` of a dataset opened or created as `path` (a collective write's,
+  /// topography/netcdf_collective.hpp); closed by this object.
+  NetcdfFile(std::filesystem::path path, int id) : path_(std::move(path)), id_(id) {}
 
   NetcdfFile(NetcdfFile&& other) noexcept;
   NetcdfFile& operator=(NetcdfFile&&) = delete;
@@ -30,10 +33,19 @@ class NetcdfFile {
   /// Closes the file, reporting an error of the last write (a full disk) as close does.
   void close();
 
+  /// check_netcdf on this file; or, once defer_errors() was called, keeps the first error's
+  /// message (error()) and returns: a rank of a collective write must go on taking part in every
+  /// collective call, or the other ranks would wait for it forever.
+  void check(int status, std::string_view what);
+  void defer_errors() { defers_errors_ = true; }
+  /// The first error kept since defer_errors(), or "".
+  const std::string& error() const { return error_; }
+
  private:
-  NetcdfFile(std::filesystem::path path, int id) : path_(std::move(path)), id_(id) {}
   std::filesystem::path path_;
   int id_ = -1;
+  bool defers_errors_ = false;
+  std::string error_;
 };
 
 }  // namespace coatfft::topography

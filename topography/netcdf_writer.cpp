@@ -11,24 +11,20 @@
 namespace coatfft::topography {
 
 namespace {
-void put_attributes(const NetcdfFile& nc, int var, const NetcdfAttributes& attributes) {
+void put_attributes(NetcdfFile& nc, int var, const NetcdfAttributes& attributes) {
   for (const auto& [name, text] : attributes.text)
-    check_netcdf(nc_put_att_text(nc.id(), var, name.c_str(), text.size(), text.c_str()), nc.path(),
-                 name);
+    nc.check(nc_put_att_text(nc.id(), var, name.c_str(), text.size(), text.c_str()), name);
   for (const auto& [name, value] : attributes.numbers)
-    check_netcdf(nc_put_att_double(nc.id(), var, name.c_str(), NC_DOUBLE, 1, &value), nc.path(),
-                 name);
+    nc.check(nc_put_att_double(nc.id(), var, name.c_str(), NC_DOUBLE, 1, &value), name);
 }
 
 // A dimension with its coordinate variable (when it has coordinates); returns the dimension id.
-int define_dimension(const NetcdfFile& nc, const NetcdfDimension& dimension) {
+int define_dimension(NetcdfFile& nc, const NetcdfDimension& dimension) {
   int dim = -1;
-  check_netcdf(nc_def_dim(nc.id(), dimension.name.c_str(), dimension.size, &dim), nc.path(),
-               dimension.name);
+  nc.check(nc_def_dim(nc.id(), dimension.name.c_str(), dimension.size, &dim), dimension.name);
   if (!dimension.coordinates.empty()) {
     int var = -1;
-    check_netcdf(nc_def_var(nc.id(), dimension.name.c_str(), NC_DOUBLE, 1, &dim, &var), nc.path(),
-                 dimension.name);
+    nc.check(nc_def_var(nc.id(), dimension.name.c_str(), NC_DOUBLE, 1, &dim, &var), dimension.name);
     put_attributes(nc, var, dimension.attributes);
   }
   return dim;
@@ -44,66 +40,102 @@ NetcdfDimension axis(const Grid& grid, bool x, bool periodic) {
   return axis;
 }
 
-// Writes a map variable slice by slice, each (ny, nx) slice transposed to (x, y).
-void put_maps(const NetcdfFile& nc, int var, const NetcdfVariable& v, std::size_t leading_dims,
-              const Grid& grid) {
-  const auto nx = static_cast<std::size_t>(grid.nx()), ny = static_cast<std::size_t>(grid.ny());
-  const std::size_t slices = v.data.size() / (nx * ny);
-  std::vector<std::size_t> shape(leading_dims + 2), start(leading_dims + 2, 0),
-      count(leading_dims + 2, 1);
-  std::vector<int> dims(leading_dims + 2);
-  check_netcdf(nc_inq_vardimid(nc.id(), var, dims.data()), nc.path(), v.name);
-  for (std::size_t d = 0; d < shape.size(); ++d) nc_inq_dimlen(nc.id(), dims[d], &shape[d]);
-  count[leading_dims] = nx;
-  count[leading_dims + 1] = ny;
-  std::vector<double> slice(nx * ny);
+// Every dimension of the file: x, y, then the dataset's own.
+std::vector<NetcdfDimension> all_dimensions(const NetcdfDataset& dataset) {
+  std::vector<NetcdfDimension> all = {axis(dataset.grid, true, dataset.periodic),
+                                      axis(dataset.grid, false, dataset.periodic)};
+  all.insert(all.end(), dataset.dimensions.begin(), dataset.dimensions.end());
+  return all;
+}
+
+int variable_id(NetcdfFile& nc, const std::string& name) {
+  int var = -1;
+  nc.check(nc_inq_varid(nc.id(), name.c_str(), &var), name);
+  return var;
+}
+
+// The sizes of a variable's dimensions, as the file declares them.
+std::vector<std::size_t> variable_shape(NetcdfFile& nc, int var, const std::string& name) {
+  int n = 0;
+  nc.check(nc_inq_varndims(nc.id(), var, &n), name);
+  std::vector<int> dims(static_cast<std::size_t>(n));
+  std::vector<std::size_t> shape(dims.size());
+  nc.check(nc_inq_vardimid(nc.id(), var, dims.data()), name);
+  for (std::size_t d = 0; d < dims.size(); ++d)
+    nc.check(nc_inq_dimlen(nc.id(), dims[d], &shape[d]), name);
+  return shape;
+}
+
+// A variable's values whole, or, when `puts` is false, nothing (count 0), still as a call.
+void put_whole(NetcdfFile& nc, const std::string& name, const double* values, bool puts) {
+  const int var = variable_id(nc, name);
+  std::vector<std::size_t> count = variable_shape(nc, var, name);
+  const std::vector<std::size_t> start(count.size(), 0);
+  if (!puts) count.assign(count.size(), 0);
+  nc.check(nc_put_vara_double(nc.id(), var, start.data(), count.data(), values), name);
+}
+
+// Writes a map variable slice by slice (the product of its leading dimensions, the same on every
+// rank of a collective write), each slice's rows (rows, nx) transposed to (x, rows).
+void put_maps(NetcdfFile& nc, const NetcdfVariable& v, const NetcdfDataset& d) {
+  const int var = variable_id(nc, v.name);
+  const std::vector<std::size_t> shape = variable_shape(nc, var, v.name);
+  const std::size_t leading = shape.size() - 2;
+  std::size_t slices = 1;
+  for (std::size_t k = 0; k < leading; ++k) slices *= shape[k];
+  const auto nx = static_cast<std::size_t>(d.grid.nx());
+  const auto rows = static_cast<std::size_t>(d.rows < 0 ? d.grid.ny() : d.rows);
+  COATFFT_REQUIRE(v.data.size() == slices * nx * rows, "write_netcdf: ", v.name,
+                  " does not hold the rows of its dimensions");
+  std::vector<std::size_t> start(shape.size(), 0), count(shape.size(), 1);
+  start[leading + 1] = rows > 0 ? static_cast<std::size_t>(d.first_row) : 0;
+  count[leading] = nx;
+  count[leading + 1] = rows;
+  std::vector<double> slice(nx * rows);
   for (std::size_t s = 0; s < slices; ++s) {
-    for (std::size_t rest = s, d = leading_dims; d-- > 0; rest /= shape[d])
-      start[d] = rest % shape[d];
-    const double* from = v.data.data() + s * nx * ny;
-    for (std::size_t j = 0; j < ny; ++j)
-      for (std::size_t i = 0; i < nx; ++i) slice[i * ny + j] = from[j * nx + i];
-    check_netcdf(nc_put_vara_double(nc.id(), var, start.data(), count.data(), slice.data()),
-                 nc.path(), v.name);
+    for (std::size_t rest = s, k = leading; k-- > 0; rest /= shape[k]) start[k] = rest % shape[k];
+    const double* from = v.data.data() + s * nx * rows;
+    for (std::size_t j = 0; j < rows; ++j)
+      for (std::size_t i = 0; i < nx; ++i) slice[i * rows + j] = from[j * nx + i];
+    nc.check(nc_put_vara_double(nc.id(), var, start.data(), count.data(), slice.data()), v.name);
   }
 }
 }  // namespace
 
-void write_netcdf(const std::filesystem::path& path, const NetcdfDataset& dataset) {
-  NetcdfFile nc = NetcdfFile::create(path);
+void define_netcdf(NetcdfFile& nc, const NetcdfDataset& dataset) {
   std::map<std::string, int> dims;
-  std::vector<NetcdfDimension> all = {axis(dataset.grid, true, dataset.periodic),
-                                      axis(dataset.grid, false, dataset.periodic)};
-  all.insert(all.end(), dataset.dimensions.begin(), dataset.dimensions.end());
-  for (const auto& dimension : all) dims[dimension.name] = define_dimension(nc, dimension);
-  std::vector<int> vars;
+  for (const auto& dimension : all_dimensions(dataset))
+    dims[dimension.name] = define_dimension(nc, dimension);
   for (const auto& v : dataset.variables) {
     std::vector<int> ids;
     for (const auto& name : v.leading) ids.push_back(dims.at(name));
     if (v.maps) ids.insert(ids.end(), {dims.at("x"), dims.at("y")});
     int var = -1;
-    check_netcdf(nc_def_var(nc.id(), v.name.c_str(), NC_DOUBLE, static_cast<int>(ids.size()),
-                            ids.data(), &var),
-                 nc.path(), v.name);
+    nc.check(nc_def_var(nc.id(), v.name.c_str(), NC_DOUBLE, static_cast<int>(ids.size()),
+                        ids.data(), &var),
+             v.name);
     put_attributes(nc, var, v.attributes);
-    vars.push_back(var);
   }
   put_attributes(nc, NC_GLOBAL, dataset.attributes);
-  check_netcdf(nc_enddef(nc.id()), nc.path(), "header");
-  for (const auto& dimension : all)
-    if (!dimension.coordinates.empty()) {
-      int var = -1;
-      nc_inq_varid(nc.id(), dimension.name.c_str(), &var);
-      check_netcdf(nc_put_var_double(nc.id(), var, dimension.coordinates.data()), nc.path(),
-                   dimension.name);
-    }
-  for (std::size_t k = 0; k < vars.size(); ++k) {
-    const auto& v = dataset.variables[k];
+  nc.check(nc_enddef(nc.id()), "header");
+}
+
+void put_netcdf(NetcdfFile& nc, const NetcdfDataset& dataset) {
+  for (const auto& dimension : all_dimensions(dataset))
+    if (!dimension.coordinates.empty())
+      put_whole(nc, dimension.name, dimension.coordinates.data(), dataset.puts_shared);
+  for (const auto& v : dataset.variables) {
     if (v.maps)
-      put_maps(nc, vars[k], v, v.leading.size(), dataset.grid);
+      put_maps(nc, v, dataset);
     else
-      check_netcdf(nc_put_var_double(nc.id(), vars[k], v.data.data()), nc.path(), v.name);
+      put_whole(nc, v.name, v.data.data(), dataset.puts_shared);
   }
+}
+
+void write_netcdf(const std::filesystem::path& path, const NetcdfDataset& dataset) {
+  NetcdfFile nc = NetcdfFile::create(path);
+  define_netcdf(nc, dataset);
+  put_netcdf(nc, dataset);
   nc.close();
 }
 
@@ -124,11 +156,18 @@ void write_heights(const std::filesystem::path& path, HeightsFormat format, cons
   COATFFT_REQUIRE(heights.rows() == grid.nx() && heights.cols() == grid.ny(),
                   "write_heights: the heights are not of the grid's shape");
   if (format == HeightsFormat::npy) return scene::write_npy(path, heights);
+  write_netcdf(path, heights_dataset(grid, periodic,
+                                     {heights.data(), static_cast<std::size_t>(heights.size())},
+                                     attributes));
+}
+
+NetcdfDataset heights_dataset(const Grid& grid, bool periodic, std::span<const double> heights,
+                              const NetcdfAttributes& attributes) {
   NetcdfDataset dataset{grid, periodic, {}, {}, attributes};
-  NetcdfVariable z{"heights", {}, {heights.data(), static_cast<std::size_t>(heights.size())}, {}};
+  NetcdfVariable z{"heights", {}, heights, {}};
   z.attributes.text = {{"units", "m"}, {"long_name", "surface height"}};
   dataset.variables.push_back(z);
-  write_netcdf(path, dataset);
+  return dataset;
 }
 
 }  // namespace coatfft::topography

@@ -48,10 +48,25 @@ struct NetcdfDataset {
   std::vector<NetcdfDimension> dimensions;
   std::vector<NetcdfVariable> variables;
   NetcdfAttributes attributes;  ///< of the file (global)
+  /// The grid's rows that the maps' data hold: all of them (rows < 0), or a rank's slab in a
+  /// collective write (topography/netcdf_collective.hpp), `rows` rows from `first_row` on.
+  std::ptrdiff_t first_row = 0;
+  std::ptrdiff_t rows = -1;
+  /// Whether this writer puts the coordinates and the variables without maps (in a collective
+  /// write, the first rank only; the others take part in those calls with nothing to put).
+  bool puts_shared = true;
 };
 
 /// Writes `dataset` as a new NetCDF-3 (64-bit offset) file `path`, refusing an existing one.
 void write_netcdf(const std::filesystem::path& path, const NetcdfDataset& dataset);
+
+class NetcdfFile;
+
+/// The two halves of write_netcdf, which a collective write separates to ask for collective
+/// access in between: `dataset`'s dimensions, variables and attributes defined in the new file
+/// `nc` (define mode ended); then its values put.
+void define_netcdf(NetcdfFile& nc, const NetcdfDataset& dataset);
+void put_netcdf(NetcdfFile& nc, const NetcdfDataset& dataset);
 
 }  // namespace coatfft::topography
 
@@ -61,6 +76,12 @@ enum class HeightsFormat { npy, netcdf };
 
 /// The format of a heights file named `target`: .npy or .nc (NetCDF); InvalidArgument otherwise.
 HeightsFormat heights_format(const std::filesystem::path& target);
+
+/// The dataset of a height map [m] on `grid`: the variable `heights`, as SurfaceTopography names
+/// it, of the values `heights` (the whole map's, or a slab's rows with first_row and rows set),
+/// with `attributes` as the file's.
+NetcdfDataset heights_dataset(const Grid& grid, bool periodic, std::span<const double> heights,
+                              const NetcdfAttributes& attributes);
 
 /// Writes a height map [m] on `grid` as `path`: a (ny, nx) float64 .npy file, or a NetCDF file
 /// holding the variable `heights` as SurfaceTopography names it, with `attributes` as the file's.

@@ -1,0 +1,28 @@
+#include "scene/netcdf_slab.hpp"
+
+#include <string>
+
+#include "scene/scene_netcdf.hpp"
+#include "topography/netcdf_collective.hpp"
+
+namespace coatfft::scene {
+
+void write_run_netcdf_slab(const Communicator& comm, const std::filesystem::path& path,
+                           const OutputSpec& spec, const Grid& grid,
+                           const DistributedSceneRun& run) {
+  // Every rank defines the same header: rank 0's summary (the ranks' own timings differ).
+  std::string summary = run.summary.dump();
+  comm.broadcast(summary);
+  topography::NetcdfDataset d = run_dataset(grid, nlohmann::json::parse(summary));
+  d.first_row = run.slab.y0;
+  d.rows = run.slab.rows;
+  const auto values = [](const Field& f) {
+    return std::span<const double>(f.data(), static_cast<std::size_t>(f.size()));
+  };
+  if (spec.uz) d.variables.push_back(field_variable("uz", values(run.uz)));
+  if (spec.pressure) d.variables.push_back(field_variable("pressure", values(run.pressure)));
+  if (spec.gap) d.variables.push_back(field_variable("gap", values(run.gap)));
+  topography::write_netcdf_collective(comm, path, d);
+}
+
+}  // namespace coatfft::scene

@@ -1,0 +1,58 @@
+#include "topography/netcdf_collective.hpp"
+
+#include <mpi.h>
+#include <netcdf.h>
+#include <netcdf_par.h>
+
+#include <string>
+
+#include "core/error.hpp"
+#include "distributed/detail/mpi_handle.hpp"
+#include "topography/netcdf_file.hpp"
+
+namespace coatfft::topography {
+
+namespace {
+
+// `path` created on every rank; InvalidArgument on every rank when any rank could not create it (a
+// rank that did keeps its handle open: closing is collective, and the run ends).
+NetcdfFile create_collective(const Communicator& comm, const std::filesystem::path& path) {
+  int id = -1;
+  const int status = nc_create_par(path.c_str(), NC_NOCLOBBER | NC_64BIT_OFFSET,
+                                   coatfft::detail::mpi_comm(comm), MPI_INFO_NULL, &id);
+  if (!comm.all(status == NC_NOERR)) {
+    check_netcdf(status, path, "cannot create");
+    throw InvalidArgument(path.string() + ": cannot create on every rank");
+  }
+  NetcdfFile nc(path, id);
+  nc.defer_errors();
+  return nc;
+}
+
+// Every variable's values put by all ranks in each call (MPI-IO's collective writes), not by each
+// on its own.
+void ask_collective_access(NetcdfFile& nc) {
+  int variables = 0;
+  nc.check(nc_inq_nvars(nc.id(), &variables), "variables");
+  for (int var = 0; var < variables; ++var)
+    nc.check(nc_var_par_access(nc.id(), var, NC_COLLECTIVE), "collective access");
+}
+
+}  // namespace
+
+void write_netcdf_collective(const Communicator& comm, const std::filesystem::path& path,
+                             NetcdfDataset dataset) {
+  dataset.puts_shared = comm.rank() == 0;
+  NetcdfFile nc = create_collective(comm, path);
+  // Every value is put: filling the variables first would write the file twice.
+  int fill = 0;
+  nc.check(nc_set_fill(nc.id(), NC_NOFILL, &fill), "fill mode");
+  define_netcdf(nc, dataset);
+  ask_collective_access(nc);
+  put_netcdf(nc, dataset);
+  nc.close();
+  const bool written = nc.error().empty();
+  COATFFT_REQUIRE(comm.all(written), written ? "failed writing " + path.string() : nc.error());
+}
+
+}  // namespace coatfft::topography

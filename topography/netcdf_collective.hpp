@@ -1,0 +1,20 @@
+#pragma once
+// One NetCDF file written by the ranks of a communicator together, without gathering a field: each
+// rank puts its rows of every map at their place in one collective call a slice (NetCDF's MPI
+// build writes 64-bit-offset files through PnetCDF's MPI-IO). The file holds what write_netcdf
+// writes of the whole fields; only the header's padding may differ. Built with COATFFT_MPI.
+#include <filesystem>
+
+#include "distributed/communicator.hpp"
+#include "topography/netcdf_writer.hpp"
+
+namespace coatfft::topography {
+
+/// Writes `dataset`, whose maps hold this rank's rows (`first_row`, `rows`), as the new file
+/// `path`; the coordinates and the variables without maps come from rank 0. Every rank passes the
+/// same dimensions, variables and attributes. Collective; InvalidArgument on every rank when any
+/// rank cannot create or write the file (an existing one is refused).
+void write_netcdf_collective(const Communicator& comm, const std::filesystem::path& path,
+                             NetcdfDataset dataset);
+
+}  // namespace coatfft::topography
