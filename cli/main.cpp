@@ -180,6 +180,9 @@ Command add_topography(CLI::App& app) {
                   "Missing points: refuse (default) or fill (harmonic interpolation)");
   cmd->add_option("--lx", o->lx, "Size along x [m] of a file that carries none");
   cmd->add_option("--ly", o->ly, "Size along y [m] of a file that carries none");
+  cmd->add_flag("--gap", o->gap,
+                "Write the gap max(z) - z [m] a rigid flat sees (after --detrend) as .npy, for "
+                "[contact] indenter = \"height_map\", instead of the heights");
   return {cmd, [o] {
             coatfft::cli::topography_command(*o);
             return 0;

@@ -32,9 +32,13 @@ void topography_command(const TopographyOptions& o) {
   COATFFT_REQUIRE(o.lx.has_value() == o.ly.has_value(), "give both --lx and --ly, or neither");
   std::optional<StagedFile> file;
   std::optional<topography::HeightsFormat> format;
+  COATFFT_REQUIRE(!o.gap || o.output, "--gap needs -o FILE.npy");
   // The output is checked before any work: a file that cannot be written is refused at once.
   if (o.output) {
     format = topography::heights_format(*o.output);
+    // A NetCDF file in SurfaceTopography's layout holds heights, not a gap.
+    COATFFT_REQUIRE(!o.gap || format == topography::HeightsFormat::npy,
+                    "--gap: ", o.output->string(), ": the gap is written as .npy (name it *.npy)");
     file.emplace(*o.output, "output file", std::vector{o.input});
   }
   topography::Topography t = topography::read_topography(o.input, read);
@@ -46,7 +50,8 @@ void topography_command(const TopographyOptions& o) {
     COATFFT_REQUIRE(t.lx || format == topography::HeightsFormat::npy, o.input.string(),
                     ": the file carries no size; give --lx and --ly to write a NetCDF file");
     topography::write_heights(
-        file->path(), *format, heights, grid, t.periodic.value_or(false),
+        file->path(), *format, o.gap ? gap_of_topography(heights) : heights, grid,
+        t.periodic.value_or(false),
         {{{"source", o.input.filename().string()}, {"format", t.format}}, {}});
     file->commit();
   }

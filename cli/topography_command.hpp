@@ -16,6 +16,8 @@ struct TopographyOptions {
   std::string detrend = "none";
   std::string missing = "refuse";
   std::optional<double> lx, ly;  ///< [m], for a file that carries no size (must agree otherwise)
+  /// Write the gap max(z) - z of the detrended heights ([contact] indenter = "height_map"), .npy.
+  bool gap = false;
 };
 
 /// Reads, summarises and writes; InvalidArgument for bad options or files, before any output.

@@ -59,8 +59,8 @@ std::string not_distributable(const Scene& scene) {
   if (scene.contact) {
     const ContactSpec& contact = *scene.contact;
     if (!contact.topography.is_null())
-      return "[contact] topography (a measured surface: `coatfft topography FILE -o h.npy` writes "
-             "its heights for indenter = \"height_map\")";
+      return "[contact] topography (a measured surface: `coatfft topography FILE --detrend ... "
+             "--gap -o h.npy` writes its gap for indenter = \"height_map\", path = \"h.npy\")";
     if (!contact.sweep.empty()) return "[contact] a list of values (a sweep)";
     if (contact.friction > 0.0) return "[contact] friction";
   }

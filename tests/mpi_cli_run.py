@@ -151,6 +151,36 @@ def refused(tmp, expect, scene_text):
         fail(f"not refused with \"{expect}\": exit {r.returncode}, {r.stderr!r}")
 
 
+def check_topography_by_gap(tmp, heights, nx, ny):
+    """A measured topography, refused under mpirun: its gap from `coatfft topography --gap` as a
+    height map at 3 ranks gives the serial topography scene's contact (tilted, detrended)."""
+    y, x = np.mgrid[0:ny, 0:nx]
+    np.save(tmp / "z_tilted.npy", heights + 2e-9 * x - 1e-9 * y)
+    base = grid(nx, ny) + BODY + "[contact]\nload = 4.0\n"
+    scene = tmp / "topography.toml"
+    scene.write_text(base + 'topography = "z_tilted.npy"\ndetrend = "plane"\n')
+    if (r := run(["run", str(scene), "-o", str(tmp / "topography_serial"), "--quiet"])).returncode:
+        fail(r.stderr)
+    if (r := run(["topography", str(tmp / "z_tilted.npy"), "--detrend", "plane", "--gap", "-o",
+                  str(tmp / "h_tilted.npy")])).returncode:
+        fail(r.stderr)
+    scene.write_text(base + 'indenter = "height_map"\npath = "h_tilted.npy"\n')
+    if (r := run(["run", str(scene), "-o", str(tmp / "topography_np3")], 3)).returncode:
+        fail(f"topography's gap at 3 ranks: {r.stderr}")
+    s, d = (json.loads((tmp / f"topography_{o}" / "summary.json").read_text())
+            for o in ("serial", "np3"))
+    if d["iterations"] != s["iterations"]:
+        fail(f"topography's gap: {d['iterations']} iterations (serial {s['iterations']})")
+    largest = 0.0
+    for field in ("pressure", "uz", "gap"):
+        a, b = (np.load(tmp / f"topography_{o}" / f"{field}.npy") for o in ("serial", "np3"))
+        largest = max(largest, np.abs(a - b).max() / np.abs(a).max())
+    if largest > 1e-10:
+        fail(f"topography's gap at 3 ranks: fields differ by {largest:.2e}")
+    print(f"topography's gap at 3 ranks: {d['iterations']} iterations (serial {s['iterations']}), "
+          f"fields within {largest:.1e} of their largest values")
+
+
 def main():
     with tempfile.TemporaryDirectory() as name:
         tmp = Path(name)
@@ -195,6 +225,8 @@ def main():
                 if (r := run(["run", str(scene), "-o", str(out)], ranks)).returncode:
                     fail(f"{name} at {ranks} ranks: {r.stderr}")
                 check_equal(name, tmp / f"{name}_serial", out, ranks)
+
+        check_topography_by_gap(tmp, heights, nx, ny)
 
         # A wisdom file: written by rank 0 with every rank's plans, read again by the next run.
         wisdom = tmp / "plans.wisdom"

@@ -125,6 +125,31 @@ def test_program_prints_the_summary_and_writes_netcdf(coatfft_exe, tmp_path):
     assert np.array_equal(t["heights"], np.asarray(netCDF4.Dataset(out)["heights"]).T)
 
 
+def test_program_writes_the_gap_a_flat_sees(coatfft_exe, tmp_path):
+    # A tilted map in nm: --gap writes max(z) - z of the heights less their least-squares plane
+    # (numpy's lstsq over the cell centres), in metres, ready for indenter = "height_map".
+    rng = np.random.default_rng(8)
+    ny, nx = 10, 14
+    y, x = np.mgrid[0:ny, 0:nx] + 0.5
+    z = rng.normal(size=(ny, nx)) + 0.3 * x - 0.2 * y + 5.0
+    src = tmp_path / "tilted.nc"
+    write_surface_topography_nc(src, z, 7.0, 5.0, "nm", True)
+    out = tmp_path / "gap.npy"
+    subprocess.run([coatfft_exe, "topography", str(src), "--detrend", "plane", "--gap", "-o",
+                    str(out)], check=True, capture_output=True, text=True)
+    a = np.column_stack([np.ones(z.size), x.ravel(), y.ravel()])
+    zd = (z - (a @ np.linalg.lstsq(a, z.ravel(), rcond=None)[0]).reshape(z.shape)) * 1e-9
+    gap = np.load(out)
+    assert gap.min() == 0.0
+    assert np.abs(gap - (zd.max() - zd)).max() <= 1e-12 * np.abs(zd).max()
+    # The gap is no height map of SurfaceTopography's layout, and it needs a file to go to.
+    for args, says in (([str(src), "--gap", "-o", str(tmp_path / "gap.nc")], "written as .npy"),
+                       ([str(src), "--gap"], "--gap needs -o")):
+        run = subprocess.run([coatfft_exe, "topography", *args], capture_output=True, text=True)
+        assert run.returncode == 2 and run.stderr.count("\n") == 1 and says in run.stderr
+    assert not (tmp_path / "gap.nc").exists()
+
+
 def test_program_refuses_bad_files_without_output(coatfft_exe, tmp_path):
     out = tmp_path / "o.npy"
     cases = {
