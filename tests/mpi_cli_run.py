@@ -164,6 +164,7 @@ def check_topography_by_gap(tmp, heights, nx, ny):
     if (r := run(["topography", str(tmp / "z_tilted.npy"), "--detrend", "plane", "--gap", "-o",
                   str(tmp / "h_tilted.npy")])).returncode:
         fail(r.stderr)
+    refused(tmp, "--gap -o h.npy` writes its gap", scene.read_text())
     scene.write_text(base + 'indenter = "height_map"\npath = "h_tilted.npy"\n')
     if (r := run(["run", str(scene), "-o", str(tmp / "topography_np3")], 3)).returncode:
         fail(f"topography's gap at 3 ranks: {r.stderr}")
