@@ -92,17 +92,24 @@ LoadDiscretizationEstimate estimate_load_discretization_error(SurfaceOperator& o
                                                               const Field& pressure,
                                                               double max_abs_displacement) {
   check_analytic_load(load);
-  COATFFT_REQUIRE(std::isfinite(max_abs_displacement) && max_abs_displacement > 0,
-                  "estimate_load_discretization_error: max |u| = ", max_abs_displacement,
-                  " m, but it must be finite and > 0");
   const Grid& grid = op.grid();
   COATFFT_REQUIRE(pressure.rows() == grid.nx() && pressure.cols() == grid.ny(),
                   "estimate_load_discretization_error: the pressure has shape (", pressure.rows(),
                   ", ", pressure.cols(), "), but the operator's grid has (", grid.nx(), ", ",
                   grid.ny(), ")");
   const LoadDifference d = load_discretization_difference(grid, load, pressure, 0);
+  return load_discretization_estimate(d, op.apply(d.difference).abs().maxCoeff(),
+                                      max_abs_displacement);
+}
+
+LoadDiscretizationEstimate load_discretization_estimate(const LoadDifference& d,
+                                                        double max_abs_difference_displacement,
+                                                        double max_abs_displacement) {
+  COATFFT_REQUIRE(std::isfinite(max_abs_displacement) && max_abs_displacement > 0,
+                  "estimate_load_discretization_error: max |u| = ", max_abs_displacement,
+                  " m, but it must be finite and > 0");
   LoadDiscretizationEstimate estimate;
-  estimate.absolute_error = d.factor * op.apply(d.difference).abs().maxCoeff();
+  estimate.absolute_error = d.factor * max_abs_difference_displacement;
   estimate.relative_error = estimate.absolute_error / max_abs_displacement;
   return estimate;
 }

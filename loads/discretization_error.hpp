@@ -53,6 +53,12 @@ struct LoadDiscretizationEstimate {
   double relative_error = 0.0;  ///< the same divided by the computed max |u| [-]
 };
 
+/// The estimate of a load difference `d` from the largest displacement its difference makes
+/// [m] (over every rank's rows, in a distributed run) and the computed max |u| [m] (finite, > 0).
+LoadDiscretizationEstimate load_discretization_estimate(const LoadDifference& d,
+                                                        double max_abs_difference_displacement,
+                                                        double max_abs_displacement);
+
 /// Estimates max |u_cellwise - u_continuous| / max |u|, where u_cellwise is what `op` computes
 /// from the cell values of `load` (sampled with load.sampling), u_continuous the displacement of
 /// the continuous load on the same body at the cell centres, and max_abs_displacement the

@@ -197,10 +197,9 @@ nlohmann::json slab_load_discretization(const Communicator& comm, const Scene& s
   const LoadDifference d =
       load_discretization_difference(scene.grid, analytic_load(load), pressure, y0);
   const Field u = op.apply(d.difference);
-  LoadDiscretizationEstimate e;
-  e.absolute_error = d.factor * comm.max(u.size() ? u.abs().maxCoeff() : 0.0);
-  e.relative_error = e.absolute_error / max_abs_uz;
-  return load_discretization_json(load, e);
+  return load_discretization_json(
+      load,
+      load_discretization_estimate(d, comm.max(u.size() ? u.abs().maxCoeff() : 0.0), max_abs_uz));
 }
 
 // A known load: its rows, the timed applications, and the serial run's reports over the ranks.
@@ -229,7 +228,7 @@ DistributedSceneRun compute_pressure(const Communicator& comm, const Scene& scen
   summary["refinement"] = refinement_json(scene);
   if (reports_hertz_error(scene))
     summary["max_error_vs_hertz"] =
-        comm.max(slab.rows > 0 ? hertz_error_rows(scene, uz, slab.y0) : 0.0);
+        comm.max(hertz_error_rows(scene, uz, slab.y0));  // 0 on a rank without rows
   add_rank_summary(summary, comm, scene, *op);
   return {slab, std::move(pressure), std::move(uz), Field(), std::move(summary), RunStatus::ok};
 }

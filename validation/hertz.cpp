@@ -57,10 +57,17 @@ double hertz_displacement(double r, double p0, double a, double plane_strain_mod
 }
 
 Field hertz_displacement_field(const Grid& grid, double p0, double a, double plane_strain_modulus) {
-  Field u(grid.nx(), grid.ny());
-  for (std::ptrdiff_t j = 0; j < grid.ny(); ++j)
+  return hertz_displacement_rows(grid, p0, a, plane_strain_modulus, 0, grid.ny());
+}
+
+Field hertz_displacement_rows(const Grid& grid, double p0, double a, double plane_strain_modulus,
+                              std::ptrdiff_t y0, std::ptrdiff_t rows) {
+  detail::require_rows(grid, y0, rows, "hertz_displacement_rows");
+  Field u(grid.nx(), rows);
+  for (std::ptrdiff_t j = 0; j < rows; ++j)
     for (std::ptrdiff_t i = 0; i < grid.nx(); ++i)
-      u(i, j) = hertz_displacement(std::hypot(grid.x(i), grid.y(j)), p0, a, plane_strain_modulus);
+      u(i, j) =
+          hertz_displacement(std::hypot(grid.x(i), grid.y(y0 + j)), p0, a, plane_strain_modulus);
   return u;
 }
 

@@ -16,6 +16,11 @@ double hertz_displacement(double r, double p0, double a, double plane_strain_mod
 /// (nx, ny) [m]: the reference field of a Hertz pressure.
 Field hertz_displacement_field(const Grid& grid, double p0, double a, double plane_strain_modulus);
 
+/// The rows y0 to y0 + rows of hertz_displacement_field, shape (nx, rows) [m]: a slab's
+/// (distributed/slab.hpp).
+Field hertz_displacement_rows(const Grid& grid, double p0, double a, double plane_strain_modulus,
+                              std::ptrdiff_t y0, std::ptrdiff_t rows);
+
 /// Surface normal displacement u_z(r) [m] under a uniform pressure p [Pa] on the disk r < a, at
 /// radius r >= 0 [m]; docs/theory.md (1.9) with complete elliptic integrals of modulus r/a or a/r.
 /// Throws InvalidArgument on bad arguments.

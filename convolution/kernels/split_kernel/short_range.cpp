@@ -186,10 +186,9 @@ std::ptrdiff_t fold_aliases(const SplitPlan& p, const ShortRangeSpectrum& spectr
     row_end[static_cast<std::size_t>(r)] = m;
     std::fill(row + m, row + sx, 0.0);
   });
-  const std::ptrdiff_t sy = count;
-  if (symmetric) fill_lower_triangle(fold, sy, sx, p.threads);
+  if (symmetric) fill_lower_triangle(fold, count, sx, p.threads);
   std::ptrdiff_t rows = 0;
-  for (std::ptrdiff_t n = 0; n < sy; ++n)
+  for (std::ptrdiff_t n = 0; n < count; ++n)
     if (row_end[static_cast<std::size_t>(n)] > (symmetric ? n : 0)) rows = n + 1;
   if (symmetric) rows = std::max(rows, row_end[0]);
   return rows;
