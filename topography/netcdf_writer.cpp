@@ -80,6 +80,7 @@ void put_whole(NetcdfFile& nc, const std::string& name, const double* values, bo
 void put_maps(NetcdfFile& nc, const NetcdfVariable& v, const NetcdfDataset& d) {
   const int var = variable_id(nc, v.name);
   const std::vector<std::size_t> shape = variable_shape(nc, var, v.name);
+  COATFFT_REQUIRE(shape.size() >= 2, "write_netcdf: ", v.name, " is not a map in the file");
   const std::size_t leading = shape.size() - 2;
   std::size_t slices = 1;
   for (std::size_t k = 0; k < leading; ++k) slices *= shape[k];
