@@ -66,6 +66,10 @@ Field sample_load_rows(const Grid& grid, const AnalyticLoad& load, Sampling samp
 LoadDifference load_discretization_difference(const Grid& grid, const AnalyticLoad& load,
                                               const Field& pressure, std::ptrdiff_t y0) {
   const std::ptrdiff_t rows = pressure.cols();
+  // A slab without rows (a rank's, in a distributed run) has no difference to sample rows for.
+  if (rows == 0)
+    return {Field(pressure.rows(), 0),
+            load.sampling == Sampling::centre ? centre_factor : coarse_factor};
   if (load.sampling == Sampling::centre)
     return {pressure - sample_load_rows(grid, load, Sampling::cell_average, y0, rows),
             centre_factor};

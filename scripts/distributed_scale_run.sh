@@ -5,10 +5,12 @@
 # bench/results/distributed_operator.csv and (WHAT=contact or both) distributed_contact.csv; with
 # WHAT=free, the free surface's DC-FFT on steel against the serial DcfftOperator,
 # bench/results/distributed_dcfft.csv; with WHAT=split, the free surface of the coated body by
-# frf-split against DcfftOperator(split_frf_kernel), bench/results/distributed_split.csv.
+# frf-split against DcfftOperator(split_frf_kernel), bench/results/distributed_split.csv; with
+# WHAT=output, a field's .npy file by MPI-IO against its NetCDF file by PnetCDF
+# (bench_distributed_output), bench/results/distributed_output.csv.
 #   Body: TiN 5 um on steel, period 1 mm; one FFTW thread a rank; FFTW_ESTIMATE plans.
 # Usage: scripts/distributed_scale_run.sh [N ...]   (default 2048 4096; RANKS, default "1 2 4";
-#        WHAT: operator, contact or both (default), free or split; SERIAL=0 leaves out the serial rows; TAG
+#        WHAT: operator, contact or both (default), free, split or output; SERIAL=0 leaves out the serial rows; TAG
 #        names other result files, distributed_operatorTAG.csv and distributed_contactTAG.csv;
 #        BUILD_DIR, default build). As root, Open MPI's permission variables are set here.
 set -euo pipefail
@@ -26,7 +28,7 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 tmp=$(mktemp)
 trap 'rm -f "$tmp"' EXIT
 header() {
-  echo "# benchmark = scripts/distributed_scale_run.sh (bench_distributed $1)"
+  echo "# benchmark = scripts/distributed_scale_run.sh ($1)"
   echo "# date = $(date -u +%Y-%m-%dT%H:%M:%SZ)"
   echo "# cpu = $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)"
   echo "# hardware_threads = $(nproc); memory = $(free -g | awk '/Mem:/{print $2}') GiB"
@@ -52,7 +54,7 @@ measure() {
 }
 if [ "$what" = free ]; then
 {
-  header "--free: the distributed DC-FFT of the free surface against DcfftOperator" \
+  header "bench_distributed --free: the distributed DC-FFT of the free surface against DcfftOperator" \
     "steel, a free surface of 1 mm x 1 mm"
   echo "# apply_ms: median of 5 applications, each timed from a barrier to the slowest rank;"
   echo "#   transpose_ms: the transposes' share of one (communication and waits); rss_*: peak"
@@ -63,9 +65,23 @@ measure "$root/bench/results/distributed_dcfft$tag.csv" --free
 trap - EXIT
 exit 0
 fi
+if [ "$what" = output ]; then
+  cmake --build "$build" --target bench_distributed_output >/dev/null
+  bench=$build/bench/bench_distributed_output
+  {
+    header "bench_distributed_output: a field written as .npy by MPI-IO and as NetCDF by PnetCDF" \
+      "none; the field written: a rough surface, H 0.8, rms slope 0.05, seed 2004, 1 mm x 1 mm"
+    echo "# npy_s, netcdf_s: median of 5 writes (create, write, close; not synced to the disk), each"
+    echo "#   timed from a barrier to the slowest rank; file_mib: the field's 8 N^2 bytes; folder: $(df --output=fstype "${TMPDIR:-/tmp}" | tail -1) ${TMPDIR:-/tmp}"
+    echo "N,ranks,file_mib,npy_s,netcdf_s,netcdf_over_npy"
+  } >"$tmp"
+  measure "$root/bench/results/distributed_output$tag.csv"
+  trap - EXIT
+  exit 0
+fi
 if [ "$what" = split ]; then
 {
-  header "--free-split: the coated body's free surface by frf-split against DcfftOperator(split_frf_kernel)" \
+  header "bench_distributed --free-split: the coated body's free surface by frf-split against DcfftOperator(split_frf_kernel)" \
     "TiN 5 um on steel, a free surface of 1 mm x 1 mm"
   echo "# setup_s: the coefficients (the split kernel: its quarter's rows, its lattice over the ranks)"
   echo "#   and their spectrum, the slowest rank; apply_ms: median of 5 applications, each timed from"
@@ -79,7 +95,7 @@ exit 0
 fi
 if [ "$what" != contact ]; then
 {
-  header "the distributed periodic operator"
+  header "bench_distributed: the distributed periodic operator"
   echo "# apply_ms: median of 5 applications, each timed from a barrier to the slowest rank;"
   echo "#   transpose_ms: the transposes' share of one (communication and waits); rss_*: peak"
   echo "#   resident memory [MiB] before the operator (max over ranks), after (max, sum over ranks)"
@@ -89,7 +105,7 @@ measure "$root/bench/results/distributed_operator$tag.csv"
 fi
 if [ "$what" != operator ]; then
 {
-  header "--contact: a periodic rough contact solved on distributed fields"
+  header "bench_distributed --contact: a periodic rough contact solved on distributed fields"
   echo "# surface: H 0.8, rms slope 0.05, shortest wavelength 16 cells, roll-off 0.25 mm, seed 2004;"
   echo "#   mean pressure 0.045 E* x rms slope; tolerance 1e-10; no nested start (serial and distributed)"
   echo "# solve_s: the solve on the slowest rank; transpose_s: the operator's transposes within it"

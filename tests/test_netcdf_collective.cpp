@@ -1,7 +1,8 @@
 // A NetCDF file written by the ranks together (topography/netcdf_collective.hpp) against the
 // serial writer's file of the whole fields: byte for byte, for maps with and without a leading
 // dimension, a variable without maps and the file's attributes, on grids whose rows split unevenly
-// and where a rank holds no rows. Runs under mpirun at 1, 2 and 3 ranks (test_distributed).
+// and where a rank holds no rows, whole or a block of columns at a time. Runs under mpirun at 1, 2
+// and 3 ranks (test_distributed).
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
@@ -78,6 +79,8 @@ TEST_CASE("a NetCDF file written by the ranks together is the serial writer's, b
     NetcdfDataset d = dataset(g, mine, profile);
     d.first_row = s.y0;
     d.rows = s.rows;
+    // The maps 4 columns at a time (4 and 2 of the 6), as a map larger than the writer's buffer.
+    d.buffer_values = 4 * static_cast<std::size_t>(ny);
     write_netcdf_collective(comm, together, d);
     comm.barrier();
     INFO(ny << " rows at " << comm.size() << " ranks");

@@ -44,9 +44,6 @@ void write_netcdf_collective(const Communicator& comm, const std::filesystem::pa
                              NetcdfDataset dataset) {
   dataset.puts_shared = comm.rank() == 0;
   NetcdfFile nc = create_collective(comm, path);
-  // Every value is put: filling the variables first would write the file twice.
-  int fill = 0;
-  nc.check(nc_set_fill(nc.id(), NC_NOFILL, &fill), "fill mode");
   define_netcdf(nc, dataset);
   ask_collective_access(nc);
   put_netcdf(nc, dataset);

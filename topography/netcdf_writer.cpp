@@ -2,6 +2,7 @@
 
 #include <netcdf.h>
 
+#include <algorithm>
 #include <map>
 
 #include "core/error.hpp"
@@ -75,35 +76,53 @@ void put_whole(NetcdfFile& nc, const std::string& name, const double* values, bo
   nc.check(nc_put_vara_double(nc.id(), var, start.data(), count.data(), values), name);
 }
 
-// Writes a map variable slice by slice (the product of its leading dimensions, the same on every
-// rank of a collective write), each slice's rows (rows, nx) transposed to (x, rows).
+// to[i * rows + j] = from[j * stride + i] for i < width: `width` columns of a slice's rows (rows,
+// stride) as the file's (x, y) block (width, rows), by tiles that stay in cache.
+void transpose_columns(const double* from, std::size_t stride, std::size_t width, std::size_t rows,
+                       double* to) {
+  constexpr std::size_t tile = 32;
+  for (std::size_t j0 = 0; j0 < rows; j0 += tile)
+    for (std::size_t i0 = 0; i0 < width; i0 += tile)
+      for (std::size_t j = j0; j < std::min(j0 + tile, rows); ++j)
+        for (std::size_t i = i0; i < std::min(i0 + tile, width); ++i)
+          to[i * rows + j] = from[j * stride + i];
+}
+
+// Writes a map variable slice by slice (the product of its leading dimensions), each slice's rows
+// (rows, nx) transposed to the file's (x, y) a block of columns at a time: a buffer of at most
+// d.buffer_values values, not a copy of the map. The number of calls depends on the file's shape
+// alone, the same on every rank of a collective write.
 void put_maps(NetcdfFile& nc, const NetcdfVariable& v, const NetcdfDataset& d) {
   const int var = variable_id(nc, v.name);
   const std::vector<std::size_t> shape = variable_shape(nc, var, v.name);
   COATFFT_REQUIRE(shape.size() >= 2, "write_netcdf: ", v.name, " is not a map in the file");
-  const std::size_t leading = shape.size() - 2;
+  const std::size_t leading = shape.size() - 2, nx = shape[leading], ny = shape[leading + 1];
   std::size_t slices = 1;
   for (std::size_t k = 0; k < leading; ++k) slices *= shape[k];
-  const auto nx = static_cast<std::size_t>(d.grid.nx());
   const auto rows = static_cast<std::size_t>(d.rows < 0 ? d.grid.ny() : d.rows);
   COATFFT_REQUIRE(v.data.size() == slices * nx * rows, "write_netcdf: ", v.name,
                   " does not hold the rows of its dimensions");
+  const std::size_t columns = std::clamp<std::size_t>(d.buffer_values / ny, 1, nx);
+  std::vector<double> block(columns * rows);
   std::vector<std::size_t> start(shape.size(), 0), count(shape.size(), 1);
   start[leading + 1] = rows > 0 ? static_cast<std::size_t>(d.first_row) : 0;
-  count[leading] = nx;
   count[leading + 1] = rows;
-  std::vector<double> slice(nx * rows);
   for (std::size_t s = 0; s < slices; ++s) {
     for (std::size_t rest = s, k = leading; k-- > 0; rest /= shape[k]) start[k] = rest % shape[k];
-    const double* from = v.data.data() + s * nx * rows;
-    for (std::size_t j = 0; j < rows; ++j)
-      for (std::size_t i = 0; i < nx; ++i) slice[i * rows + j] = from[j * nx + i];
-    nc.check(nc_put_vara_double(nc.id(), var, start.data(), count.data(), slice.data()), v.name);
+    for (std::size_t i0 = 0; i0 < nx; i0 += columns) {
+      start[leading] = i0;
+      count[leading] = std::min(columns, nx - i0);
+      transpose_columns(v.data.data() + s * nx * rows + i0, nx, count[leading], rows, block.data());
+      nc.check(nc_put_vara_double(nc.id(), var, start.data(), count.data(), block.data()), v.name);
+    }
   }
 }
 }  // namespace
 
 void define_netcdf(NetcdfFile& nc, const NetcdfDataset& dataset) {
+  // Every value is put: filling the variables first would write the file twice.
+  int fill = 0;
+  nc.check(nc_set_fill(nc.id(), NC_NOFILL, &fill), "fill mode");
   std::map<std::string, int> dims;
   for (const auto& dimension : all_dimensions(dataset))
     dims[dimension.name] = define_dimension(nc, dimension);

@@ -55,6 +55,9 @@ struct NetcdfDataset {
   /// Whether this writer puts the coordinates and the variables without maps (in a collective
   /// write, the first rank only; the others take part in those calls with nothing to put).
   bool puts_shared = true;
+  /// The values of a map transposed to the file's (x, y) at once, a block of x at a time: the
+  /// writer's memory beyond the maps (32 MiB by default).
+  std::size_t buffer_values = std::size_t{1} << 22;
 };
 
 /// Writes `dataset` as a new NetCDF-3 (64-bit offset) file `path`, refusing an existing one.
