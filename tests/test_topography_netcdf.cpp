@@ -132,3 +132,57 @@ TEST_CASE("netcdf: truncated files, no heights, wrong dimensions are refused",
   ok(nc_close(id));
   CHECK_THROWS_WITH(read_topography(flat), Catch::Contains("has 1 dimensions, not 2"));
 }
+
+TEST_CASE("netcdf: variables beyond the 64-bit offset format's limit take the 64-bit data format",
+          "[topography][netcdf]") {
+  // The reference is netcdf-c's own check of the format: the same variables defined in a 64-bit
+  // offset file, ended without data, are refused (NC_EVARSIZE) exactly when needs_64bit_data
+  // says so. Maps of 16384^2 (2 GiB), 23170^2 (just below 2^32 bytes), 23171^2 (just above) and
+  // 32768^2 cells, one to three of them (the last variable may be of any size), and stacks of
+  // 6 x 3 stress planes over 5461^2 and 5462^2 cells (below and above) before a map.
+  struct Shape {
+    std::ptrdiff_t n;
+    int maps;
+    bool stack;
+  };
+  std::vector<Shape> shapes;
+  for (const std::ptrdiff_t n : {16384, 23170, 23171, 32768})
+    for (const int maps : {1, 2, 3}) shapes.push_back({n, maps, false});
+  for (const std::ptrdiff_t n : {5461, 5462}) shapes.push_back({n, 1, true});
+  int refused = 0;
+  for (const Shape& s : shapes) {
+    topography::NetcdfDataset d{Grid(s.n, s.n, 1.0, 1.0), false, {}, {}, {}};
+    if (s.stack) {
+      d.dimensions = {{"depth", 3, {}, {}}, {"component", 6, {}, {}}};
+      d.variables.push_back({"stress", {"depth", "component"}, {}, {}});
+    }
+    for (int k = 0; k < s.maps; ++k) d.variables.push_back({"map" + std::to_string(k), {}, {}, {}});
+    const fs::path path = scratch("limit.nc");
+    int nc = -1;
+    ok(nc_create(path.c_str(), NC_64BIT_OFFSET, &nc));
+    int fill = 0;
+    ok(nc_set_fill(nc, NC_NOFILL, &fill));
+    int x = -1, y = -1, depth = -1, component = -1, var = -1;
+    ok(nc_def_dim(nc, "x", static_cast<std::size_t>(s.n), &x));
+    ok(nc_def_dim(nc, "y", static_cast<std::size_t>(s.n), &y));
+    ok(nc_def_dim(nc, "depth", 3, &depth));
+    ok(nc_def_dim(nc, "component", 6, &component));
+    ok(nc_def_var(nc, "x", NC_DOUBLE, 1, &x, &var));
+    ok(nc_def_var(nc, "y", NC_DOUBLE, 1, &y, &var));
+    for (const auto& v : d.variables) {
+      std::vector<int> dims =
+          v.leading.empty() ? std::vector<int>{} : std::vector{depth, component};
+      dims.insert(dims.end(), {x, y});
+      ok(nc_def_var(nc, v.name.c_str(), NC_DOUBLE, static_cast<int>(dims.size()), dims.data(),
+                    &var));
+    }
+    const int status = nc_enddef(nc);
+    nc_close(nc);
+    fs::remove(path);
+    INFO(s.n << "^2 cells, " << s.maps << " maps" << (s.stack ? " after a stack" : ""));
+    REQUIRE((status == NC_NOERR || status == NC_EVARSIZE));
+    CHECK(topography::needs_64bit_data(d) == (status == NC_EVARSIZE));
+    refused += status == NC_EVARSIZE;
+  }
+  CHECK(refused == 5);  // 23171^2 and 32768^2 with 2 or 3 maps, 5462^2 after the stack
+}

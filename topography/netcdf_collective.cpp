@@ -16,9 +16,11 @@ namespace {
 
 // `path` created on every rank; InvalidArgument on every rank when any rank could not create it (a
 // rank that did keeps its handle open: closing is collective, and the run ends).
-NetcdfFile create_collective(const Communicator& comm, const std::filesystem::path& path) {
+NetcdfFile create_collective(const Communicator& comm, const std::filesystem::path& path,
+                             bool large_variables) {
   int id = -1;
-  const int status = nc_create_par(path.c_str(), NC_NOCLOBBER | NC_64BIT_OFFSET,
+  const int format = large_variables ? NC_64BIT_DATA : NC_64BIT_OFFSET;
+  const int status = nc_create_par(path.c_str(), NC_NOCLOBBER | format,
                                    coatfft::detail::mpi_comm(comm), MPI_INFO_NULL, &id);
   if (!comm.all(status == NC_NOERR)) {
     check_netcdf(status, path, "cannot create");
@@ -43,7 +45,7 @@ void ask_collective_access(NetcdfFile& nc) {
 void write_netcdf_collective(const Communicator& comm, const std::filesystem::path& path,
                              NetcdfDataset dataset) {
   dataset.puts_shared = comm.rank() == 0;
-  NetcdfFile nc = create_collective(comm, path);
+  NetcdfFile nc = create_collective(comm, path, needs_64bit_data(dataset));
   define_netcdf(nc, dataset);
   ask_collective_access(nc);
   put_netcdf(nc, dataset);

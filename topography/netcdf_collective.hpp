@@ -1,7 +1,7 @@
 #pragma once
 // One NetCDF file written by the ranks of a communicator together, without gathering a field: each
-// rank puts its rows of every map at their place in one collective call a slice (NetCDF's MPI
-// build writes 64-bit-offset files through PnetCDF's MPI-IO). The file holds what write_netcdf
+// rank puts its rows of every map at their place in collective calls (NetCDF's MPI build writes
+// NetCDF-3 files through PnetCDF's MPI-IO). The file holds what write_netcdf
 // writes of the whole fields; only the header's padding may differ. Built with COATFFT_MPI.
 #include <filesystem>
 

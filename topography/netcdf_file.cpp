@@ -19,12 +19,13 @@ NetcdfFile NetcdfFile::open_memory(const std::filesystem::path& path, std::strin
   return NetcdfFile(path, id);
 }
 
-NetcdfFile NetcdfFile::create(const std::filesystem::path& path) {
+NetcdfFile NetcdfFile::create(const std::filesystem::path& path, bool large_variables) {
   int id = -1;
   // netcdf-c's I/O buffer defaults to the file system's block (4 KiB): a 128 MiB map would take
   // 32768 writes and three times as many seeks. 4 MiB takes 32.
   std::size_t buffer = std::size_t{4} << 20;
-  check_netcdf(nc__create(path.c_str(), NC_NOCLOBBER | NC_64BIT_OFFSET, 0, &buffer, &id), path,
+  const int format = large_variables ? NC_64BIT_DATA : NC_64BIT_OFFSET;
+  check_netcdf(nc__create(path.c_str(), NC_NOCLOBBER | format, 0, &buffer, &id), path,
                "cannot create");
   return NetcdfFile(path, id);
 }

@@ -16,8 +16,9 @@ class NetcdfFile {
   /// the handle. `path` names it in messages.
   static NetcdfFile open_memory(const std::filesystem::path& path, std::string& bytes);
   /// Creates `path` as a NetCDF-3 file with 64-bit offsets (the format SurfaceTopography writes
-  /// and its serial reader takes), refusing to overwrite an existing file.
-  static NetcdfFile create(const std::filesystem::path& path);
+  /// and its serial reader takes), or with `large_variables` in the 64-bit data format (CDF-5,
+  /// topography/netcdf_writer.hpp), refusing to overwrite an existing file.
+  static NetcdfFile create(const std::filesystem::path& path, bool large_variables = false);
   /// Takes the handle `id` of a dataset opened or created as `path` (a collective write's,
   /// topography/netcdf_collective.hpp); closed by this object.
   NetcdfFile(std::filesystem::path path, int id) : path_(std::move(path)), id_(id) {}

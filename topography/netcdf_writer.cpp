@@ -152,8 +152,23 @@ void put_netcdf(NetcdfFile& nc, const NetcdfDataset& dataset) {
   }
 }
 
+bool needs_64bit_data(const NetcdfDataset& dataset) {
+  std::map<std::string, double> sizes;
+  for (const auto& dimension : all_dimensions(dataset))
+    sizes[dimension.name] = static_cast<double>(dimension.size);
+  constexpr double limit = 4294967292.0;  // 2^32 - 4 bytes
+  // The variables are defined after the coordinates: the dataset's last is the file's last.
+  for (std::size_t k = 0; k + 1 < dataset.variables.size(); ++k) {
+    const NetcdfVariable& v = dataset.variables[k];
+    double bytes = sizeof(double) * (v.maps ? sizes.at("x") * sizes.at("y") : 1.0);
+    for (const auto& name : v.leading) bytes *= sizes.at(name);
+    if (bytes > limit) return true;
+  }
+  return false;
+}
+
 void write_netcdf(const std::filesystem::path& path, const NetcdfDataset& dataset) {
-  NetcdfFile nc = NetcdfFile::create(path);
+  NetcdfFile nc = NetcdfFile::create(path, needs_64bit_data(dataset));
   define_netcdf(nc, dataset);
   put_netcdf(nc, dataset);
   nc.close();

@@ -60,8 +60,16 @@ struct NetcdfDataset {
   std::size_t buffer_values = std::size_t{1} << 22;
 };
 
-/// Writes `dataset` as a new NetCDF-3 (64-bit offset) file `path`, refusing an existing one.
+/// Writes `dataset` as a new NetCDF-3 file `path` (64-bit offsets, or the 64-bit data format
+/// where needs_64bit_data), refusing an existing one.
 void write_netcdf(const std::filesystem::path& path, const NetcdfDataset& dataset);
+
+/// Whether `dataset` needs NetCDF-3's 64-bit data format (CDF-5: netcdf-c 4.4 and later, PnetCDF,
+/// netCDF4-python and xarray read it): the 64-bit offset format holds a variable of at most
+/// 2^32 - 4 bytes but for the last one (NetCDF's format specification), which two maps of
+/// 23171^2 cells, or the stress planes of a few thousand cells a side, exceed. Files that fit keep
+/// the 64-bit offset format, which SurfaceTopography's own reader takes.
+bool needs_64bit_data(const NetcdfDataset& dataset);
 
 class NetcdfFile;
 
