@@ -30,6 +30,7 @@
 
 #include "bench/bench_report.hpp"
 #include "bench/command_line.hpp"
+#include "bench/slowest_rank_median.hpp"
 #include "contact/contact_solver.hpp"
 #include "convolution/kernels/influence_kernel.hpp"
 #include "convolution/kernels/periodic_kernel.hpp"
@@ -109,20 +110,6 @@ struct Row {
          rss_sum_mb = 0;
 };
 
-// The median over repeats of f's time on the slowest rank [ms] (`sync` a barrier, or nothing).
-template <typename F, typename Sync, typename Max>
-double median_ms(int repeats, F&& f, Sync&& sync, Max&& max) {
-  f();  // warm-up
-  std::vector<double> times;
-  for (int k = 0; k < repeats; ++k) {
-    sync();
-    const auto start = Clock::now();
-    f();
-    times.push_back(max(1e3 * detail::seconds_since(start)));
-  }
-  return detail::median(times);
-}
-
 Row run_distributed(const Options& o, const Frf& frf, const Grid& grid) {
   const Communicator comm = Communicator::world();
   Row row;
@@ -134,7 +121,7 @@ Row run_distributed(const Options& o, const Frf& frf, const Grid& grid) {
   const Field p = random_rows(grid.nx(), op->slab().y0, op->slab().rows);
   Field u;
   const double before = op->communication_seconds();
-  row.apply_ms = median_ms(
+  row.apply_ms = bench::slowest_rank_median_ms(
       o.repeats, [&] { op->apply(p, u); }, [&] { comm.barrier(); },
       [&](double t) { return comm.max(t); });
   row.transpose_ms = comm.max(1e3 * (op->communication_seconds() - before) / (o.repeats + 1));
@@ -151,7 +138,7 @@ Row run_serial(const Options& o, const Frf& frf, const Grid& grid) {
   row.setup_s = detail::seconds_since(start);
   const Field p = random_rows(grid.nx(), 0, grid.ny());
   Field u;
-  row.apply_ms = median_ms(
+  row.apply_ms = bench::slowest_rank_median_ms(
       o.repeats, [&] { op->apply(p, u); }, [] {}, [](double t) { return t; });
   row.rss_max_mb = row.rss_sum_mb = bench::peak_rss_mb();
   return row;

@@ -10,18 +10,15 @@
 //   bench_distributed_output --serial --size N
 #include <unistd.h>
 
-#include <chrono>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
-#include <functional>
 #include <iostream>
 #include <memory>
 #include <string>
-#include <vector>
 
 #include "bench/command_line.hpp"
-#include "core/detail/timing.hpp"
+#include "bench/slowest_rank_median.hpp"
 #include "distributed/mpi_session.hpp"
 #include "distributed/self_affine_slab.hpp"
 #include "scene/npy.hpp"
@@ -34,7 +31,6 @@ namespace {
 
 using namespace coatfft;
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
 
 struct Options {
   std::ptrdiff_t n = 2048;
@@ -51,47 +47,40 @@ SelfAffineSpec surface_spec() {
   return spec;
 }
 
-// The median over repeats of writing `path` [s] on the slowest rank (`max`), the file removed
-// before each write (the writers refuse an existing NetCDF file) and after the last.
-double median_write_s(int repeats, const fs::path& path, const std::function<void()>& write,
-                      const std::function<void()>& barrier,
-                      const std::function<double(double)>& max, bool removes) {
-  std::vector<double> times;
-  for (int k = 0; k <= repeats; ++k) {  // the first a warm-up
-    if (removes) fs::remove(path);
-    barrier();
-    const auto start = Clock::now();
-    write();
-    const double s = max(detail::seconds_since(start));
-    if (k > 0) times.push_back(s);
-  }
-  barrier();
-  if (removes) fs::remove(path);
-  return detail::median(times);
-}
-
 struct Row {
   double npy_s = 0, netcdf_s = 0;
 };
+
+// The median write time of `path` [s] on the slowest rank: the file removed by `root` before each
+// write (the NetCDF writers refuse an existing file) and after the last.
+template <typename Write, typename Barrier, typename Max>
+double median_write_s(int repeats, const fs::path& path, bool root, Write&& write,
+                      Barrier&& barrier, Max&& max) {
+  const auto remove = [&] {
+    if (root) fs::remove(path);
+    barrier();
+  };
+  remove();
+  const double ms = bench::slowest_rank_median_ms(repeats, write, remove, max);
+  remove();
+  return 1e-3 * ms;
+}
 
 Row run_distributed(const Options& o, const Grid& grid, const fs::path& folder) {
   const Communicator comm = Communicator::world();
   const Field z = self_affine_slab(comm, grid, surface_spec());
   const Slab slab = slab_of(comm, grid.nx(), grid.ny());
-  topography::NetcdfDataset d =
-      topography::heights_dataset(grid, true, {z.data(), static_cast<std::size_t>(z.size())}, {});
-  d.first_row = slab.y0;
-  d.rows = slab.rows;
   const auto barrier = [&] { comm.barrier(); };
   const auto max = [&](double t) { return comm.max(t); };
   const bool root = comm.rank() == 0;
   Row row;
   row.npy_s = median_write_s(
-      o.repeats, folder / "z.npy", [&] { scene::write_npy_slab(comm, folder / "z.npy", z, slab); },
-      barrier, max, root);
+      o.repeats, folder / "z.npy", root,
+      [&] { scene::write_npy_slab(comm, folder / "z.npy", z, slab); }, barrier, max);
   row.netcdf_s = median_write_s(
-      o.repeats, folder / "z.nc",
-      [&] { topography::write_netcdf_collective(comm, folder / "z.nc", d); }, barrier, max, root);
+      o.repeats, folder / "z.nc", root,
+      [&] { topography::write_heights_slab(comm, folder / "z.nc", z, grid, slab, true); }, barrier,
+      max);
   return row;
 }
 
@@ -101,15 +90,15 @@ Row run_serial(const Options& o, const Grid& grid, const fs::path& folder) {
   const auto same = [](double t) { return t; };
   Row row;
   row.npy_s = median_write_s(
-      o.repeats, folder / "z.npy", [&] { scene::write_npy(folder / "z.npy", z); }, none, same,
-      true);
+      o.repeats, folder / "z.npy", true, [&] { scene::write_npy(folder / "z.npy", z); }, none,
+      same);
   row.netcdf_s = median_write_s(
-      o.repeats, folder / "z.nc",
+      o.repeats, folder / "z.nc", true,
       [&] {
         topography::write_heights(folder / "z.nc", topography::HeightsFormat::netcdf, z, grid,
                                   true);
       },
-      none, same, true);
+      none, same);
   return row;
 }
 

@@ -104,15 +104,10 @@ void surface_command(const SurfaceOptions& o, const Communicator& comm) {
   comm.broadcast(staged);
   const Field h = self_affine_slab(comm, grid, spec);
   const Slab slab = slab_of(comm, grid.nx(), grid.ny());
-  if (format == topography::HeightsFormat::npy) {
+  if (format == topography::HeightsFormat::npy)
     scene::write_npy_slab(comm, staged, h, slab);
-  } else {
-    topography::NetcdfDataset d = topography::heights_dataset(
-        grid, true, {h.data(), static_cast<std::size_t>(h.size())}, surface_attributes(o));
-    d.first_row = slab.y0;
-    d.rows = slab.rows;
-    topography::write_netcdf_collective(comm, staged, d);
-  }
+  else
+    topography::write_heights_slab(comm, staged, h, grid, slab, true, surface_attributes(o));
   const double rms_height =
       std::sqrt(comm.sum(h.square().sum()) / static_cast<double>(grid.nb_cells()));
   const double rms_slope = spectral_rms_slope(comm, grid, h);

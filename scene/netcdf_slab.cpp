@@ -16,12 +16,9 @@ void write_run_netcdf_slab(const Communicator& comm, const std::filesystem::path
   topography::NetcdfDataset d = run_dataset(grid, nlohmann::json::parse(summary));
   d.first_row = run.slab.y0;
   d.rows = run.slab.rows;
-  const auto values = [](const Field& f) {
-    return std::span<const double>(f.data(), static_cast<std::size_t>(f.size()));
-  };
-  if (spec.uz) d.variables.push_back(field_variable("uz", values(run.uz)));
-  if (spec.pressure) d.variables.push_back(field_variable("pressure", values(run.pressure)));
-  if (spec.gap) d.variables.push_back(field_variable("gap", values(run.gap)));
+  if (spec.uz) d.variables.push_back(field_variable("uz", run.uz));
+  if (spec.pressure) d.variables.push_back(field_variable("pressure", run.pressure));
+  if (spec.gap) d.variables.push_back(field_variable("gap", run.gap));
   topography::write_netcdf_collective(comm, path, d);
 }
 

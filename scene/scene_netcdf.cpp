@@ -81,6 +81,10 @@ NetcdfVariable field_variable(std::string_view name, std::span<const double> val
   return {std::string(name), std::move(leading), values, attributes.at(name)};
 }
 
+NetcdfVariable field_variable(std::string_view name, const Field& field) {
+  return field_variable(name, values(field));
+}
+
 void write_run_netcdf(const std::filesystem::path& path, const OutputSpec& spec,
                       const SceneRun& run) {
   NetcdfDataset d = run_dataset(run.grid, run.summary);
@@ -109,8 +113,8 @@ void write_run_netcdf(const std::filesystem::path& path, const OutputSpec& spec,
     d.variables.push_back(
         field_variable("gap", run.sweep ? stacked(run.sweep->gap, gap) : values(*run.gap), sweep));
   if (spec.in_plane && run.ux && run.uy) {
-    d.variables.push_back(field_variable("ux", values(*run.ux)));
-    d.variables.push_back(field_variable("uy", values(*run.uy)));
+    d.variables.push_back(field_variable("ux", *run.ux));
+    d.variables.push_back(field_variable("uy", *run.uy));
   }
   if (run.stress) add_stress(d, spec, *run.stress);
   topography::write_netcdf(path, d);

@@ -24,6 +24,8 @@ topography::NetcdfDataset run_dataset(const Grid& grid, const nlohmann::json& su
 /// its units and long name, holding `values`.
 topography::NetcdfVariable field_variable(std::string_view name, std::span<const double> values,
                                           std::vector<std::string> leading = {});
+/// The same of one map (nx, ny), or of a slab's rows of it (nx, rows).
+topography::NetcdfVariable field_variable(std::string_view name, const Field& field);
 
 /// Writes the arrays of `run` that `spec` asks for (the .npy files' arrays) into the new file
 /// `path`.

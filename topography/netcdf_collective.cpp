@@ -54,4 +54,13 @@ void write_netcdf_collective(const Communicator& comm, const std::filesystem::pa
   COATFFT_REQUIRE(comm.all(written), written ? "failed writing " + path.string() : nc.error());
 }
 
+void write_heights_slab(const Communicator& comm, const std::filesystem::path& path,
+                        const Field& rows, const Grid& grid, const Slab& slab, bool periodic,
+                        const NetcdfAttributes& attributes) {
+  NetcdfDataset d = heights_dataset(grid, periodic, rows, attributes);
+  d.first_row = slab.y0;
+  d.rows = slab.rows;
+  write_netcdf_collective(comm, path, std::move(d));
+}
+
 }  // namespace coatfft::topography

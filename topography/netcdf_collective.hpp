@@ -5,7 +5,10 @@
 // writes of the whole fields; only the header's padding may differ. Built with COATFFT_MPI.
 #include <filesystem>
 
+#include "core/grid.hpp"
+#include "core/types.hpp"
 #include "distributed/communicator.hpp"
+#include "distributed/slab.hpp"
 #include "topography/netcdf_writer.hpp"
 
 namespace coatfft::topography {
@@ -16,5 +19,11 @@ namespace coatfft::topography {
 /// rank cannot create or write the file (an existing one is refused).
 void write_netcdf_collective(const Communicator& comm, const std::filesystem::path& path,
                              NetcdfDataset dataset);
+
+/// write_heights's NetCDF file of a height map [m] from this rank's rows `rows` (nx, slab.rows)
+/// of it. Collective, as write_netcdf_collective.
+void write_heights_slab(const Communicator& comm, const std::filesystem::path& path,
+                        const Field& rows, const Grid& grid, const Slab& slab, bool periodic,
+                        const NetcdfAttributes& attributes = {});
 
 }  // namespace coatfft::topography

@@ -191,15 +191,13 @@ void write_heights(const std::filesystem::path& path, HeightsFormat format, cons
   COATFFT_REQUIRE(heights.rows() == grid.nx() && heights.cols() == grid.ny(),
                   "write_heights: the heights are not of the grid's shape");
   if (format == HeightsFormat::npy) return scene::write_npy(path, heights);
-  write_netcdf(path, heights_dataset(grid, periodic,
-                                     {heights.data(), static_cast<std::size_t>(heights.size())},
-                                     attributes));
+  write_netcdf(path, heights_dataset(grid, periodic, heights, attributes));
 }
 
-NetcdfDataset heights_dataset(const Grid& grid, bool periodic, std::span<const double> heights,
+NetcdfDataset heights_dataset(const Grid& grid, bool periodic, const Field& heights,
                               const NetcdfAttributes& attributes) {
   NetcdfDataset dataset{grid, periodic, {}, {}, attributes};
-  NetcdfVariable z{"heights", {}, heights, {}};
+  NetcdfVariable z{"heights", {}, {heights.data(), static_cast<std::size_t>(heights.size())}, {}};
   z.attributes.text = {{"units", "m"}, {"long_name", "surface height"}};
   dataset.variables.push_back(z);
   return dataset;

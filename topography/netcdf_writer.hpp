@@ -89,9 +89,9 @@ enum class HeightsFormat { npy, netcdf };
 HeightsFormat heights_format(const std::filesystem::path& target);
 
 /// The dataset of a height map [m] on `grid`: the variable `heights`, as SurfaceTopography names
-/// it, of the values `heights` (the whole map's, or a slab's rows with first_row and rows set),
-/// with `attributes` as the file's.
-NetcdfDataset heights_dataset(const Grid& grid, bool periodic, std::span<const double> heights,
+/// it, of `heights` (the whole map (nx, ny), or a slab's rows (nx, rows) with first_row and rows
+/// set), with `attributes` as the file's.
+NetcdfDataset heights_dataset(const Grid& grid, bool periodic, const Field& heights,
                               const NetcdfAttributes& attributes);
 
 /// Writes a height map [m] on `grid` as `path`: a (ny, nx) float64 .npy file, or a NetCDF file
