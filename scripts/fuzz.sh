@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets of fuzz/ with clang (ASan + UBSan) in build-fuzz and runs each for
 # SECONDS seconds on a copy of its seed corpus (fuzz/corpus/TARGET), so the repository is left as
-# it is; the targets run side by side, as many at a time as there are cores. Prints one line per target and exits non-zero if any target found a crash, a sanitizer
-# report or an exception other than InvalidArgument; its input is kept under
-# build-fuzz/fuzz/run/findings/TARGET/, the log in build-fuzz/fuzz/run/TARGET.log. docs/fuzz_report.md has more.
+# it is; the targets run side by side, as many at a time as there are cores. Prints one line per
+# target and exits non-zero if any target found a crash, a sanitizer report or an exception other
+# than InvalidArgument; its input is kept under build-fuzz/fuzz/run/findings/TARGET/, the log in
+# build-fuzz/fuzz/run/TARGET.log. docs/fuzz_report.md has more.
 # Usage: scripts/fuzz.sh [seconds-per-target]   (default 60)
 #        COATFFT_FUZZ_BUILD_DIR (default build-fuzz), COATFFT_FUZZ_TARGETS (default all four)
 set -euo pipefail
