@@ -10,9 +10,9 @@ cells a side, which the distributed solve does not take yet: docs/scale.md); dis
 holds the .npy files' values in the serial file's order. The rough contact and a pressure map
 again with fields.nc (written by the ranks together): the serial file's format, variables,
 coordinates and attributes, summary.json as its `summary`, the fields as above. A wisdom file is
-written by rank 0 and read by the next run; one that does not hold wisdom is refused and left as it is. Scenes that
-do not run distributed, and bad height maps, are refused on one line with exit status 2 and no
-output. Usage: mpi_cli_run.py COATFFT MPIEXEC
+written by rank 0 and read by the next run; one that does not hold wisdom is refused and left as
+it is. Scenes that do not run distributed, and bad height maps, are refused on one line with exit
+status 2 and no output. Usage: mpi_cli_run.py COATFFT MPIEXEC
 """
 import json
 import os
