@@ -12,13 +12,13 @@
 
 namespace coatfft::topography {
 
-Topography read_npy_topography(const std::filesystem::path& path, std::uintmax_t max_bytes);
+Topography read_npy_topography(const std::filesystem::path& path, const ReadOptions& options);
 /// A matrix of heights (format "csv") or "x y z" rows on a regular grid (format "xyz"; always
 /// when `xyz`, else when the file's three columns make such rows).
-Topography read_text_topography(const std::filesystem::path& path, std::uintmax_t max_bytes,
+Topography read_text_topography(const std::filesystem::path& path, const ReadOptions& options,
                                 bool xyz);
-Topography read_netcdf_topography(const std::filesystem::path& path, std::uintmax_t max_bytes);
-Topography read_x3p_topography(const std::filesystem::path& path, std::uintmax_t max_bytes);
-Topography read_sdf_topography(const std::filesystem::path& path, std::uintmax_t max_bytes);
+Topography read_netcdf_topography(const std::filesystem::path& path, const ReadOptions& options);
+Topography read_x3p_topography(const std::filesystem::path& path, const ReadOptions& options);
+Topography read_sdf_topography(const std::filesystem::path& path, const ReadOptions& options);
 
 }  // namespace coatfft::topography

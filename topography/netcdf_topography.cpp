@@ -129,8 +129,8 @@ std::vector<double> read_values(const NetcdfFile& nc, int var, std::size_t count
 }
 }  // namespace
 
-Topography read_netcdf_topography(const std::filesystem::path& path, std::uintmax_t max_bytes) {
-  std::string bytes = scene::read_input_file(path, "a NetCDF file", max_bytes);
+Topography read_netcdf_topography(const std::filesystem::path& path, const ReadOptions& options) {
+  std::string bytes = scene::read_input_file(path, "a NetCDF file", options.max_bytes);
   const NetcdfFile nc = NetcdfFile::open_memory(path, bytes);
   int var = -1;
   COATFFT_REQUIRE(nc_inq_varid(nc.id(), "heights", &var) == NC_NOERR, path.string(),
@@ -141,7 +141,7 @@ Topography read_netcdf_topography(const std::filesystem::path& path, std::uintma
   COATFFT_REQUIRE(nx > 0 && ny > 0, path.string(), ": heights of ", nx, " x ", ny,
                   " points are empty");
   // Checked without forming nx ny, which may overflow for the dimensions a file can declare.
-  require_point_limit(path, "heights: x * y", nx, ny, max_bytes);
+  require_point_limit(path, "heights: x * y", nx, ny, options);
   const std::vector<double> values = read_values(nc, var, nx * ny);
   Topography topography;
   topography.heights.resize(static_cast<Index>(nx), static_cast<Index>(ny));

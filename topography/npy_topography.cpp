@@ -4,9 +4,9 @@
 namespace coatfft::topography {
 
 // A .npy file carries heights only: no unit, no size, no periodicity.
-Topography read_npy_topography(const std::filesystem::path& path, std::uintmax_t max_bytes) {
+Topography read_npy_topography(const std::filesystem::path& path, const ReadOptions& options) {
   Topography topography;
-  topography.heights = scene::read_npy(path, max_bytes);
+  topography.heights = scene::read_npy(path, options.max_bytes);
   topography.format = "npy";
   return topography;
 }

@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "core/error.hpp"
+#include "topography/topography.hpp"
 
 namespace coatfft::topography {
 
@@ -55,14 +56,11 @@ inline std::uint64_t little_endian(const char* bytes, std::size_t width) {
   return word;
 }
 
-/// Refuses a map of nx x ny points whose heights (a double each) would exceed `max_bytes`, the
-/// file size limit, before anything is allocated; `sizes` names the counts ("SizeX * SizeY").
-inline void require_point_limit(const std::filesystem::path& path, std::string_view sizes,
-                                std::size_t nx, std::size_t ny, std::uintmax_t max_bytes) {
-  const std::uintmax_t max_points = max_bytes / sizeof(double);
-  if (nx > max_points || (nx > 0 && ny > max_points / nx))
-    refuse(path, sizes, " = ", nx, " * ", ny, " points, more than the limit of ", max_points,
-           " points (", max_bytes, " bytes)");
-}
+/// Refuses a map of nx x ny points before anything is allocated: its heights (a double each)
+/// must fit the file size limit `options.max_bytes`, and the memory reading it takes must fit
+/// `options.max_memory` (or what the machine has available). `sizes` names the counts
+/// ("SizeX * SizeY") as the file declares them.
+void require_point_limit(const std::filesystem::path& path, std::string_view sizes, std::size_t nx,
+                         std::size_t ny, const ReadOptions& options);
 
 }  // namespace coatfft::topography

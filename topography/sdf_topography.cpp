@@ -110,11 +110,11 @@ bool is_version(std::string_view text) {
          std::string_view("0123456789").find(text[7]) != std::string_view::npos;
 }
 
-void check_header(const fs::path& path, const Header& header, std::uintmax_t max_bytes) {
+void check_header(const fs::path& path, const Header& header, const ReadOptions& options) {
   if (header.nx == 0 || header.ny == 0)
     refuse(path, "NumPoints = ", header.nx, ", NumProfiles = ", header.ny,
            ", but both must be >= 1");
-  require_point_limit(path, "NumPoints * NumProfiles", header.nx, header.ny, max_bytes);
+  require_point_limit(path, "NumPoints * NumProfiles", header.nx, header.ny, options);
   for (const auto& [name, value] :
        {std::pair{"Xscale", header.xscale}, std::pair{"Yscale", header.yscale},
         std::pair{"Zscale", header.zscale}})
@@ -354,8 +354,8 @@ Field read_binary_data(const fs::path& path, std::string_view bytes, Header& hea
 
 }  // namespace
 
-Topography read_sdf_topography(const std::filesystem::path& path, std::uintmax_t max_bytes) {
-  const std::string content = scene::read_input_file(path, "an SDF file", max_bytes);
+Topography read_sdf_topography(const std::filesystem::path& path, const ReadOptions& options) {
+  const std::string content = scene::read_input_file(path, "an SDF file", options.max_bytes);
   const std::string_view text(content);
   const std::string_view version = text.substr(0, 8);
   if (!is_version(version))
@@ -367,7 +367,7 @@ Topography read_sdf_topography(const std::filesystem::path& path, std::uintmax_t
            " of the binary header (truncated)");
   std::size_t pos = 0;
   Header header = binary ? read_binary_header(text) : read_text_header(path, text, pos);
-  check_header(path, header, max_bytes);
+  check_header(path, header, options);
   Field values =
       binary ? read_binary_data(path, text, header) : read_text_data(path, text, pos, header);
   if (!binary) read_trailer(text.substr(std::min(pos, text.size())), header);

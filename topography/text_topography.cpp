@@ -78,9 +78,9 @@ Topography xyz_topography(const std::filesystem::path& path, const Field& rows,
 }
 }  // namespace
 
-Topography read_text_topography(const std::filesystem::path& path, std::uintmax_t max_bytes,
+Topography read_text_topography(const std::filesystem::path& path, const ReadOptions& options,
                                 bool xyz) {
-  const Field matrix = scene::read_csv_matrix(path, max_bytes);
+  const Field matrix = scene::read_csv_matrix(path, options.max_bytes);
   COATFFT_REQUIRE(!xyz || matrix.rows() == 3, path.string(),
                   ": x y z rows need three columns, not ", matrix.rows());
   if (matrix.rows() == 3) {

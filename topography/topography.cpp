@@ -20,14 +20,14 @@ MissingPoints missing_points_from_name(std::string_view name, std::string_view w
 }
 
 namespace {
-Topography read_format(const fs::path& path, std::uintmax_t max_bytes) {
+Topography read_format(const fs::path& path, const ReadOptions& options) {
   const std::string ext = lower_ascii(path.extension().string());
-  if (ext == ".npy") return read_npy_topography(path, max_bytes);
+  if (ext == ".npy") return read_npy_topography(path, options);
   if (ext == ".csv" || ext == ".txt" || ext == ".asc" || ext == ".xyz")
-    return read_text_topography(path, max_bytes, ext == ".xyz");
-  if (ext == ".nc") return read_netcdf_topography(path, max_bytes);
-  if (ext == ".x3p") return read_x3p_topography(path, max_bytes);
-  if (ext == ".sdf") return read_sdf_topography(path, max_bytes);
+    return read_text_topography(path, options, ext == ".xyz");
+  if (ext == ".nc") return read_netcdf_topography(path, options);
+  if (ext == ".x3p") return read_x3p_topography(path, options);
+  if (ext == ".sdf") return read_sdf_topography(path, options);
   throw InvalidArgument(detail::concat(path.string(), ": unknown topography format ",
                                        scene::quoted_excerpt(ext),
                                        " (known: .npy, .csv, .txt, .asc, .xyz, .nc, .x3p, .sdf)"));
@@ -73,7 +73,7 @@ void check_heights(const fs::path& path, Topography& topography, MissingPoints m
 }  // namespace
 
 Topography read_topography(const fs::path& path, const ReadOptions& options) {
-  Topography topography = read_format(path, options.max_bytes);
+  Topography topography = read_format(path, options);
   const double scale = file_scale(path, topography, options.unit);
   topography.heights *= scale;
   if (topography.lx) *topography.lx *= scale;

@@ -240,17 +240,17 @@ struct Record {
 };
 
 void read_matrix_dimension(const fs::path& path, const XMLElement* root, Record& record,
-                           std::uintmax_t max_bytes) {
+                           const ReadOptions& options) {
   record.nx = size_of(path, root, "Record3/MatrixDimension/SizeX");
   record.ny = size_of(path, root, "Record3/MatrixDimension/SizeY");
   const std::size_t nz = size_of(path, root, "Record3/MatrixDimension/SizeZ");
   if (nz != 1)
     refuse(path, "main.xml: SizeZ = ", nz, ", but only a single layer (SizeZ = 1) is read");
   // Every point becomes a double: bound the map by the file size limit before allocating.
-  require_point_limit(path, "main.xml: SizeX * SizeY", record.nx, record.ny, max_bytes);
+  require_point_limit(path, "main.xml: SizeX * SizeY", record.nx, record.ny, options);
 }
 
-Record read_record(const fs::path& path, const XMLElement* root, std::uintmax_t max_bytes) {
+Record read_record(const fs::path& path, const XMLElement* root, const ReadOptions& options) {
   const std::string feature = text_of(&require(path, root, "Record1/FeatureType"));
   if (feature != "SUR")
     refuse(path, "main.xml: FeatureType = ", scene::quoted_excerpt(feature),
@@ -265,7 +265,7 @@ Record read_record(const fs::path& path, const XMLElement* root, std::uintmax_t 
       refuse(path, "main.xml: Record1/Axes/", name, "/Increment = ", axis->increment,
              ", but the spacing must be > 0");
   if (record.z.increment == 0) refuse(path, "main.xml: Record1/Axes/CZ/Increment = 0");
-  read_matrix_dimension(path, root, record, max_bytes);
+  read_matrix_dimension(path, root, record, options);
   const XMLElement* record3 = child(root, "Record3");
   record.data_link = child(record3, "DataLink");
   record.data_list = child(record3, "DataList");
@@ -428,10 +428,10 @@ void read_metadata(const XMLElement* root, Topography& topography) {
 
 }  // namespace
 
-Topography read_x3p_topography(const std::filesystem::path& path, std::uintmax_t max_bytes) {
-  const std::string bytes = scene::read_input_file(path, "an X3P file", max_bytes);
+Topography read_x3p_topography(const std::filesystem::path& path, const ReadOptions& options) {
+  const std::string bytes = scene::read_input_file(path, "an X3P file", options.max_bytes);
   const Archive archive(path, bytes);
-  const std::string main_xml = archive.require("main.xml", max_bytes);
+  const std::string main_xml = archive.require("main.xml", options.max_bytes);
   tinyxml2::XMLDocument document;
   if (document.Parse(main_xml.data(), main_xml.size()) != tinyxml2::XML_SUCCESS)
     refuse(path, "main.xml is not well-formed XML (", document.ErrorName(), " on line ",
@@ -441,10 +441,10 @@ Topography read_x3p_topography(const std::filesystem::path& path, std::uintmax_t
     refuse(path, "main.xml: the root element is not ISO5436_2");
   // The record is trusted only once it matches its checksum.
   verify_record_checksum(path, archive, root, main_xml);
-  const Record record = read_record(path, root, max_bytes);
+  const Record record = read_record(path, root, options);
 
   Topography topography;
-  topography.heights = record.data_link ? read_linked_data(path, archive, record, max_bytes)
+  topography.heights = record.data_link ? read_linked_data(path, archive, record, options.max_bytes)
                                         : read_data_list(path, record);
   // Heights in metres; NaN (an invalid point) stays NaN.
   topography.heights = topography.heights * record.z.increment + record.z.offset;
