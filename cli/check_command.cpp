@@ -30,7 +30,8 @@ std::optional<double> predicted_error(const scene::Scene& scene) {
 }  // namespace
 
 void check_command(const CheckOptions& options) {
-  scene::Scene scene = scene::read_scene(options.scene);
+  scene::Scene scene =
+      scene::read_scene(options.scene, scene::SceneReading{.max_memory = options.max_memory});
   // As run does: a pressure is applied once (run --repeat aside), a contact solve about
   // contact_applications times.
   const double applications = scene.contact ? scene::contact_applications : 1.0;

@@ -9,14 +9,12 @@
 #include <string>
 #include <string_view>
 
+#include "surfaces/self_affine_surface.hpp"  // max_surface_cells
 #ifdef COATFFT_WITH_MPI
 #include "distributed/communicator.hpp"
 #endif
 
 namespace coatfft::cli {
-
-/// The largest cell count a side (a 16384^2 surface takes about 6 GiB while it is made).
-inline constexpr long max_surface_cells = 16384;
 
 struct SurfaceOptions {
   std::filesystem::path output;  ///< .npy or .nc file

@@ -3,6 +3,7 @@
 // operators' estimated_* functions) and asks require_memory before allocating, so that a grid
 // too large for the machine ends in one line naming what drives the need, not in std::bad_alloc
 // or the kernel's OOM killer half-way through.
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -17,7 +18,8 @@ struct MemoryNeed {
 };
 
 /// The memory this process may use [bytes]: MemAvailable of /proc/meminfo, or the cgroup's
-/// memory.max when smaller; nullopt when neither can be read.
+/// memory.max, or what an address-space limit (ulimit -v) leaves beyond what the process has
+/// mapped, whichever is smallest; nullopt when none can be read.
 std::optional<double> available_memory();
 
 /// Throws InvalidArgument "<who> needs about X GB of memory, driven by <drivers>, but Y GB is
@@ -26,5 +28,10 @@ std::optional<double> available_memory();
 /// ("--max-memory") names the caller's way to set a limit; empty when it has none.
 void require_memory(const MemoryNeed& need, std::optional<double> limit, std::string_view who,
                     std::string_view limit_name, std::string_view remedy);
+
+/// require_memory for a computation whose peak is `fields` arrays of doubles on an nx x ny grid
+/// (a height map, a load, a surface and its spectrum), before the first is allocated; `who` names
+/// it ("self_affine_surface"). No limit of the caller's: the available memory.
+void require_grid_memory(std::ptrdiff_t nx, std::ptrdiff_t ny, double fields, std::string_view who);
 
 }  // namespace coatfft

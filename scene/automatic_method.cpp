@@ -5,6 +5,7 @@
 #include <utility>
 #include <variant>
 
+#include "convolution/operators/make_operator.hpp"
 #include "validation/hertz_contact.hpp"
 
 namespace coatfft::scene {
@@ -82,8 +83,32 @@ AutomaticChoice choose_automatically(const Grid& grid, const Frf& frf,
   return choice;
 }
 
+namespace {
+
+// A periodic "auto" is the exact method of its body (method_request.hpp). A coating thinner than
+// a hundredth of a cell is first reduced as the free path's choice reduces it (reduce_body, for
+// the scene's reference loads; the closed-form bound decides, with no quadrature): the periodic
+// kernel would otherwise resolve the FRF out to k ~ 1/h (1e13 rad/m for a picometre film) and
+// refuse, for an effect far below the tolerance.
+void reduce_thin_periodic_body(Scene& scene) {
+  MethodSpec& m = scene.method;
+  const LayerStack& body = *scene.body;
+  const double cell = std::min(scene.grid.dx(), scene.grid.dy());
+  const bool thin = std::any_of(body.coatings().begin(), body.coatings().end(),
+                                [&](const Coating& c) { return c.thickness < 1e-2 * cell; });
+  if (!thin) return;
+  const BodyReduction r = reduce_body(body, reference_loads(scene), reduction_share * m.tolerance);
+  if (r.kind == "none") return;
+  m.reduced_body = r.body;
+  m.options.method = exact_method(r.body);
+  m.reduction_note = r.why;
+}
+
+}  // namespace
+
 std::optional<AutomaticChoice> resolve_automatic_method(Scene& scene, double applications) {
   MethodSpec& m = scene.method;
+  if (m.auto_periodic && scene.body) reduce_thin_periodic_body(scene);
   if (!m.automatic) return std::nullopt;
   AutoRequest request;
   request.tolerance = m.tolerance;

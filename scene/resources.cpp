@@ -33,14 +33,20 @@ std::string lattice_drivers(const Scene& scene, const OperatorMemory& m) {
 
 }  // namespace
 
-MemoryNeed estimate_memory(const Scene& scene) {
+// The program, the operator and the fields on the grid: 4 for a known pressure, a contact's
+// (contact_field_bytes) for a contact.
+MemoryNeed operator_and_fields(const Scene& scene, bool contact) {
   const Grid& grid = scene.grid;
   const double cells = static_cast<double>(grid.nx()) * static_cast<double>(grid.ny());
   const OperatorMemory op = estimated_memory(grid, scene.method.options);
-  MemoryNeed need{program_bytes + op.bytes, lattice_drivers(scene, op)};
-  // The fields on the grid: 4 for a known pressure; 12 for a contact (iterates, directions, gap)
-  // and its preconditioner (a real field, its half spectrum and the multiplier).
-  need.bytes += scene.contact ? (12.0 * 8.0 + 20.0) * cells : 4.0 * 8.0 * cells;
+  return {program_bytes + op.bytes + (contact ? contact_field_bytes(cells) : 4.0 * 8.0 * cells),
+          lattice_drivers(scene, op)};
+}
+
+MemoryNeed estimate_memory(const Scene& scene) {
+  const Grid& grid = scene.grid;
+  const double cells = static_cast<double>(grid.nx()) * static_cast<double>(grid.ny());
+  MemoryNeed need = operator_and_fields(scene, scene.contact.has_value());
   if (scene.contact && !scene.contact->sweep.empty()) {
     // A sweep keeps pressure, displacement and gap of every value, and writes them stacked.
     const double values = static_cast<double>(scene.contact->sweep.size());
@@ -94,6 +100,14 @@ void check_memory(const Scene& scene, std::optional<double> limit) {
                  scene.method.options.method == Method::frf_spectral
                      ? "use fewer cells or a smaller alpha"
                      : "use fewer cells");
+}
+
+void check_pad_memory(const Scene& scene, const Field& map, std::int64_t pad,
+                      std::optional<double> limit) {
+  MemoryNeed need = operator_and_fields(scene, true);
+  need.drivers = detail::concat("[grid] pad = ", pad, " (the map's ", map.rows(), " x ", map.cols(),
+                                " points and ", pad, " cells on each side): ", need.drivers);
+  require_memory(need, limit, "the scene", "--max-memory", "use a smaller pad");
 }
 
 }  // namespace coatfft::scene

@@ -16,6 +16,12 @@ namespace coatfft::scene {
 inline constexpr int max_repeat = 100000;         ///< coatfft run --repeat
 inline constexpr long max_frf_points = 10000000;  ///< coatfft frf --points
 
+/// The memory of a contact's fields on `cells` grid cells [bytes]: 12 fields (iterates,
+/// directions, gap) and the preconditioner's (a real field, its half spectrum and the multiplier).
+inline double contact_field_bytes(double cells) {
+  return (12.0 * 8.0 + 20.0) * cells;
+}
+
 /// An upper estimate of the peak memory of `coatfft run` on `scene`: the grid's fields (4 for a
 /// known pressure, 12 for a contact: iterates, directions, gap), the operators' own
 /// (convolution/operators/operator_memory.hpp, estimated_stress_bytes) and the program's
@@ -36,6 +42,13 @@ inline constexpr double max_memory_bytes = 18446744073709551616.0;
 /// Parses a size such as "512M", "4G", "1.5GiB" or "1000000" (bytes; K, M, G, T are powers of
 /// 1024), at most max_memory_bytes. Throws InvalidArgument naming `option`.
 double parse_memory_size(std::string_view text, std::string_view option);
+
+/// Refuses a measured topography's `pad` (cells of gap on each side of `map`) before its padded
+/// gap is allocated, while the scene is read: the contact on the padded grid of `scene` (the
+/// operator of its method and the contact's fields, as estimate_memory counts them) must fit
+/// `limit`, or the available memory when it is not given. The message names the pad.
+void check_pad_memory(const Scene& scene, const Field& map, std::int64_t pad,
+                      std::optional<double> limit);
 
 /// Refuses the scene (InvalidArgument naming the keys and both amounts) when its estimate
 /// exceeds `limit`, or the available memory when `limit` is not given.

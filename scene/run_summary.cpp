@@ -99,6 +99,8 @@ nlohmann::json common_summary(const Scene& scene, const std::optional<AutomaticC
   if (const auto* table = dynamic_cast<const TabulatedFrf*>(scene.frf.get()))
     for (const std::string& warning : table->warnings())
       summary["warnings"].push_back("[frf] " + warning);
+  if (!scene.method.reduction_note.empty())
+    summary["warnings"].push_back("[method] auto: " + scene.method.reduction_note);
   summary.update(operator_report_json(report));
   summary["method_requested"] = automatic || scene.method.auto_periodic
                                     ? "auto"

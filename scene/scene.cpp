@@ -20,7 +20,9 @@
 #include "scene/frf_table_file.hpp"
 #include "scene/grid_file.hpp"
 #include "scene/input_file.hpp"
+#include "scene/key_spelling.hpp"
 #include "scene/method_request.hpp"
+#include "scene/resources.hpp"
 #include "scene/scene_topography.hpp"
 #include "stress/stress_kernel.hpp"
 #include "stress/stress_operator.hpp"
@@ -122,6 +124,15 @@ class SectionReader {
         detail::concat(where(key), " = \"", detail::shorten(value), "\" is not one of ", list));
   }
 
+  /// A key of the section that nothing read and that looks like a misspelling of one of
+  /// `expected` (scene/key_spelling.hpp), for a refusal that a missing key causes; "" if none.
+  std::string misspelling(const std::vector<std::string_view>& expected) const {
+    std::vector<std::string> unread;
+    for (auto&& [key, node] : table_)
+      if (!used_.count(std::string(key.str()))) unread.emplace_back(key.str());
+    return misspelling_hint(unread, expected);
+  }
+
   /// Refuses every key that was not read.
   void finish() const {
     for (auto&& [key, node] : table_) {
@@ -139,7 +150,8 @@ class SectionReader {
  private:
   const toml::node& require(std::string_view key) {
     const toml::node* node = table_.get(key);
-    COATFFT_REQUIRE(node != nullptr, "[", name_, "] missing required key \"", key, "\"");
+    COATFFT_REQUIRE(node != nullptr, "[", name_, "] missing required key \"", key, "\"",
+                    misspelling({key}));
     used_.insert(std::string(key));
     return *node;
   }
@@ -228,7 +240,8 @@ struct GridSection {
 // [contact] topography = "FILE" with its unit and missing keys, read before the grid (whose keys
 // the file may give); the keys are read again, and checked with the others, by read_contact.
 std::optional<SceneTopography> read_scene_topography(const toml::table& root,
-                                                     const std::filesystem::path& scene_dir) {
+                                                     const std::filesystem::path& scene_dir,
+                                                     std::optional<double> max_memory) {
   if (!root.contains("contact")) return std::nullopt;
   SectionReader reader(section(root, "contact", true), "contact");
   if (!reader.has("topography")) return std::nullopt;
@@ -245,6 +258,7 @@ std::optional<SceneTopography> read_scene_topography(const toml::table& root,
     options.unit = reader.string("unit", "");
     options.missing = topography::missing_points_from_name(
         reader.choice("missing", "refuse", {"refuse", "fill"}), reader.where("missing"));
+    options.max_memory = max_memory;
     t.map = topography::read_topography(t.file, options);
     return t;
   });
@@ -530,7 +544,8 @@ double control_value(SectionReader& reader, const char* key, ContactSpec& spec) 
 // [contact] load or approach, and the solver's keys (tolerance, max_iterations, friction).
 void read_contact_control(SectionReader& reader, ContactSpec& spec) {
   COATFFT_REQUIRE(reader.has("load") != reader.has("approach"),
-                  "[contact] give exactly one of load (N) and approach (m)");
+                  "[contact] give exactly one of load (N) and approach (m)",
+                  reader.misspelling({"load", "approach"}));
   if (reader.has("load")) spec.load = control_value(reader, "load", spec);
   if (reader.has("approach")) spec.approach = control_value(reader, "approach", spec);
   spec.report_approach = reader.boolean("report_approach", spec.report_approach);
@@ -894,7 +909,8 @@ Scene read_scene(const std::filesystem::path& path, const SceneReading& reading)
   return with_file_name(path, [&] {
     const toml::table root = parse_scene_text(text, path);
     const std::filesystem::path scene_dir = path.parent_path();
-    const std::optional<SceneTopography> topography = read_scene_topography(root, scene_dir);
+    const std::optional<SceneTopography> topography =
+        read_scene_topography(root, scene_dir, reading.max_memory);
     const GridSection grid = read_grid(root, topography ? &*topography : nullptr);
     Scene scene{grid.grid.value_or(Grid(1, 1, grid.lx, grid.ly)),
                 read_optional_body(root),
@@ -919,7 +935,9 @@ Scene read_scene(const std::filesystem::path& path, const SceneReading& reading)
                     "a scene needs exactly one of [pressure] (known load) and [contact]");
     if (root.contains("pressure"))
       scene.pressure = read_pressure(section(root, "pressure", true), scene.grid, scene_dir);
-    else
+    else if (topography && grid.pad > 0)  // before the padded gap is allocated
+      check_pad_memory(scene, topography->map.heights, grid.pad, reading.max_memory);
+    if (root.contains("contact"))
       scene.contact = in_section("contact", [&] {
         const SceneContext context{scene.grid, scene.periodic,
                                    scene_dir,  topography ? &*topography : nullptr,

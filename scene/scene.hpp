@@ -56,8 +56,11 @@ struct MethodSpec {
   std::optional<LayerStack> reduced_body;
   std::filesystem::path wisdom;  ///< FFTW wisdom file to load and save (optional)
   /// name = "auto" on a periodic boundary, resolved to dcfft or frf-split by the body alone
-  /// (automatic is then false): reported as requested "auto".
+  /// (automatic is then false): reported as requested "auto". A coating far thinner than a cell
+  /// is left out first where its effect is within the tolerance (resolve_automatic_method):
+  /// `reduced_body` is then set and `reduction_note` says why, for summary.json's warnings.
   bool auto_periodic = false;
+  std::string reduction_note;
   /// Whether [method] planning was given; otherwise read_scene chooses (planning_for_contact).
   bool planning_given = false;
 };
@@ -214,6 +217,10 @@ struct SceneReading {
   /// shape) and its values are left unread (an empty HeightMap): a distributed run reads its rows
   /// on each rank (scene/npy_slab.hpp).
   bool height_map_values = true;
+  /// The memory the run may use [bytes] (--max-memory; by default what the machine has): what is
+  /// allocated while the scene is read (a measured topography, its padded gap) is checked against
+  /// it first. The whole scene's estimate is check_memory's (scene/resources.hpp), after reading.
+  std::optional<double> max_memory;
 };
 
 Scene read_scene(const std::filesystem::path& path, const SceneReading& reading = {});

@@ -171,13 +171,33 @@ std::vector<ContactResult> solve_contacts(ContactSolver& solver, const Scene& sc
                                           const std::shared_ptr<CerrutiOperator>& surface,
                                           const Field& height_field, nlohmann::json& coupling) {
   const ContactSpec& spec = *scene.contact;
-  if (spec.sweep.empty()) {
+  const ContactControl control = spec.load ? ContactControl::load : ContactControl::approach;
+  try {
+    if (!spec.sweep.empty()) return solver.solve_sweep(height_field, control, spec.sweep);
     std::vector<ContactResult> one;
     one.push_back(solve_scene_contact(solver, scene, surface, height_field, coupling));
     return one;
+  } catch (const InvalidArgument& e) {
+    // The solver names what it refuses as its own ("ContactSolver: load = 1e+30 N ..."): in a
+    // scene that is a [contact] key and its value (one of a sweep's list).
+    const std::string message = e.what();
+    const std::string prefix = "ContactSolver: ";
+    if (message.rfind(prefix, 0) != 0) throw;
+    throw InvalidArgument(detail::concat("[contact] ", message.substr(prefix.size())));
   }
-  const ContactControl control = spec.load ? ContactControl::load : ContactControl::approach;
-  return solver.solve_sweep(height_field, control, spec.sweep);
+}
+
+// The refusal of a contact that reaches the domain edge, naming the first value of a sweep whose
+// contact does (the others' are larger: a sweep is solved in ascending order).
+std::string domain_edge_message(const ContactSpec& spec,
+                                const std::vector<ContactResult>& results) {
+  if (spec.sweep.empty()) return domain_edge_refusal;
+  std::size_t k = 0;
+  while (k + 1 < results.size() && !results[k].touches_boundary) ++k;
+  const char* key = spec.load ? "load" : "approach";
+  return detail::concat(domain_edge_refusal, " (first at [contact] ", key, " = ", spec.sweep[k],
+                        spec.load ? " N" : " m", ", value ", k + 1, " of the sweep's ",
+                        spec.sweep.size(), ")");
 }
 
 // A sweep's outputs: every value's fields, stacked by the writer, and its rows; the summary's
@@ -226,7 +246,7 @@ SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat,
   // gap is out of reach, so contact on its edge cells is the map's own (reported, not refused).
   const bool topography = !spec.topography.is_null();
   const bool map_edge = topography && topography_edge_contact(results, spec.topography_pad);
-  COATFFT_REQUIRE(!touches || topography, domain_edge_refusal);
+  COATFFT_REQUIRE(!touches || topography, domain_edge_message(spec, results));
   // The largest value's: the summary's contact keys (a sweep keeps every value's fields too).
   ContactResult result = spec.sweep.empty() ? std::move(results.back()) : results.back();
 
@@ -269,7 +289,7 @@ void import_wisdom_read_only(const Scene& scene) {
 
 PreparedScene prepare_scene(const fs::path& scene_file, const SceneRunOptions& options) {
   check_repeat(options.repeat);
-  Scene scene = read_scene(scene_file);
+  Scene scene = read_scene(scene_file, SceneReading{.max_memory = options.max_memory});
   // name = "auto" chooses the body and the method first, and the memory estimate is the chosen
   // one's; before it, the estimate of the scene as read (DC-FFT's padded lattice, the least any
   // candidate but direct summation on a small grid needs) refuses a grid too large for any.

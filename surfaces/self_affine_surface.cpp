@@ -11,6 +11,7 @@
 
 #include "convolution/fft/fftw_plan.hpp"
 #include "core/error.hpp"
+#include "core/memory.hpp"
 #include "surfaces/detail/self_affine_spectrum.hpp"
 
 namespace coatfft {
@@ -242,13 +243,23 @@ double spectral_rms_slope(const Grid& g, const Field& h) {
   return std::sqrt(sum);
 }
 
+void require_self_affine_memory(const Grid& grid, std::string_view who) {
+  // The half spectrum (about a field of doubles), its column-transformed copy, the real output
+  // and the scaled field returned: four fields at the peak.
+  require_grid_memory(grid.nx(), grid.ny(), 4.0, who);
+}
+
 void check_self_affine_spec(const Grid& grid, const SelfAffineSpec& spec,
                             std::string_view height_name, std::string_view slope_name) {
+  COATFFT_REQUIRE(grid.nx() <= max_surface_cells && grid.ny() <= max_surface_cells, "grid ",
+                  grid.nx(), " x ", grid.ny(), ": a surface has at most ", max_surface_cells,
+                  " cells a side");
   detail::self_affine_scale(spec, detail::self_affine_row_moments(grid, spec, 0, grid.ny()),
                             height_name, slope_name);
 }
 
 Field self_affine_surface(const Grid& grid, const SelfAffineSpec& spec) {
+  require_self_affine_memory(grid, "self_affine_surface");
   const double scale =
       detail::self_affine_scale(spec, detail::self_affine_row_moments(grid, spec, 0, grid.ny()));
   HalfSpectrum half(grid.nx(), grid.ny());

@@ -38,7 +38,12 @@ inline constexpr double min_rms_height = 1e-15, max_rms_height = 1.0;
 /// The largest rms slope [-] (a mean inclination of 84 degrees: beyond any real surface).
 inline constexpr double max_rms_slope = 10.0;
 
-/// Refuses (InvalidArgument) what self_affine_surface would refuse, before any work: H outside
+/// The largest cell count a side (a 16384^2 surface takes about 6 GiB while it is made), for
+/// every front end: `coatfft surface --nx`, Python's self_affine_surface.
+inline constexpr long max_surface_cells = 16384;
+
+/// Refuses (InvalidArgument) what self_affine_surface would refuse: a side of more than
+/// max_surface_cells cells, before any work: H outside
 /// (0, 1], not exactly one rms, cut-offs not with 2 max(dx, dy) <= lambda_s < lambda_r, no mode
 /// between the cut-offs, an rms height outside [min_rms_height, max_rms_height], an rms slope above
 /// max_rms_slope or one whose surface would have an rms height outside that range (the ratio of
@@ -47,6 +52,12 @@ inline constexpr double max_rms_slope = 10.0;
 void check_self_affine_spec(const Grid& grid, const SelfAffineSpec& spec,
                             std::string_view height_name = "the rms height",
                             std::string_view slope_name = "the rms slope");
+
+/// Refuses (InvalidArgument naming `who`) a surface on `grid` that would not fit in the available
+/// memory (core/memory.hpp), before anything is allocated: self_affine_surface asks it first, and
+/// a front end may ask it before check_self_affine_spec, whose spectrum sums take time on the
+/// largest grids.
+void require_self_affine_memory(const Grid& grid, std::string_view who);
 
 /// The surface h(x_i, y_j) [m], shape (nx, ny) of `grid` (both even, >= 2). InvalidArgument for
 /// a bad spec (check_self_affine_spec).

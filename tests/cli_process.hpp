@@ -157,14 +157,14 @@ inline fs::path scene_with(const std::string& name, const std::string& from,
 }
 
 // A scene edit that must be refused: exit 2, one line on stderr mentioning `must_mention`, and
-// no output folder.
+// no output folder. Returns the run, for what else its message must say.
 struct BadCase {
   const char* name;
   std::string from, to;
   const char* must_mention;
 };
 
-inline void check_refused(const std::string& base, const BadCase& c) {
+inline ProcessResult check_refused(const std::string& base, const BadCase& c) {
   INFO(c.name);
   const fs::path scene = write_scene(base, c.name, c.from, c.to);
   const fs::path out = scratch(std::string(c.name) + "_out");
@@ -175,6 +175,7 @@ inline void check_refused(const std::string& base, const BadCase& c) {
   CHECK(std::count(result.stderr_text.begin(), result.stderr_text.end(), '\n') == 1);
   CHECK(result.stderr_text.find(c.must_mention) != std::string::npos);
   CHECK_FALSE(fs::exists(out));
+  return result;
 }
 
 // The peak resident set of one `coatfft ARGS` run [MiB], from wait4 on the process itself (the

@@ -206,3 +206,26 @@ TEST_CASE("periodic scenes refuse what they do not support", "[cli_periodic]") {
   };
   for (const BadCase& c : cases) check_refused(kPeriodicHertz, c);
 }
+
+TEST_CASE("a periodic scene leaves out a coating far thinner than a cell, or names it",
+          "[cli_periodic]") {
+  // A picometre film (and a 1e-300 m one) made the periodic kernel sum the FRF to k ~ 1/h and
+  // refuse in its own terms. "auto" leaves the film out where the body reduction bounds its
+  // effect (the free path's rule): the displacement is the bare steel's to the bound, 1e-4 at
+  // most, and the summary's warnings say so. A named method names the coating.
+  std::string bare = kPeriodicHertz;
+  const nlohmann::json steel = read_summary(run_scene_ok(bare, "thin_bare"));
+  for (const char* thickness : {"1e-12", "1e-300"}) {
+    INFO(thickness);
+    const std::string film =
+        bare + "[[coating]]\nmaterial = \"alumina\"\nthickness = " + std::string(thickness) + "\n";
+    const nlohmann::json s = read_summary(run_scene_ok(film, "thin_film"));
+    CHECK(s["method_requested"] == "auto");
+    CHECK(s["uz_center"].get<double>() == Approx(steel["uz_center"].get<double>()).epsilon(1e-4));
+    REQUIRE(s["warnings"].size() == 1);
+    CHECK(s["warnings"][0].get<std::string>().rfind("[method] auto: substrate", 0) == 0);
+    check_refused(film + "[method]\nname = \"frf-split\"\n",
+                  {"thin_named", "[method]", "[method]",
+                   (std::string("[[coating]] 1 thickness = ") + thickness).c_str()});
+  }
+}

@@ -394,3 +394,34 @@ TEST_CASE(
   CHECK(run_coatfft(args, "OMPI_COMM_WORLD_SIZE=1 OMPI_COMM_WORLD_RANK=0").status == 0);
   CHECK(fs::exists(dir / "out" / "summary.json"));
 }
+
+TEST_CASE("a topography's pad is checked against the memory before its gap is allocated",
+          "[cli][safety]") {
+  // pad = 30000 made a 60008^2 gap while the scene was read, before any memory check: "out of
+  // memory" under --max-memory 2G, in check as in run. Now refused by the pad, at once.
+  const fs::path dir = fresh("safety_pad");
+  {
+    std::ofstream z(dir / "z.csv");
+    for (int j = 0; j < 4; ++j) z << "0,1e-7,2e-7,1e-7\n";
+  }
+  std::ofstream(dir / "scene.toml") << "[grid]\nlx = 1e-3\nly = 1e-3\npad = 30000\n"
+                                       "[substrate]\nmaterial = \"steel\"\n"
+                                       "[contact]\ntopography = \"z.csv\"\nload = 1.0\n";
+  const fs::path out = dir / "out";
+  for (const std::string& command :
+       {"run " + (dir / "scene.toml").string() + " -o " + out.string() + " --max-memory 2G",
+        "check " + (dir / "scene.toml").string() + " --max-memory 2G",
+        "check " + (dir / "scene.toml").string()}) {
+    INFO(command);
+    const ProcessResult r = run_coatfft(command);
+    check_refusal(r,
+                  "[grid] pad = 30000 (the map's 4 x 4 points and 30000 cells on each side): "
+                  "[grid] nx = 60004, ny = 60004");
+  }
+  CHECK_FALSE(fs::exists(out));
+  // The same map with a pad the machine holds runs.
+  std::ofstream(dir / "small.toml") << "[grid]\nlx = 1e-3\nly = 1e-3\npad = 2\n"
+                                       "[substrate]\nmaterial = \"steel\"\n"
+                                       "[contact]\ntopography = \"z.csv\"\nload = 1.0\n";
+  CHECK(run_coatfft("check " + (dir / "small.toml").string() + " --max-memory 2G").status == 0);
+}

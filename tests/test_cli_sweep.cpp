@@ -92,9 +92,26 @@ TEST_CASE("a sweep refuses what takes one load, and bad lists", "[cli_sweep]") {
   // [stress] (on a free surface: a periodic one refuses it on its own ground).
   std::string free = kSweep;
   free.erase(free.find("boundary = \"periodic\"\n"), 22);
-  check_refused(free, {"sweep_stress", "load = [40.0, 10.0, 20.0]",
-                       "load = [40.0, 10.0]\n[stress]\ndepths = [1e-4]", "[stress] takes one load"});
+  check_refused(free,
+                {"sweep_stress", "load = [40.0, 10.0, 20.0]",
+                 "load = [40.0, 10.0]\n[stress]\ndepths = [1e-4]", "[stress] takes one load"});
   std::string many = "load = [1.0";
   for (int k = 2; k <= 257; ++k) many += ", " + std::to_string(k) + ".0";
   check_refused(kSweep, {"sweep_many", "load = [40.0, 10.0, 20.0]", many + "]", "1 to 256"});
+}
+
+TEST_CASE("a sweep's refusals name the key and the value they concern", "[cli_sweep]") {
+  // The contact reaches the domain edge from the second value on (a free 3 mm square under a
+  // 10 mm sphere: 10 N stays inside it, 1 MN does not): the refusal names that value.
+  std::string free = kSweep;
+  free.erase(free.find("boundary = \"periodic\"\n"), 22);
+  const ProcessResult edge = check_refused(
+      free, {"sweep_edge", "load = [40.0, 10.0, 20.0]", "load = [10.0, 1e6, 2e6]", "domain edge"});
+  CHECK(edge.stderr_text.find("(first at [contact] load = 1e+06 N, value 2 of the sweep's 3)") !=
+        std::string::npos);
+  // A value beyond what double precision solves: named as the scene's key, not the solver's.
+  const ProcessResult far = check_refused(
+      kSweep, {"sweep_far", "load = [40.0, 10.0, 20.0]", "load = [10.0, 1e300]", "displaces"});
+  CHECK(far.stderr_text.find("[contact] load = 1e+300 N displaces") != std::string::npos);
+  CHECK(far.stderr_text.find("ContactSolver") == std::string::npos);
 }

@@ -8,6 +8,7 @@
 #include "bindings.hpp"
 #include "bodies.hpp"
 #include "core/error.hpp"
+#include "core/memory.hpp"
 #include "load_names.hpp"
 #include "loads/hertz_pressure.hpp"
 #include "loads/load_limits.hpp"
@@ -92,6 +93,7 @@ void bind_pressures(py::module_& m) {
       [](const Grid& grid, double p0, double a, std::string_view sampling) {
         const Sampling s = parse_sampling(sampling);
         require_disk_load(grid, p0, a, s, {"hertz_pressure: p0", "hertz_pressure: a", "grid"});
+        require_grid_memory(grid.nx(), grid.ny(), 1.0, "hertz_pressure");
         return array_from_field(hertz_pressure(grid, p0, a, s));
       },
       "grid"_a, "p0"_a, "a"_a, "sampling"_a = "centre",
@@ -103,6 +105,7 @@ void bind_pressures(py::module_& m) {
         const Sampling s = parse_sampling(sampling);
         require_disk_load(grid, p, a, s,
                           {"uniform_disk_pressure: p", "uniform_disk_pressure: a", "grid"});
+        require_grid_memory(grid.nx(), grid.ny(), 1.0, "uniform_disk_pressure");
         return array_from_field(uniform_disk_pressure(grid, p, a, s));
       },
       "grid"_a, "p"_a, "a"_a, "sampling"_a = "centre",

@@ -194,7 +194,8 @@ std::unique_ptr<Operator> make_operator_py(const Grid& grid, py::handle body_obj
   scene::refuse_untrustworthy(built.report, "make_operator: method");
   py::dict report = report_dict(grid, built, k, choice);
   warn_each(report["warnings"]);
-  return std::make_unique<Operator>(std::move(built), std::move(report), options.threads);
+  return std::make_unique<Operator>(std::move(built), std::move(report), options.threads,
+                                    body.response());
 }
 
 }  // namespace

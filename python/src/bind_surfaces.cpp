@@ -10,6 +10,7 @@
 #include "bindings.hpp"
 #include "contact/indenter.hpp"
 #include "core/error.hpp"
+#include "core/memory.hpp"
 #include "surfaces/self_affine_surface.hpp"
 #include "validation/hertz_contact.hpp"
 
@@ -42,6 +43,8 @@ py::array_t<double> self_affine(const Grid& grid, double hurst, std::optional<do
   spec.short_cutoff = short_cutoff;
   spec.long_cutoff = long_cutoff;
   spec.seed = seed_of(seed);
+  // The memory first: the spectrum's sums of the check take minutes on the largest grids.
+  require_self_affine_memory(grid, "self_affine_surface");
   check_self_affine_spec(grid, spec, "self_affine_surface: rms_height",
                          "self_affine_surface: rms_slope");
   return array_from_field(self_affine_surface(grid, spec));
@@ -49,7 +52,8 @@ py::array_t<double> self_affine(const Grid& grid, double hurst, std::optional<do
 
 // h of an indenter on `grid`, checked as a scene's [contact] indenter is.
 template <class Shape>
-py::array_t<double> height_of(const Grid& grid, const Shape& shape) {
+py::array_t<double> height_of(const Grid& grid, const Shape& shape, const char* who) {
+  require_grid_memory(grid.nx(), grid.ny(), 1.0, who);
   check_indenter(grid, shape);
   return array_from_field(height(grid, shape));
 }
@@ -78,18 +82,22 @@ void bind_surfaces(py::module_& m) {
         "same surface as `coatfft surface`, bit for bit (docs/surfaces.md).");
   m.def(
       "sphere_height",
-      [](const Grid& grid, double radius) { return height_of(grid, Sphere{radius}); }, "grid"_a,
-      "radius"_a,
+      [](const Grid& grid, double radius) {
+        return height_of(grid, Sphere{radius}, "sphere_height");
+      },
+      "grid"_a, "radius"_a,
       "Initial separation h = R - sqrt(R^2 - r^2) [m], shape (ny, nx), of a rigid sphere of "
       "radius R [m] centred on the origin (its lowest point at h = 0).");
   m.def(
       "paraboloid_height",
-      [](const Grid& grid, double radius) { return height_of(grid, Paraboloid{radius}); }, "grid"_a,
-      "radius"_a, "h = r^2 / (2 R) [m], shape (ny, nx): Hertz's small-slope sphere.");
+      [](const Grid& grid, double radius) {
+        return height_of(grid, Paraboloid{radius}, "paraboloid_height");
+      },
+      "grid"_a, "radius"_a, "h = r^2 / (2 R) [m], shape (ny, nx): Hertz's small-slope sphere.");
   m.def(
       "cylinder_height",
       [](const Grid& grid, double radius, double flat_length, double end_radius) {
-        return height_of(grid, Cylinder{radius, flat_length, end_radius});
+        return height_of(grid, Cylinder{radius, flat_length, end_radius}, "cylinder_height");
       },
       "grid"_a, "radius"_a, py::kw_only(), "flat_length"_a, "end_radius"_a,
       "h = y^2 / (2 R) + max(|x| - L/2, 0)^2 / (2 Re) [m], shape (ny, nx): a roller along x "
@@ -98,7 +106,7 @@ void bind_surfaces(py::module_& m) {
   m.def(
       "flat_punch_height",
       [](const Grid& grid, double radius, double edge_radius) {
-        return height_of(grid, FlatPunch{radius, edge_radius});
+        return height_of(grid, FlatPunch{radius, edge_radius}, "flat_punch_height");
       },
       "grid"_a, "radius"_a, py::kw_only(), "edge_radius"_a,
       "h = 0 for r <= a, (r - a)^2 / (2 rho) beyond [m], shape (ny, nx): a flat punch of radius "

@@ -6,18 +6,24 @@
 // (none with `out`), since fresh grid-sized memory costs its page faults on every call.
 #include <pybind11/pybind11.h>
 
+#include <memory>
 #include <mutex>
 #include <string_view>
 
 #include "arrays.hpp"
 #include "convolution/operators/make_operator.hpp"
+#include "frf/frf.hpp"
 
 namespace coatfft::python {
 
 class Operator {
  public:
-  Operator(BuiltOperator built, pybind11::dict report, int threads)
-      : built_(std::move(built)), report_(std::move(report)), threads_(threads) {}
+  Operator(BuiltOperator built, pybind11::dict report, int threads,
+           std::shared_ptr<const Frf> body_response)
+      : built_(std::move(built)),
+        report_(std::move(report)),
+        threads_(threads),
+        body_response_(std::move(body_response)) {}
 
   const Grid& grid() const { return built_.op->grid(); }
   const pybind11::dict& report() const { return report_; }
@@ -28,6 +34,9 @@ class Operator {
   /// Whether the displacement's level is known: not for an FRF pipeline built with
   /// g0 = "omitted", whose displacements carry an unknown constant offset.
   bool has_g0() const { return !built_.report.g0 || built_.report.g0->method != G0Method::omitted; }
+  /// The FRF of the body the operator was made for, as the caller gave it (before any reduction
+  /// of the automatic choice): what a solve that needs the body again compares its body with.
+  const Frf& body_response() const { return *body_response_; }
   /// u [m] of the pressure p [Pa], both (ny, nx); into `out` when it is an array (output_array).
   pybind11::array_t<double> apply(const DoubleArray& pressure, const pybind11::object& out);
 
@@ -39,6 +48,7 @@ class Operator {
   BuiltOperator built_;
   pybind11::dict report_;
   int threads_;
+  std::shared_ptr<const Frf> body_response_;
   std::mutex mutex_;
   Field pressure_;      // apply()'s input, copied from numpy
   Field displacement_;  // and its output, before it is copied out

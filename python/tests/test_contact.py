@@ -283,5 +283,23 @@ def test_sliding_errors(steel, tin, dcfft):
     with pytest.raises(ValueError, match="friction"):
         coatfft.solve_sliding(dcfft, h, steel, friction=-1.0, load=1.0)
     sliding = coatfft.LayerStack(steel, [coatfft.Coating(tin, 1e-4, "frictionless")])
+    op = coatfft.make_operator(grid, sliding, method="frf-split")
     with pytest.raises(ValueError, match="frictionless"):
-        coatfft.solve_sliding(dcfft, h, sliding, friction=0.3, load=1.0)
+        coatfft.solve_sliding(op, h, sliding, friction=0.3, load=1.0)
+
+
+def test_sliding_refuses_another_body(steel, tin):
+    # The operator's body and the tractions' must be one body: a titanium-nitride coating's
+    # operator with a bare steel body (or another thickness) gave a result of no body at all.
+    grid = coatfft.Grid(32, 32, 0.25e-3, 0.25e-3)
+    coated = coatfft.LayerStack(steel, [coatfft.Coating(tin, 1e-5)])
+    op = coatfft.make_operator(grid, coated, method="frf-split", boundary="periodic")
+    h = np.zeros(grid.shape)
+    for other in (steel, coatfft.LayerStack(steel, [coatfft.Coating(tin, 1.01e-5)]),
+                  coatfft.LayerStack(tin, [coatfft.Coating(steel, 1e-5)])):
+        with pytest.raises(ValueError, match="not the body the operator was made for"):
+            coatfft.solve_sliding(op, h, other, friction=0.3, load=1.0)
+    # The same body, built anew, is accepted.
+    same = coatfft.LayerStack(steel, [coatfft.Coating(tin, 1e-5)])
+    h = ((np.arange(32)[None, :] - 16.0) ** 2 + (np.arange(32)[:, None] - 16.0) ** 2) * 1e-9
+    assert coatfft.solve_sliding(op, h, same, friction=0.3, load=1.0).converged

@@ -753,3 +753,48 @@ def test_tabulated_frf_limits_that_contradict_the_table():
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         coatfft.TabulatedFrf(k, h, c0=1.005, c_inf=1)
+
+
+# --- grids too large for the machine --------------------------------------------------------
+
+GRID_LIMITS = r"""
+import resource, sys, time
+import coatfft
+# 2 GiB of address space: the checks must refuse before allocating, not run into the limit.
+resource.setrlimit(resource.RLIMIT_AS, (2 << 30, 2 << 30))
+big = coatfft.Grid(65536, 65536, 1.0, 1.0)
+wide = coatfft.Grid(32768, 2, 1.0, 1e-4)
+calls = [
+    ("self_affine_surface", lambda: coatfft.self_affine_surface(big, hurst=0.8, rms_height=1e-6)),
+    ("sphere_height", lambda: coatfft.sphere_height(big, 0.5)),
+    ("paraboloid_height", lambda: coatfft.paraboloid_height(big, 0.5)),
+    ("hertz_pressure", lambda: coatfft.hertz_pressure(big, 1e9, 0.1)),
+    ("uniform_disk_pressure", lambda: coatfft.uniform_disk_pressure(big, 1e9, 0.1)),
+    # Small enough for the memory, too long a side for the program's limit.
+    ("at most 16384 cells a side",
+     lambda: coatfft.self_affine_surface(wide, hurst=0.8, rms_height=1e-6)),
+]
+for name, call in calls:
+    start = time.monotonic()
+    try:
+        call()
+        print(name, "returned")
+    except ValueError as e:
+        assert name in str(e), (name, str(e))
+        print(name, "refused", round(time.monotonic() - start, 3))
+"""
+
+
+def test_grids_too_large_are_refused_before_allocating():
+    # Under a 2 GiB address-space limit (which the memory check counts, as ulimit -v), every
+    # function that returns an array on a grid refuses a 65536^2 grid (34 GB a field) with a
+    # ValueError naming itself and at once: no MemoryError, no minutes of work.
+    done = subprocess.run([sys.executable, "-c", GRID_LIMITS], capture_output=True, text=True,
+                          timeout=60)
+    assert done.returncode == 0, done.stderr
+    lines = done.stdout.splitlines()
+    assert len(lines) == 6, done.stdout
+    for line in lines:
+        name, verdict, seconds = line.rsplit(" ", 2)
+        assert verdict == "refused", line
+        assert float(seconds) < 1.0, line
