@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """`coatfft run` under mpirun when ranks disagree (docs/scale.md): each case ends within seconds.
 
-A rank that cannot read its scene (an MPMD launch giving each rank its own), ranks reading scenes
-of different grids, and a bad row of a height map read by rank 1 are refused on one line naming
+A rank that cannot read its scene (an MPMD launch giving each rank its own), a rank running
+another command than rank 0's, ranks reading scenes of different grids, and a bad row of a height map read by rank 1 are refused on one line naming
 the rank and what it read, exit status 2 and no output, where the refusing rank used to leave the
 others waiting for ever. More ranks than grid rows (4 rows, 5 ranks: one rank holds none) give
 the serial contact. A launch that hangs fails the test after 20 s. Usage: mpi_cli_refusals.py
@@ -31,12 +31,15 @@ def fail(message):
     sys.exit(1)
 
 
+def run(ranks, scene_file, out):
+    return ranks, ["run", str(scene_file), "-o", str(out), "--quiet"]
+
+
 def launch(*commands):
-    """mpirun of one rank per (scene, outdir), each its own program (MPMD), or of `ranks` ranks."""
+    """mpirun of `ranks` ranks per (ranks, arguments), each its own program (MPMD)."""
     argv = [MPIEXEC, "--oversubscribe"]
-    for ranks, scene_file, out in commands:
-        argv += [":"] * (len(argv) > 2) + ["-np", str(ranks), COATFFT, "run", str(scene_file),
-                                           "-o", str(out), "--quiet"]
+    for ranks, args in commands:
+        argv += [":"] * (len(argv) > 2) + ["-np", str(ranks), COATFFT, *args]
     try:
         return subprocess.run(argv, env=ENV, capture_output=True, text=True, timeout=20)
     except subprocess.TimeoutExpired:
@@ -57,11 +60,14 @@ def main():
         out = tmp / "out"
         sphere = 'indenter = "paraboloid"\nradius = 2e-3\nload = 0.05\n'
         (tmp / "a.toml").write_text(scene(16, sphere))
-        refused(["rank 1: ", "missing.toml"], out, (1, tmp / "a.toml", out),
-                (1, tmp / "missing.toml", out))
+        refused(["rank 1: ", "missing.toml"], out, run(1, tmp / "a.toml", out),
+                run(1, tmp / "missing.toml", out))
+        refused(["rank 1: `surface`, where rank 0 runs `run`"], out, run(1, tmp / "a.toml", out),
+                (1, ["surface", "-o", str(out / "z.npy"), "--nx", "16", "--ny", "16", "--lx",
+                     "1e-3", "--ly", "1e-3", "--hurst", "0.8", "--rms-height", "1e-6"]))
         (tmp / "b.toml").write_text(scene(8, sphere))
         refused(["rank 1's scene", "b.toml", "16 x 8 cells", "rank 0's", "a.toml", "16 x 16 cells"],
-                out, (1, tmp / "a.toml", out), (1, tmp / "b.toml", out))
+                out, run(1, tmp / "a.toml", out), run(1, tmp / "b.toml", out))
         # Each rank's scene names its own height map (the same scene text in two folders): the
         # bad row is rank 1's, in its file.
         heights = np.zeros((16, 16))
@@ -74,7 +80,7 @@ def main():
             (tmp / folder / "s.toml").write_text(
                 scene(16, 'indenter = "height_map"\npath = "h.npy"\nload = 0.05\n'))
         refused(["rank 1: ", str(tmp / "r1" / "h.npy"), "row 12, column 3"], out,
-                (1, tmp / "r0" / "s.toml", out), (1, tmp / "r1" / "s.toml", out))
+                run(1, tmp / "r0" / "s.toml", out), run(1, tmp / "r1" / "s.toml", out))
         # Four rows on five ranks against the serial run: a wavy surface in partial contact.
         y, x = np.mgrid[0:4, 0:16]
         np.save(tmp / "wavy.npy", 1e-7 * (2 - np.cos(2 * np.pi * x / 16) - np.cos(np.pi * y / 2)))
@@ -82,7 +88,7 @@ def main():
             scene(4, 'indenter = "height_map"\npath = "wavy.npy"\nload = 0.5\n'))
         serial = subprocess.run([COATFFT, "run", str(tmp / "rows.toml"), "-o", str(tmp / "serial"),
                                  "--quiet"], capture_output=True, text=True, timeout=20)
-        r = launch((5, tmp / "rows.toml", tmp / "np5"))
+        r = launch(run(5, tmp / "rows.toml", tmp / "np5"))
         if serial.returncode or r.returncode:
             fail(f"4 rows on 5 ranks: exit {r.returncode}: {r.stderr} (serial {serial.stderr})")
         s, d = (json.loads((tmp / o / "summary.json").read_text()) for o in ("serial", "np5"))
