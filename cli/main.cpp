@@ -220,21 +220,15 @@ int run_chosen(const std::vector<Command>& commands) {
 
 #ifdef COATFFT_WITH_MPI
 // Several ranks: MPI started on each, then every rank's own refusal of its command line (a bad
-// flag, a command that does not run distributed, another command than rank 0's: an MPMD launch
-// gives each rank its own) agreed before the command's first collective step, and named by rank
-// 0 on one line.
+// flag, another command than rank 0's: an MPMD launch gives each rank its own) agreed before the
+// command's first collective step, and named by rank 0 on one line.
 int run_on_ranks(const std::vector<Command>& commands, const std::string& refusal, int argc,
                  char** argv) {
   const coatfft::MpiSession mpi(argc, argv);
   const coatfft::Communicator world = mpi.world();
   const std::string chosen = chosen_name(commands);
   try {
-    coatfft::agreed_refusal(world, [&] {
-      COATFFT_REQUIRE(refusal.empty(), refusal);
-      COATFFT_REQUIRE(chosen == "surface" || chosen == "run", "started by an MPI launcher with ",
-                      world.size(), " ranks, but `", chosen,
-                      "` does not run distributed yet (docs/scale.md): run it without mpirun");
-    });
+    coatfft::agreed_refusal(world, [&] { COATFFT_REQUIRE(refusal.empty(), refusal); });
     std::string first = chosen;
     world.broadcast(first);
     coatfft::agreed_refusal(world, [&] {
@@ -270,16 +264,22 @@ int main(int argc, char** argv) {
       refusal = coatfft::detail::shorten(e.what(), 200) + " (see coatfft --help)";
     }
   }
+  const std::string chosen = chosen_name(commands);
 #ifdef COATFFT_WITH_MPI
-  if (launch.size > 1) return run_on_ranks(commands, refusal, argc, argv);
+  // MPI starts for the commands that run distributed, and for a command line that a rank refuses
+  // (rank 0 then names that rank's refusal).
+  if (launch.size > 1 && (!refusal.empty() || chosen == "surface" || chosen == "run"))
+    return run_on_ranks(commands, refusal, argc, argv);
+  const char* why = "does not run distributed yet";
 #else
-  // Several ranks: a command would run whole on each, into the same output (docs/scale.md).
-  if (launch.size > 1 && refusal.empty())
-    refusal = coatfft::detail::concat("started by an MPI launcher with ", launch.size,
-                                      " ranks, but `", chosen_name(commands),
-                                      "` runs distributed only in a build with COATFFT_MPI "
-                                      "(docs/scale.md): run it without mpirun");
+  const char* why = "runs distributed only in a build with COATFFT_MPI";
 #endif
+  // Several ranks: any other command would run whole on each, into the same output, so it is
+  // refused before it reads anything (docs/scale.md).
+  if (launch.size > 1 && refusal.empty())
+    refusal =
+        coatfft::detail::concat("started by an MPI launcher with ", launch.size, " ranks, but `",
+                                chosen, "` ", why, " (docs/scale.md): run it without mpirun");
   if (!refusal.empty()) {
     std::cerr << "coatfft: error: " << refusal << '\n';
     return 2;
