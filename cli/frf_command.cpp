@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cli/staged_output.hpp"
+#include "core/detail/close_written.hpp"
 #include "core/error.hpp"
 #include "frf/frf.hpp"
 #include "frf/frf_table.hpp"
@@ -49,7 +50,7 @@ void frf_command(const FrfOptions& options) {
     std::ofstream out(file->path());
     COATFFT_REQUIRE(out.good(), "cannot write ", file->path().string());
     out << table.str();
-    COATFFT_REQUIRE(out.good(), "failed writing ", file->path().string());
+    detail::close_written(out, file->path());
   }
   file->commit();
 }

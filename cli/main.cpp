@@ -19,6 +19,7 @@
 #include "cli/validate_frf_command.hpp"
 #include "core/detail/mpi_launch.hpp"
 #ifdef COATFFT_WITH_MPI
+#include "distributed/agreed_refusal.hpp"
 #include "distributed/mpi_session.hpp"
 #endif
 #include "core/detail/shorten.hpp"
@@ -29,16 +30,14 @@
 namespace {
 
 // CLI11 reads a lone unknown word as an extra argument and then asks for a subcommand; name it.
-bool refuse_unknown_command(int argc, char** argv) {
-  if (argc < 2 || argv[1][0] == '-') return false;
+std::string unknown_command(int argc, char** argv) {
+  if (argc < 2 || argv[1][0] == '-') return {};
   const std::string_view word = argv[1];
   if (word == "run" || word == "frf" || word == "check" || word == "validate-frf" ||
       word == "surface" || word == "topography")
-    return false;
-  std::cerr
-      << "coatfft: error: unknown command \"" << coatfft::detail::shorten(word)
-      << "\" (commands: run, check, validate-frf, frf, surface, topography; see coatfft --help)\n";
-  return true;
+    return {};
+  return "unknown command \"" + coatfft::detail::shorten(word) +
+         "\" (commands: run, check, validate-frf, frf, surface, topography; see coatfft --help)";
 }
 
 // A subcommand, and what running it returns: the exit status.
@@ -219,6 +218,31 @@ int run_chosen(const std::vector<Command>& commands) {
   return 0;
 }
 
+#ifdef COATFFT_WITH_MPI
+// Several ranks: MPI started on each, then every rank's own refusal of its command line (a bad
+// flag, another command than rank 0's: an MPMD launch gives each rank its own) agreed before the
+// command's first collective step, and named by rank 0 on one line.
+int run_on_ranks(const std::vector<Command>& commands, const std::string& refusal, int argc,
+                 char** argv) {
+  const coatfft::MpiSession mpi(argc, argv);
+  const coatfft::Communicator world = mpi.world();
+  const std::string chosen = chosen_name(commands);
+  try {
+    coatfft::agreed_refusal(world, [&] { COATFFT_REQUIRE(refusal.empty(), refusal); });
+    std::string first = chosen;
+    world.broadcast(first);
+    coatfft::agreed_refusal(world, [&] {
+      COATFFT_REQUIRE(chosen == first, "`", chosen, "`, where rank 0 runs `", first,
+                      "`: every rank of an MPI launch runs the same command");
+    });
+  } catch (const coatfft::Error& e) {
+    std::cerr << "coatfft: error: " << e.what() << '\n';
+    return 2;
+  }
+  return run_chosen(commands);
+}
+#endif
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -228,33 +252,37 @@ int main(int argc, char** argv) {
   const std::vector<Command> commands{add_run(app), add_check(app),   add_validate_frf(app),
                                       add_frf(app), add_surface(app), add_topography(app)};
   // Under an MPI launcher rank 0 speaks for the run: the other ranks' messages (the same
-  // refusals: every check is made alike on every rank) are dropped.
+  // refusals, or agreed ones that rank 0 prints naming the rank) are dropped.
   const auto launch = coatfft::detail::mpi_launch();
   if (launch.rank != 0) std::cerr.setstate(std::ios::failbit);
-  if (refuse_unknown_command(argc, argv)) return 2;
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
-    // One line, like every other refusal.
-    std::cerr << "coatfft: error: " << coatfft::detail::shorten(e.what(), 200)
-              << " (see coatfft --help)\n";
-    return 2;
+  std::string refusal = unknown_command(argc, argv);  // the command line's, one line
+  if (refusal.empty()) {
+    try {
+      app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+      if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+      refusal = coatfft::detail::shorten(e.what(), 200) + " (see coatfft --help)";
+    }
   }
-  if (launch.size <= 1) return run_chosen(commands);
-  // Several ranks: a command that does not run distributed would run whole on each, into the
-  // same output, so it is refused before it reads anything (docs/scale.md).
   const std::string chosen = chosen_name(commands);
 #ifdef COATFFT_WITH_MPI
-  if (chosen == "surface" || chosen == "run") {
-    const coatfft::MpiSession mpi(argc, argv);
-    return run_chosen(commands);
-  }
+  // MPI starts for the commands that run distributed, and for a command line that a rank refuses
+  // (rank 0 then names that rank's refusal).
+  if (launch.size > 1 && (!refusal.empty() || chosen == "surface" || chosen == "run"))
+    return run_on_ranks(commands, refusal, argc, argv);
   const char* why = "does not run distributed yet";
 #else
   const char* why = "runs distributed only in a build with COATFFT_MPI";
 #endif
-  std::cerr << "coatfft: error: started by an MPI launcher with " << launch.size << " ranks, but `"
-            << chosen << "` " << why << " (docs/scale.md): run it without mpirun\n";
-  return 2;
+  // Several ranks: any other command would run whole on each, into the same output, so it is
+  // refused before it reads anything (docs/scale.md).
+  if (launch.size > 1 && refusal.empty())
+    refusal =
+        coatfft::detail::concat("started by an MPI launcher with ", launch.size, " ranks, but `",
+                                chosen, "` ", why, " (docs/scale.md): run it without mpirun");
+  if (!refusal.empty()) {
+    std::cerr << "coatfft: error: " << refusal << '\n';
+    return 2;
+  }
+  return run_chosen(commands);
 }

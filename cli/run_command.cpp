@@ -19,6 +19,7 @@
 #include "cli/signal_cleanup.hpp"
 #include "cli/staged_output.hpp"
 #include "cli/wisdom_file.hpp"
+#include "core/detail/close_written.hpp"
 #include "core/error.hpp"
 #include "scene/npy.hpp"
 #include "scene/operator_from_scene.hpp"
@@ -35,7 +36,7 @@ void write_displacement_csv(const std::filesystem::path& path, const Grid& grid,
   std::ofstream out(path);
   COATFFT_REQUIRE(out.good(), "cannot open ", path.string(), " for writing");
   write_displacement_rows(out, grid, 0, p, uz, true);
-  COATFFT_REQUIRE(out.good(), "failed writing ", path.string());
+  detail::close_written(out, path);
 }
 
 // stress.npy (n_depths, 6, ny, nx), von_mises.npy (n_depths, ny, nx), stress_section.npy
@@ -99,7 +100,7 @@ void write_outputs(StagedOutput& out, const scene::OutputSpec& spec, const scene
   if (run.sweep) {
     std::ofstream csv(out.path("sweep.csv"));
     csv << scene::sweep_csv(run.summary["sweep"]);
-    COATFFT_REQUIRE(csv.good(), "failed writing sweep.csv");
+    detail::close_written(csv, "sweep.csv");
   }
   if (spec.displacement_csv)
     write_displacement_csv(out.path("displacement.csv"), run.grid, run.pressure, run.uz);

@@ -5,6 +5,7 @@
 #include <iomanip>
 #include <iostream>
 
+#include "core/detail/close_written.hpp"
 #include "core/error.hpp"
 #include "scene/scene_netcdf.hpp"
 
@@ -50,7 +51,7 @@ std::string joined(const std::vector<std::string>& names) {
 void write_summary(const std::filesystem::path& path, const nlohmann::json& summary) {
   std::ofstream json(path);
   json << std::setw(2) << summary << '\n';
-  COATFFT_REQUIRE(json.good(), "failed writing summary.json");
+  detail::close_written(json, "summary.json");
 }
 
 void print_warnings(const nlohmann::json& summary) {

@@ -1,10 +1,14 @@
 #include "cli/staged_output.hpp"
 
+#include <signal.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <fstream>
+#include <string>
 
+#include "core/detail/close_written.hpp"
 #include "core/error.hpp"
 #include "scene/input_file.hpp"
 
@@ -59,6 +63,31 @@ std::vector<std::string> read_manifest(const fs::path& file) {
   return names;
 }
 
+// Whether `name` is `prefix` followed by the number of a process that no longer exists: a staging
+// folder left by a coatfft that was killed (SIGKILL, or an MPI job's rank 0 ended by its launcher).
+bool left_by_dead_process(const std::string& name, const std::string& prefix) {
+  if (!name.starts_with(prefix)) return false;
+  const std::string number = name.substr(prefix.size());
+  if (number.empty() || number.size() > 9 ||
+      !std::all_of(number.begin(), number.end(), [](char c) { return c >= '0' && c <= '9'; }))
+    return false;
+  const auto pid = static_cast<pid_t>(std::stol(number));
+  return pid > 0 && ::kill(pid, 0) == -1 && errno == ESRCH;
+}
+
+// Removes the folders in `folder` named `prefix`PID whose process is gone (never a link, never
+// another name).
+void remove_dead_staging(const fs::path& folder, const std::string& prefix) {
+  std::error_code ec;
+  for (auto it = fs::directory_iterator(folder, ec); !ec && it != fs::directory_iterator();
+       it.increment(ec)) {
+    const fs::path& found = it->path();
+    if (left_by_dead_process(found.filename().string(), prefix) &&
+        fs::is_directory(fs::symlink_status(found, ec)))
+      fs::remove_all(found, ec);
+  }
+}
+
 }  // namespace
 
 void check_output_target(const fs::path& target, std::string_view what,
@@ -109,6 +138,10 @@ void StagedOutput::stage() {
   // is a mount point, and needing no write access to its parent; otherwise it sits beside it and
   // becomes OUTDIR by one rename.
   std::error_code ec;
+  // Staging folders of killed runs, inside OUTDIR or beside it, go first.
+  if (fs::is_directory(outdir_, ec)) remove_dead_staging(outdir_, ".coatfft.partial-");
+  remove_dead_staging(outdir_.parent_path(),
+                      detail::concat(".", outdir_.filename().string(), ".partial-"));
   staging_ = fs::is_directory(outdir_, ec)
                  ? outdir_ / detail::concat(".coatfft.partial-", ::getpid())
                  : hidden_beside(outdir_);
@@ -143,7 +176,7 @@ void StagedOutput::commit() {
     std::ofstream manifest(path(manifest_name));
     for (const std::string& name : names_)
       if (name != manifest_name && fs::exists(staging_ / name)) manifest << name << '\n';
-    COATFFT_REQUIRE(manifest.good(), "cannot write ", quoted(staging_ / manifest_name));
+    detail::close_written(manifest, staging_ / manifest_name, "the list of outputs");
   }
   std::error_code ec;
   if (!fs::exists(fs::status(outdir_, ec))) {
@@ -228,7 +261,7 @@ void write_file_atomically(const fs::path& target, std::string_view what, const 
     std::ofstream out(file.path(), std::ios::binary);
     COATFFT_REQUIRE(out.good(), "cannot write ", what, " ", quoted(file.path()));
     out << text;
-    COATFFT_REQUIRE(out.good(), "failed writing ", what, " ", quoted(file.path()));
+    detail::close_written(out, file.path(), what);
   }
   file.commit();
 }

@@ -1,17 +1,23 @@
 #include "scene/distributed_run.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <memory>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "contact/indenter.hpp"
 #include "convolution/operators/make_operator.hpp"
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
 #include "core/memory.hpp"
+#include "distributed/agreed_refusal.hpp"
 #include "distributed/distributed_contact.hpp"
 #include "distributed/distributed_dcfft_operator.hpp"
 #include "distributed/distributed_periodic_operator.hpp"
@@ -19,6 +25,7 @@
 #include "loads/discretization_error.hpp"
 #include "scene/a_posteriori.hpp"
 #include "scene/grid_file.hpp"
+#include "scene/input_file.hpp"
 #include "scene/load_error_report.hpp"
 #include "scene/npy_slab.hpp"
 #include "scene/operator_from_scene.hpp"
@@ -40,9 +47,9 @@ constexpr double slab_overhead = 1.2;
 
 // The memory a rank needs: the serial estimate's arrays shared over the ranks, with the slabs'
 // overhead, and the program itself.
-MemoryNeed rank_memory(const Communicator& comm, const Scene& scene) {
+MemoryNeed rank_memory(int ranks, const Scene& scene) {
   MemoryNeed need = estimate_memory(scene);
-  need.bytes = (need.bytes - program_bytes) * slab_overhead / comm.size() + program_bytes;
+  need.bytes = (need.bytes - program_bytes) * slab_overhead / ranks + program_bytes;
   return need;
 }
 
@@ -137,6 +144,57 @@ std::unique_ptr<DistributedOperator> distributed_operator(const Communicator& co
   return op;
 }
 
+// What every rank's run must share: its scene file's text (by its FNV-1a digest, Fowler, Noll and
+// Vo), the grid that text gives (named when it differs) and --repeat (the count of collective
+// applications).
+struct SceneFingerprint {
+  std::uint64_t text = 0;
+  std::int64_t nx = 0, ny = 0;
+  double lx = 0.0, ly = 0.0;
+  std::int64_t repeat = 0;
+  bool operator==(const SceneFingerprint&) const = default;
+};
+
+std::uint64_t text_digest(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::uint64_t digest = 14695981039346656037ULL;
+  for (auto c = std::istreambuf_iterator<char>(in); c != std::istreambuf_iterator<char>(); ++c) {
+    digest ^= static_cast<unsigned char>(*c);
+    digest *= 1099511628211ULL;
+  }
+  return digest;
+}
+
+// The first rank whose fingerprint is not rank 0's, named with both scene files. Collective.
+void require_same_scene(const Communicator& comm, const std::filesystem::path& scene_file,
+                        const Scene& scene, int repeat) {
+  const Grid& g = scene.grid;
+  const SceneFingerprint mine{text_digest(scene_file), g.nx(), g.ny(), g.lx(), g.ly(), repeat};
+  std::vector<SceneFingerprint> all(static_cast<std::size_t>(comm.size()));
+  comm.all_gather(&mine, sizeof mine, all.data());
+  const auto other =
+      std::find_if(all.begin(), all.end(), [&](const auto& f) { return f != all[0]; });
+  if (other == all.end()) return;
+  const auto rank = static_cast<int>(other - all.begin());
+  std::string first = scene_file.string(), differing = scene_file.string();
+  comm.broadcast(first, 0);
+  comm.broadcast(differing, rank);
+  const auto grid_of = [](const SceneFingerprint& f) {
+    return detail::concat(f.nx, " x ", f.ny, " cells of ", f.lx, " x ", f.ly, " m");
+  };
+  if (other->repeat != all[0].repeat)
+    throw InvalidArgument(detail::concat("rank ", rank, " runs with --repeat ", other->repeat,
+                                         ", rank 0 with --repeat ", all[0].repeat,
+                                         ": every rank of a run takes the same options"));
+  const std::string what = other->nx != all[0].nx || other->ny != all[0].ny ||
+                                   other->lx != all[0].lx || other->ly != all[0].ly
+                               ? detail::concat(" has a grid of ", grid_of(*other), ", rank 0's ",
+                                                quoted_excerpt(first), " one of ", grid_of(all[0]))
+                               : detail::concat(" differs from rank 0's ", quoted_excerpt(first));
+  throw InvalidArgument(detail::concat("rank ", rank, "'s scene ", quoted_excerpt(differing), what,
+                                       ": every rank of a run reads the same scene"));
+}
+
 }  // namespace
 
 void check_distributable(const Scene& scene) {
@@ -148,20 +206,29 @@ void check_distributable(const Scene& scene) {
 PreparedScene prepare_distributed_scene(const Communicator& comm,
                                         const std::filesystem::path& scene_file,
                                         const SceneRunOptions& options) {
-  check_repeat(options.repeat);
-  Scene scene = read_scene(scene_file, SceneReading{.height_map_values = false});
-  check_distributable(scene);
-  // The serial run's refusal, before the set-up here (its operator is built otherwise).
-  if (!scene.periodic && !scene.frf) check_love_body(*scene.body, scene.method.options.method);
-  if (scene.pressure && scene.pressure->kind == PressureKind::file)
-    check_grid_npy(scene.pressure->file, scene.grid, "[pressure] path", "a pressure");
+  // Each rank reads its own scene (an MPMD launch may give each another one): its refusal, the
+  // other ranks' scenes and its memory are agreed before the ranks' first collective step.
+  std::optional<Scene> scene;
+  agreed_refusal(comm, [&] {
+    check_repeat(options.repeat);
+    scene = read_scene(scene_file, SceneReading{.height_map_values = false});
+    check_distributable(*scene);
+    // The serial run's refusal, before the set-up here (its operator is built otherwise).
+    if (!scene->periodic && !scene->frf)
+      check_love_body(*scene->body, scene->method.options.method);
+    if (scene->pressure && scene->pressure->kind == PressureKind::file)
+      check_grid_npy(scene->pressure->file, scene->grid, "[pressure] path", "a pressure");
+  });
+  require_same_scene(comm, scene_file, *scene, options.repeat);
   const int sharing = comm.ranks_sharing_memory();
-  std::optional<double> limit = options.max_memory;
-  if (!limit)
-    if (const std::optional<double> available = available_memory()) limit = *available / sharing;
-  require_memory(rank_memory(comm, scene), limit, "each rank", "--max-memory (per rank)",
-                 "use fewer cells or more ranks");
-  return {std::move(scene), std::nullopt};
+  agreed_refusal(comm, [&] {
+    std::optional<double> limit = options.max_memory;
+    if (!limit)
+      if (const std::optional<double> available = available_memory()) limit = *available / sharing;
+    require_memory(rank_memory(comm.size(), *scene), limit, "each rank", "--max-memory (per rank)",
+                   "use fewer cells or more ranks");
+  });
+  return {std::move(*scene), std::nullopt};
 }
 
 namespace {
@@ -170,7 +237,7 @@ namespace {
 void add_rank_summary(nlohmann::json& summary, const Communicator& comm, const Scene& scene,
                       const DistributedOperator& op) {
   summary["ranks"] = comm.size();
-  summary["estimated_memory_bytes_per_rank"] = rank_memory(comm, scene).bytes;
+  summary["estimated_memory_bytes_per_rank"] = rank_memory(comm.size(), scene).bytes;
   summary["communication_seconds"] = comm.max(op.communication_seconds());
 }
 

@@ -16,6 +16,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/detail/close_written.hpp"
 #include "core/error.hpp"
 #include "scene/input_file.hpp"
 
@@ -339,7 +340,7 @@ void write_npy_array(const std::filesystem::path& path, std::span<const std::siz
   out << npy_preamble(shape);
   out.write(reinterpret_cast<const char*>(data.data()),
             static_cast<std::streamsize>(data.size() * sizeof(double)));
-  COATFFT_REQUIRE(out.good(), "failed writing ", path.string());
+  detail::close_written(out, path);
 }
 
 void write_npy(const std::filesystem::path& path, const Field& field) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "distributed/agreed_refusal.hpp"
 #include "distributed/detail/mpi_handle.hpp"
 #include "scene/npy.hpp"
 
@@ -99,8 +100,12 @@ void require_finite(const Communicator& comm, const std::filesystem::path& path,
   const std::ptrdiff_t j = n / slab.nx, i = n % slab.nx;
   const bool mine = j >= slab.y0 && j < slab.y0 + slab.rows;
   const double value = comm.sum(mine ? rows(i, j - slab.y0) : 0.0);
-  throw InvalidArgument(detail::concat(path.string(), ": row ", j, ", column ", i, ": ", value_word,
-                                       " ", value, " is not finite"));
+  // The file is the one the holding rank read (each rank reads its own scene's).
+  const auto holder = static_cast<int>(comm.max(mine ? comm.rank() : -1.0));
+  std::string file = path.string();
+  comm.broadcast(file, holder);
+  throw InvalidArgument(detail::concat("rank ", holder, ": ", file, ": row ", j, ", column ", i,
+                                       ": ", value_word, " ", value, " is not finite"));
 }
 
 }  // namespace
@@ -108,7 +113,8 @@ void require_finite(const Communicator& comm, const std::filesystem::path& path,
 Field read_npy_slab(const Communicator& comm, const std::filesystem::path& path, const Slab& slab,
                     std::string_view value_word) {
   const auto ny = static_cast<std::size_t>(slab.ny), nx = static_cast<std::size_t>(slab.nx);
-  const NpyArray array = read_npy_row_header(path, ny, nx);
+  NpyArray array;
+  agreed_refusal(comm, [&] { array = read_npy_row_header(path, ny, nx); });
   MPI_File file;
   const int opened =
       MPI_File_open(detail::mpi_comm(comm), path.c_str(), MPI_MODE_RDONLY, MPI_INFO_NULL, &file);

@@ -2,15 +2,22 @@
 // output, leaves OUTDIR byte-identical when it fails or is interrupted, refuses inputs that are
 // not regular files and scenes that would exhaust memory, and names the key of every refusal.
 // Each case reproduces a way the program once lost data, hung or said too little.
+#include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <catch2/catch.hpp>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
+#include "cli/staged_output.hpp"
+#include "core/error.hpp"
 #include "tests/cli_process.hpp"
 #include "tests/test_support.hpp"
 
@@ -160,6 +167,90 @@ TEST_CASE("an interrupted run leaves no temporary files, and OUTDIR as it was", 
   const auto before = snapshot(dir);
   CHECK(terminate_while_writing(scene, out, out) == 143);
   CHECK(snapshot(dir) == before);
+}
+
+// A disk that fills up, without privileges: a file-size limit (RLIMIT_FSIZE) on the run, its
+// signal SIGXFSZ ignored so that writes past it fail with EFBIG as on a full disk. A file smaller
+// than the stream's buffer fails only when it is closed.
+TEST_CASE("a write that fails when its file is closed is an error, and OUTDIR stays as it was",
+          "[cli][safety]") {
+  const fs::path dir = fresh("safety_full");
+  const fs::path out = dir / "out";
+  REQUIRE(run_coatfft("run " + write_scene(kGoodScene, "safety_full/scene", "", "").string() +
+                      " -o " + out.string())
+              .status == 0);
+  // summary.json alone (979 bytes) under a limit of 512 bytes (sh's ulimit -f counts blocks).
+  const fs::path summary_only =
+      write_scene(std::string(kGoodScene) + "[output]\nfields = [\"summary\"]\n",
+                  "safety_full/summary", "", "");
+  const auto before = snapshot(dir);
+  check_refusal(run_coatfft("run " + summary_only.string() + " -o " + out.string(),
+                            "trap '' XFSZ; ulimit -f 1;"),
+                "failed writing summary.json: File too large");
+  CHECK(snapshot(dir) == before);
+}
+
+// The list of outputs written last, after the files (each of 4 bytes) it names (60 bytes), under
+// a limit of 32 bytes: its failure stops the commit. In a child process, which takes the limit.
+TEST_CASE("a list of outputs that cannot be written stops the commit", "[cli][safety]") {
+  const fs::path out = fresh("safety_manifest");
+  std::ofstream(out / "earlier.txt") << "the user's file";
+  std::ofstream(out / coatfft::cli::StagedOutput::manifest_name) << "earlier.txt\n";
+  const auto before = snapshot(out);
+  const pid_t child = ::fork();
+  REQUIRE(child >= 0);
+  if (child == 0) {
+    const rlimit limit{32, 32};
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+    std::signal(SIGXFSZ, SIG_IGN);
+    int status = 1;
+    try {
+      const std::vector<std::string> names{"output_with_a_long_name_one.txt",
+                                           "output_with_a_long_name_two.txt"};
+      coatfft::cli::StagedOutput staged(out, names, {});
+      for (const std::string& name : names) std::ofstream(staged.path(name)) << "data";
+      staged.commit();
+    } catch (const coatfft::InvalidArgument& e) {
+      const std::string message = e.what();
+      if (message.find("failed writing the list of outputs") != std::string::npos &&
+          message.find("File too large") != std::string::npos)
+        status = 0;
+    }
+    std::_Exit(status);
+  }
+  int status = -1;
+  REQUIRE(::waitpid(child, &status, 0) == child);
+  CHECK(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
+  CHECK(snapshot(out) == before);
+}
+
+// A run killed before it committed (SIGKILL, or an MPI job's rank 0 ended by its launcher) leaves
+// its staging folder, named with its process number: the next run removes those of processes
+// that no longer exist, and nothing else.
+TEST_CASE("staging folders of killed runs are removed by the next run, others kept",
+          "[cli][safety]") {
+  const fs::path dir = fresh("safety_dead");
+  const fs::path out = dir / "out";
+  const pid_t ended = ::fork();
+  REQUIRE(ended >= 0);
+  if (ended == 0) std::_Exit(0);
+  REQUIRE(::waitpid(ended, nullptr, 0) == ended);  // a process number no process has now
+  const std::string dead = std::to_string(ended);
+  for (const fs::path& folder :
+       {out / (".coatfft.partial-" + dead), dir / (".out.partial-" + dead),
+        out / ".coatfft.partial-1", out / (".coatfft.partial-" + dead + "x"),
+        out / (".other.partial-" + dead)})
+    fs::create_directories(folder);
+  std::ofstream(out / (".coatfft.partial-" + dead) / "uz.npy") << "half written";
+  REQUIRE(run_coatfft("run " + write_scene(kGoodScene, "safety_dead/scene", "", "").string() +
+                      " -o " + out.string())
+              .status == 0);
+  CHECK_FALSE(fs::exists(out / (".coatfft.partial-" + dead)));
+  CHECK_FALSE(fs::exists(dir / (".out.partial-" + dead)));
+  CHECK(fs::exists(out / ".coatfft.partial-1"));  // init's: alive
+  CHECK(fs::exists(out / (".coatfft.partial-" + dead + "x")));
+  CHECK(fs::exists(out / (".other.partial-" + dead)));
 }
 
 TEST_CASE("inputs that are not regular files are refused at once", "[cli][safety]") {

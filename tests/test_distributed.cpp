@@ -8,6 +8,8 @@
 #include <chrono>
 #include <optional>
 #include <random>
+#include <stdexcept>
+#include <string>
 
 #include "contact/contact_solver.hpp"
 #include "contact/indenter.hpp"
@@ -19,6 +21,7 @@
 #include "convolution/operators/periodic_operator.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
+#include "distributed/agreed_refusal.hpp"
 #include "distributed/communicator.hpp"
 #include "distributed/detail/communicator_ranks.hpp"
 #include "distributed/distributed_contact.hpp"
@@ -77,6 +80,33 @@ void check_same_solve(const Communicator& comm, const ContactResult& a, const Co
 }
 
 }  // namespace
+
+// A check each rank makes alone: its refusal reaches every rank (which would otherwise wait in
+// the next collective step), named with the rank unless every rank refused alike.
+TEST_CASE("a refusal on one rank is thrown on every rank, naming the rank") {
+  const Communicator comm = Communicator::world();
+  agreed_refusal(comm, [] {});
+  const int last = comm.size() - 1;
+  const std::string named =
+      comm.size() == 1 ? "bad file" : "rank " + std::to_string(last) + ": bad file";
+  const auto last_refuses = [&] {
+    if (comm.rank() == last) throw InvalidArgument("bad file");
+  };
+  CHECK_THROWS_AS(agreed_refusal(comm, last_refuses), InvalidArgument);
+  CHECK_THROWS_WITH(agreed_refusal(comm, last_refuses), named);
+  CHECK_THROWS_WITH(agreed_refusal(comm, [] { throw InvalidArgument("the same"); }), "the same");
+  // Another failure than a refusal of input stays one (exit status 1, not 2).
+  try {
+    agreed_refusal(comm, [&] {
+      if (comm.rank() == last) throw std::runtime_error("broken");
+    });
+    FAIL("no exception");
+  } catch (const InvalidArgument&) {
+    FAIL("an internal failure became a refusal of input");
+  } catch (const Error& e) {
+    CHECK(std::string(e.what()).ends_with("broken"));
+  }
+}
 
 TEST_CASE("the ranks' slabs tile the grid's rows and its half spectrum's columns") {
   const Communicator comm = Communicator::world();
