@@ -1,6 +1,7 @@
 #pragma once
 // Progress of `coatfft run` on a terminal (docs/scene_format.md, "Progress on the terminal"): the
-// stage a long run is in and the iterations of a contact solve. A run that ends within a second
+// stage a long run is in, the step of a stage made of many (a sweep's value, a plane of the
+// stresses) and the iterations of a contact solve. A run that ends within a second
 // prints nothing, and nothing is printed under --quiet or when stderr is not a terminal, so that
 // scripts and tests see only warnings and errors there.
 //
@@ -24,8 +25,8 @@ bool progress_wanted(bool quiet, bool stderr_is_terminal);
 
 /// Progress lines on one stream: the scene layer's observer (scene/progress_observer.hpp) for a
 /// terminal. Nothing is printed before `delay` has passed since the start; after it every stage
-/// is one line, and iterations update one line in place ('\r') at most once per `interval`, so
-/// that a terminal gets a few lines per second at most.
+/// is one line, and steps and iterations update one line in place ('\r') at most once per
+/// `interval`, so that a terminal gets a few lines per second at most.
 class Progress : public scene::ProgressObserver {
  public:
   using Clock = std::chrono::steady_clock;
@@ -45,8 +46,12 @@ class Progress : public scene::ProgressObserver {
   /// A stage begins, e.g. "setting up the operator (dcfft)", at `now`.
   void stage(std::string_view what, Clock::time_point now);
   void stage(std::string_view what) override { stage(what, Clock::now()); }
+  /// A step of the current stage begins, e.g. "load 3 of 8: 120 N", at `now`: the line of the
+  /// stage and step, updated in place; the following iterations' lines name the step.
+  void step(std::string_view what, Clock::time_point now);
+  void step(std::string_view what) override { step(what, Clock::now()); }
   /// The current stage is still running: once `tick_interval` has passed since the last line,
-  /// "coatfft [12.3 s] <stage> ...", updated in place as iteration() does.
+  /// "coatfft [12.3 s] <stage>: <step> ...", updated in place as iteration() does.
   void tick(Clock::time_point now = Clock::now());
   /// Iteration `k` of a contact solve left `residual`, at `now`.
   void iteration(int k, double residual, Clock::time_point now);
@@ -57,6 +62,7 @@ class Progress : public scene::ProgressObserver {
  private:
   bool due(Clock::time_point now) const;
   std::string prefix(Clock::time_point now) const;
+  std::string activity() const;
   void end_line();
   void write_open_line(std::string line, Clock::time_point now);
 
@@ -66,6 +72,7 @@ class Progress : public scene::ProgressObserver {
   Clock::time_point last_print_;
   bool printed_ = false;
   std::string stage_;          ///< the current stage, for tick()
+  std::string step_;           ///< the current step of the stage; empty when none
   std::size_t open_line_ = 0;  ///< length of the line left open (iteration, tick); 0 when none is
 };
 

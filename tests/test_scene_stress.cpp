@@ -35,7 +35,8 @@ TEST_CASE("stress summary: the maxima of each medium, an interface counted on bo
   spec.depths = {0.1 * a, 0.48 * a};
   spec.alpha = 4;
   const Field p = hertz_pressure(grid, 1.0, a, Sampling::cell_average);
-  const scene::StressRun run = scene::compute_stress(spec, body, grid, p, {}, 1);
+  scene::ProgressObserver silent;
+  const scene::StressRun run = scene::compute_stress(spec, body, grid, p, {}, 1, silent);
   const auto& s = run.summary;
   CHECK(s["planes"] == 4);  // two depths and the interface from both sides
   REQUIRE(s["layers"].size() == 2);
