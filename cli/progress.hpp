@@ -32,8 +32,9 @@ class Progress : public scene::ProgressObserver {
   using Clock = std::chrono::steady_clock;
   static constexpr std::chrono::milliseconds delay{1000};
   static constexpr std::chrono::milliseconds interval{250};
-  /// How often tick() shows that a stage is still running.
-  static constexpr std::chrono::milliseconds tick_interval{1000};
+  /// How often tick() shows that a stage is still running: below a second, since the interrupt
+  /// checks that call it come every 50 ms or so, and a stage is never silent for a second.
+  static constexpr std::chrono::milliseconds tick_interval{900};
 
   /// Prints on `out` when `enabled`; the run's time counts from `start`.
   Progress(bool enabled, std::ostream& out, Clock::time_point start = Clock::now());
