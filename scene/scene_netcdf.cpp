@@ -38,7 +38,7 @@ void add_interface_stress(NetcdfDataset& d, const OutputSpec& spec, const Stress
     depths.push_back(interface.at("depth").get<double>());
   d.dimensions.push_back(
       {"interface", depths.size(), depths, described("m", "depth of the interface")});
-  d.dimensions.push_back({"side", 2, {}, {{{"names", "above below"}}, {}}});
+  d.dimensions.push_back({"side", 2, {}, {}});
   if (spec.stress_interfaces)
     d.variables.push_back({"stress_interfaces",
                            {"interface", "side", "component"},

@@ -346,24 +346,19 @@ namespace {
 // pressure (a = 0.6 mm) with the planes 2e-4 (the interface, below) and 3e-4 m, and the section's
 // rows at 2e-4 and 4e-4 m: every plane asked for is in the substrate. `extra` adds to it.
 std::string interface_scene(const std::string& coating, const std::string& extra) {
-  return R"([grid]
+  return "[substrate]\nmaterial = \"steel\"\n[[coating]]\nthickness = 2e-4\n" + coating + R"(
+[grid]
 nx = 16
 ny = 14
 lx = 2.0e-3
 ly = 1.75e-3
-[substrate]
-material = "steel"
-[[coating]]
-)" + coating +
-         R"(
-thickness = 2e-4
-[pressure]
-kind = "hertz"
-p0 = 1.0e9
-a = 0.6e-3
-sampling = "cell_average"
 [method]
 name = "frf-split"
+[pressure]
+kind = "hertz"
+sampling = "cell_average"
+a = 0.6e-3
+p0 = 1.0e9
 [stress]
 depths = [2e-4, 3e-4]
 section = "xz"

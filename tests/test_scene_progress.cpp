@@ -49,18 +49,9 @@ fs::path write_scene(const std::string& name, const std::string& text) {
 
 // A sphere on a periodic steel surface, 32^2 cells; `contact` ends the [contact] section.
 std::string sphere_scene(const std::string& contact) {
-  return R"([grid]
-nx = 32
-ny = 32
-lx = 3.0e-3
-ly = 3.0e-3
-boundary = "periodic"
-[substrate]
-material = "steel"
-[contact]
-indenter = "paraboloid"
-radius = 0.01
-)" + contact;
+  return "[substrate]\nmaterial = \"steel\"\n[grid]\nboundary = \"periodic\"\nnx = 32\nny = 32\n"
+         "lx = 3.0e-3\nly = 3.0e-3\n[contact]\nindenter = \"paraboloid\"\nradius = 0.01\n" +
+         contact;
 }
 
 }  // namespace
