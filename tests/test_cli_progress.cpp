@@ -138,7 +138,7 @@ TEST_CASE("Progress is silent in the first second, then prints stages and iterat
   CHECK(contains(out.str(), "iteration 13, residual 0.5\n"));
 }
 
-TEST_CASE("Progress::tick keeps a long stage's line going, within a second", "[cli][progress]") {
+TEST_CASE("Progress::tick keeps a long stage's lines going, within a second", "[cli][progress]") {
   std::ostringstream out;
   {
     Progress progress(true, out, t0);
@@ -146,17 +146,20 @@ TEST_CASE("Progress::tick keeps a long stage's line going, within a second", "[c
     progress.stage("stresses on 3 planes", t0 + 100ms);
     progress.tick(t0 + 900ms);  // within the first second: silent
     CHECK(out.str().empty());
-    progress.tick(t0 + 1100ms);
-    std::string expected = "\rcoatfft [1.1 s] stresses on 3 planes ...";
+    progress.tick(t0 + 1100ms);  // a line of its own, which a reader of lines sees at once
+    std::string expected = "coatfft [1.1 s] stresses on 3 planes ...\n";
     CHECK(out.str() == expected);
     progress.tick(t0 + 1600ms);  // not 0.9 s since the last line
     CHECK(out.str() == expected);
-    progress.tick(t0 + 2200ms);
-    expected += "\rcoatfft [2.2 s] stresses on 3 planes ...";
+    progress.tick(t0 + 2000ms);
+    expected += "coatfft [2.0 s] stresses on 3 planes ...\n";
     CHECK(out.str() == expected);
-    // The next stage starts a line of its own.
-    progress.stage("writing summary.json", t0 + 2300ms);
-    expected += "\ncoatfft [2.3 s] writing summary.json\n";
+    // An iteration's line, updated in place, is ended before the next stage's.
+    progress.iteration(4, 0.5, t0 + 2300ms);
+    progress.stage("writing summary.json", t0 + 2400ms);
+    expected +=
+        "\rcoatfft [2.3 s] contact solve: iteration 4, residual 0.5\n"
+        "coatfft [2.4 s] writing summary.json\n";
     CHECK(out.str() == expected);
   }
 }
@@ -176,17 +179,16 @@ TEST_CASE("Progress names the step a stage is on: a sweep's value, a plane", "[c
     CHECK(out.str() == expected);
     progress.tick(t0 + 2050ms);  // ... and shown by the next line, with the stage
     expected +=
-        "\rcoatfft [2.0 s] solving the contact (load control, a sweep): load 2 of 3: 20 N ...";
+        "\ncoatfft [2.0 s] solving the contact (load control, a sweep): load 2 of 3: 20 N ...\n";
     CHECK(out.str() == expected);
     progress.step("load 3 of 3: 40 N", t0 + 2300ms);
-    expected += "\rcoatfft [2.3 s] solving the contact (load control, a sweep): load 3 of 3: 40 N" +
-                std::string(4, ' ');
+    expected += "coatfft [2.3 s] solving the contact (load control, a sweep): load 3 of 3: 40 N\n";
     CHECK(out.str() == expected);
     // A new stage has no step until it reports one.
     progress.stage("stresses on 21 planes", t0 + 2400ms);
     progress.tick(t0 + 3400ms);
     expected +=
-        "\ncoatfft [2.4 s] stresses on 21 planes\n\rcoatfft [3.4 s] stresses on 21 planes ...";
+        "coatfft [2.4 s] stresses on 21 planes\ncoatfft [3.4 s] stresses on 21 planes ...\n";
     CHECK(out.str() == expected);
   }
 }
