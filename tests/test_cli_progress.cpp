@@ -154,13 +154,6 @@ TEST_CASE("Progress::tick keeps a long stage's lines going, within a second", "[
     progress.tick(t0 + 2000ms);
     expected += "coatfft [2.0 s] stresses on 3 planes ...\n";
     CHECK(out.str() == expected);
-    // An iteration's line, updated in place, is ended before the next stage's.
-    progress.iteration(4, 0.5, t0 + 2300ms);
-    progress.stage("writing summary.json", t0 + 2400ms);
-    expected +=
-        "\rcoatfft [2.3 s] contact solve: iteration 4, residual 0.5\n"
-        "coatfft [2.4 s] writing summary.json\n";
-    CHECK(out.str() == expected);
   }
 }
 
