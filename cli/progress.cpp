@@ -40,9 +40,15 @@ void Progress::stage(std::string_view what, Clock::time_point now) {
   // Not throttled: a run has a handful of stages, and a stage left on the screen after it has
   // ended would be wrong for as long as the next one takes.
   stage_ = what;
+  step_.clear();
   if (!due(now)) return;
+  write_line(prefix(now) + stage_, now);
+}
+
+// A line of its own, after the open line if there is one.
+void Progress::write_line(const std::string& line, Clock::time_point now) {
   end_line();
-  out_ << prefix(now) << what << '\n' << std::flush;
+  out_ << line << '\n' << std::flush;
   last_print_ = now;
   printed_ = true;
 }
@@ -57,16 +63,29 @@ void Progress::write_open_line(std::string line, Clock::time_point now) {
   printed_ = true;
 }
 
+// "<stage>: <step>", or the stage alone.
+std::string Progress::activity() const {
+  return step_.empty() ? stage_ : stage_ + ": " + step_;
+}
+
+void Progress::step(std::string_view what, Clock::time_point now) {
+  step_ = what;
+  if (!due(now) || now - last_print_ < interval) return;
+  write_line(prefix(now) + activity(), now);
+}
+
+// A line of its own, not an update in place: a long stage leaves a line per second, which a
+// terminal scrolls and a reader of lines (a log of the terminal, `script`) sees too.
 void Progress::tick(Clock::time_point now) {
   if (stage_.empty() || !due(now) || now - last_print_ < tick_interval) return;
-  write_open_line(prefix(now) + stage_ + " ...", now);
+  write_line(prefix(now) + activity() + " ...", now);
 }
 
 void Progress::iteration(int k, double residual, Clock::time_point now) {
   if (!due(now) || now - last_print_ < interval) return;
   std::ostringstream text;
-  text << prefix(now) << "contact solve: iteration " << k << ", residual " << std::setprecision(2)
-       << residual;
+  text << prefix(now) << (step_.empty() ? "" : step_ + ", ") << "contact solve: iteration " << k
+       << ", residual " << std::setprecision(2) << residual;
   write_open_line(text.str(), now);
 }
 

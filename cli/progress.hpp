@@ -1,14 +1,16 @@
 #pragma once
 // Progress of `coatfft run` on a terminal (docs/scene_format.md, "Progress on the terminal"): the
-// stage a long run is in and the iterations of a contact solve. A run that ends within a second
+// stage a long run is in, the step of a stage made of many (a sweep's value, a plane of the
+// stresses) and the iterations of a contact solve. A run that ends within a second
 // prints nothing, and nothing is printed under --quiet or when stderr is not a terminal, so that
 // scripts and tests see only warnings and errors there.
 //
 // Progress is reported from the computing thread, between the steps it already takes: a stage is
 // announced when it starts, and while it runs the library's interrupt checks (core/interrupt.hpp,
-// every 50 ms or so) call tick(), which keeps one line with the elapsed time up to date, so a long
-// stage (the operator's or the stresses' set-up) is not silent. No thread or timer is needed, and
-// nothing else writing to stderr (warnings) can be interleaved with a progress line.
+// every 50 ms or so) call tick(), which prints a line with the elapsed time once a second, so a
+// long stage (the operator's or the stresses' set-up) is never silent for a second. No thread or
+// timer is needed, and nothing else writing to stderr (warnings) can be interleaved with a progress
+// line.
 #include <chrono>
 #include <cstddef>
 #include <iosfwd>
@@ -24,15 +26,17 @@ bool progress_wanted(bool quiet, bool stderr_is_terminal);
 
 /// Progress lines on one stream: the scene layer's observer (scene/progress_observer.hpp) for a
 /// terminal. Nothing is printed before `delay` has passed since the start; after it every stage
-/// is one line, and iterations update one line in place ('\r') at most once per `interval`, so
-/// that a terminal gets a few lines per second at most.
+/// is one line, a step one line at most once per `interval`, a stage still running one line once
+/// per `tick_interval`, and iterations update one line in place ('\r') at most once per
+/// `interval`, so that a terminal gets a few lines per second at most.
 class Progress : public scene::ProgressObserver {
  public:
   using Clock = std::chrono::steady_clock;
   static constexpr std::chrono::milliseconds delay{1000};
   static constexpr std::chrono::milliseconds interval{250};
-  /// How often tick() shows that a stage is still running.
-  static constexpr std::chrono::milliseconds tick_interval{1000};
+  /// How often tick() shows that a stage is still running: below a second, since the interrupt
+  /// checks that call it come every 50 ms or so, and a stage is never silent for a second.
+  static constexpr std::chrono::milliseconds tick_interval{900};
 
   /// Prints on `out` when `enabled`; the run's time counts from `start`.
   Progress(bool enabled, std::ostream& out, Clock::time_point start = Clock::now());
@@ -45,8 +49,12 @@ class Progress : public scene::ProgressObserver {
   /// A stage begins, e.g. "setting up the operator (dcfft)", at `now`.
   void stage(std::string_view what, Clock::time_point now);
   void stage(std::string_view what) override { stage(what, Clock::now()); }
-  /// The current stage is still running: once `tick_interval` has passed since the last line,
-  /// "coatfft [12.3 s] <stage> ...", updated in place as iteration() does.
+  /// A step of the current stage begins, e.g. "load 3 of 8: 120 N", at `now`: a line of the
+  /// stage and step; the following iterations' lines name the step.
+  void step(std::string_view what, Clock::time_point now);
+  void step(std::string_view what) override { step(what, Clock::now()); }
+  /// The current stage is still running: once `tick_interval` has passed since the last line, a
+  /// line "coatfft [12.3 s] <stage>: <step> ...".
   void tick(Clock::time_point now = Clock::now());
   /// Iteration `k` of a contact solve left `residual`, at `now`.
   void iteration(int k, double residual, Clock::time_point now);
@@ -57,6 +65,8 @@ class Progress : public scene::ProgressObserver {
  private:
   bool due(Clock::time_point now) const;
   std::string prefix(Clock::time_point now) const;
+  std::string activity() const;
+  void write_line(const std::string& line, Clock::time_point now);
   void end_line();
   void write_open_line(std::string line, Clock::time_point now);
 
@@ -66,7 +76,8 @@ class Progress : public scene::ProgressObserver {
   Clock::time_point last_print_;
   bool printed_ = false;
   std::string stage_;          ///< the current stage, for tick()
-  std::size_t open_line_ = 0;  ///< length of the line left open (iteration, tick); 0 when none is
+  std::string step_;           ///< the current step of the stage; empty when none
+  std::size_t open_line_ = 0;  ///< length of the line left open (iteration); 0 when none is
 };
 
 }  // namespace coatfft::cli

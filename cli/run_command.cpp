@@ -40,7 +40,8 @@ void write_displacement_csv(const std::filesystem::path& path, const Grid& grid,
 }
 
 // stress.npy (n_depths, 6, ny, nx), von_mises.npy (n_depths, ny, nx), stress_section.npy
-// (nz, 6, nx), von_mises_section.npy (nz, nx): docs/stress.md.
+// (nz, 6, nx), von_mises_section.npy (nz, nx), stress_interfaces.npy (n_interfaces, 2, 6, ny, nx),
+// von_mises_interfaces.npy (n_interfaces, 2, ny, nx): docs/stress.md.
 void write_stress_outputs(StagedOutput& out, const scene::OutputSpec& spec, const Grid& grid,
                           const scene::StressRun& s) {
   const auto nx = static_cast<std::size_t>(grid.nx()), ny = static_cast<std::size_t>(grid.ny());
@@ -58,6 +59,13 @@ void write_stress_outputs(StagedOutput& out, const scene::OutputSpec& spec, cons
   if (spec.von_mises_section)
     scene::write_npy_array(out.path("von_mises_section.npy"), std::vector<std::size_t>{nz, nx},
                            s.section_von_mises);
+  const std::size_t ni = s.interfaces_von_mises.size() / (2 * nx * ny);
+  if (spec.stress_interfaces)
+    scene::write_npy_array(out.path("stress_interfaces.npy"),
+                           std::vector<std::size_t>{ni, 2, 6, ny, nx}, s.interfaces);
+  if (spec.von_mises_interfaces)
+    scene::write_npy_array(out.path("von_mises_interfaces.npy"),
+                           std::vector<std::size_t>{ni, 2, ny, nx}, s.interfaces_von_mises);
 }
 
 // The fields of a sweep, one per value, as one array (n_values, ny, nx).

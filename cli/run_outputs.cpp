@@ -33,6 +33,8 @@ std::vector<std::string> output_names(const scene::OutputSpec& spec) {
   if (spec.von_mises) names.push_back("von_mises.npy");
   if (spec.stress_section) names.push_back("stress_section.npy");
   if (spec.von_mises_section) names.push_back("von_mises_section.npy");
+  if (spec.stress_interfaces) names.push_back("stress_interfaces.npy");
+  if (spec.von_mises_interfaces) names.push_back("von_mises_interfaces.npy");
   if (!spec.netcdf) return names;
   const auto is_npy = [](const std::string& name) { return name.ends_with(".npy"); };
   const auto first = std::find_if(names.begin(), names.end(), is_npy);

@@ -853,6 +853,7 @@ std::vector<ContactResult> ContactSolver::solve_sweep(const Field& height, Conta
   for (const double value : values) {
     Field start;
     const std::size_t k = results.size();
+    if (options_.on_value) options_.on_value(k, values.size(), value);
     if (k >= 2 && values[k - 1] > values[k - 2]) {
       // The secant through the last two solutions: exact while the contact set holds (p is then
       // linear in the load and in the approach). A repeated value starts from its twin.

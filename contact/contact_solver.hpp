@@ -79,6 +79,10 @@ struct ContactOptions {
   /// ContactResult::residual): a caller can show progress, since the solver itself never prints.
   /// It runs on the solving thread and costs one call per iteration; throttling is the caller's.
   std::function<void(int iteration, double residual)> on_iteration;
+  /// Called, when set, before each solve of a sweep (ContactSolver::solve_sweep) with its index
+  /// (0, 1, ...) in the sweep's ascending order, the number of values and the value, so that a
+  /// caller's progress can say which value the iterations are of.
+  std::function<void(std::size_t index, std::size_t count, double value)> on_value;
 };
 
 /// Which quantity the solve prescribes.

@@ -44,6 +44,7 @@ ContactResult solve_sliding(ContactSolver& solver, const TangentialCoupling& cou
                   "sliding contact: tolerance must be finite and > 0");
   COATFFT_REQUIRE(options.max_iterations >= 1, "sliding contact: max_iterations must be >= 1");
   SlidingReport r;
+  if (options.on_solve) options.on_solve(1);
   ContactResult result = solver.solve(height, control, value);
   r.solves = 1;
   int applications = result.operator_applications;
@@ -54,6 +55,7 @@ ContactResult solve_sliding(ContactSolver& solver, const TangentialCoupling& cou
     const Field frictionless = result.pressure;
     while (r.solves < options.max_iterations) {
       shift = coupling(options.friction * result.pressure);
+      if (options.on_solve) options.on_solve(r.solves + 1);
       ContactResult next = solver.solve(height + shift, control, value);
       ++r.solves;
       applications += next.operator_applications;

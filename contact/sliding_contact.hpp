@@ -28,6 +28,9 @@ struct SlidingOptions {
   double friction = 0.0;    ///< mu >= 0 (finite): q_x = mu p
   double tolerance = 1e-9;  ///< largest change of p between two solves over max p, > 0
   int max_iterations = 30;  ///< normal solves at most (>= 1)
+  /// Called, when set, before each normal solve with its number (1, 2, ...), so that a caller's
+  /// progress can say which solve the iterations are of.
+  std::function<void(int solve)> on_solve;
 };
 
 struct SlidingReport {

@@ -638,7 +638,7 @@ struct OutputField {
   std::string_view name;
   bool OutputSpec::*flag;
 };
-constexpr std::array<OutputField, 9> output_fields{
+constexpr std::array<OutputField, 11> output_fields{
     {{"uz", &OutputSpec::uz},
      {"pressure", &OutputSpec::pressure},
      {"gap", &OutputSpec::gap},
@@ -647,7 +647,9 @@ constexpr std::array<OutputField, 9> output_fields{
      {"stress", &OutputSpec::stress},
      {"von_mises", &OutputSpec::von_mises},
      {"stress_section", &OutputSpec::stress_section},
-     {"von_mises_section", &OutputSpec::von_mises_section}}};
+     {"von_mises_section", &OutputSpec::von_mises_section},
+     {"stress_interfaces", &OutputSpec::stress_interfaces},
+     {"von_mises_interfaces", &OutputSpec::von_mises_interfaces}}};
 
 // Sets the flag of one name of [output] fields, refusing an unknown name and "gap" for a scene
 // that has none.
@@ -693,14 +695,20 @@ OutputSpec read_output(const toml::table& root, bool contact) {
 }
 
 // The stress files: by default every one [stress] computes; an [output] fields list names those
-// it wants, each of something [stress] computes (`spec` is empty without [stress]).
-void check_stress_outputs(OutputSpec& output, const StressSpec& spec) {
+// it wants, each of something [stress] computes (`spec` is empty without [stress]; `interfaces`:
+// [stress] is given, on a body with an interface).
+void check_stress_outputs(OutputSpec& output, const StressSpec& spec, bool interfaces) {
   const bool planes = !spec.depths.empty();
   if (!output.listed) {
     output.stress = output.von_mises = planes;
     output.stress_section = output.von_mises_section = spec.section;
+    output.stress_interfaces = output.von_mises_interfaces = interfaces;
     return;
   }
+  for (const auto& [wanted, name] : {std::pair{output.stress_interfaces, "stress_interfaces"},
+                                     {output.von_mises_interfaces, "von_mises_interfaces"}})
+    COATFFT_REQUIRE(!wanted || interfaces, "[output] fields: \"", name,
+                    "\" needs [stress] on a body with an interface (a [[coating]])");
   for (const auto& [wanted, name] :
        {std::pair{output.stress, "stress"}, {output.von_mises, "von_mises"}})
     COATFFT_REQUIRE(!wanted || planes, "[output] fields: \"", name,
@@ -950,7 +958,8 @@ Scene read_scene(const std::filesystem::path& path, const SceneReading& reading)
       scene.method.options.planning = Planning::measure;
     scene.output = read_output(root, scene.contact.has_value());
     if (root.contains("stress")) scene.stress = read_stress(root, scene);
-    check_stress_outputs(scene.output, scene.stress.value_or(StressSpec{}));
+    check_stress_outputs(scene.output, scene.stress.value_or(StressSpec{}),
+                         scene.stress && !scene.body->interface_depths().empty());
     if (root.contains("shear")) {
       COATFFT_REQUIRE(scene.pressure.has_value(),
                       "[shear] goes with a known [pressure]; a "

@@ -117,6 +117,10 @@ struct OutputSpec {
   /// stress_section.npy, von_mises_section.npy: by default those of [stress] section
   bool stress_section = false;
   bool von_mises_section = false;
+  /// stress_interfaces.npy, von_mises_interfaces.npy: each interface's planes from both sides;
+  /// by default those of [stress] on a coated body
+  bool stress_interfaces = false;
+  bool von_mises_interfaces = false;
   /// ux.npy and uy.npy: set by [stress], [shear] or [contact] friction on a bonded body (not an
   /// [frf] table) whose traction kernels are affordable (convolution/kernels/traction_kernels.hpp)
   bool in_plane = false;

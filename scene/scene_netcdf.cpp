@@ -29,8 +29,32 @@ std::span<const double> stacked(const std::vector<Field>& fields, std::vector<do
   return store;
 }
 
+// The interfaces' planes from both sides (interface, side, component, x, y) and their von Mises
+// stress (interface, side, x, y); side 0 is the medium above the interface, 1 the one below.
+void add_interface_stress(NetcdfDataset& d, const OutputSpec& spec, const StressRun& s) {
+  if (!spec.stress_interfaces && !spec.von_mises_interfaces) return;
+  std::vector<double> depths;
+  for (const auto& interface : s.summary.at("interfaces"))
+    depths.push_back(interface.at("depth").get<double>());
+  d.dimensions.push_back(
+      {"interface", depths.size(), depths, described("m", "depth of the interface")});
+  d.dimensions.push_back({"side", 2, {}, {}});
+  if (spec.stress_interfaces)
+    d.variables.push_back({"stress_interfaces",
+                           {"interface", "side", "component"},
+                           s.interfaces,
+                           described("Pa", "stress on the interface, in the medium on each side")});
+  if (spec.von_mises_interfaces)
+    d.variables.push_back(
+        {"von_mises_interfaces",
+         {"interface", "side"},
+         s.interfaces_von_mises,
+         described("Pa", "von Mises stress on the interface, in the medium on each side")});
+}
+
 // The stress planes (depth, component, x, y) and their von Mises stress (depth, x, y); the
-// section (section_depth, component, x) and its von Mises stress (section_depth, x).
+// section (section_depth, component, x) and its von Mises stress (section_depth, x); the
+// interfaces' planes (add_interface_stress).
 void add_stress(NetcdfDataset& d, const OutputSpec& spec, const StressRun& s) {
   const auto& summary = s.summary;
   d.dimensions.push_back({"component", 6, {}, {{{"names", "xx yy zz yz xz xy"}}, {}}});
@@ -44,6 +68,7 @@ void add_stress(NetcdfDataset& d, const OutputSpec& spec, const StressRun& s) {
   if (spec.von_mises)
     d.variables.push_back(
         {"von_mises", {"depth"}, s.von_mises, described("Pa", "von Mises stress")});
+  add_interface_stress(d, spec, s);
   if (!spec.stress_section && !spec.von_mises_section) return;
   const auto nz = summary.at("section").at("nz").get<std::size_t>();
   const double depth_max = summary.at("section").at("depth_max").get<double>();

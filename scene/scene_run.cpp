@@ -113,7 +113,8 @@ TangentialCoupling tangential_coupling(std::shared_ptr<CerrutiOperator> on_body,
 // (contact/sliding_contact.hpp), reported in summary "friction_coupling".
 ContactResult solve_scene_contact(ContactSolver& solver, const Scene& scene,
                                   const std::shared_ptr<CerrutiOperator>& surface,
-                                  const Field& height_field, nlohmann::json& report) {
+                                  const Field& height_field, nlohmann::json& report,
+                                  ProgressObserver& progress) {
   const ContactSpec& spec = *scene.contact;
   const ContactControl control = spec.load ? ContactControl::load : ContactControl::approach;
   const double value = spec.load ? *spec.load : *spec.approach;
@@ -122,6 +123,9 @@ ContactResult solve_scene_contact(ContactSolver& solver, const Scene& scene,
   options.friction = spec.friction;
   // Each solve is converged to spec.tolerance: the change between two solves cannot be smaller.
   options.tolerance = 10.0 * spec.tolerance;
+  options.on_solve = [&progress, most = options.max_iterations](int k) {
+    progress.step(detail::concat("friction coupling: normal solve ", k, " of at most ", most));
+  };
   SlidingReport r;
   ContactResult result = solve_sliding(
       solver,
@@ -169,13 +173,14 @@ bool topography_edge_contact(const std::vector<ContactResult>& results, std::int
 // The solves of a [contact] scene: its one value, or each value of its sweep (ascending).
 std::vector<ContactResult> solve_contacts(ContactSolver& solver, const Scene& scene,
                                           const std::shared_ptr<CerrutiOperator>& surface,
-                                          const Field& height_field, nlohmann::json& coupling) {
+                                          const Field& height_field, nlohmann::json& coupling,
+                                          ProgressObserver& progress) {
   const ContactSpec& spec = *scene.contact;
   const ContactControl control = spec.load ? ContactControl::load : ContactControl::approach;
   try {
     if (!spec.sweep.empty()) return solver.solve_sweep(height_field, control, spec.sweep);
     std::vector<ContactResult> one;
-    one.push_back(solve_scene_contact(solver, scene, surface, height_field, coupling));
+    one.push_back(solve_scene_contact(solver, scene, surface, height_field, coupling, progress));
     return one;
   } catch (const InvalidArgument& e) {
     // The solver names what it refuses as its own ("ContactSolver: load = 1e+30 N ..."): in a
@@ -237,7 +242,7 @@ SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat,
   const auto start = Clock::now();
   nlohmann::json coupling;
   std::vector<ContactResult> results =
-      solve_contacts(solver, scene, surface, height_field, coupling);
+      solve_contacts(solver, scene, surface, height_field, coupling, progress);
   const double solve_seconds = seconds_since(start);
   // touches_boundary is false on a periodic surface (no edge: contact/contact_solver.hpp).
   const bool touches = std::any_of(results.begin(), results.end(),
@@ -324,7 +329,7 @@ SceneRun compute_scene(PreparedScene prepared, const SceneRunOptions& options) {
   if (stress) {
     progress.stage("stresses on " + std::to_string(stress_planes(*stress, *body).depths.size()) +
                    " planes");
-    run.stress = compute_stress(*stress, *body, run.grid, run.pressure, q, threads);
+    run.stress = compute_stress(*stress, *body, run.grid, run.pressure, q, threads, progress);
     run.summary["stress"] = run.stress->summary;
   }
   if (scene_copy.output.in_plane) {

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "stress/stress_invariants.hpp"
 #include "stress/stress_operator.hpp"
 
@@ -18,11 +20,16 @@ StressVector at(const PlaneStress& s, std::ptrdiff_t i, std::ptrdiff_t j) {
   return {s[0](i, j), s[1](i, j), s[2](i, j), s[3](i, j), s[4](i, j), s[5](i, j)};
 }
 
-// The largest value of f over the planes, with where it is.
+// The largest value of a quantity over a set of points, with where it is: (x, y, z) and the
+// medium (LayerStack layer index) of the plane it lies on.
 struct Peak {
   double value = -INFINITY, x = 0, y = 0, z = 0;
-  void take(double v, double xv, double yv, double zv) {
-    if (v > value) *this = {v, xv, yv, zv};
+  std::size_t layer = 0;
+  void take(double v, double xv, double yv, double zv, std::size_t l) {
+    if (v > value) *this = {v, xv, yv, zv, l};
+  }
+  void take(const Peak& other) {
+    if (other.value > value) *this = other;
   }
   nlohmann::json json(bool with_z = true) const {
     nlohmann::json j{{"value", value}, {"x", x}, {"y", y}};
@@ -55,42 +62,63 @@ void check_finite(const PlaneStress& s, double z) {
 // The largest von Mises, principal tensile and Tresca stresses of a set of points.
 struct Peaks {
   Peak mises, tensile, tresca;
-  void take(const StressVector& s, double x, double y, double z) {
-    mises.take(von_mises(s), x, y, z);
-    tensile.take(principal_stresses(s)[0], x, y, z);
-    tresca.take(coatfft::tresca(s), x, y, z);
+  void take(const StressVector& s, double x, double y, double z, std::size_t layer) {
+    const std::array<double, 3> principal = principal_stresses(s);
+    mises.take(von_mises(s), x, y, z, layer);
+    tensile.take(principal[0], x, y, z, layer);
+    tresca.take(0.5 * (principal[0] - principal[2]), x, y, z, layer);  // coatfft::tresca
   }
-  void take(const PlaneStress& plane, const Grid& grid, double z) {
-    for (std::ptrdiff_t j = 0; j < grid.ny(); ++j)
-      for (std::ptrdiff_t i = 0; i < grid.nx(); ++i) take(at(plane, i, j), grid.x(i), grid.y(j), z);
+  void take(const Peaks& other) {
+    mises.take(other.mises);
+    tensile.take(other.tensile);
+    tresca.take(other.tresca);
   }
 };
+
+// The maxima of the rows j0 .. j1 - 1 of plane s at depth z in medium `layer`.
+Peaks plane_peaks(const PlaneStress& s, const Grid& grid, std::ptrdiff_t j0, std::ptrdiff_t j1,
+                  double z, std::size_t layer) {
+  Peaks peaks;
+  for (std::ptrdiff_t j = j0; j < j1; ++j)
+    for (std::ptrdiff_t i = 0; i < grid.nx(); ++i)
+      peaks.take(at(s, i, j), grid.x(i), grid.y(j), z, layer);
+  return peaks;
+}
 
 // "coating 1" (top) ... "substrate": a medium as the scene's sections name it.
 std::string medium_name(const LayerStack& body, std::size_t layer) {
   return layer < body.coatings().size() ? detail::concat("coating ", layer + 1) : "substrate";
 }
 
-// summary.json's stress.layers: per medium, top first, the maxima over every plane in it (an
-// interface's planes count on both of its sides).
-nlohmann::json layer_maxima(const LayerStack& body, const Grid& grid, const StressPlanes& planes,
-                            const std::vector<PlaneStress>& stress) {
-  std::vector<Peaks> per_layer(body.coatings().size() + 1);
-  std::vector<bool> seen(per_layer.size(), false);
-  for (std::size_t p = 0; p < stress.size(); ++p) {
-    const std::size_t layer = body.locate(planes.depths[p], planes.sides[p]).layer;
-    per_layer[layer].take(stress[p], grid, planes.depths[p]);
-    seen[layer] = true;
+// summary.json's maxima: per medium (stress.layers, top first) those of the planes in it (an
+// interface's planes count on the side each is computed on), and overall those of the media, so
+// that the overall maxima are the largest of the media's and lie on the same planes.
+void add_maxima(nlohmann::json& summary, const LayerStack& body, const std::vector<Peaks>& planes) {
+  std::vector<std::optional<Peaks>> media(body.coatings().size() + 1);
+  for (const Peaks& plane : planes) {
+    std::optional<Peaks>& medium = media[plane.mises.layer];
+    if (!medium) medium = Peaks{};
+    medium->take(plane);
   }
+  Peaks overall;
   nlohmann::json layers = nlohmann::json::array();
-  for (std::size_t l = 0; l < per_layer.size(); ++l) {
-    if (!seen[l]) continue;  // a medium no plane reaches (never: each meets an interface plane)
+  for (std::size_t l = 0; l < media.size(); ++l) {
+    if (!media[l]) continue;  // a medium no plane reaches (never: each meets an interface plane)
     layers.push_back({{"medium", medium_name(body, l)},
-                      {"max_von_mises", per_layer[l].mises.json()},
-                      {"max_principal_tensile", per_layer[l].tensile.json()},
-                      {"max_tresca", per_layer[l].tresca.json()}});
+                      {"max_von_mises", media[l]->mises.json()},
+                      {"max_principal_tensile", media[l]->tensile.json()},
+                      {"max_tresca", media[l]->tresca.json()}});
+    overall.take(*media[l]);
   }
-  return layers;
+  const auto located = [&](const Peak& peak) {
+    nlohmann::json j = peak.json();
+    j["medium"] = medium_name(body, peak.layer);
+    return j;
+  };
+  summary["max_von_mises"] = located(overall.mises);
+  summary["max_principal_tensile"] = located(overall.tensile);
+  summary["max_tresca"] = located(overall.tresca);
+  summary["layers"] = layers;
 }
 
 // summary.json's stress.interfaces: the largest shear stress on each interface (continuous
@@ -105,11 +133,38 @@ nlohmann::json interface_shear(const StressSpec& spec, const Grid& grid, const S
     const PlaneStress& s = stress[p];
     for (std::ptrdiff_t j = 0; j < grid.ny(); ++j)
       for (std::ptrdiff_t i = 0; i < grid.nx(); ++i)
-        shear.take(std::hypot(s[s_xz](i, j), s[s_yz](i, j)), grid.x(i), grid.y(j),
-                   planes.depths[p]);
+        shear.take(std::hypot(s[s_xz](i, j), s[s_yz](i, j)), grid.x(i), grid.y(j), planes.depths[p],
+                   0);
     interfaces.push_back({{"depth", planes.depths[p]}, {"max_shear", shear.json(false)}});
   }
   return interfaces;
+}
+
+// The planes in the arrays of `run`, each checked finite: the depths' (whole), the section's
+// (its row y = y_centre), the interfaces' (whole, above then below each); their maxima over the
+// points written, one per plane, each plane reported to `progress`.
+std::vector<Peaks> write_planes(const StressSpec& spec, const LayerStack& body, const Grid& grid,
+                                const StressPlanes& planes, const std::vector<PlaneStress>& stress,
+                                StressRun& run, ProgressObserver& progress) {
+  const std::size_t n_depths = spec.depths.size(), n_requested = n_depths + std::size_t(spec.nz);
+  std::vector<Peaks> peaks;
+  for (std::size_t p = 0; p < stress.size(); ++p) {
+    progress.step(detail::concat("maxima of plane ", p + 1, " of ", stress.size()));
+    check_interrupt();  // keeps the progress line going, and Ctrl-C prompt
+    const double z = planes.depths[p];
+    check_finite(stress[p], z);
+    const std::size_t layer = body.locate(z, planes.sides[p]).layer;
+    const bool row = p >= n_depths && p < n_requested;
+    const std::ptrdiff_t j0 = row ? grid.centre_j() : 0, j1 = row ? j0 + 1 : grid.ny();
+    peaks.push_back(plane_peaks(stress[p], grid, j0, j1, z, layer));
+    if (p < n_depths)
+      append_plane(stress[p], run.stress, run.von_mises);
+    else if (row)
+      append_row(stress[p], grid.centre_j(), run.section, run.section_von_mises);
+    else
+      append_plane(stress[p], run.interfaces, run.interfaces_von_mises);
+  }
+  return peaks;
 }
 
 nlohmann::json alias_warnings(const StressOperator& op) {
@@ -125,7 +180,8 @@ nlohmann::json alias_warnings(const StressOperator& op) {
 }  // namespace
 
 StressRun compute_stress(const StressSpec& spec, const LayerStack& body, const Grid& grid,
-                         const Field& pressure, const Tractions& q, int threads) {
+                         const Field& pressure, const Tractions& q, int threads,
+                         ProgressObserver& progress) {
   const auto start = std::chrono::steady_clock::now();
   const StressPlanes planes = stress_planes(spec, body);
   StressOperatorOptions options;
@@ -134,39 +190,33 @@ StressRun compute_stress(const StressSpec& spec, const LayerStack& body, const G
   options.boundary = spec.periodic ? Boundary::periodic : Boundary::free;
   options.sides = planes.sides;
   options.tangential = q.qx || q.qy;
+  options.on_planes = [&progress](std::size_t first, std::size_t count, std::size_t n) {
+    progress.step(count == 1 ? detail::concat("kernels of plane ", first + 1, " of ", n)
+                             : detail::concat("kernels of planes ", first + 1, " to ",
+                                              first + count, " of ", n));
+  };
   const std::unique_ptr<StressOperator> op =
       make_stress_operator(grid, body, planes.depths, options);
+  progress.step("convolutions");
   const auto apply_start = std::chrono::steady_clock::now();
   std::vector<PlaneStress> stress;
   op->apply(pressure, q.qx ? &*q.qx : nullptr, q.qy ? &*q.qy : nullptr, stress);
   const double apply_seconds = detail::seconds_since(apply_start);
-  for (std::size_t p = 0; p < stress.size(); ++p) check_finite(stress[p], planes.depths[p]);
 
   StressRun run;
-  Peaks peaks;  // over the planes asked for, as before the media had their own
-  const std::size_t n_requested = spec.depths.size() + std::size_t(spec.nz);
-  for (std::size_t p = 0; p < n_requested; ++p) {
-    peaks.take(stress[p], grid, planes.depths[p]);
-    if (p < spec.depths.size())
-      append_plane(stress[p], run.stress, run.von_mises);
-    else
-      append_row(stress[p], grid.centre_j(), run.section, run.section_von_mises);
-  }
+  const std::vector<Peaks> peaks = write_planes(spec, body, grid, planes, stress, run, progress);
   run.summary = {{"warnings", alias_warnings(*op)},
                  {"depths", spec.depths},
                  {"at_interface", spec.side == InterfaceSide::below ? "below" : "above"},
                  {"alpha", spec.periodic ? nlohmann::json() : nlohmann::json(spec.alpha)},
                  {"periodic", spec.periodic},
-                 {"max_von_mises", peaks.mises.json()},
-                 {"max_principal_tensile", peaks.tensile.json()},
-                 {"max_tresca", peaks.tresca.json()},
-                 {"layers", layer_maxima(body, grid, planes, stress)},
                  {"interfaces", interface_shear(spec, grid, planes, stress)},
                  {"planes", planes.depths.size()},
                  {"tangential", options.tangential},
                  {"setup_seconds", op->setup_seconds()},
-                 {"apply_seconds", apply_seconds},
-                 {"seconds", detail::seconds_since(start)}};
+                 {"apply_seconds", apply_seconds}};
+  add_maxima(run.summary, body, peaks);
+  run.summary["seconds"] = detail::seconds_since(start);
   if (spec.section)
     run.summary["section"] = {
         {"y", grid.y(grid.centre_j())}, {"depth_max", spec.depth_max}, {"nz", spec.nz}};

@@ -99,6 +99,7 @@ StressOperator::StressOperator(const Grid& grid, const LayerStack& stack,
     count = 1;
     while (count < kGroup && first + count < depths_.size() && side(first + count) == side(first))
       ++count;
+    if (options.on_planes) options.on_planes(first, count, depths_.size());
     add_planes(grid, stack, first, count, side(first), options);
   }
   setup_seconds_ = detail::seconds_since(start);

@@ -9,6 +9,7 @@
 // costs about three surface applications (docs/stress.md).
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <span>
 #include <vector>
@@ -40,6 +41,10 @@ struct StressOperatorOptions {
   /// periodic_stress_spectra's kernels, kernel.alpha unused.
   Boundary boundary = Boundary::free;
   Planning planning = Planning::estimate;
+  /// Called, when set, before the kernels of the planes first .. first + count - 1 (0-based, in
+  /// the order of the depths) are made, with the number of planes: their set-up is most of an
+  /// operator's cost, so a caller can show how far it is. It runs on the constructing thread.
+  std::function<void(std::size_t first, std::size_t count, std::size_t planes)> on_planes;
 };
 
 /// Throws InvalidArgument unless `depths` [m] is a plane list StressOperator computes: 1 to

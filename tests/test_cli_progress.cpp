@@ -138,7 +138,7 @@ TEST_CASE("Progress is silent in the first second, then prints stages and iterat
   CHECK(contains(out.str(), "iteration 13, residual 0.5\n"));
 }
 
-TEST_CASE("Progress::tick keeps a long stage's line going, once a second", "[cli][progress]") {
+TEST_CASE("Progress::tick keeps a long stage's lines going, within a second", "[cli][progress]") {
   std::ostringstream out;
   {
     Progress progress(true, out, t0);
@@ -146,17 +146,42 @@ TEST_CASE("Progress::tick keeps a long stage's line going, once a second", "[cli
     progress.stage("stresses on 3 planes", t0 + 100ms);
     progress.tick(t0 + 900ms);  // within the first second: silent
     CHECK(out.str().empty());
-    progress.tick(t0 + 1100ms);
-    std::string expected = "\rcoatfft [1.1 s] stresses on 3 planes ...";
+    progress.tick(t0 + 1100ms);  // a line of its own, which a reader of lines sees at once
+    std::string expected = "coatfft [1.1 s] stresses on 3 planes ...\n";
     CHECK(out.str() == expected);
-    progress.tick(t0 + 1600ms);  // not a second since the last line
+    progress.tick(t0 + 1600ms);  // not 0.9 s since the last line
     CHECK(out.str() == expected);
-    progress.tick(t0 + 2200ms);
-    expected += "\rcoatfft [2.2 s] stresses on 3 planes ...";
+    progress.tick(t0 + 2000ms);
+    expected += "coatfft [2.0 s] stresses on 3 planes ...\n";
     CHECK(out.str() == expected);
-    // The next stage starts a line of its own.
-    progress.stage("writing summary.json", t0 + 2300ms);
-    expected += "\ncoatfft [2.3 s] writing summary.json\n";
+  }
+}
+
+TEST_CASE("Progress names the step a stage is on: a sweep's value, a plane", "[cli][progress]") {
+  std::ostringstream out;
+  {
+    Progress progress(true, out, t0);
+    progress.stage("solving the contact (load control, a sweep)", t0 + 100ms);
+    progress.step("load 1 of 3: 10 N", t0 + 200ms);  // within the first second: silent
+    CHECK(out.str().empty());
+    progress.iteration(7, 0.5, t0 + 1100ms);  // the iterations are the step's
+    std::string expected =
+        "\rcoatfft [1.1 s] load 1 of 3: 10 N, contact solve: iteration 7, residual 0.5";
+    CHECK(out.str() == expected);
+    progress.step("load 2 of 3: 20 N", t0 + 1200ms);  // within 0.25 s of the last line: kept ...
+    CHECK(out.str() == expected);
+    progress.tick(t0 + 2050ms);  // ... and shown by the next line, with the stage
+    expected +=
+        "\ncoatfft [2.0 s] solving the contact (load control, a sweep): load 2 of 3: 20 N ...\n";
+    CHECK(out.str() == expected);
+    progress.step("load 3 of 3: 40 N", t0 + 2300ms);
+    expected += "coatfft [2.3 s] solving the contact (load control, a sweep): load 3 of 3: 40 N\n";
+    CHECK(out.str() == expected);
+    // A new stage has no step until it reports one.
+    progress.stage("stresses on 21 planes", t0 + 2400ms);
+    progress.tick(t0 + 3400ms);
+    expected +=
+        "coatfft [2.4 s] stresses on 21 planes\ncoatfft [3.4 s] stresses on 21 planes ...\n";
     CHECK(out.str() == expected);
   }
 }

@@ -6,8 +6,11 @@
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <string>
+#include <vector>
 
+#include "core/grid.hpp"
 #include "scene/npy.hpp"
 #include "tests/cli_process.hpp"
 
@@ -68,8 +71,12 @@ TEST_CASE("[stress] writes the stress files with their shapes and summary keys",
   // One medium, which holds every plane: its maxima are the body's.
   REQUIRE(s["layers"].size() == 1);
   CHECK(s["layers"][0]["medium"] == "substrate");
-  for (const char* key : {"max_von_mises", "max_principal_tensile", "max_tresca"})
-    CHECK(s["layers"][0][key] == s[key]);
+  for (const char* key : {"max_von_mises", "max_principal_tensile", "max_tresca"}) {
+    nlohmann::json overall = s[key];
+    CHECK(overall["medium"] == "substrate");
+    overall.erase("medium");
+    CHECK(s["layers"][0][key] == overall);
+  }
 
   // The section row at z = 2.5e-4 (k = 1 of 4) is the row j = 16 (y = 0) of the first plane.
   const std::vector<double> plane = npy_values(out / "stress.npy");
@@ -331,4 +338,154 @@ alpha = 4
       }
   CHECK(jump > 3e7);  // the sides differ: sigma_xx jumps across the interface, 6.7 % of p0
   CHECK(read_summary(below)["stress"]["at_interface"] == "below");
+}
+
+namespace {
+
+// A coating of thickness 2e-4 m on steel (16 x 14 cells over 2 x 1.75 mm) under a Hertz
+// pressure (a = 0.6 mm) with the planes 2e-4 (the interface, below) and 3e-4 m, and the section's
+// rows at 2e-4 and 4e-4 m: every plane asked for is in the substrate. `extra` adds to it.
+std::string interface_scene(const std::string& coating, const std::string& extra) {
+  return "[substrate]\nmaterial = \"steel\"\n[[coating]]\nthickness = 2e-4\n" + coating + R"(
+[grid]
+nx = 16
+ny = 14
+lx = 2.0e-3
+ly = 1.75e-3
+[method]
+name = "frf-split"
+[pressure]
+kind = "hertz"
+sampling = "cell_average"
+a = 0.6e-3
+p0 = 1.0e9
+[stress]
+depths = [2e-4, 3e-4]
+section = "xz"
+depth_max = 4e-4
+nz = 2
+alpha = 2
+)" + extra;
+}
+
+// Von Mises, the largest principal stress and Tresca's shear of (xx, yy, zz, yz, xz, xy) by the
+// closed form of a symmetric 3 x 3 matrix's eigenvalues (Smith 1961), not the program's
+// iterative solver.
+std::array<double, 3> invariants(const std::array<double, 6>& s) {
+  const double q = (s[0] + s[1] + s[2]) / 3;
+  const double off = s[3] * s[3] + s[4] * s[4] + s[5] * s[5];
+  const double p = std::sqrt(
+      ((s[0] - q) * (s[0] - q) + (s[1] - q) * (s[1] - q) + (s[2] - q) * (s[2] - q) + 2 * off) / 6);
+  double e1 = q, e3 = q;
+  if (p > 0) {
+    const double a = (s[0] - q) / p, b = (s[1] - q) / p, c = (s[2] - q) / p;
+    const double d = s[3] / p, e = s[4] / p, f = s[5] / p;  // yz, xz, xy
+    const double det = a * (b * c - d * d) - f * (f * c - d * e) + e * (f * d - b * e);
+    const double phi = std::acos(std::clamp(det / 2, -1.0, 1.0)) / 3;
+    e1 = q + 2 * p * std::cos(phi);
+    e3 = q + 2 * p * std::cos(phi + 2 * std::numbers::pi / 3);
+  }
+  const double vm = std::sqrt(0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[2]) * (s[1] - s[2]) +
+                                     (s[2] - s[0]) * (s[2] - s[0])) +
+                              3 * off);
+  return {vm, e1, 0.5 * (e1 - e3)};
+}
+
+// A point of a written plane: where it is, its medium (0: the coating) and its invariants.
+struct WrittenPoint {
+  double x, y, z;
+  int medium;
+  std::array<double, 3> value;
+};
+
+// Every point of the planes a run wrote: stress.npy, stress_section.npy (the row y = y_centre)
+// and stress_interfaces.npy (the interface 2e-4 from above, the coating, and from below).
+std::vector<WrittenPoint> written_points(const fs::path& out) {
+  const int nx = 16, ny = 14, n = nx * ny;
+  const coatfft::Grid grid(nx, ny, 2.0e-3, 1.75e-3);
+  const double h = 2e-4;
+  std::vector<WrittenPoint> points;
+  const auto add = [&](const std::vector<double>& v, std::size_t first, std::size_t stride, int i,
+                       int j, double z, int medium) {
+    std::array<double, 6> s{};
+    for (std::size_t c = 0; c < 6; ++c) s[c] = v[first + c * stride];
+    points.push_back({grid.x(i), grid.y(j), z, medium, invariants(s)});
+  };
+  const std::vector<double> planes = npy_values(out / "stress.npy");
+  const double depths[] = {h, 3e-4};  // both in the substrate (at_interface = "below")
+  for (int p = 0; p < 2; ++p)
+    for (int k = 0; k < n; ++k)
+      add(planes, std::size_t(6 * p * n + k), n, k % nx, k / nx, depths[p], 1);
+  const std::vector<double> section = npy_values(out / "stress_section.npy");
+  for (int r = 0; r < 2; ++r)
+    for (int i = 0; i < nx; ++i)
+      add(section, std::size_t(6 * r * nx + i), nx, i, (ny - 1) / 2, h * (r + 1), 1);
+  const std::vector<double> sides = npy_values(out / "stress_interfaces.npy");
+  REQUIRE(sides.size() == std::size_t(2 * 6 * n));
+  for (int side = 0; side < 2; ++side)
+    for (int k = 0; k < n; ++k)
+      add(sides, std::size_t(6 * side * n + k), n, k % nx, k / nx, h, side);
+  return points;
+}
+
+}  // namespace
+
+TEST_CASE("[stress] maxima are the media's, over the planes written, interfaces from both sides",
+          "[cli_stress][interface]") {
+  // A stiff and a soft coating, under pressure alone and sliding (q_x = 0.3 p).
+  const std::string stiff = "material = \"titanium_nitride\"", soft = "E = 2e10\nnu = 0.3";
+  const std::string sliding = "[shear]\nkind = \"proportional\"\nmu = 0.3\n";
+  const std::pair<std::string, std::string> scenes[] = {
+      {stiff, ""}, {stiff, sliding}, {soft, ""}, {soft, sliding}};
+  const char* keys[] = {"max_von_mises", "max_principal_tensile", "max_tresca"};
+  const char* media[] = {"coating 1", "substrate"};
+  int index = 0;
+  for (const auto& [coating, extra] : scenes) {
+    INFO("scene " << index);
+    const fs::path out =
+        run_scene_ok(interface_scene(coating, extra), "stress_maxima" + std::to_string(index++));
+    CHECK(npy_shape(out / "stress_interfaces.npy") == "(1, 2, 6, 14, 16)");
+    CHECK(npy_shape(out / "von_mises_interfaces.npy") == "(1, 2, 14, 16)");
+    const nlohmann::json s = read_summary(out)["stress"];
+    REQUIRE(s["layers"].size() == 2);
+    const std::vector<WrittenPoint> points = written_points(out);
+    for (int q = 0; q < 3; ++q) {
+      INFO(keys[q]);
+      // The overall maximum is one of the media's, entry for entry.
+      const nlohmann::json& overall = s[keys[q]];
+      double largest = -INFINITY;
+      for (int m = 0; m < 2; ++m) {
+        const nlohmann::json& layer = s["layers"][m][keys[q]];
+        largest = std::max(largest, layer["value"].get<double>());
+        if (overall["medium"] == media[m])
+          for (const char* k : {"value", "x", "y", "z"}) CHECK(overall[k] == layer[k]);
+      }
+      CHECK(overall["value"].get<double>() == largest);
+      // Against the written arrays: the largest value over all their points and per medium, and
+      // a written point where the summary says. The closed-form eigenvalues lose about
+      // sqrt(eps) |s| to acos near a double root: 1e-6 of the largest stress covers them.
+      const double tolerance = 1e-6 * s["max_von_mises"]["value"].get<double>();
+      double all = -INFINITY, per[2] = {-INFINITY, -INFINITY};
+      bool located = false;
+      for (const WrittenPoint& w : points) {
+        all = std::max(all, w.value[q]);
+        per[w.medium] = std::max(per[w.medium], w.value[q]);
+        located = located || (overall["medium"] == media[w.medium] && overall["z"] == w.z &&
+                              overall["x"] == w.x && overall["y"] == w.y &&
+                              std::abs(w.value[q] - overall["value"].get<double>()) <= tolerance);
+      }
+      CHECK(std::abs(overall["value"].get<double>() - all) <= tolerance);
+      for (int m = 0; m < 2; ++m)
+        CHECK(std::abs(s["layers"][m][keys[q]]["value"].get<double>() - per[m]) <= tolerance);
+      CHECK(located);
+    }
+    // The von Mises files hold the very values the summary's maximum is of.
+    double vm = -INFINITY;
+    for (const char* f : {"von_mises.npy", "von_mises_section.npy", "von_mises_interfaces.npy"})
+      for (double v : npy_values(out / f)) vm = std::max(vm, v);
+    CHECK(s["max_von_mises"]["value"].get<double>() == vm);
+    // The stiff coating carries the largest von Mises stress on its bottom face, a plane no
+    // depth asked for: the interface seen from above.
+    if (coating == stiff) CHECK(s["max_von_mises"]["medium"] == "coating 1");
+  }
 }

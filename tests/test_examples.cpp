@@ -496,4 +496,11 @@ TEST_CASE("example rough_coated_sliding.toml: a sliding rough contact balances i
   REQUIRE(layers.size() == 2);
   CHECK(number(layers[0]["max_von_mises"]["z"]) <= 1e-5 * (1 + 1e-12));
   CHECK(number(layers[1]["max_von_mises"]["z"]) >= 1e-5 * (1 - 1e-12));
+  // The body's largest tension is the coating's, 1.1 GPa on its bottom face (the interface from
+  // above), though no plane asked for lies there.
+  const nlohmann::json& tensile = s["stress"]["max_principal_tensile"];
+  nlohmann::json coating = layers[0]["max_principal_tensile"];
+  coating["medium"] = "coating 1";
+  CHECK(tensile == coating);
+  CHECK(number(tensile["value"]) > 1e9);
 }

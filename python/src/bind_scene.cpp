@@ -25,7 +25,7 @@ namespace coatfft::python {
 namespace {
 
 // The arrays of a [stress] scene, shaped as the program's stress.npy, von_mises.npy,
-// stress_section.npy and von_mises_section.npy.
+// stress_section.npy, von_mises_section.npy, stress_interfaces.npy and von_mises_interfaces.npy.
 void add_stress_arrays(const Grid& grid, const scene::StressRun& s, py::dict& out) {
   const auto as_array = [](const std::vector<double>& v, std::vector<py::ssize_t> shape) {
     py::array_t<double> a(shape);
@@ -42,6 +42,11 @@ void add_stress_arrays(const Grid& grid, const scene::StressRun& s, py::dict& ou
     const py::ssize_t nz = static_cast<py::ssize_t>(s.section_von_mises.size()) / nx;
     out["stress_section"] = as_array(s.section, {nz, 6, nx});
     out["von_mises_section"] = as_array(s.section_von_mises, {nz, nx});
+  }
+  if (!s.interfaces_von_mises.empty()) {
+    const py::ssize_t ni = static_cast<py::ssize_t>(s.interfaces_von_mises.size()) / (2 * nx * ny);
+    out["stress_interfaces"] = as_array(s.interfaces, {ni, 2, 6, ny, nx});
+    out["von_mises_interfaces"] = as_array(s.interfaces_von_mises, {ni, 2, ny, nx});
   }
 }
 

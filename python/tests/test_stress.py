@@ -64,7 +64,8 @@ def test_equals_the_program(coatfft_exe, tmp_path, steel, tin):
                           capture_output=True, text=True, timeout=300)
     assert done.returncode == 0, done.stderr
     run = coatfft.run_scene(str(scene))
-    for name in ("stress", "von_mises", "stress_section", "von_mises_section"):
+    for name in ("stress", "von_mises", "stress_section", "von_mises_section",
+                 "stress_interfaces", "von_mises_interfaces"):
         np.testing.assert_array_equal(run[name], np.load(out / f"{name}.npy"))
     # The library call with the scene's body, load and depths gives the same planes.
     grid = coatfft.Grid(33, 33, 4e-3, 4e-3)

@@ -263,13 +263,16 @@ def test_run_writes_netcdf_equal_to_its_npy_files(coatfft_exe, tmp_path):
     coating = coatfft.material("titanium_nitride")
     assert summary["body"]["coatings"] == [{"E": coating.E, "nu": coating.nu, "thickness": 2e-5,
                                             "interface_below": "bonded"}]
-    same_maps("stress", ("uz", "pressure", "gap", "ux", "uy", "stress", "von_mises"))
+    same_maps("stress", ("uz", "pressure", "gap", "ux", "uy", "stress", "von_mises",
+                         "stress_interfaces", "von_mises_interfaces"))
     with netCDF4.Dataset(tmp_path / "stress_nc" / "fields.nc") as nc:
         for name in ("stress_section", "von_mises_section"):
             assert np.array_equal(np.asarray(nc[name]), np.load(tmp_path / "stress_npy" / f"{name}.npy"))
         assert np.array_equal(nc["depth"][:], [1e-5, 3e-5])
         assert np.allclose(nc["section_depth"][:], [1e-5, 2e-5, 3e-5, 4e-5])
         assert nc["stress"].dimensions == ("depth", "component", "x", "y")
+        assert nc["stress_interfaces"].dimensions == ("interface", "side", "component", "x", "y")
+        assert np.array_equal(nc["interface"][:], [2e-5]) and len(nc.dimensions["side"]) == 2
 
 
 def test_surface_written_as_netcdf_is_the_npy_surface(coatfft_exe, tmp_path):
