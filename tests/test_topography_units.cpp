@@ -76,3 +76,28 @@ TEST_CASE("edge mismatch: a ramp's jump across the edge against its closed form"
   // Across the edge: cos(2 pi 0.5/16) - cos(2 pi 15.5/16) = 0 on every x line.
   CHECK(m.rms_jump < 1e-14);
 }
+
+TEST_CASE("roughness: heights near the largest double give finite parameters",
+          "[topography][roughness]") {
+  // The sine and ramp above times 1e200: every parameter times 1e200 (their squares overflow
+  // unscaled), and heights of +-1.7e308 alternating along x: rms height 1.7e308, mean 0.
+  const double s = 1e200, A = 2e-6 * s, L = 1e-3;
+  const int n = 16, m = 1;
+  const double d = L / n;
+  const Grid g(n, 6, L, 6 * d);
+  Field z(n, 6);
+  for (Eigen::Index j = 0; j < 6; ++j)
+    for (Eigen::Index i = 0; i < n; ++i) z(i, j) = A * std::sin(2 * M_PI * m * g.x(i) / L);
+  CHECK(rms_height(z) == Approx(A / std::sqrt(2.0)).epsilon(1e-13));
+  CHECK(rms_slope(g, z, true) ==
+        Approx(std::sqrt(2.0) * A * std::sin(M_PI * m / n) / d).epsilon(1e-13));
+  Field ramp(8, 5);
+  for (Eigen::Index j = 0; j < 5; ++j)
+    for (Eigen::Index i = 0; i < 8; ++i) ramp(i, j) = 3e-7 * s * static_cast<double>(i);
+  const EdgeMismatch e = edge_mismatch(ramp);
+  CHECK(e.rms_step == Approx(3e-7 * s * std::sqrt(35.0 / 67.0)).epsilon(1e-13));
+  CHECK(e.rms_jump == Approx(3e-7 * s * 7 * std::sqrt(5.0 / 13.0)).epsilon(1e-13));
+  Field extreme(4, 2);
+  extreme << 1.7e308, -1.7e308, 1.7e308, -1.7e308, -1.7e308, 1.7e308, -1.7e308, 1.7e308;
+  CHECK(rms_height(extreme) == Approx(1.7e308).epsilon(1e-15));
+}
