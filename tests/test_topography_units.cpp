@@ -2,9 +2,11 @@
 // (surfaces/roughness.hpp) against closed forms.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
 
 #include "core/error.hpp"
 #include "surfaces/roughness.hpp"
+#include "topography/topography_summary.hpp"
 #include "topography/units.hpp"
 
 using namespace coatfft;
@@ -100,4 +102,24 @@ TEST_CASE("roughness: heights near the largest double give finite parameters",
   Field extreme(4, 2);
   extreme << 1.7e308, -1.7e308, 1.7e308, -1.7e308, -1.7e308, 1.7e308, -1.7e308, 1.7e308;
   CHECK(rms_height(extreme) == Approx(1.7e308).epsilon(1e-15));
+}
+
+TEST_CASE("a file's map that no grid holds is refused naming the file and what is wrong",
+          "[topography]") {
+  topography::Topography t;
+  t.heights = Field::Zero(70, 2);
+  t.lx = 70 * 1e-321;  // a spacing of 1e-321 m: a map of 7e-320 m
+  t.ly = 1.0;
+  CHECK_THROWS_WITH(topography::topography_grid("h.x3p", t),
+                    Catch::Contains("h.x3p: the spacing 1e-321") &&
+                        Catch::Contains(" m along x makes the map 6.9") &&
+                        Catch::Contains("outside the [1e-100, 1e+100] m a grid takes"));
+  t.lx = 1.0;
+  t.ly = std::numeric_limits<double>::infinity();  // 2 points of 1e308 m
+  CHECK_THROWS_WITH(topography::topography_grid("h.nc", t),
+                    Catch::Contains("h.nc: the spacing inf m along y makes the map inf m long"));
+  t.heights = Field::Zero(70000, 2);
+  t.lx = t.ly = std::nullopt;
+  CHECK_THROWS_WITH(topography::topography_grid("h.csv", t),
+                    Catch::Contains("h.csv: 70000 points along x, more than the 65536"));
 }
