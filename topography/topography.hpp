@@ -65,8 +65,8 @@ struct Topography {
 Topography read_topography(const std::filesystem::path& path, const ReadOptions& options = {});
 
 /// The most multiply-adds a fill may take: its factorisation's, estimated from the holes' sizes
-/// and then counted before it is made (about 35 s at the 0.6e9 a second measured on one core: a
-/// hole of 1024^2 points; a map of 2048^2 points with 99.9 % missing needs 7 times more).
+/// and then counted before it is made (about 35 s at the 0.6e9 a second measured on one core; a
+/// map of 768^2 points with 99.9 % missing takes 9.6e9, one of 2048^2 about 15 times more).
 inline constexpr double max_fill_operations = 2e10;
 /// Each equation of the filled map's harmonic rule holds to this fraction of its scale (8 times
 /// the largest height: the point's up to 4 times its height and its 4 neighbours), checked after
