@@ -6,6 +6,7 @@
 #include <functional>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -167,6 +168,12 @@ Command add_surface(CLI::App& app) {
           }};
 }
 
+// --max-memory as typed: bytes, or none when not given.
+std::optional<double> memory_limit(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  return coatfft::scene::parse_memory_size(text, "--max-memory");
+}
+
 Command add_topography(CLI::App& app) {
   struct Args {
     coatfft::cli::TopographyOptions options;
@@ -194,9 +201,7 @@ Command add_topography(CLI::App& app) {
                   "machine has available)");
   cmd->add_flag("--overwrite", o->overwrite, "Replace the output file if it exists");
   return {cmd, [args] {
-            if (!args->max_memory.empty())
-              args->options.max_memory =
-                  coatfft::scene::parse_memory_size(args->max_memory, "--max-memory");
+            args->options.max_memory = memory_limit(args->max_memory);
             coatfft::cli::topography_command(args->options);
             return 0;
           }};
