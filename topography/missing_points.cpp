@@ -178,6 +178,10 @@ std::size_t fill_missing_points(Field& heights, std::optional<double> max_memory
   const std::vector<Index> number = number_missing(heights, unknowns);
   if (unknowns == 0) return 0;
   COATFFT_REQUIRE(unknowns < heights.size(), where, ": every point is missing");
+  // The sparse matrices count their entries (5 a row) in int.
+  constexpr Index max_unknowns = std::numeric_limits<int>::max() / 5;
+  COATFFT_REQUIRE(unknowns <= max_unknowns, where, ": ", unknowns,
+                  " missing points, more than the ", max_unknowns, " a fill takes");
   const double memory = max_memory
                             ? *max_memory
                             : available_memory().value_or(std::numeric_limits<double>::infinity());

@@ -45,7 +45,7 @@ struct ReadOptions {
   /// How the caller's user asks for missing points to be filled, for the refusal that names
   /// them: a scene's key (the default), `--missing fill` of `coatfft topography`, Python's
   /// keyword.
-  std::string fill_hint = "[contact] missing = \"fill\"";
+  std::string fill_hint = "missing = \"fill\"";
 };
 
 /// A height map as read from a file.
