@@ -213,7 +213,6 @@ TEST_CASE(
                     Catch::Contains("w.npy: filling 1439999 missing points takes about") &&
                         Catch::Contains("estimated from the holes' sizes"));
   // Past the first estimate, refused on the factor's count.
-  CHECK_THROWS_WITH(
-      topography::fill_missing_points(copy, 14e6, "h.npy"),
-      Catch::Contains("25599 missing points (a factor of") && Catch::Contains("+ nonzeros)"));
+  CHECK_THROWS_WITH(topography::fill_missing_points(copy, 14e6, "h.npy"),
+                    Catch::Contains("25599 missing points (a factor of more than"));
 }

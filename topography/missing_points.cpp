@@ -151,10 +151,11 @@ FactorSize factor_size(const Matrix& upper, double max_nonzeros, double max_flop
 void require_fill_bounds(std::string_view where, Index unknowns,
                          const std::optional<FactorSize>& factor, std::optional<double> limit) {
   const double nonzeros = factor ? factor->nonzeros : 0.0;
-  const std::string drivers =
-      factor ? detail::concat(unknowns, " missing points (a factor of ", nonzeros,
-                              factor->complete ? "" : "+", " nonzeros)")
-             : detail::concat(unknowns, " missing points");
+  const std::string drivers = factor
+                                  ? detail::concat(unknowns, " missing points (a factor of ",
+                                                   factor->complete ? "" : "more than ", nonzeros,
+                                                   " nonzeros, counted up to the limit)")
+                                  : detail::concat(unknowns, " missing points");
   require_memory(
       {bytes_per_unknown * static_cast<double>(unknowns) + bytes_per_factor_nonzero * nonzeros,
        drivers},
@@ -162,8 +163,8 @@ void require_fill_bounds(std::string_view where, Index unknowns,
       "measure or crop a map with fewer or smaller holes");
   COATFFT_REQUIRE(!factor || factor->flops <= max_fill_operations, where, ": filling ", unknowns,
                   " missing points takes more than ", max_fill_operations / 1e9,
-                  "e9 multiply-adds (a factor of ", nonzeros,
-                  "+ nonzeros), the limit: measure or crop a map with fewer or smaller holes");
+                  "e9 multiply-adds (a factor of more than ", nonzeros,
+                  " nonzeros), the limit: measure or crop a map with fewer or smaller holes");
 }
 }  // namespace
 
