@@ -6,6 +6,7 @@
 #include <functional>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -153,6 +154,7 @@ Command add_surface(CLI::App& app) {
                   "Roll-off wavelength [m] (default max(lx, ly): no roll-off)");
   cmd->add_option("--seed", o->seed,
                   "Seed of the random phases, an integer in [0, 2^64 - 1] (default 0)");
+  cmd->add_flag("--overwrite", o->overwrite, "Replace the output file if it exists");
   return {cmd, [o] {
 #ifdef COATFFT_WITH_MPI
             if (coatfft::detail::mpi_launch().size > 1) {
@@ -165,8 +167,19 @@ Command add_surface(CLI::App& app) {
           }};
 }
 
+// --max-memory as typed: bytes, or none when not given.
+std::optional<double> memory_limit(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  return coatfft::scene::parse_memory_size(text, "--max-memory");
+}
+
 Command add_topography(CLI::App& app) {
-  auto o = std::make_shared<coatfft::cli::TopographyOptions>();
+  struct Args {
+    coatfft::cli::TopographyOptions options;
+    std::string max_memory;
+  };
+  auto args = std::make_shared<Args>();
+  coatfft::cli::TopographyOptions* o = &args->options;
   CLI::App* cmd = app.add_subcommand(
       "topography",
       "Read a measured topography, print its summary (JSON), write it as .npy or .nc");
@@ -182,8 +195,13 @@ Command add_topography(CLI::App& app) {
   cmd->add_flag("--gap", o->gap,
                 "Write the gap max(z) - z [m] a rigid flat sees (after --detrend) as .npy, for "
                 "[contact] indenter = \"height_map\", instead of the heights");
-  return {cmd, [o] {
-            coatfft::cli::topography_command(*o);
+  cmd->add_option("--max-memory", args->max_memory,
+                  "Memory reading and filling the map may use, e.g. 4G (default: what the "
+                  "machine has available)");
+  cmd->add_flag("--overwrite", o->overwrite, "Replace the output file if it exists");
+  return {cmd, [args] {
+            args->options.max_memory = memory_limit(args->max_memory);
+            coatfft::cli::topography_command(args->options);
             return 0;
           }};
 }

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/output_file.hpp"
 #include "cli/staged_output.hpp"
 #include "core/detail/shorten.hpp"
 #include "core/error.hpp"
@@ -79,8 +80,10 @@ void surface_command(const SurfaceOptions& o) {
   const auto [grid, spec, format] = request(o);
   // The output is checked before any work: a file that cannot be written is refused at once.
   StagedFile file(o.output, "output file", {});
+  refuse_existing_output(o.output, o.overwrite);
   const Field h = self_affine_surface(grid, spec);
   topography::write_heights(file.path(), format, h, grid, true, surface_attributes(o));
+  refuse_existing_output(o.output, o.overwrite);  // made while the surface was
   file.commit();
   report(o, std::sqrt(h.square().mean()), spectral_rms_slope(grid, h));
 }
@@ -94,6 +97,7 @@ void surface_command(const SurfaceOptions& o, const Communicator& comm) {
   if (comm.rank() == 0) {
     try {
       file.emplace(o.output, "output file", std::vector<std::filesystem::path>{});
+      refuse_existing_output(o.output, o.overwrite);
       staged = file->path().string();
     } catch (const InvalidArgument& e) {
       refusal = e.what();

@@ -1,8 +1,8 @@
 #pragma once
 // `coatfft surface -o FILE.npy|FILE.nc --nx N --ny N --lx L --ly L --hurst H (--rms-height R |
-// --rms-slope S) [--short-cutoff LS] [--long-cutoff LR] [--seed K]`: a periodic self-affine random
-// surface (surfaces/self_affine_surface.hpp) written as a (ny, nx) float64 .npy of heights [m], or
-// as a NetCDF file in SurfaceTopography's layout (topography/netcdf_writer.hpp).
+// --rms-slope S) [--short-cutoff LS] [--long-cutoff LR] [--seed K] [--overwrite]`: a periodic
+// self-affine random surface (surfaces/self_affine_surface.hpp) written as a (ny, nx) float64 .npy
+// of heights [m], or as a NetCDF file in SurfaceTopography's layout (topography/netcdf_writer.hpp).
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -24,6 +24,7 @@ struct SurfaceOptions {
   std::optional<double> rms_height, rms_slope, short_cutoff, long_cutoff;
   /// --seed as typed: parsed by parse_seed (CLI11 would saturate -1 or 2^64 to 2^64 - 1).
   std::string seed = "0";
+  bool overwrite = false;  ///< replace an existing output file (else it is refused)
 };
 
 /// The --seed text as an integer in [0, 2^64 - 1]: decimal digits only, or InvalidArgument

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "cli/output_file.hpp"
 #include "cli/staged_output.hpp"
 #include "core/error.hpp"
 #include "surfaces/detrend.hpp"
@@ -28,6 +29,8 @@ void topography_command(const TopographyOptions& o) {
   topography::ReadOptions read;
   read.unit = o.unit;
   read.missing = topography::missing_points_from_name(o.missing, "--missing");
+  read.max_memory = o.max_memory;
+  read.fill_hint = "--missing fill";
   const Detrend detrend = detrend_from_name(o.detrend, "--detrend");
   COATFFT_REQUIRE(o.lx.has_value() == o.ly.has_value(), "give both --lx and --ly, or neither");
   std::optional<StagedFile> file;
@@ -40,26 +43,31 @@ void topography_command(const TopographyOptions& o) {
     COATFFT_REQUIRE(!o.gap || format == topography::HeightsFormat::npy,
                     "--gap: ", o.output->string(), ": the gap is written as .npy (name it *.npy)");
     file.emplace(*o.output, "output file", std::vector{o.input});
+    refuse_existing_output(*o.output, o.overwrite);
   }
   topography::Topography t = topography::read_topography(o.input, read);
   apply_size(t.lx, o.lx, "--lx");
   apply_size(t.ly, o.ly, "--ly");
-  const Grid grid = topography::topography_grid(t);
+  const Grid grid = topography::topography_grid(o.input, t);
   const Field heights = detrended(grid, t.heights, detrend);
+  topography::require_finite_map(o.input, heights, "the detrended map");
+  // The summary before the file: a parameter beyond the largest double is refused, writing
+  // nothing.
+  const std::optional<Grid> sized = t.lx ? std::optional(grid) : std::nullopt;
+  const nlohmann::json summary = topography::topography_summary(o.input, t, heights, detrend, sized,
+                                                                t.periodic.value_or(false));
   if (file) {
     COATFFT_REQUIRE(t.lx || format == topography::HeightsFormat::npy, o.input.string(),
                     ": the file carries no size; give --lx and --ly to write a NetCDF file");
+    const Field written = o.gap ? gap_of_topography(heights) : heights;
+    if (o.gap) topography::require_finite_map(o.input, written, "the gap max(z) - z");
     topography::write_heights(
-        file->path(), *format, o.gap ? gap_of_topography(heights) : heights, grid,
-        t.periodic.value_or(false),
+        file->path(), *format, written, grid, t.periodic.value_or(false),
         {{{"source", o.input.filename().string()}, {"format", t.format}}, {}});
+    refuse_existing_output(*o.output, o.overwrite);  // made while the map was read
     file->commit();
   }
-  const std::optional<Grid> sized = t.lx ? std::optional(grid) : std::nullopt;
-  std::cout << topography::topography_summary(t, heights, detrend, sized,
-                                              t.periodic.value_or(false))
-                   .dump(2, ' ', false, nlohmann::json::error_handler_t::replace)
-            << "\n";
+  std::cout << summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
 }
 
 }  // namespace coatfft::cli

@@ -33,6 +33,7 @@ T agreed(const std::optional<T>& given, const std::optional<T>& in_file, const c
 TopographyGrid topography_grid_keys(const SceneTopography& t, std::optional<std::int64_t> nx,
                                     std::optional<std::int64_t> ny, std::optional<double> lx,
                                     std::optional<double> ly) {
+  topography::topography_grid(t.file, t.map);  // refuses a map no grid holds, naming the file
   const std::optional<std::int64_t> file_nx = t.map.heights.rows(), file_ny = t.map.heights.cols();
   return {agreed(nx, file_nx, "nx", t), agreed(ny, file_ny, "ny", t), agreed(lx, t.map.lx, "lx", t),
           agreed(ly, t.map.ly, "ly", t)};
@@ -56,11 +57,13 @@ TopographyGap topography_gap(const SceneTopography& t, const Grid& grid, Detrend
   const Grid map_grid(nx, ny, grid.dx() * static_cast<double>(nx),
                       grid.dy() * static_cast<double>(ny));
   const Field heights = detrended(map_grid, t.map.heights, detrend);
+  topography::require_finite_map(t.file, heights, "the detrended map");
   const Field map_gap = gap_of_topography(heights);
-  TopographyGap out{
-      Field::Constant(grid.nx(), grid.ny(),
-                      pad_gap(map_gap.maxCoeff(), map_grid.lx(), map_grid.ly())),
-      topography::topography_summary(t.map, heights, detrend, map_grid, periodic && pad == 0)};
+  topography::require_finite_map(t.file, map_gap, "the gap max(z) - z");
+  TopographyGap out{Field::Constant(grid.nx(), grid.ny(),
+                                    pad_gap(map_gap.maxCoeff(), map_grid.lx(), map_grid.ly())),
+                    topography::topography_summary(t.file, t.map, heights, detrend, map_grid,
+                                                   periodic && pad == 0)};
   out.gap.block(pad, pad, nx, ny) = map_gap;
   // The scene's grid, not the file's, sizes the map (lx, ly, rms_slope above); the slope crosses
   // the map's edges only where the map is its own periodic copy's neighbour.

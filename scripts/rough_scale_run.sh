@@ -33,7 +33,7 @@ results=$root/bench/results/rough_scale.csv
 load=$($python -c "print(0.045 * 210e9 / (1 - 0.3**2) * 0.05 * 1e-3 * 1e-3)")
 for n in "${sizes[@]}"; do
   echo "== $n^2" >&2
-  "$coatfft" surface -o "$tmp/z.npy" --nx "$n" --ny "$n" --lx 1e-3 --ly 1e-3 --hurst 0.8 \
+  "$coatfft" surface -o "$tmp/z.npy" --overwrite --nx "$n" --ny "$n" --lx 1e-3 --ly 1e-3 --hurst 0.8 \
     --rms-slope 0.05 --short-cutoff "$($python -c "print(16 * 1e-3 / $n)")" --long-cutoff 2.5e-4 \
     --seed 2004
   $python -c "

@@ -1,6 +1,8 @@
 #pragma once
 // Roughness parameters of a height map in the space domain (ISO 25178-2's Sq and Sdq, on the
-// sampled points): for measured topographies, whose spectrum is not periodic.
+// sampled points): for measured topographies, whose spectrum is not periodic. Each is computed on
+// the heights divided by a power of two near the largest, so that it is finite whenever its value
+// is (heights near the largest double square to infinity otherwise).
 #include "../core/grid.hpp"
 #include "../core/types.hpp"
 

@@ -16,10 +16,10 @@ for case in "1 2 3: 64 50 --rms-slope 0.1" "3: 30 14 --rms-height 1e-6"; do
   read -r -a rank_counts <<<"${case%%:*}"
   read -r nx ny rms <<<"${case#*: }"
   args="--nx $nx --ny $ny --lx 1e-3 --ly 0.8e-3 --hurst 0.7 $rms --seed 2026"
-  "$coatfft" surface -o "$tmp/serial.npy" $args >/dev/null
+  "$coatfft" surface -o "$tmp/serial.npy" $args --overwrite >/dev/null
   for ranks in "${rank_counts[@]}"; do
     "$mpiexec" -np "$ranks" --oversubscribe "$coatfft" surface -o "$tmp/np$ranks.npy" $args \
-      >"$tmp/out.txt"
+      --overwrite >"$tmp/out.txt"
     cmp -s "$tmp/serial.npy" "$tmp/np$ranks.npy" || fail "$nx x $ny $rms at $ranks ranks differs"
     # One line from rank 0 only.
     [ "$(wc -l <"$tmp/out.txt")" -eq 1 ] || fail "$(cat "$tmp/out.txt")"

@@ -55,9 +55,9 @@ TEST_CASE("coatfft surface writes a reproducible self-affine surface", "[cli_sur
   CHECK(std::sqrt(h.square().mean()) == Approx(0.5e-6).epsilon(1e-12));
   REQUIRE(run_coatfft("surface -o " + b.string() + kSurface + " --rms-height 0.5e-6").status == 0);
   CHECK(bytes_of(a) == bytes_of(b));
-  REQUIRE(
-      run_coatfft("surface -o " + b.string() + kSurface + " --rms-height 0.5e-6 --seed 3").status ==
-      0);
+  REQUIRE(run_coatfft("surface -o " + b.string() + kSurface +
+                      " --rms-height 0.5e-6 --seed 3 --overwrite")
+              .status == 0);
   CHECK(bytes_of(a) != bytes_of(b));
 }
 
@@ -174,4 +174,101 @@ TEST_CASE("a measured topography's refusals", "[cli][topography]") {
        "topography = \"z.npy\"\ndetrend = \"tilt\"", "detrend"},
   };
   for (const BadCase& c : cases) check_refused(base, c);
+}
+
+TEST_CASE("coatfft topography and surface leave an existing output file as it is",
+          "[cli][topography][cli_surface]") {
+  // The user's own file under each name, .npy and .nc alike: refused on one line naming it and
+  // --overwrite (exit 2), its bytes unchanged; replaced only with --overwrite.
+  const fs::path z = scratch("exists_z.npy");
+  fs::remove(z);
+  REQUIRE(run_coatfft("surface -o " + z.string() + kSurface + " --rms-height 1e-6").status == 0);
+  for (const char* name : {"exists_mine.npy", "exists_mine.nc"}) {
+    const fs::path mine = scratch(name);
+    std::ofstream(mine, std::ios::binary) << "the user's own bytes";
+    for (const std::string& command :
+         {"surface -o " + mine.string() + kSurface + " --rms-height 1e-6",
+          "topography " + z.string() + " --lx 1e-3 --ly 0.75e-3 -o " + mine.string()}) {
+      INFO(command);
+      const auto r = run_coatfft(command);
+      CHECK(r.status == 2);
+      CHECK(std::count(r.stderr_text.begin(), r.stderr_text.end(), '\n') == 1);
+      CHECK(r.stderr_text.find(mine.string() + "\" exists") != std::string::npos);
+      CHECK(r.stderr_text.find("--overwrite") != std::string::npos);
+      CHECK(bytes_of(mine) == "the user's own bytes");
+      CHECK(run_coatfft(command + " --overwrite").status == 0);
+      CHECK(bytes_of(mine) != "the user's own bytes");
+      std::ofstream(mine, std::ios::binary) << "the user's own bytes";
+    }
+  }
+}
+
+namespace {
+// `coatfft ARGS` with its standard output (the topography's summary) read as JSON; its status.
+int summary_of(const std::string& args, nlohmann::json& summary) {
+  const fs::path out = scratch("topography_summary.json");
+  const int raw = std::system(
+      (std::string(COATFFT_EXE) + " " + args + " >" + out.string() + " 2>/dev/null").c_str());
+  std::ifstream in(out);
+  if (WIFEXITED(raw) && WEXITSTATUS(raw) == 0) in >> summary;
+  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+}
+}  // namespace
+
+TEST_CASE(
+    "coatfft topography: heights near the largest double give a finite summary or a "
+    "refusal naming the file",
+    "[cli][topography]") {
+  // 2 x 2 heights of +-1.7e308 (rows 1.7e308 -1.7e308 and -1.7e308 1.7e308): the mean is 0 and
+  // Sq = 1.7e308, which squares of the heights cannot reach; the gap max(z) - z = 3.4e308 and
+  // the rms slope (steps of 3.4e308 m over 1 m) are beyond the largest double.
+  const fs::path h = scratch("overflow_h.csv");
+  std::ofstream(h) << "1.7e308,-1.7e308\n-1.7e308,1.7e308\n";
+  nlohmann::json s;
+  REQUIRE(summary_of("topography " + h.string(), s) == 0);
+  CHECK(s["rms_height"].get<double>() == Approx(1.7e308).epsilon(1e-15));
+  const fs::path g = scratch("overflow_g.npy");
+  fs::remove(g);
+  for (const std::string& args : {" --gap -o " + g.string(), std::string(" --lx 2 --ly 2")}) {
+    const auto r = run_coatfft("topography " + h.string() + args);
+    INFO(r.stderr_text);
+    CHECK(r.status == 2);
+    CHECK(std::count(r.stderr_text.begin(), r.stderr_text.end(), '\n') == 1);
+    CHECK(r.stderr_text.find(h.string() + ": ") != std::string::npos);
+    CHECK(r.stderr_text.find("beyond the largest double") != std::string::npos);
+  }
+  CHECK_FALSE(fs::exists(g));
+  // A map of 1e200 times z = i + 2 j on 3 x 2 points (x along columns): heights 0, 1, 2 and
+  // 2, 3, 4, mean 2, Sq = sqrt(10/6); steps 1 along x (spacing 1 m) and 2 along y: Sdq = sqrt(5).
+  const fs::path big = scratch("overflow_big.csv");
+  std::ofstream(big) << "0,1e200,2e200\n2e200,3e200,4e200\n";
+  REQUIRE(summary_of("topography " + big.string() + " --lx 3 --ly 2", s) == 0);
+  CHECK(s["rms_height"].get<double>() == Approx(1e200 * std::sqrt(10.0 / 6.0)).epsilon(1e-14));
+  CHECK(s["rms_slope"].get<double>() == Approx(1e200 * std::sqrt(5.0)).epsilon(1e-14));
+}
+
+TEST_CASE("coatfft topography: missing points named with its own flag, their fill bounded",
+          "[cli][topography]") {
+  const fs::path nan = scratch("missing_nan.csv");
+  std::ofstream(nan) << "1,nan\n2,3\n";
+  const auto r = run_coatfft("topography " + nan.string());
+  CHECK(r.status == 2);
+  CHECK(r.stderr_text.find("(--missing fill") != std::string::npos);
+  CHECK(r.stderr_text.find("missing = ") == std::string::npos);
+  // One known point on 512^2: 262143 points to fill, about 0.13 GB before the factor, refused
+  // under --max-memory 20M before it is allocated (the address space is limited to 150 MB, less
+  // than the fill's 178 MB peak; the time to 20 s).
+  coatfft::Field one = coatfft::Field::Constant(512, 512, std::nan(""));
+  one(7, 9) = 1e-6;
+  const fs::path map = scratch("missing_one.npy");
+  coatfft::scene::write_npy(map, one);
+  const auto bounded =
+      run_coatfft("topography " + map.string() + " --missing fill --max-memory 20M",
+                  "timeout 20 prlimit --as=150000000");
+  INFO(bounded.stderr_text);
+  CHECK(bounded.status == 2);
+  CHECK(std::count(bounded.stderr_text.begin(), bounded.stderr_text.end(), '\n') == 1);
+  CHECK(bounded.stderr_text.find(map.string() + ": filling the missing points needs about") !=
+        std::string::npos);
+  CHECK(bounded.stderr_text.find("262143 missing points") != std::string::npos);
 }

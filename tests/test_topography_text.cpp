@@ -1,5 +1,6 @@
 // Text topographies (matrices and x y z rows), the conversion to metres, and the filling of
 // missing points, through read_topography (topography/topography.hpp), on files written here.
+#include <Eigen/LU>
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -132,4 +133,86 @@ TEST_CASE("read_topography: unknown formats and units are refused", "[topography
                     Catch::Contains("unknown unit \"furlong\""));
   CHECK_THROWS_WITH(read_topography(text_file("p.csv", "1,2,3\n")),
                     Catch::Contains("at least 2 x 2"));
+}
+
+namespace {
+// The harmonic rule solved independently: every missing point's equation in one dense system
+// (LU with full pivoting), the known heights on the right.
+Field dense_fill(const Field& z) {
+  std::vector<Eigen::Index> index(static_cast<std::size_t>(z.size()), -1);
+  Eigen::Index n = 0;
+  for (Eigen::Index k = 0; k < z.size(); ++k)
+    if (std::isnan(z.data()[k])) index[static_cast<std::size_t>(k)] = n++;
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n, n);
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(n);
+  for (Eigen::Index j = 0; j < z.cols(); ++j)
+    for (Eigen::Index i = 0; i < z.rows(); ++i) {
+      const Eigen::Index row = index[static_cast<std::size_t>(i + z.rows() * j)];
+      if (row < 0) continue;
+      for (const auto& [p, q] :
+           {std::pair{i + 1, j}, std::pair{i - 1, j}, std::pair{i, j + 1}, std::pair{i, j - 1}}) {
+        if (p < 0 || p >= z.rows() || q < 0 || q >= z.cols()) continue;
+        a(row, row) += 1;
+        const Eigen::Index col = index[static_cast<std::size_t>(p + z.rows() * q)];
+        if (col >= 0)
+          a(row, col) -= 1;
+        else
+          b(row) += z(p, q);
+      }
+    }
+  const Eigen::VectorXd x = a.fullPivLu().solve(b);
+  Field out = z;
+  for (Eigen::Index k = 0; k < z.size(); ++k)
+    if (index[static_cast<std::size_t>(k)] >= 0)
+      out.data()[k] = x(index[static_cast<std::size_t>(k)]);
+  return out;
+}
+}  // namespace
+
+TEST_CASE("missing points: the fill equals a dense solve of the harmonic rule, at any scale",
+          "[topography][missing]") {
+  // A wide hole (an 8 x 6 block touching the edge), a line and scattered points on 20 x 16.
+  Field z = Field::Random(20, 16);
+  for (Eigen::Index j = 0; j < 16; ++j)
+    for (Eigen::Index i = 0; i < 20; ++i)
+      if ((i >= 12 && j >= 3 && j < 9) || j == 12 || (i * 7 + j * 3) % 11 == 0)
+        z(i, j) = std::nan("");
+  const Field reference = dense_fill(z);
+  Field filled = z;
+  CHECK(topography::fill_missing_points(filled) == static_cast<std::size_t>(z.isNaN().count()));
+  // LU's rounding on a system of condition number about 1e3.
+  CHECK((filled - reference).abs().maxCoeff() < 1e-12);
+  // Heights near the largest double: the same fill scaled (the sums of four neighbours would
+  // overflow unscaled). 2^1023 scales exactly.
+  const double big = std::ldexp(1.0, 1023);
+  Field huge = z * big;
+  topography::fill_missing_points(huge);
+  REQUIRE(huge.allFinite());
+  CHECK((huge / big - reference).abs().maxCoeff() < 1e-12);
+}
+
+TEST_CASE(
+    "missing points: a fill beyond the memory limit is refused before it is made, naming "
+    "the count",
+    "[topography][missing]") {
+  // One known point on 160^2: 25599 unknowns, 13.1 MB before the factor (512 bytes each), whose
+  // minimum degree factor adds some 10^5 nonzeros of 12 bytes, beyond the 0.9 MB left of 14 MB.
+  Field z = Field::Constant(160, 160, std::nan(""));
+  z(3, 5) = 1e-6;
+  Field copy = z;
+  CHECK_THROWS_WITH(topography::fill_missing_points(copy, 8e6, "h.npy"),
+                    Catch::Contains("h.npy: filling the missing points needs about") &&
+                        Catch::Contains("25599 missing points,") &&
+                        Catch::Contains("is the limit (--max-memory)"));
+  CHECK(copy.isNaN().count() == 25599);  // untouched
+  // A hole of 1200^2 points: refused at once on the estimate from its size (16 x 1200^3 = 2.8e10
+  // multiply-adds), whatever the memory.
+  Field wide = Field::Constant(1200, 1200, std::nan(""));
+  wide(0, 0) = 0.0;
+  CHECK_THROWS_WITH(topography::fill_missing_points(wide, 1e12, "w.npy"),
+                    Catch::Contains("w.npy: filling 1439999 missing points takes about") &&
+                        Catch::Contains("estimated from the holes' sizes"));
+  // Past the first estimate, refused on the factor's count.
+  CHECK_THROWS_WITH(topography::fill_missing_points(copy, 14e6, "h.npy"),
+                    Catch::Contains("25599 missing points (a factor of more than"));
 }

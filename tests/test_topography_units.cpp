@@ -2,9 +2,11 @@
 // (surfaces/roughness.hpp) against closed forms.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
 
 #include "core/error.hpp"
 #include "surfaces/roughness.hpp"
+#include "topography/topography_summary.hpp"
 #include "topography/units.hpp"
 
 using namespace coatfft;
@@ -75,4 +77,49 @@ TEST_CASE("edge mismatch: a ramp's jump across the edge against its closed form"
   const EdgeMismatch m = edge_mismatch(c);
   // Across the edge: cos(2 pi 0.5/16) - cos(2 pi 15.5/16) = 0 on every x line.
   CHECK(m.rms_jump < 1e-14);
+}
+
+TEST_CASE("roughness: heights near the largest double give finite parameters",
+          "[topography][roughness]") {
+  // The sine and ramp above times 1e200: every parameter times 1e200 (their squares overflow
+  // unscaled), and heights of +-1.7e308 alternating along x: rms height 1.7e308, mean 0.
+  const double s = 1e200, A = 2e-6 * s, L = 1e-3;
+  const int n = 16, m = 1;
+  const double d = L / n;
+  const Grid g(n, 6, L, 6 * d);
+  Field z(n, 6);
+  for (Eigen::Index j = 0; j < 6; ++j)
+    for (Eigen::Index i = 0; i < n; ++i) z(i, j) = A * std::sin(2 * M_PI * m * g.x(i) / L);
+  CHECK(rms_height(z) == Approx(A / std::sqrt(2.0)).epsilon(1e-13));
+  CHECK(rms_slope(g, z, true) ==
+        Approx(std::sqrt(2.0) * A * std::sin(M_PI * m / n) / d).epsilon(1e-13));
+  Field ramp(8, 5);
+  for (Eigen::Index j = 0; j < 5; ++j)
+    for (Eigen::Index i = 0; i < 8; ++i) ramp(i, j) = 3e-7 * s * static_cast<double>(i);
+  const EdgeMismatch e = edge_mismatch(ramp);
+  CHECK(e.rms_step == Approx(3e-7 * s * std::sqrt(35.0 / 67.0)).epsilon(1e-13));
+  CHECK(e.rms_jump == Approx(3e-7 * s * 7 * std::sqrt(5.0 / 13.0)).epsilon(1e-13));
+  Field extreme(4, 2);
+  extreme << 1.7e308, -1.7e308, 1.7e308, -1.7e308, -1.7e308, 1.7e308, -1.7e308, 1.7e308;
+  CHECK(rms_height(extreme) == Approx(1.7e308).epsilon(1e-15));
+}
+
+TEST_CASE("a file's map that no grid holds is refused naming the file and what is wrong",
+          "[topography]") {
+  topography::Topography t;
+  t.heights = Field::Zero(70, 2);
+  t.lx = 70 * 1e-321;  // a spacing of 1e-321 m: a map of 7e-320 m
+  t.ly = 1.0;
+  CHECK_THROWS_WITH(topography::topography_grid("h.x3p", t),
+                    Catch::Contains("h.x3p: the spacing 1e-321") &&
+                        Catch::Contains(" m along x makes the map 6.9") &&
+                        Catch::Contains("outside the [1e-100, 1e+100] m a grid takes"));
+  t.lx = 1.0;
+  t.ly = std::numeric_limits<double>::infinity();  // 2 points of 1e308 m
+  CHECK_THROWS_WITH(topography::topography_grid("h.nc", t),
+                    Catch::Contains("h.nc: the spacing inf m along y makes the map inf m long"));
+  t.heights = Field::Zero(70000, 2);
+  t.lx = t.ly = std::nullopt;
+  CHECK_THROWS_WITH(topography::topography_grid("h.csv", t),
+                    Catch::Contains("h.csv: 70000 points along x, more than the 65536"));
 }

@@ -50,7 +50,7 @@ double file_scale(const fs::path& path, Topography& topography, const std::strin
 }
 
 // Counts the NaN points, refuses infinite ones, and fills or refuses the NaN ones.
-void check_heights(const fs::path& path, Topography& topography, MissingPoints missing) {
+void check_heights(const fs::path& path, Topography& topography, const ReadOptions& options) {
   Field& z = topography.heights;
   COATFFT_REQUIRE(z.rows() >= 2 && z.cols() >= 2, path.string(), ": ", z.rows(), " x ", z.cols(),
                   " points: a topography needs at least 2 x 2");
@@ -63,12 +63,10 @@ void check_heights(const fs::path& path, Topography& topography, MissingPoints m
     }
   topography.missing = nan;
   if (nan == 0) return;
-  COATFFT_REQUIRE(missing == MissingPoints::fill, path.string(), ": ", nan, " of ", z.size(),
-                  " points are missing (NaN or marked invalid); they can be filled (missing = "
-                  "\"fill\": docs/measured_surfaces.md)");
-  COATFFT_REQUIRE(static_cast<Eigen::Index>(nan) < z.size(), path.string(),
-                  ": every point is missing");
-  fill_missing_points(z);
+  COATFFT_REQUIRE(options.missing == MissingPoints::fill, path.string(), ": ", nan, " of ",
+                  z.size(), " points are missing (NaN or marked invalid); they can be filled (",
+                  options.fill_hint, ": docs/measured_surfaces.md)");
+  fill_missing_points(z, options.max_memory, path.string());
 }
 }  // namespace
 
@@ -80,7 +78,7 @@ Topography read_topography(const fs::path& path, const ReadOptions& options) {
   if (topography.ly) *topography.ly *= scale;
   COATFFT_REQUIRE(topography.lx.has_value() == topography.ly.has_value(), path.string(),
                   ": the file gives the size along one axis only");
-  check_heights(path, topography, options.missing);
+  check_heights(path, topography, options);
   return topography;
 }
 

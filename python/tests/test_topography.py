@@ -391,3 +391,19 @@ def test_x3p_written_by_zipfile(coatfft_exe, tmp_path):
                               str(tmp_path / "o.nc")], capture_output=True, text=True)
         assert run.returncode == 2 and message in run.stderr and run.stderr.count("\n") == 1
         assert not (tmp_path / "o.nc").exists()
+
+
+def test_read_topography_names_its_keyword_and_takes_a_memory_limit(tmp_path):
+    # One known point on 64^2: 4095 points to fill, 2 MB before the factor (512 bytes each).
+    z = np.full((64, 64), np.nan)
+    z[3, 5] = 1e-6
+    np.save(tmp_path / "one.npy", z)
+    with pytest.raises(ValueError, match=r"can be filled \(missing='fill'"):
+        coatfft.read_topography(tmp_path / "one.npy")
+    with pytest.raises(ValueError, match=r"one\.npy: filling the missing points .* 4095 missing"):
+        coatfft.read_topography(tmp_path / "one.npy", missing="fill", max_memory="1M")
+    with pytest.raises(ValueError, match="max_memory"):
+        coatfft.read_topography(tmp_path / "one.npy", missing="fill", max_memory="lots")
+    # With room: one known point makes the map flat (to the fill's rounding).
+    t = coatfft.read_topography(tmp_path / "one.npy", missing="fill", max_memory="1G")
+    assert np.allclose(t["heights"], 1e-6, rtol=1e-9, atol=0)
