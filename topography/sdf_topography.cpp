@@ -235,32 +235,42 @@ double parse_datum(const fs::path& path, std::string_view token, int code, std::
   return value;
 }
 
+/// The next value of the data section from `pos`, advancing `pos` past it; nothing at its end
+/// (the end of the file or "*").
+std::optional<std::string_view> next_value(std::string_view text, std::size_t& pos) {
+  pos = std::min(text.find_first_not_of(kSpace, pos), text.size());
+  const std::size_t end = std::min(text.find_first_of(kSpace, pos), text.size());
+  const std::string_view token = text.substr(pos, end - pos);
+  pos = end;
+  if (token.empty() || token == "*") return std::nullopt;
+  return token;
+}
+
+/// The values of the data section, counted (and checked) before the map is allocated: a header
+/// may declare far more points than the file holds.
 Field read_text_data(const fs::path& path, std::string_view text, std::size_t& pos,
                      const Header& header) {
   const std::size_t count = header.nx * header.ny;
   const int code = static_cast<int>(header.data_type);
+  std::size_t held = 0;  // each checked as it is counted, so that a bad value is named first
+  for (std::size_t end = pos; held <= count;) {
+    const auto token = next_value(text, end);
+    if (!token) break;
+    if (held < count) parse_datum(path, *token, code, held);
+    ++held;
+  }
+  if (held > count)
+    refuse(path, "the data section holds more than NumPoints * NumProfiles = ", header.nx, " * ",
+           header.ny, " values");
+  if (held != count)
+    refuse(path, "the data section holds ", held,
+           " values, but NumPoints * NumProfiles = ", header.nx, " * ", header.ny, " = ", count,
+           " (truncated)");
   Field values(header.nx, header.ny);
   double* out = values.data();  // column-major (nx, ny): x fastest, as in the file
-  std::size_t k = 0;
-  while (true) {
-    pos = text.find_first_not_of(kSpace, pos);
-    if (pos == std::string_view::npos) {
-      pos = text.size();
-      break;
-    }
-    const std::size_t end = std::min(text.find_first_of(kSpace, pos), text.size());
-    const std::string_view token = text.substr(pos, end - pos);
-    pos = end;
-    if (token == "*") break;
-    if (k == count)
-      refuse(path, "the data section holds more than NumPoints * NumProfiles = ", header.nx, " * ",
-             header.ny, " values");
-    out[k] = parse_datum(path, token, code, k);
-    ++k;
-  }
-  if (k != count)
-    refuse(path, "the data section holds ", k, " values, but NumPoints * NumProfiles = ", header.nx,
-           " * ", header.ny, " = ", count, " (truncated)");
+  for (std::size_t k = 0; k < count; ++k)
+    out[k] = parse_datum(path, *next_value(text, pos), code, k);
+  next_value(text, pos);  // past the closing "*"
   return values;
 }
 
@@ -368,13 +378,13 @@ Topography read_sdf_topography(const std::filesystem::path& path, const ReadOpti
   std::size_t pos = 0;
   Header header = binary ? read_binary_header(text) : read_text_header(path, text, pos);
   check_header(path, header, options);
-  Field values =
+  Field heights =
       binary ? read_binary_data(path, text, header) : read_text_data(path, text, pos, header);
   if (!binary) read_trailer(text.substr(std::min(pos, text.size())), header);
 
-  Field heights = values.unaryExpr([&](double value) {
-    return is_bad_point(value, static_cast<int>(header.data_type)) ? kNaN : value * header.zscale;
-  });
+  // In place: a map is held once.
+  for (double& value : heights.reshaped())
+    value = is_bad_point(value, static_cast<int>(header.data_type)) ? kNaN : value * header.zscale;
   const auto missing = static_cast<std::size_t>(heights.isNaN().count());
   header.metadata.insert(header.metadata.begin(), {"version", header.version});
   // Cell-centred grid: NumPoints points at spacing Xscale span NumPoints * Xscale.
