@@ -460,7 +460,7 @@ TEST_CASE("x3p: files that are no X3P archive, or too large, are refused", "[top
 TEST_CASE("x3p: archives that unpack or declare more than they hold are refused early",
           "[topography][x3p]") {
   const TempDir dir;
-  constexpr std::uintmax_t kHeadroom = std::uintmax_t{16} << 20;
+  constexpr std::uintmax_t kHeadroom = std::uintmax_t{8} << 20;
   const auto refused = [&](const fs::path& path, const std::string& what,
                            const coatfft::topography::ReadOptions& options = {}) {
     const auto run = coatfft::testing::run_bounded(
@@ -473,9 +473,9 @@ TEST_CASE("x3p: archives that unpack or declare more than they hold are refused 
   X3p x3p;
   x3p.with_data_checksum = false;
   SECTION("a data.bin far larger than SizeX * SizeY, refused before it is unpacked") {
-    x3p.data = std::string(std::size_t{32} << 20, '\0');  // 32 MiB of zeros deflate to 32 kB
+    x3p.data = std::string(std::size_t{16} << 20, '\0');  // 16 MiB of zeros deflate to 16 kB
     refused(write_x3p(dir, x3p),
-            "bindata/data.bin: 33554432 bytes, but SizeX * SizeY = 4 * 3 values of 8 bytes "
+            "bindata/data.bin: 16777216 bytes, but SizeX * SizeY = 4 * 3 values of 8 bytes "
             "take 96");
   }
   SECTION("a zip header that declares fewer bytes than the entry unpacks to") {
@@ -483,6 +483,11 @@ TEST_CASE("x3p: archives that unpack or declare more than they hold are refused 
     const fs::path path = write_x3p(dir, x3p);
     declare_size(path, "bindata/data.bin", 96);
     refused(path, "bindata/data.bin: unpacks to more than the 96 bytes the archive declares");
+  }
+  SECTION("a DataList padded beyond 256 bytes a value (and 1 MiB), refused as it is unpacked") {
+    x3p.data_list = "<Datum>1</Datum>" + std::string(std::size_t{2} << 20, ' ');
+    refused(write_x3p(dir, x3p),
+            "main.xml: Record3/DataList takes more than 256 bytes a value of SizeX * SizeY = 12");
   }
   SECTION("SizeX * SizeY = 23000 * 23000 with three values inline") {
     x3p.size_x = x3p.size_y = "23000";

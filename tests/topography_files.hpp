@@ -78,6 +78,11 @@ inline topography::ReadOptions memory_limit(double max_memory) {
   return options;
 }
 
+// Blocks of 64 kB and more are mapped anew and given back when freed, in the whole test process
+// (glibc otherwise keeps freed blocks of up to 32 MiB for reuse, which a child of run_bounded
+// would inherit and use without growing): the child's limit then counts every block.
+inline const bool kLargeBlocksMapped = mallopt(M_MMAP_THRESHOLD, 1 << 16) == 1;
+
 // What `call` did in a child process whose address space may grow by `headroom` bytes beyond
 // the test's and whose CPU time is limited to `seconds`: a reader that allocates what a file
 // declares, rather than what it holds, ends in "out of memory" there (or is killed), not in a
@@ -95,10 +100,8 @@ inline BoundedRun run_bounded(std::uintmax_t headroom, int seconds,
   const pid_t pid = fork();
   if (pid == 0) {
     close(channel[0]);
-    // What the test process freed is given back, and blocks of 64 kB and more are mapped anew
-    // (glibc's threshold grows to 32 MiB as blocks are freed): each allocation counts.
-    malloc_trim(0);
-    mallopt(M_MMAP_THRESHOLD, 1 << 16);
+    if (!kLargeBlocksMapped) _exit(1);
+    malloc_trim(0);            // the free memory at the top of the heap given back
     std::uintmax_t pages = 0;  // the child's virtual size now, the first field of statm
     std::ifstream("/proc/self/statm") >> pages;
     const rlim_t space = pages * static_cast<rlim_t>(sysconf(_SC_PAGESIZE)) + headroom;

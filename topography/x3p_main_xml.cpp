@@ -16,7 +16,11 @@ constexpr auto npos = std::string_view::npos;
 /// The local name of the element a tag opens or closes ("p:Record1" -> "Record1").
 std::string_view tag_name(std::string_view unit, bool end_tag) {
   std::string_view name = unit.substr(end_tag ? 2 : 1);
-  name = name.substr(0, std::min(name.find_first_of(" \t\r\n/>"), name.size()));
+  std::size_t length = 0;  // a loop: find_first_of calls memchr on its set for every character
+  while (length < name.size() && kSpace.find(name[length]) == npos && name[length] != '/' &&
+         name[length] != '>')
+    ++length;
+  name = name.substr(0, length);
   const auto colon = name.find(':');
   return colon == npos ? name : name.substr(colon + 1);
 }
@@ -96,6 +100,7 @@ void MainXmlScanner::markup(std::string_view unit) {
   const bool element = end_tag || (unit.size() > 1 && unit[1] != '!' && unit[1] != '?');
   const std::string_view name = element ? tag_name(unit, end_tag) : std::string_view{};
   if (in_list_) {
+    count_list_bytes(unit.size());
     if (!end_tag || name != "DataList" || datum_) return list_markup(unit, end_tag, name);
     in_list_ = false;
   }
@@ -130,6 +135,7 @@ void MainXmlScanner::list_markup(std::string_view unit, bool end_tag, std::strin
 }
 
 void MainXmlScanner::text(std::string_view run) {
+  if (in_list_) count_list_bytes(run.size());
   if (datum_) {
     datum_->append(run);
     if (datum_->size() > 64)  // longer than any number
@@ -155,6 +161,15 @@ void MainXmlScanner::open_list() {
   const auto ny = parse_number<std::size_t>(size_y_);
   if (nx && ny && *nx > 0 && *ny <= std::numeric_limits<std::size_t>::max() / *nx)
     max_values_ = *nx * *ny;
+}
+
+void MainXmlScanner::count_list_bytes(std::size_t bytes) {
+  list_bytes_ += bytes;
+  if (max_values_ && static_cast<double>(list_bytes_) > static_cast<double>(kMaxRecordBytes) +
+                                                            static_cast<double>(kMaxBytesPerValue) *
+                                                                static_cast<double>(*max_values_))
+    refuse(path_, "main.xml: Record3/DataList takes more than ", kMaxBytesPerValue,
+           " bytes a value of SizeX * SizeY = ", *max_values_);
 }
 
 void MainXmlScanner::datum(std::string_view text) {

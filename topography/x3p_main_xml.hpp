@@ -26,6 +26,10 @@ class MainXmlScanner {
   /// The most bytes of main.xml outside the DataList's content (and of one tag or comment):
   /// a record of a measurement takes a few kilobytes.
   static constexpr std::size_t kMaxRecordBytes = std::size_t{1} << 20;
+  /// The most bytes of the DataList's content a value of SizeX * SizeY, beyond kMaxRecordBytes
+  /// (for comments): a <Datum> of a 17-digit number with a prefix and indentation takes under
+  /// 80, so that the work is bounded by the points declared, not by blanks the file pads with.
+  static constexpr std::size_t kMaxBytesPerValue = 256;
 
   MainXmlScanner(const std::filesystem::path& path, DatumSink on_datum);
 
@@ -45,6 +49,7 @@ class MainXmlScanner {
   void list_markup(std::string_view unit, bool end_tag, std::string_view name);
   void text(std::string_view run);
   void datum(std::string_view text);
+  void count_list_bytes(std::size_t bytes);
   void open_list();
   bool at(std::initializer_list<std::string_view> names) const;
 
@@ -58,6 +63,7 @@ class MainXmlScanner {
   std::string size_x_, size_y_;       ///< Record3/MatrixDimension's SizeX and SizeY, as written
   std::optional<std::size_t> max_values_;  ///< SizeX * SizeY, once known
   std::size_t values_ = 0;
+  std::size_t list_bytes_ = 0;  ///< of the DataList's content so far
 };
 
 }  // namespace coatfft::topography
