@@ -10,16 +10,18 @@
 namespace coatfft::topography {
 namespace {
 
-constexpr std::string_view kSpace = " \t\r\n";
 constexpr auto npos = std::string_view::npos;
 
 /// The local name of the element a tag opens or closes ("p:Record1" -> "Record1").
 std::string_view tag_name(std::string_view unit, bool end_tag) {
   std::string_view name = unit.substr(end_tag ? 2 : 1);
-  std::size_t length = 0;  // a loop: find_first_of calls memchr on its set for every character
-  while (length < name.size() && kSpace.find(name[length]) == npos && name[length] != '/' &&
-         name[length] != '>')
-    ++length;
+  // Compared one by one: find_first_of would call memchr for every character (a tenth of the
+  // time of a DataList's scan).
+  const auto ends_name = [](char c) {
+    return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '/' || c == '>';
+  };
+  std::size_t length = 0;
+  while (length < name.size() && !ends_name(name[length])) ++length;
   name = name.substr(0, length);
   const auto colon = name.find(':');
   return colon == npos ? name : name.substr(colon + 1);
@@ -159,15 +161,16 @@ void MainXmlScanner::open_list() {
   in_list_ = true;
   const auto nx = parse_number<std::size_t>(size_x_);
   const auto ny = parse_number<std::size_t>(size_y_);
-  if (nx && ny && *nx > 0 && *ny <= std::numeric_limits<std::size_t>::max() / *nx)
-    max_values_ = *nx * *ny;
+  constexpr std::size_t kMax = std::numeric_limits<std::size_t>::max();
+  if (!nx || !ny || *nx == 0 || *ny > kMax / *nx) return;  // the record's checks refuse these
+  max_values_ = *nx * *ny;
+  if (*max_values_ <= (kMax - kMaxRecordBytes) / kMaxBytesPerValue)
+    max_list_bytes_ = kMaxRecordBytes + kMaxBytesPerValue * *max_values_;
 }
 
 void MainXmlScanner::count_list_bytes(std::size_t bytes) {
   list_bytes_ += bytes;
-  if (max_values_ && static_cast<double>(list_bytes_) > static_cast<double>(kMaxRecordBytes) +
-                                                            static_cast<double>(kMaxBytesPerValue) *
-                                                                static_cast<double>(*max_values_))
+  if (list_bytes_ > max_list_bytes_)
     refuse(path_, "main.xml: Record3/DataList takes more than ", kMaxBytesPerValue,
            " bytes a value of SizeX * SizeY = ", *max_values_);
 }

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -64,6 +65,7 @@ class MainXmlScanner {
   std::optional<std::size_t> max_values_;  ///< SizeX * SizeY, once known
   std::size_t values_ = 0;
   std::size_t list_bytes_ = 0;  ///< of the DataList's content so far
+  std::size_t max_list_bytes_ = std::numeric_limits<std::size_t>::max();
 };
 
 }  // namespace coatfft::topography
