@@ -302,6 +302,26 @@ TEST_CASE("x3p: inline <Datum> values, an empty one missing", "[topography][x3p]
   CHECK(topography.heights(2, 1) == 4e-6);
 }
 
+TEST_CASE("x3p: inline values with a prefix, comments and line ends between them",
+          "[topography][x3p]") {
+  const TempDir dir;
+  X3p x3p;
+  x3p.size_x = "2";
+  x3p.size_y = "2";
+  const std::string first_values =
+      "\n  <!-- row 0 <Datum>9</Datum> -->\n  <p:Datum>1e-6</p:Datum>\n  <Datum >\n2e-6\n</Datum>";
+  x3p.data_list = first_values + "<?pi ignored?>";  // not a value: refused
+  const fs::path spoiled = write_x3p(dir, x3p, "pi.x3p");
+  CHECK_THROWS_WITH(read_x3p_topography(spoiled, size_limit(1 << 20)),
+                    Catch::Contains("Record3/DataList holds \"<?pi ignored?>\""));
+  x3p.data_list = first_values + "\n  <Datum/><Datum>4e-6</Datum>\n";
+  const Topography topography = read_x3p_topography(write_x3p(dir, x3p), size_limit(1 << 20));
+  CHECK(topography.heights(0, 0) == 1e-6);
+  CHECK(topography.heights(1, 0) == 2e-6);
+  CHECK(std::isnan(topography.heights(0, 1)));
+  CHECK(topography.heights(1, 1) == 4e-6);
+}
+
 TEST_CASE("x3p: damaged or unsupported archives are refused by name", "[topography][x3p]") {
   const TempDir dir;
   X3p x3p;
