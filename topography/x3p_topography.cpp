@@ -513,7 +513,7 @@ Topography read_x3p_topography(const std::filesystem::path& path, const ReadOpti
   // The record is trusted only once it matches its checksum.
   verify_record_checksum(path, archive, root, main_md5);
   const Record record = read_record(path, root, options);
-  if (record.data_list && values != record.nx * record.ny)
+  if (!record.data_link && values != record.nx * record.ny)
     refuse(path, "main.xml: Record3/DataList holds ", values,
            " values, but SizeX * SizeY = ", record.nx * record.ny,
            values < record.nx * record.ny ? " (truncated)" : "");
