@@ -12,6 +12,7 @@
 #include <array>
 #include <bit>
 #include <boost/uuid/detail/md5.hpp>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <functional>
@@ -24,6 +25,7 @@
 #include <utility>
 
 #include "core/error.hpp"
+#include "scene/input_file.hpp"
 #include "topography/formats.hpp"
 #include "topography/reader_support.hpp"
 #include "topography/x3p_main_xml.hpp"
@@ -60,8 +62,63 @@ bool is_md5_hex(std::string_view text) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// The zip container, opened from the bytes read_input_file checked (a regular file within the
-// size limit), so that libzip never opens the path itself.
+// The zip container, read by libzip from the InputFile checked (a regular file within the size
+// limit), so that libzip never opens the path itself, at the offsets it asks for: the archive is
+// not held whole beside the map (a stored archive holds the map's values).
+
+struct FileSource {
+  scene::InputFile* file;
+  std::uint64_t position = 0;
+  zip_error_t error;
+};
+
+zip_int64_t read_file_source(void* state, void* data, zip_uint64_t length,
+                             zip_source_cmd_t command) {
+  FileSource& source = *static_cast<FileSource*>(state);
+  const std::uint64_t size = source.file->size();
+  switch (command) {
+    case ZIP_SOURCE_OPEN:
+    case ZIP_SOURCE_CLOSE:
+    case ZIP_SOURCE_FREE:
+      return 0;
+    case ZIP_SOURCE_READ: {
+      const std::uint64_t count = std::min<std::uint64_t>(length, size - source.position);
+      try {  // no exception may cross libzip's C frames
+        source.file->read_at(source.position, data, static_cast<std::size_t>(count));
+      } catch (const std::exception&) {
+        zip_error_set(&source.error, ZIP_ER_READ, EIO);
+        return -1;
+      }
+      source.position += count;
+      return static_cast<zip_int64_t>(count);
+    }
+    case ZIP_SOURCE_STAT: {
+      auto* stat = static_cast<zip_stat_t*>(data);
+      zip_stat_init(stat);
+      stat->size = size;
+      stat->valid |= ZIP_STAT_SIZE;
+      return sizeof(zip_stat_t);
+    }
+    case ZIP_SOURCE_ERROR:
+      return zip_error_to_data(&source.error, data, length);
+    case ZIP_SOURCE_SEEK: {
+      const zip_int64_t at =
+          zip_source_seek_compute_offset(source.position, size, data, length, &source.error);
+      if (at < 0) return -1;
+      source.position = static_cast<std::uint64_t>(at);
+      return 0;
+    }
+    case ZIP_SOURCE_TELL:
+      return static_cast<zip_int64_t>(source.position);
+    case ZIP_SOURCE_SUPPORTS:
+      return zip_source_make_command_bitmap(
+          ZIP_SOURCE_OPEN, ZIP_SOURCE_READ, ZIP_SOURCE_CLOSE, ZIP_SOURCE_STAT, ZIP_SOURCE_ERROR,
+          ZIP_SOURCE_FREE, ZIP_SOURCE_SEEK, ZIP_SOURCE_TELL, ZIP_SOURCE_SUPPORTS, -1);
+    default:
+      zip_error_set(&source.error, ZIP_ER_OPNOTSUPP, 0);
+      return -1;
+  }
+}
 
 struct ZipDiscard {
   void operator()(zip_t* archive) const { zip_discard(archive); }
@@ -72,10 +129,12 @@ struct ZipFileClose {
 
 class Archive {
  public:
-  Archive(const fs::path& path, const std::string& bytes) : path_(path) {
+  Archive(const fs::path& path, scene::InputFile& file)
+      : path_(path), source_(std::make_unique<FileSource>(FileSource{&file, 0, {}})) {
+    zip_error_init(&source_->error);
     zip_error_t error;
     zip_error_init(&error);
-    zip_source_t* source = zip_source_buffer_create(bytes.data(), bytes.size(), 0, &error);
+    zip_source_t* source = zip_source_function_create(read_file_source, source_.get(), &error);
     if (source != nullptr) archive_.reset(zip_open_from_source(source, ZIP_RDONLY, &error));
     if (!archive_) {
       const std::string reason = zip_error_strerror(&error);
@@ -139,6 +198,7 @@ class Archive {
 
  private:
   fs::path path_;
+  std::unique_ptr<FileSource> source_;  // outlives archive_, which reads through it
   std::unique_ptr<zip_t, ZipDiscard> archive_;
 };
 
@@ -503,8 +563,8 @@ std::pair<std::string, std::size_t> read_main_xml(const fs::path& path, const Ar
 }  // namespace
 
 Topography read_x3p_topography(const std::filesystem::path& path, const ReadOptions& options) {
-  const std::string bytes = scene::read_input_file(path, "an X3P file", options.max_bytes);
-  const Archive archive(path, bytes);
+  scene::InputFile file(path, "an X3P file", options.max_bytes);
+  const Archive archive(path, file);
   tinyxml2::XMLDocument document;
   const auto [main_md5, values] = read_main_xml(path, archive, options.max_bytes, document);
   const XMLElement* root = document.RootElement();
