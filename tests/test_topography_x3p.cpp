@@ -509,6 +509,13 @@ TEST_CASE("x3p: archives that unpack or declare more than they hold are refused 
     refused(write_x3p(dir, x3p),
             "main.xml: Record3/DataList takes more than 256 bytes a value of SizeX * SizeY = 12");
   }
+  SECTION("a record of more than 1 MiB besides the DataList, refused as it is unpacked") {
+    // Text without a tag after it: refused before main.xml ends, not held whole.
+    const std::string xml = "<p:ISO5436_2><Record2><Comment>" + std::string(2 << 20, 'x');
+    const fs::path path = dir / "comment.x3p";
+    write_zip(path, {{"main.xml", xml}, {"md5checksum.hex", md5_hex(xml)}});
+    refused(path, "main.xml: more than 1048576 bytes besides the values of Record3/DataList");
+  }
   SECTION("SizeX * SizeY = 23000 * 23000 with three values inline") {
     x3p.size_x = x3p.size_y = "23000";
     x3p.data_list = "<Datum>1</Datum><Datum>2</Datum><Datum>3</Datum>";

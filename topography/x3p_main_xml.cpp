@@ -106,10 +106,7 @@ void MainXmlScanner::markup(std::string_view unit) {
     if (!end_tag || name != "DataList" || datum_) return list_markup(unit, end_tag, name);
     in_list_ = false;
   }
-  record_.append(unit);
-  if (record_.size() > kMaxRecordBytes)
-    refuse(path_, "main.xml: more than ", kMaxRecordBytes,
-           " bytes besides the values of Record3/DataList");
+  append_record(unit);
   if (!element || unit.ends_with("/>")) return;
   if (end_tag) {
     if (!open_.empty()) open_.pop_back();  // a mismatch is tinyxml2's to refuse
@@ -140,7 +137,7 @@ void MainXmlScanner::text(std::string_view run) {
   if (in_list_) count_list_bytes(run.size());
   if (datum_) {
     datum_->append(run);
-    if (datum_->size() > 64)  // longer than any number
+    if (datum_->size() > 1024)  // longer than any number with blanks around it
       refuse(path_, "main.xml: Record3/DataList/Datum = ", scene::quoted_excerpt(*datum_),
              " is not a number");
   } else if (in_list_) {
@@ -148,13 +145,20 @@ void MainXmlScanner::text(std::string_view run) {
       refuse(path_, "main.xml: Record3/DataList holds the text ", scene::quoted_excerpt(run),
              ", where only <Datum> elements belong");
   } else {
-    record_.append(run);
+    append_record(run);
     // SizeX and SizeY precede the DataList (ISO 25178-72's schema): kept to stop at the first
     // value too many, rather than after a file's worth of them.
     for (auto [name, size] : {std::pair{"SizeX", &size_x_}, std::pair{"SizeY", &size_y_}})
       if (at({"ISO5436_2", "Record3", "MatrixDimension", name}) && size->size() < 64)
         size->append(run);
   }
+}
+
+void MainXmlScanner::append_record(std::string_view part) {
+  record_.append(part);
+  if (record_.size() > kMaxRecordBytes)
+    refuse(path_, "main.xml: more than ", kMaxRecordBytes,
+           " bytes besides the values of Record3/DataList");
 }
 
 void MainXmlScanner::open_list() {

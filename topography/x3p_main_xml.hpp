@@ -52,6 +52,7 @@ class MainXmlScanner {
   void datum(std::string_view text);
   void count_list_bytes(std::size_t bytes);
   void open_list();
+  void append_record(std::string_view part);
   bool at(std::initializer_list<std::string_view> names) const;
 
   std::filesystem::path path_;
