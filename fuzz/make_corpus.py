@@ -85,16 +85,20 @@ def scene_seeds():
     }
 
 
-def x3p(counts_rows, data_type="L", valid=None, increment="1e-9"):
-    """A small ISO 25178-72 archive: int32 (or other) points x fastest, MD5 sums (hashlib)."""
+def x3p(counts_rows, data_type="L", valid=None, increment="1e-9", inline=False, sizes=None,
+        data=None, data_md5=True, deflate=False):
+    """A small ISO 25178-72 archive: int32 (or other) points x fastest, MD5 sums (hashlib); the
+    points `inline` as <Datum> elements, or other `sizes` (SizeX, SizeY) or `data` than theirs."""
     import hashlib
     import io
     import zipfile
     formats = {"I": "<h", "L": "<i", "F": "<f", "D": "<d"}
-    ny, nx = len(counts_rows), len(counts_rows[0])
-    data = b"".join(struct.pack(formats[data_type], v) for row in counts_rows for v in row)
-    link = ("<PointDataLink>bindata/data.bin</PointDataLink><MD5ChecksumPointData>"
-            + hashlib.md5(data).hexdigest() + "</MD5ChecksumPointData>")
+    ny, nx = sizes[::-1] if sizes else (len(counts_rows), len(counts_rows[0]))
+    if data is None and not inline:
+        data = b"".join(struct.pack(formats[data_type], v) for row in counts_rows for v in row)
+    link = "<PointDataLink>bindata/data.bin</PointDataLink>"
+    if data_md5 and not inline:
+        link += "<MD5ChecksumPointData>" + hashlib.md5(data).hexdigest() + "</MD5ChecksumPointData>"
     if valid is not None:
         link += ("<ValidPointsLink>bindata/valid.bin</ValidPointsLink><MD5ChecksumValidPoints>"
                  + hashlib.md5(valid).hexdigest() + "</MD5ChecksumValidPoints>")
@@ -107,16 +111,30 @@ def x3p(counts_rows, data_type="L", valid=None, increment="1e-9"):
            '</CZ></Axes></Record1><Record2><Date>2026-01-01T00:00:00</Date><Creator>corpus'
            '</Creator></Record2><Record3><MatrixDimension>'
            f'<SizeX>{nx}</SizeX><SizeY>{ny}</SizeY><SizeZ>1</SizeZ></MatrixDimension>'
-           f'<DataLink>{link}</DataLink></Record3><Record4><ChecksumFile>md5checksum.hex'
+           + ("<DataList>" + "".join(f"<Datum>{v}</Datum>" for row in counts_rows for v in row)
+              + "</DataList>" if inline else f"<DataLink>{link}</DataLink>")
+           + '</Record3><Record4><ChecksumFile>md5checksum.hex'
            '</ChecksumFile></Record4></p:ISO5436_2>\n').encode()
     out = io.BytesIO()
     with zipfile.ZipFile(out, "w", zipfile.ZIP_STORED) as archive:
         archive.writestr("main.xml", xml)
         archive.writestr("md5checksum.hex", hashlib.md5(xml).hexdigest() + " *main.xml\n")
-        archive.writestr("bindata/data.bin", data)
+        if not inline:
+            archive.writestr("bindata/data.bin", data,
+                             zipfile.ZIP_DEFLATED if deflate else zipfile.ZIP_STORED)
         if valid is not None:
             archive.writestr("bindata/valid.bin", valid)
     return out.getvalue()
+
+
+def damaged(archive):
+    """`archive` with one bit flipped in the last byte of its stored data.bin."""
+    at = archive.index(b"bindata/data.bin", archive.index(b"bindata/data.bin") + 1)
+    at = archive.rindex(b"PK\3\4", 0, at)
+    name_length, extra_length = struct.unpack_from("<HH", archive, at + 26)
+    size = struct.unpack_from("<I", archive, at + 18)[0]
+    end = at + 30 + name_length + extra_length + size
+    return archive[:end - 1] + bytes([archive[end - 1] ^ 0x40]) + archive[end:]
 
 
 def topography_seeds():
@@ -133,6 +151,14 @@ def topography_seeds():
         "int32.x3p": b"\0" + x3p([[1, 2, 3], [4, 5, 6]]),
         "int16_valid.x3p": b"\0" + x3p([[1, 2, 3, 4], [5, 6, 7, 8]], "I", valid=bytes([0xEF])),
         "double.x3p": b"\0" + x3p([[0.5, 1.5], [2.5, float("nan")]], "D", increment="1"),
+        "inline.x3p": b"\0" + x3p([[1.5, 2.5, ""], [3.5, 4.5, 5.5]], "D", inline=True),
+        # Bombs: far more points declared than held, a data.bin of 1 MiB (deflated to 1 kB) for
+        # 2 x 2 points, and a damaged data.bin without an MD5 (only its CRC-32 tells).
+        "declared_inline.x3p": b"\0" + x3p([[1, 2, 3]], "D", inline=True, sizes=(23000, 23000)),
+        "unpacks_large.x3p": b"\0" + x3p([[1, 2], [3, 4]], data=bytes(1 << 20), deflate=True),
+        "damaged_crc.x3p": b"\0" + damaged(x3p([[1, 2, 3], [4, 5, 6]], data_md5=False)),
+        "declared.sdf": b"\1" + (sdf_header.replace("= 3\r", "= 23000\r").replace("= 2\r", "= 23000\r")
+                                 .format(7) + "1 2 3\r\n*\r\n").encode(),
         "double.sdf": b"\1" + (sdf_header.format(7) + "1.5 2.5 3.5\r\n4.5 5.5 BAD\r\n*\r\n").encode(),
         "int16.sdf": b"\1" + (sdf_header.format(5) + "1 2 3 4 5 -32768\r\n*\r\n").encode(),
         "binary.sdf": b"\1" + binary,

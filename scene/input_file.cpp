@@ -137,6 +137,19 @@ void InputFile::read_exact(void* out, std::size_t count) {
   }
 }
 
+void InputFile::read_at(std::uintmax_t offset, void* out, std::size_t count) {
+  auto* bytes = static_cast<char*>(out);
+  while (count > 0) {
+    const ssize_t got = ::pread(fd_, bytes, count, static_cast<off_t>(offset));
+    if (got < 0 && errno == EINTR) continue;
+    if (got < 0) throw_system(path_, "cannot read");
+    if (got == 0) throw_changed(path_);
+    bytes += got;
+    offset += static_cast<std::uintmax_t>(got);
+    count -= static_cast<std::size_t>(got);
+  }
+}
+
 bool InputFile::at_end() {
   char byte = 0;
   ssize_t got = 0;

@@ -60,6 +60,10 @@ class InputFile {
   /// ("PATH: the file changed while being read") if the file ends first.
   void read_exact(void* out, std::size_t count);
 
+  /// Reads exactly `count` bytes at `offset` into `out`, the current position unchanged (for a
+  /// reader that seeks: libzip's); throws as read_exact() does.
+  void read_at(std::uintmax_t offset, void* out, std::size_t count);
+
   /// True when no byte follows the current position (reads one byte to find out).
   bool at_end();
 

@@ -84,7 +84,9 @@ TEST_CASE("netcdf: SurfaceTopography's (x, y) and xarray's (y, x) layouts, units
     CHECK(t.missing == 1);
     CHECK(t.metadata.at(0) == std::pair<std::string, std::string>{"instrument", "test"});
     // The file's unit wins; a different one asked for is refused.
-    CHECK_THROWS_WITH(read_topography(path, {"nm", fill.missing}),
+    topography::ReadOptions in_nm = fill;
+    in_nm.unit = "nm";
+    CHECK_THROWS_WITH(read_topography(path, in_nm),
                       Catch::Contains("the file's unit is \"\u00b5m\""));
   }
 }

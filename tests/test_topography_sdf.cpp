@@ -9,6 +9,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <limits>
+#include <stdexcept>
 #include <string>
 
 #include "core/error.hpp"
@@ -22,7 +24,9 @@ using coatfft::topography::read_sdf_topography;
 using coatfft::topography::Topography;
 
 using coatfft::testing::append;
+using coatfft::testing::memory_limit;
 using coatfft::testing::metadata_value;
+using coatfft::testing::size_limit;
 using coatfft::testing::TempDir;
 
 std::string header(int data_type, int nx = 4, int ny = 3, const std::string& extra = "") {
@@ -85,7 +89,8 @@ TEST_CASE("sdf: an ASCII map is read in place, with its size and metadata", "[to
   const TempDir dir;
   SECTION("DataType 7 (DOUBLE), the data section ended by * and a trailer") {
     const Topography topography = read_sdf_topography(
-        dir.write(header(7) + reference_values() + "*\r\nOperator = A. Tester\r\n*\r\n"), 1 << 20);
+        dir.write(header(7) + reference_values() + "*\r\nOperator = A. Tester\r\n*\r\n"),
+        size_limit(1 << 20));
     check_reference_map(topography);
     CHECK(topography.missing == 0);
     CHECK(metadata_value(topography, "version") == "aISO-1.0");
@@ -100,7 +105,7 @@ TEST_CASE("sdf: an ASCII map is read in place, with its size and metadata", "[to
     std::string text = header(5, 4, 3, "; a comment\r\nNumDataSet = 1\r\n") + reference_values();
     text.replace(0, 8, "aBCR-1.0");
     std::erase(text, '\r');
-    const Topography topography = read_sdf_topography(dir.write(text), 1 << 20);
+    const Topography topography = read_sdf_topography(dir.write(text), size_limit(1 << 20));
     check_reference_map(topography);
     CHECK(metadata_value(topography, "NumDataSet") == "1");
   }
@@ -129,7 +134,7 @@ TEST_CASE("sdf: every data type, and the value each reserves for a missing point
       const std::string bad = c.bad.empty() ? "0" : c.bad;
       const Topography topography = read_sdf_topography(
           dir.write(header(c.code, 2, 2) + "3 " + c.value + "\r\n" + bad + " BAD\r\n*\r\n"),
-          1 << 20);
+          size_limit(1 << 20));
       CHECK(topography.heights(0, 0) == Approx(3e-9));
       CHECK(topography.heights(1, 0) == Approx(std::stod(c.value) * 1e-9));
       CHECK(std::isnan(topography.heights(1, 1)));
@@ -139,7 +144,7 @@ TEST_CASE("sdf: every data type, and the value each reserves for a missing point
   }
   SECTION("NaN in a floating-point map, and -DBL_MAX written in full") {
     const Topography topography = read_sdf_topography(
-        dir.write(header(7, 2, 1) + "nan -1.7976931348623157e+308\r\n*\r\n"), 1 << 20);
+        dir.write(header(7, 2, 1) + "nan -1.7976931348623157e+308\r\n*\r\n"), size_limit(1 << 20));
     CHECK(topography.missing == 2);
   }
 }
@@ -151,7 +156,7 @@ TEST_CASE("sdf: the binary variant", "[topography][sdf]") {
     for (int i = 0; i < 4; ++i) append(bytes, static_cast<std::int16_t>(i + 10 * j));
   SECTION("INT16 values, then a trailer") {
     const Topography topography =
-        read_sdf_topography(dir.write(bytes + "Operator = A. Tester\r\n"), 1 << 20);
+        read_sdf_topography(dir.write(bytes + "Operator = A. Tester\r\n"), size_limit(1 << 20));
     check_reference_map(topography);
     CHECK(topography.missing == 0);
     CHECK(metadata_value(topography, "version") == "bISO-1.0");
@@ -163,7 +168,7 @@ TEST_CASE("sdf: the binary variant", "[topography][sdf]") {
     bytes[82] = '\xFF';
     bytes[83] = '\x00';  // (1, 0): -32768, the mark
     bytes[84] = '\x80';
-    const Topography topography = read_sdf_topography(dir.write(bytes), 1 << 20);
+    const Topography topography = read_sdf_topography(dir.write(bytes), size_limit(1 << 20));
     CHECK(topography.heights(0, 0) == Approx(-1e-9));
     CHECK(std::isnan(topography.heights(1, 0)));
     CHECK(topography.missing == 1);
@@ -172,20 +177,20 @@ TEST_CASE("sdf: the binary variant", "[topography][sdf]") {
     std::string doubles = binary_header(7, 2, 1);
     append(doubles, 4.5);
     append(doubles, -7.25);
-    const Topography topography = read_sdf_topography(dir.write(doubles), 1 << 20);
+    const Topography topography = read_sdf_topography(dir.write(doubles), size_limit(1 << 20));
     CHECK(topography.heights(0, 0) == Approx(4.5e-9));
     CHECK(topography.heights(1, 0) == Approx(-7.25e-9));
   }
   SECTION("truncated data") {
     bytes.resize(bytes.size() - 1);
     const fs::path path = dir.write(bytes);
-    CHECK_THROWS_WITH(read_sdf_topography(path, 1 << 20),
+    CHECK_THROWS_WITH(read_sdf_topography(path, size_limit(1 << 20)),
                       Catch::StartsWith(path.string() + ": the data section holds 23 bytes") &&
                           Catch::Contains("take 24 (truncated)"));
   }
   SECTION("a truncated header") {
     const fs::path path = dir.write(bytes.substr(0, 50));
-    CHECK_THROWS_WITH(read_sdf_topography(path, 1 << 20),
+    CHECK_THROWS_WITH(read_sdf_topography(path, size_limit(1 << 20)),
                       Catch::Contains("50 bytes, fewer than the 81 of the binary header"));
   }
 }
@@ -194,8 +199,8 @@ TEST_CASE("sdf: malformed files are refused by name", "[topography][sdf]") {
   const TempDir dir;
   const auto refused = [&](const std::string& content, const std::string& what) {
     const fs::path path = dir.write(content);
-    CHECK_THROWS_AS(read_sdf_topography(path, 1 << 20), coatfft::InvalidArgument);
-    CHECK_THROWS_WITH(read_sdf_topography(path, 1 << 20),
+    CHECK_THROWS_AS(read_sdf_topography(path, size_limit(1 << 20)), coatfft::InvalidArgument);
+    CHECK_THROWS_WITH(read_sdf_topography(path, size_limit(1 << 20)),
                       Catch::StartsWith(path.string() + ": ") && Catch::Contains(what));
   };
   const std::string good = header(7) + reference_values() + "*\r\n";
@@ -249,7 +254,7 @@ TEST_CASE("sdf: malformed files are refused by name", "[topography][sdf]") {
   }
   SECTION("more points than the limit allows") {
     const fs::path path = dir.write(header(7, 100000, 100000));
-    CHECK_THROWS_WITH(read_sdf_topography(path, 1 << 20),
+    CHECK_THROWS_WITH(read_sdf_topography(path, size_limit(1 << 20)),
                       Catch::Contains("NumPoints * NumProfiles = 100000 * 100000 points, more "
                                       "than the limit of 131072 points"));
   }
@@ -259,7 +264,7 @@ TEST_CASE("sdf: a MountainsMap 11 export (ASCII, INT32, one point not measured)"
           "[topography][sdf]") {
   const fs::path path =
       fs::path(COATFFT_SOURCE_DIR) / "tests/data/topography/mm11_iso1_ascii_int32.sdf";
-  const Topography topography = read_sdf_topography(path, 1 << 20);
+  const Topography topography = read_sdf_topography(path, size_limit(1 << 20));
   REQUIRE(topography.heights.rows() == 30);
   REQUIRE(topography.heights.cols() == 20);
   CHECK(*topography.lx == Approx(30e-6));
@@ -273,4 +278,48 @@ TEST_CASE("sdf: a MountainsMap 11 export (ASCII, INT32, one point not measured)"
   CHECK(topography.heights(29, 19) == Approx(599e-9));
   CHECK(topography.heights(7, 11) == Approx(337e-9));
   CHECK(metadata_value(topography, "ManufacID") == "test");
+}
+
+// A header declaring far more points than the data section holds, read in a child process whose
+// memory may grow by 16 MiB (the 23000 x 23000 map would take 4.2 GB): the values are counted
+// before the map is allocated.
+TEST_CASE("sdf: NumPoints * NumProfiles beyond the values held is refused before allocating",
+          "[topography][sdf]") {
+  const TempDir dir;
+  const fs::path path = dir.write(header(7, 23000, 23000) + "1 2 3\r\n*\r\n");
+  const auto run = coatfft::testing::run_bounded(std::uintmax_t{16} << 20, 5, [&] {
+    // The memory check passes: what the file holds must refuse it.
+    (void)read_sdf_topography(path, memory_limit(1e12));
+  });
+  CHECK(run.outcome == path.string() +
+                           ": the data section holds 3 values, but NumPoints * NumProfiles = "
+                           "23000 * 23000 = 529000000 (truncated)");
+  CHECK(run.seconds < 5);
+}
+
+// 2^20 values (an 8 MiB map) within 13 MiB more memory: the map is held once (the values read
+// and the heights made of them are the same array; a binary file's values are read from the file
+// piece by piece, not held whole beside the map).
+TEST_CASE("sdf: a map is held once", "[topography][sdf]") {
+  const TempDir dir;
+  const auto read_within = [](const fs::path& path, double last) {
+    return coatfft::testing::run_bounded(std::uintmax_t{13} << 20, 5, [&] {
+      const Topography topography = read_sdf_topography(path, {});
+      if (topography.missing != 1 || topography.heights(1023, 1023) != last)
+        throw std::runtime_error("wrong values");
+    });
+  };
+  SECTION("ASCII, 2 MiB of text") {
+    std::string values;
+    for (int k = 0; k < 1024 * 1024; ++k) values += k == 5 ? "BAD " : "2 ";
+    const fs::path path = dir.write(header(7, 1024, 1024) + values + "*\r\n");
+    CHECK(read_within(path, 2e-9).outcome == "returned");
+  }
+  SECTION("binary DOUBLE, 8 MiB of values") {
+    std::string bytes = binary_header(7, 1024, 1024);
+    for (int k = 0; k < 1024 * 1024; ++k)
+      append(bytes, k == 5 ? std::numeric_limits<double>::quiet_NaN() : 2.0);
+    const fs::path path = dir.write(bytes);
+    CHECK(read_within(path, 2e-9).outcome == "returned");
+  }
 }

@@ -37,12 +37,19 @@ std::string xyz_rows(int nx, int ny, double dx, double dy, unsigned seed) {
   for (const auto& r : rows) text += r;
   return text;
 }
+// Reading in `unit` (a file without a unit of its own), the other options their defaults.
+topography::ReadOptions in_unit(const std::string& unit) {
+  topography::ReadOptions options;
+  options.unit = unit;
+  return options;
+}
+
 }  // namespace
 
 TEST_CASE("text: a matrix with a header, in the unit asked for; x along columns",
           "[topography][text]") {
   const auto path = text_file("m.csv", "\xEF\xBB\xBFheight map\n1\t2\t3\n4\t5\t6\n");
-  const auto t = read_topography(path, {"um"});
+  const auto t = read_topography(path, in_unit("um"));
   CHECK(t.format == "csv");
   REQUIRE(t.heights.rows() == 3);  // nx: the columns
   REQUIRE(t.heights.cols() == 2);
@@ -57,7 +64,8 @@ TEST_CASE("text: a matrix with a header, in the unit asked for; x along columns"
 TEST_CASE("text: x y z rows in any order on a regular grid", "[topography][text][xyz]") {
   for (unsigned seed : {1u, 2u, 3u}) {
     const int nx = 4 + static_cast<int>(seed), ny = 3;
-    const auto t = read_topography(text_file("r.xyz", xyz_rows(nx, ny, 0.25, 0.5, seed)), {"mm"});
+    const auto t =
+        read_topography(text_file("r.xyz", xyz_rows(nx, ny, 0.25, 0.5, seed)), in_unit("mm"));
     CHECK(t.format == "xyz");
     REQUIRE(t.heights.rows() == nx);
     REQUIRE(t.heights.cols() == ny);
@@ -129,7 +137,7 @@ TEST_CASE("missing points at the edge: each filled point is the mean of its neig
 TEST_CASE("read_topography: unknown formats and units are refused", "[topography]") {
   CHECK_THROWS_WITH(read_topography(text_file("z.bmp", "x")),
                     Catch::Contains("unknown topography format \".bmp\""));
-  CHECK_THROWS_WITH(read_topography(text_file("u.csv", "1,2\n3,4\n"), {"furlong"}),
+  CHECK_THROWS_WITH(read_topography(text_file("u.csv", "1,2\n3,4\n"), in_unit("furlong")),
                     Catch::Contains("unknown unit \"furlong\""));
   CHECK_THROWS_WITH(read_topography(text_file("p.csv", "1,2,3\n")),
                     Catch::Contains("at least 2 x 2"));

@@ -1,16 +1,23 @@
 #pragma once
 // Writing topography files in tests: a folder of its own under the system's temporary folder
 // (removed with its content), little-endian bytes of values, and the metadata a reader found.
+#include <malloc.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <bit>
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <new>
 #include <string>
 #include <type_traits>
 
+#include "core/error.hpp"
 #include "topography/topography.hpp"
 
 namespace coatfft::testing {
@@ -56,6 +63,75 @@ inline std::string metadata_value(const topography::Topography& topography,
   for (const auto& [key, value] : topography.metadata)
     if (key == name) return value;
   return "(absent)";
+}
+
+// Reading options with the file size limit `max_bytes`, or the memory limit `max_memory` [bytes],
+// the others their defaults.
+inline topography::ReadOptions size_limit(std::uintmax_t max_bytes) {
+  topography::ReadOptions options;
+  options.max_bytes = max_bytes;
+  return options;
+}
+inline topography::ReadOptions memory_limit(double max_memory) {
+  topography::ReadOptions options;
+  options.max_memory = max_memory;
+  return options;
+}
+
+// Blocks of 64 kB and more are mapped anew and given back when freed, in the whole test process
+// (glibc otherwise keeps freed blocks of up to 32 MiB for reuse, which a child of run_bounded
+// would inherit and use without growing): the child's limit then counts every block.
+inline const bool kLargeBlocksMapped = mallopt(M_MMAP_THRESHOLD, 1 << 16) == 1;
+
+// What `call` did in a child process whose address space may grow by `headroom` bytes beyond
+// the test's and whose CPU time is limited to `seconds`: a reader that allocates what a file
+// declares, rather than what it holds, ends in "out of memory" there (or is killed), not in a
+// refusal.
+struct BoundedRun {
+  std::string outcome;  ///< the InvalidArgument's message, "returned", "out of memory", ...
+  double seconds = 0;   ///< wall-clock time of the child
+};
+
+inline BoundedRun run_bounded(std::uintmax_t headroom, int seconds,
+                              const std::function<void()>& call) {
+  int channel[2];
+  if (pipe(channel) != 0) return {"no pipe", 0};
+  const auto start = std::chrono::steady_clock::now();
+  const pid_t pid = fork();
+  if (pid == 0) {
+    close(channel[0]);
+    if (!kLargeBlocksMapped) _exit(1);
+    malloc_trim(0);            // the free memory at the top of the heap given back
+    std::uintmax_t pages = 0;  // the child's virtual size now, the first field of statm
+    std::ifstream("/proc/self/statm") >> pages;
+    const rlim_t space = pages * static_cast<rlim_t>(sysconf(_SC_PAGESIZE)) + headroom;
+    const rlimit as{space, space}, cpu{static_cast<rlim_t>(seconds), static_cast<rlim_t>(seconds)};
+    setrlimit(RLIMIT_AS, &as);
+    setrlimit(RLIMIT_CPU, &cpu);
+    std::string outcome;
+    try {
+      call();
+      outcome = "returned";
+    } catch (const InvalidArgument& error) {
+      outcome = error.what();
+    } catch (const std::bad_alloc&) {
+      outcome = "out of memory";
+    } catch (const std::exception& error) {
+      outcome = std::string("another error: ") + error.what();
+    }
+    [[maybe_unused]] const auto written = write(channel[1], outcome.data(), outcome.size());
+    _exit(0);
+  }
+  close(channel[1]);
+  std::string outcome;
+  char piece[4096];
+  for (ssize_t n; (n = read(channel[0], piece, sizeof piece)) > 0;) outcome.append(piece, n);
+  close(channel[0]);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+  if (!WIFEXITED(status)) outcome = "killed by signal " + std::to_string(WTERMSIG(status));
+  return {outcome, elapsed.count()};
 }
 
 }  // namespace coatfft::testing

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "scene/input_file.hpp"
 #include "topography/formats.hpp"
 #include "topography/reader_support.hpp"
 
@@ -235,32 +236,42 @@ double parse_datum(const fs::path& path, std::string_view token, int code, std::
   return value;
 }
 
+/// The next value of the data section from `pos`, advancing `pos` past it; nothing at its end
+/// (the end of the file or "*").
+std::optional<std::string_view> next_value(std::string_view text, std::size_t& pos) {
+  pos = std::min(text.find_first_not_of(kSpace, pos), text.size());
+  const std::size_t end = std::min(text.find_first_of(kSpace, pos), text.size());
+  const std::string_view token = text.substr(pos, end - pos);
+  pos = end;
+  if (token.empty() || token == "*") return std::nullopt;
+  return token;
+}
+
+/// The values of the data section, counted (and checked) before the map is allocated: a header
+/// may declare far more points than the file holds.
 Field read_text_data(const fs::path& path, std::string_view text, std::size_t& pos,
                      const Header& header) {
   const std::size_t count = header.nx * header.ny;
   const int code = static_cast<int>(header.data_type);
+  std::size_t held = 0;  // each checked as it is counted, so that a bad value is named first
+  for (std::size_t end = pos; held <= count;) {
+    const auto token = next_value(text, end);
+    if (!token) break;
+    if (held < count) parse_datum(path, *token, code, held);
+    ++held;
+  }
+  if (held > count)
+    refuse(path, "the data section holds more than NumPoints * NumProfiles = ", header.nx, " * ",
+           header.ny, " values");
+  if (held != count)
+    refuse(path, "the data section holds ", held,
+           " values, but NumPoints * NumProfiles = ", header.nx, " * ", header.ny, " = ", count,
+           " (truncated)");
   Field values(header.nx, header.ny);
   double* out = values.data();  // column-major (nx, ny): x fastest, as in the file
-  std::size_t k = 0;
-  while (true) {
-    pos = text.find_first_not_of(kSpace, pos);
-    if (pos == std::string_view::npos) {
-      pos = text.size();
-      break;
-    }
-    const std::size_t end = std::min(text.find_first_of(kSpace, pos), text.size());
-    const std::string_view token = text.substr(pos, end - pos);
-    pos = end;
-    if (token == "*") break;
-    if (k == count)
-      refuse(path, "the data section holds more than NumPoints * NumProfiles = ", header.nx, " * ",
-             header.ny, " values");
-    out[k] = parse_datum(path, token, code, k);
-    ++k;
-  }
-  if (k != count)
-    refuse(path, "the data section holds ", k, " values, but NumPoints * NumProfiles = ", header.nx,
-           " * ", header.ny, " = ", count, " (truncated)");
+  for (std::size_t k = 0; k < count; ++k)
+    out[k] = parse_datum(path, *next_value(text, pos), code, k);
+  next_value(text, pos);  // past the closing "*"
   return values;
 }
 
@@ -332,49 +343,84 @@ Header read_binary_header(std::string_view bytes) {
   return header;
 }
 
-Field read_binary_data(const fs::path& path, std::string_view bytes, Header& header) {
+/// The values, read from the file piece by piece after the header (so that the map is held
+/// once, not beside the file's bytes), then the trailer.
+Field read_binary_data(const fs::path& path, scene::InputFile& file, Header& header) {
   const int code = static_cast<int>(header.data_type);
   const std::size_t width = kDataTypes[code].bytes;
   const std::size_t count = header.nx * header.ny;
-  std::size_t offset = kBinaryHeaderBytes;
+  std::uintmax_t offset = kBinaryHeaderBytes;
   // Olympus software writes bISO-1.0 files with 8 more header bytes (two 32-bit fields) than
   // the standard's; a file exactly that much longer than its data is read so (as Gwyddion
   // does), any other excess is the trailer.
-  if (header.version == "bISO-1.0" && bytes.size() == offset + count * width + 8) offset += 8;
-  if (bytes.size() - offset < count * width)
-    refuse(path, "the data section holds ", bytes.size() - offset, " bytes, but NumPoints * ",
+  std::string piece(std::size_t{1} << 16, '\0');  // a whole number of values of any width
+  if (header.version == "bISO-1.0" && file.size() == offset + count * width + 8) {
+    file.read_exact(piece.data(), 8);
+    offset += 8;
+  }
+  if (file.size() - offset < count * width)
+    refuse(path, "the data section holds ", file.size() - offset, " bytes, but NumPoints * ",
            "NumProfiles = ", header.nx, " * ", header.ny, " values of ", width, " bytes (",
            kDataTypes[code].name, ") take ", count * width, " (truncated)");
   Field values(header.nx, header.ny);
   double* out = values.data();  // column-major (nx, ny): x fastest, as in the file
-  for (std::size_t k = 0; k < count; ++k) out[k] = binary_value(bytes, offset + k * width, code);
-  read_trailer(bytes.substr(offset + count * width), header);
+  for (std::size_t k = 0; k < count;) {
+    const std::size_t n = std::min(count - k, piece.size() / width);
+    file.read_exact(piece.data(), n * width);
+    for (std::size_t m = 0; m < n; ++m) out[k + m] = binary_value(piece, m * width, code);
+    k += n;
+  }
+  // The trailer, free text kept as metadata, when it is at most 1 MiB.
+  const std::uintmax_t trailer_bytes = file.size() - offset - count * width;
+  if (trailer_bytes <= (std::uintmax_t{1} << 20)) {
+    std::string trailer(static_cast<std::size_t>(trailer_bytes), '\0');
+    file.read_exact(trailer.data(), trailer.size());
+    read_trailer(trailer, header);
+  }
   return values;
+}
+
+/// The header and the values of either variant; `start` holds the first bytes of the file.
+std::pair<Header, Field> read_header_and_values(const fs::path& path, scene::InputFile& file,
+                                                std::string start, const ReadOptions& options) {
+  if (start.front() == 'b') {
+    if (start.size() < kBinaryHeaderBytes)
+      refuse(path, start.size(), " bytes, fewer than the ", kBinaryHeaderBytes,
+             " of the binary header (truncated)");
+    Header header = read_binary_header(start);
+    check_header(path, header, options);
+    Field values = read_binary_data(path, file, header);
+    return {std::move(header), std::move(values)};
+  }
+  std::string text = std::move(start);
+  const std::size_t read = text.size();
+  text.resize(static_cast<std::size_t>(file.size()));
+  file.read_exact(text.data() + read, text.size() - read);
+  if (!file.at_end()) refuse(path, "the file changed while being read");
+  std::size_t pos = 0;
+  Header header = read_text_header(path, text, pos);
+  check_header(path, header, options);
+  Field values = read_text_data(path, text, pos, header);
+  read_trailer(std::string_view(text).substr(std::min(pos, text.size())), header);
+  return {std::move(header), std::move(values)};
 }
 
 }  // namespace
 
 Topography read_sdf_topography(const std::filesystem::path& path, const ReadOptions& options) {
-  const std::string content = scene::read_input_file(path, "an SDF file", options.max_bytes);
-  const std::string_view text(content);
-  const std::string_view version = text.substr(0, 8);
+  scene::InputFile file(path, "an SDF file", options.max_bytes);
+  std::string start(
+      static_cast<std::size_t>(std::min<std::uintmax_t>(file.size(), kBinaryHeaderBytes)), '\0');
+  file.read_exact(start.data(), start.size());
+  const std::string_view version = std::string_view(start).substr(0, 8);
   if (!is_version(version))
     refuse(path, "not an SDF file: it starts with ", scene::quoted_excerpt(version),
            ", not a version of ISO 25178-71 such as aISO-1.0, bISO-1.0, aBCR-1.0");
-  const bool binary = version.front() == 'b';
-  if (binary && text.size() < kBinaryHeaderBytes)
-    refuse(path, text.size(), " bytes, fewer than the ", kBinaryHeaderBytes,
-           " of the binary header (truncated)");
-  std::size_t pos = 0;
-  Header header = binary ? read_binary_header(text) : read_text_header(path, text, pos);
-  check_header(path, header, options);
-  Field values =
-      binary ? read_binary_data(path, text, header) : read_text_data(path, text, pos, header);
-  if (!binary) read_trailer(text.substr(std::min(pos, text.size())), header);
+  auto [header, heights] = read_header_and_values(path, file, std::move(start), options);
 
-  Field heights = values.unaryExpr([&](double value) {
-    return is_bad_point(value, static_cast<int>(header.data_type)) ? kNaN : value * header.zscale;
-  });
+  // In place: a map is held once.
+  for (double& value : heights.reshaped())
+    value = is_bad_point(value, static_cast<int>(header.data_type)) ? kNaN : value * header.zscale;
   const auto missing = static_cast<std::size_t>(heights.isNaN().count());
   header.metadata.insert(header.metadata.begin(), {"version", header.version});
   // Cell-centred grid: NumPoints points at spacing Xscale span NumPoints * Xscale.

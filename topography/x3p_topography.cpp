@@ -9,20 +9,26 @@
 #include <tinyxml2.h>
 #include <zip.h>
 
+#include <array>
 #include <bit>
 #include <boost/uuid/detail/md5.hpp>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 
 #include "core/error.hpp"
+#include "scene/input_file.hpp"
 #include "topography/formats.hpp"
 #include "topography/reader_support.hpp"
+#include "topography/x3p_main_xml.hpp"
 
 namespace coatfft::topography {
 namespace {
@@ -36,10 +42,10 @@ using tinyxml2::XMLElement;
 // bytes most significant first (on any host: it swaps the bytes for its name-based UUIDs), so
 // the hex digits are taken from the words' values, high byte first.
 
-std::string md5_hex(std::string_view bytes) {
-  boost::uuids::detail::md5 hash;
-  hash.process_bytes(bytes.data(), bytes.size());
-  boost::uuids::detail::md5::digest_type digest;
+using Md5 = boost::uuids::detail::md5;
+
+std::string hex_digest(Md5& hash) {
+  Md5::digest_type digest;
   static_assert(std::is_same_v<decltype(digest), unsigned int[4]>,
                 "a Boost whose MD5 digest is not four words: check the byte order");
   hash.get_digest(digest);
@@ -56,8 +62,63 @@ bool is_md5_hex(std::string_view text) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// The zip container, opened from the bytes read_input_file checked (a regular file within the
-// size limit), so that libzip never opens the path itself.
+// The zip container, read by libzip from the InputFile checked (a regular file within the size
+// limit), so that libzip never opens the path itself, at the offsets it asks for: the archive is
+// not held whole beside the map (a stored archive holds the map's values).
+
+struct FileSource {
+  scene::InputFile* file;
+  std::uint64_t position = 0;
+  zip_error_t error;
+};
+
+zip_int64_t read_file_source(void* state, void* data, zip_uint64_t length,
+                             zip_source_cmd_t command) {
+  FileSource& source = *static_cast<FileSource*>(state);
+  const std::uint64_t size = source.file->size();
+  switch (command) {
+    case ZIP_SOURCE_OPEN:
+    case ZIP_SOURCE_CLOSE:
+    case ZIP_SOURCE_FREE:
+      return 0;
+    case ZIP_SOURCE_READ: {
+      const std::uint64_t count = std::min<std::uint64_t>(length, size - source.position);
+      try {  // no exception may cross libzip's C frames
+        source.file->read_at(source.position, data, static_cast<std::size_t>(count));
+      } catch (const std::exception&) {
+        zip_error_set(&source.error, ZIP_ER_READ, EIO);
+        return -1;
+      }
+      source.position += count;
+      return static_cast<zip_int64_t>(count);
+    }
+    case ZIP_SOURCE_STAT: {
+      auto* stat = static_cast<zip_stat_t*>(data);
+      zip_stat_init(stat);
+      stat->size = size;
+      stat->valid |= ZIP_STAT_SIZE;
+      return sizeof(zip_stat_t);
+    }
+    case ZIP_SOURCE_ERROR:
+      return zip_error_to_data(&source.error, data, length);
+    case ZIP_SOURCE_SEEK: {
+      const zip_int64_t at =
+          zip_source_seek_compute_offset(source.position, size, data, length, &source.error);
+      if (at < 0) return -1;
+      source.position = static_cast<std::uint64_t>(at);
+      return 0;
+    }
+    case ZIP_SOURCE_TELL:
+      return static_cast<zip_int64_t>(source.position);
+    case ZIP_SOURCE_SUPPORTS:
+      return zip_source_make_command_bitmap(
+          ZIP_SOURCE_OPEN, ZIP_SOURCE_READ, ZIP_SOURCE_CLOSE, ZIP_SOURCE_STAT, ZIP_SOURCE_ERROR,
+          ZIP_SOURCE_FREE, ZIP_SOURCE_SEEK, ZIP_SOURCE_TELL, ZIP_SOURCE_SUPPORTS, -1);
+    default:
+      zip_error_set(&source.error, ZIP_ER_OPNOTSUPP, 0);
+      return -1;
+  }
+}
 
 struct ZipDiscard {
   void operator()(zip_t* archive) const { zip_discard(archive); }
@@ -68,10 +129,12 @@ struct ZipFileClose {
 
 class Archive {
  public:
-  Archive(const fs::path& path, const std::string& bytes) : path_(path) {
+  Archive(const fs::path& path, scene::InputFile& file)
+      : path_(path), source_(std::make_unique<FileSource>(FileSource{&file, 0, {}})) {
+    zip_error_init(&source_->error);
     zip_error_t error;
     zip_error_init(&error);
-    zip_source_t* source = zip_source_buffer_create(bytes.data(), bytes.size(), 0, &error);
+    zip_source_t* source = zip_source_function_create(read_file_source, source_.get(), &error);
     if (source != nullptr) archive_.reset(zip_open_from_source(source, ZIP_RDONLY, &error));
     if (!archive_) {
       const std::string reason = zip_error_strerror(&error);
@@ -82,36 +145,60 @@ class Archive {
     zip_error_fini(&error);
   }
 
-  /// The unpacked content of the entry `name`, or nothing if the archive has no such entry.
-  /// An entry that unpacks to more than `max_bytes` is refused before anything is allocated.
-  std::optional<std::string> read(const std::string& name, std::uintmax_t max_bytes) const {
+  /// The size the archive declares for the entry `name` unpacked, or nothing if it holds no
+  /// such entry.
+  std::optional<std::uint64_t> size(const std::string& name) const {
     zip_stat_t stat;
     zip_stat_init(&stat);
     if (zip_stat(archive_.get(), name.c_str(), 0, &stat) != 0) return std::nullopt;
     if ((stat.valid & ZIP_STAT_SIZE) == 0) refuse(path_, name, ": its size is unknown");
-    if (stat.size > max_bytes)
-      refuse(path_, name, ": ", stat.size, " bytes unpacked, more than the limit of ", max_bytes,
-             " bytes");
-    const std::unique_ptr<zip_file_t, ZipFileClose> file(
-        zip_fopen_index(archive_.get(), stat.index, 0));
-    if (!file) refuse(path_, name, ": cannot be unpacked (", zip_strerror(archive_.get()), ")");
-    std::string content(stat.size, '\0');
-    const zip_int64_t count = zip_fread(file.get(), content.data(), stat.size);
-    if (count < 0)
-      refuse(path_, name, ": cannot be unpacked (", zip_file_strerror(file.get()), ")");
-    if (static_cast<zip_uint64_t>(count) != stat.size)
-      refuse(path_, name, ": truncated, ", count, " of ", stat.size, " bytes");
-    return content;
+    return stat.size;
   }
 
+  /// Unpacks the entry `name` piece by piece into `consume`, to the end of the entry, where
+  /// libzip checks the CRC-32 of what it unpacked: false if the archive holds no such entry.
+  /// An entry declared larger than `max_bytes` is refused before anything is unpacked, and one
+  /// that unpacks to more than its declared size (a zip header can lie) as soon as that shows.
+  bool stream(const std::string& name, std::uintmax_t max_bytes,
+              const std::function<void(std::string_view)>& consume) const {
+    const auto declared = size(name);
+    if (!declared) return false;
+    if (*declared > max_bytes)
+      refuse(path_, name, ": ", *declared, " bytes unpacked, more than the limit of ", max_bytes,
+             " bytes");
+    const std::unique_ptr<zip_file_t, ZipFileClose> file(
+        zip_fopen(archive_.get(), name.c_str(), 0));
+    if (!file) refuse(path_, name, ": cannot be unpacked (", zip_strerror(archive_.get()), ")");
+    std::string piece(std::size_t{1} << 16, '\0');
+    std::uint64_t total = 0;
+    for (;;) {
+      const zip_int64_t count = zip_fread(file.get(), piece.data(), piece.size());
+      if (count < 0)
+        refuse(path_, name, ": cannot be unpacked (", zip_file_strerror(file.get()),
+               "): the file is damaged");
+      if (count == 0) break;
+      total += static_cast<std::uint64_t>(count);
+      if (total > *declared)
+        refuse(path_, name, ": unpacks to more than the ", *declared,
+               " bytes the archive declares: the file is damaged");
+      consume(std::string_view(piece.data(), static_cast<std::size_t>(count)));
+    }
+    if (total != *declared)
+      refuse(path_, name, ": truncated, ", total, " of ", *declared, " bytes");
+    return true;
+  }
+
+  /// The content of a small entry `name` (at most `max_bytes`), or a refusal naming it.
   std::string require(const std::string& name, std::uintmax_t max_bytes) const {
-    auto content = read(name, max_bytes);
-    if (!content) refuse(path_, "not an X3P file: the archive holds no ", name);
-    return std::move(*content);
+    std::string content;
+    if (!stream(name, max_bytes, [&](std::string_view piece) { content.append(piece); }))
+      refuse(path_, "not an X3P file: the archive holds no ", name);
+    return content;
   }
 
  private:
   fs::path path_;
+  std::unique_ptr<FileSource> source_;  // outlives archive_, which reads through it
   std::unique_ptr<zip_t, ZipDiscard> archive_;
 };
 
@@ -149,13 +236,16 @@ const XMLElement& require(const fs::path& path, const XMLElement* root, std::str
   return *element;
 }
 
-double number_of(const fs::path& path, const XMLElement& element, std::string_view where) {
-  const std::string_view text = element.GetText() ? element.GetText() : "";
+double number_in(const fs::path& path, std::string_view text, std::string_view where) {
   const auto value = parse_number<double>(text);
   if (!value || !std::isfinite(*value))
     refuse(path, "main.xml: ", where, " = ", scene::quoted_excerpt(trimmed(text)),
            " is not a number");
   return *value;
+}
+
+double number_of(const fs::path& path, const XMLElement& element, std::string_view where) {
+  return number_in(path, element.GetText() ? element.GetText() : "", where);
 }
 
 /// A matrix dimension (ISO 25178-72: an unsigned integer), at least 1.
@@ -280,7 +370,7 @@ Record read_record(const fs::path& path, const XMLElement* root, const ReadOptio
 // points in Record3/DataLink. A mismatch means a damaged or edited file: refused.
 
 void verify_record_checksum(const fs::path& path, const Archive& archive, const XMLElement* root,
-                            const std::string& main_xml) {
+                            const std::string& actual) {
   std::string checksum_file = text_of(child(child(root, "Record4"), "ChecksumFile"));
   if (checksum_file.empty()) checksum_file = "md5checksum.hex";
   const std::string content = archive.require(checksum_file, 1024);
@@ -289,20 +379,18 @@ void verify_record_checksum(const fs::path& path, const Archive& archive, const 
   if (!is_md5_hex(stated))
     refuse(path, checksum_file, " holds ", scene::quoted_excerpt(stated),
            ", not the MD5 checksum of main.xml (32 hex digits)");
-  const std::string actual = md5_hex(main_xml);
   if (lower_ascii(stated) != actual)
     refuse(path, "main.xml does not match its MD5 checksum in ", checksum_file, " (",
            lower_ascii(stated), "; the content's is ", actual, "): the file is damaged");
 }
 
 void verify_data_checksum(const fs::path& path, const XMLElement* checksum,
-                          const std::string& entry, const std::string& content) {
+                          const std::string& entry, const std::string& actual) {
   if (checksum == nullptr) return;  // optional in ISO 25178-72
   const std::string stated = text_of(checksum);
   if (!is_md5_hex(stated))
     refuse(path, "main.xml: ", local_name(checksum->Name()), " = ", scene::quoted_excerpt(stated),
            " is not an MD5 checksum (32 hex digits)");
-  const std::string actual = md5_hex(content);
   if (lower_ascii(stated) != actual)
     refuse(path, entry, " does not match its MD5 checksum in main.xml (", lower_ascii(stated),
            "; the content's is ", actual, "): the file is damaged");
@@ -327,72 +415,99 @@ double decode(const char* bytes, ValueType type) {
   return std::numeric_limits<double>::quiet_NaN();
 }
 
-Field decode_point_data(const fs::path& path, const Record& record, const std::string& entry,
-                        const std::string& data) {
+/// Unpacks `entry`, which the archive declares `bytes` long, piece by piece into `consume`,
+/// and checks it against its MD5 in main.xml (`checksum`), when stated.
+void read_checked(const fs::path& path, const Archive& archive, const std::string& entry,
+                  std::uint64_t bytes, const XMLElement* checksum,
+                  const std::function<void(std::string_view)>& consume) {
+  Md5 hash;
+  archive.stream(entry, bytes, [&](std::string_view piece) {
+    hash.process_bytes(piece.data(), piece.size());
+    consume(piece);
+  });
+  verify_data_checksum(path, checksum, entry, hex_digest(hash));
+}
+
+/// The point data, decoded as it is unpacked: its declared size is checked against SizeX *
+/// SizeY before anything is unpacked, so that a small archive cannot unpack to gigabytes first.
+Field read_point_data(const fs::path& path, const Archive& archive, const Record& record,
+                      const std::string& entry) {
   const std::size_t count = record.nx * record.ny;
   const ValueType type = *record.z.type;
   const std::size_t width = bytes_of(type);
-  if (data.size() != count * width)
-    refuse(path, entry, ": ", data.size(), " bytes, but SizeX * SizeY = ", record.nx, " * ",
-           record.ny, " values of ", width, " bytes take ", count * width,
-           data.size() < count * width ? " (truncated)" : "");
+  const auto bytes = archive.size(entry);
+  if (!bytes) refuse(path, "the archive holds no ", entry, " (the point data main.xml links)");
+  if (*bytes != count * width)
+    refuse(path, entry, ": ", *bytes, " bytes, but SizeX * SizeY = ", record.nx, " * ", record.ny,
+           " values of ", width, " bytes take ", count * width,
+           *bytes < count * width ? " (truncated)" : "");
   Field heights(record.nx, record.ny);
-  double* out = heights.data();  // column-major (nx, ny): x fastest, as in the file
-  for (std::size_t k = 0; k < count; ++k) out[k] = decode(data.data() + k * width, type);
+  double* out = heights.data();   // column-major (nx, ny): x fastest, as in the file
+  std::array<char, 8> partial{};  // a value split between two pieces
+  std::size_t have = 0;
+  read_checked(path, archive, entry, *bytes, child(record.data_link, "MD5ChecksumPointData"),
+               [&](std::string_view piece) {
+                 while (!piece.empty()) {
+                   if (have == 0 && piece.size() >= width) {
+                     *out++ = decode(piece.data(), type);
+                     piece.remove_prefix(width);
+                     continue;
+                   }
+                   partial[have++] = piece.front();
+                   piece.remove_prefix(1);
+                   if (have == width) *out++ = decode(partial.data(), type), have = 0;
+                 }
+               });
   return heights;
 }
 
 /// Marks the points valid.bin declares invalid as NaN. ISO 25178-72: one bit per point, in the
 /// order of the point data, least significant bit first; a 0 marks an invalid point.
-void apply_valid_points(const fs::path& path, const std::string& entry, const std::string& mask,
-                        Field& heights) {
+void read_valid_points(const fs::path& path, const Archive& archive, const Record& record,
+                       const std::string& entry, Field& heights) {
   const std::size_t count = static_cast<std::size_t>(heights.size());
-  if (mask.size() < (count + 7) / 8)
-    refuse(path, entry, ": ", mask.size(), " bytes, but ", count, " points need ", (count + 7) / 8,
-           " (truncated)");
+  const auto bytes = archive.size(entry);
+  if (!bytes) refuse(path, "the archive holds no ", entry, " (the valid points)");
+  if (*bytes != (count + 7) / 8)
+    refuse(path, entry, ": ", *bytes, " bytes, but ", count, " points need ", (count + 7) / 8,
+           *bytes < (count + 7) / 8 ? " (truncated)" : "");
   double* out = heights.data();
-  for (std::size_t k = 0; k < count; ++k)
-    if (((static_cast<unsigned char>(mask[k / 8]) >> (k % 8)) & 1U) == 0)
-      out[k] = std::numeric_limits<double>::quiet_NaN();
+  std::size_t k = 0;
+  read_checked(path, archive, entry, *bytes, child(record.data_link, "MD5ChecksumValidPoints"),
+               [&](std::string_view piece) {
+                 for (const char byte : piece)
+                   for (unsigned bit = 0; bit < 8; ++bit, ++k)
+                     if (k < count && ((static_cast<unsigned char>(byte) >> bit) & 1U) == 0)
+                       out[k] = std::numeric_limits<double>::quiet_NaN();
+               });
 }
 
-Field read_linked_data(const fs::path& path, const Archive& archive, const Record& record,
-                       std::uintmax_t max_bytes) {
+Field read_linked_data(const fs::path& path, const Archive& archive, const Record& record) {
   const std::string entry = text_of(child(record.data_link, "PointDataLink"));
   if (entry.empty()) refuse(path, "main.xml has no Record3/DataLink/PointDataLink");
-  const auto data = archive.read(entry, max_bytes);
-  if (!data) refuse(path, "the archive holds no ", entry, " (the point data main.xml links)");
-  verify_data_checksum(path, child(record.data_link, "MD5ChecksumPointData"), entry, *data);
-  Field heights = decode_point_data(path, record, entry, *data);
+  Field heights = read_point_data(path, archive, record, entry);
   const std::string valid_entry = text_of(child(record.data_link, "ValidPointsLink"));
-  if (!valid_entry.empty()) {
-    const auto mask = archive.read(valid_entry, max_bytes);
-    if (!mask) refuse(path, "the archive holds no ", valid_entry, " (the valid points)");
-    verify_data_checksum(path, child(record.data_link, "MD5ChecksumValidPoints"), valid_entry,
-                         *mask);
-    apply_valid_points(path, valid_entry, *mask, heights);
-  }
+  if (!valid_entry.empty()) read_valid_points(path, archive, record, valid_entry, heights);
   return heights;
 }
 
 /// Inline data: one <Datum> per point in the order of the point data; ISO 25178-72 marks an
-/// invalid point by an empty <Datum/>.
-Field read_data_list(const fs::path& path, const Record& record) {
-  const std::size_t count = record.nx * record.ny;
+/// invalid point by an empty <Datum/>. main.xml is unpacked a second time, now that its values
+/// are counted and SizeX * SizeY checked, to store them in the map.
+Field read_data_list(const fs::path& path, const Archive& archive, const Record& record,
+                     std::uintmax_t max_bytes) {
   Field heights(record.nx, record.ny);
   double* out = heights.data();
+  const std::size_t count = static_cast<std::size_t>(heights.size());
   std::size_t k = 0;
-  for (const XMLElement* datum = record.data_list->FirstChildElement(); datum;
-       datum = datum->NextSiblingElement()) {
-    if (local_name(datum->Name()) != "Datum") continue;
-    if (k == count)
+  MainXmlScanner scanner(path, [&](std::string_view text) {
+    if (k == count)  // the first pass counted them: only if the archive changed since
       refuse(path, "main.xml: Record3/DataList holds more than SizeX * SizeY = ", count, " values");
-    out[k++] = text_of(datum).empty() ? std::numeric_limits<double>::quiet_NaN()
-                                      : number_of(path, *datum, "Record3/DataList/Datum");
-  }
-  if (k != count)
-    refuse(path, "main.xml: Record3/DataList holds ", k, " values, but SizeX * SizeY = ", count,
-           " (truncated)");
+    out[k++] = text.empty() ? std::numeric_limits<double>::quiet_NaN()
+                            : number_in(path, text, "Record3/DataList/Datum");
+  });
+  archive.stream("main.xml", max_bytes, [&](std::string_view piece) { scanner.feed(piece); });
+  scanner.finish();
   return heights;
 }
 
@@ -426,27 +541,47 @@ void read_metadata(const XMLElement* root, Topography& topography) {
   add_if_present(topography, "comment", child(record2, "Comment"));
 }
 
+/// Unpacks main.xml: parses its record into `document` and returns the MD5 of main.xml and
+/// the number of values of its DataList (MainXmlScanner keeps them out of the DOM).
+std::pair<std::string, std::size_t> read_main_xml(const fs::path& path, const Archive& archive,
+                                                  std::uintmax_t max_bytes,
+                                                  tinyxml2::XMLDocument& document) {
+  Md5 hash;
+  MainXmlScanner scanner(path, [](std::string_view) {});
+  if (!archive.stream("main.xml", max_bytes, [&](std::string_view piece) {
+        hash.process_bytes(piece.data(), piece.size());
+        scanner.feed(piece);
+      }))
+    refuse(path, "not an X3P file: the archive holds no main.xml");
+  scanner.finish();
+  if (document.Parse(scanner.record().data(), scanner.record().size()) != tinyxml2::XML_SUCCESS)
+    refuse(path, "main.xml is not well-formed XML (", document.ErrorName(), " on line ",
+           document.ErrorLineNum(), ")");
+  return {hex_digest(hash), scanner.values()};
+}
+
 }  // namespace
 
 Topography read_x3p_topography(const std::filesystem::path& path, const ReadOptions& options) {
-  const std::string bytes = scene::read_input_file(path, "an X3P file", options.max_bytes);
-  const Archive archive(path, bytes);
-  const std::string main_xml = archive.require("main.xml", options.max_bytes);
+  scene::InputFile file(path, "an X3P file", options.max_bytes);
+  const Archive archive(path, file);
   tinyxml2::XMLDocument document;
-  if (document.Parse(main_xml.data(), main_xml.size()) != tinyxml2::XML_SUCCESS)
-    refuse(path, "main.xml is not well-formed XML (", document.ErrorName(), " on line ",
-           document.ErrorLineNum(), ")");
+  const auto [main_md5, values] = read_main_xml(path, archive, options.max_bytes, document);
   const XMLElement* root = document.RootElement();
   if (root == nullptr || local_name(root->Name()) != "ISO5436_2")
     refuse(path, "main.xml: the root element is not ISO5436_2");
   // The record is trusted only once it matches its checksum.
-  verify_record_checksum(path, archive, root, main_xml);
+  verify_record_checksum(path, archive, root, main_md5);
   const Record record = read_record(path, root, options);
+  if (!record.data_link && values != record.nx * record.ny)
+    refuse(path, "main.xml: Record3/DataList holds ", values,
+           " values, but SizeX * SizeY = ", record.nx * record.ny,
+           values < record.nx * record.ny ? " (truncated)" : "");
 
   Topography topography;
-  topography.heights = record.data_link ? read_linked_data(path, archive, record, options.max_bytes)
-                                        : read_data_list(path, record);
-  // Heights in metres; NaN (an invalid point) stays NaN.
+  topography.heights = record.data_link ? read_linked_data(path, archive, record)
+                                        : read_data_list(path, archive, record, options.max_bytes);
+  // Heights in metres, in place; NaN (an invalid point) stays NaN.
   topography.heights = topography.heights * record.z.increment + record.z.offset;
   topography.missing = static_cast<std::size_t>(topography.heights.isNaN().count());
   // Cell-centred grid: SizeX points at spacing Increment span SizeX * Increment.
