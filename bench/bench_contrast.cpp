@@ -9,7 +9,8 @@
 // and the largest difference of their pressures where both converged.
 // Prints `# key = value` headers and CSV rows, and writes the same to bench/results/contrast.csv
 // (or OUTPUT).
-//   bench_contrast [OUTPUT] [--n N] [--contrasts C ...] [--fractions F ...] [--max-iterations M]
+//   bench_contrast [OUTPUT] [--n N] [--contrasts C ...] [--fractions F ...] [--surface S]
+//                  [--max-iterations M]
 #include <cmath>
 #include <exception>
 #include <iostream>
