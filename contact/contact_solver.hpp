@@ -41,7 +41,7 @@ enum class PreconditionerSymbol {
   /// when the solver is built, reported by its first solve); |k| on free surfaces and distributed
   /// fields. On a coated body, whose k K^ varies by up to the ratio of the moduli, it needed 0.6
   /// to 0.8 times the iterations of |k| at ratios of 10 to 1000 on a smooth rough surface, and
-  /// 0.7 to 1.1 times on one rough down to the grid's scale (docs/contact.md, "Preconditioning").
+  /// 0.8 to 1.1 times on one rough down to the grid's scale (docs/contact.md, "Preconditioning").
   operator_adapted,
 };
 
