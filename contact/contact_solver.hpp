@@ -25,11 +25,24 @@ enum class Conjugation {
   /// after every step that added contact cells.
   polonsky_keer,
   /// Polak-Ribiere's beta = max(0, z.(g - g_old)) / (g.z)_old (Gilbert & Nocedal 1992's
-  /// non-negative form), never restarted for added cells: the difference g - g_old discounts what
+  /// non-negative form), not restarted for added cells: the difference g - g_old discounts what
   /// a change of the contact set did to the gap, so the direction keeps its memory while the set
-  /// settles (Bugnicourt et al. 2018 drop the restart in the same spirit). Fewer iterations on
-  /// rough surfaces (docs/contact.md, "Conjugation").
+  /// settles (Bugnicourt et al. 2018 drop the restart in the same spirit). Restarted instead by
+  /// Powell's (1977) test, when |z.g_old| >= 0.2 z.g: without it the set could cycle on a stiff
+  /// thin coating. Fewer iterations on rough surfaces (docs/contact.md, "Conjugation").
   polak_ribiere,
+};
+
+/// The multiplier of the preconditioner (contact/fourier_preconditioner.hpp).
+enum class PreconditionerSymbol {
+  /// |k|: the inverse of the half-space symbol 2/(E* k) up to a constant, whatever the body.
+  half_space,
+  /// On a periodic operator, sqrt(|k| / K^) with K^ the operator's own symbol (one application,
+  /// when the solver is built, reported by its first solve); |k| on free surfaces and distributed
+  /// fields. On a coated body, whose k K^ varies by up to the ratio of the moduli, it needed 0.6
+  /// to 0.8 times the iterations of |k| at ratios of 10 to 1000 on a smooth rough surface, and
+  /// 0.8 to 1.1 times on one rough down to the grid's scale (docs/contact.md, "Preconditioning").
+  operator_adapted,
 };
 
 /// Stopping rule and limits of the iteration.
@@ -49,6 +62,8 @@ struct ContactOptions {
   /// independent of N (24-33 for Hertz from 64^2 to 1024^2 from the uniform start, against
   /// 46-137 without). Off gives the classic Polonsky-Keer iteration.
   bool preconditioned = true;
+  /// The preconditioner's multiplier (PreconditionerSymbol).
+  PreconditionerSymbol preconditioner_symbol = PreconditionerSymbol::half_space;
   /// Threads (>= 1) of the preconditioner's FFTW transforms and, from 512^2 cells, of the
   /// iteration's element-wise passes (each chunk's sums added in chunk order: a result depends on
   /// the thread count only through rounding).
@@ -242,6 +257,8 @@ class ContactSolver {
   ContactOptions options_;
   std::shared_ptr<const detail::SolverRanks> ranks_;  // null: whole fields
   std::unique_ptr<detail::Preconditioner> preconditioner_;
+  // The application that built the preconditioner's symbol, not yet reported by a solve.
+  int pending_applications_ = 0;
 };
 
 }  // namespace coatfft

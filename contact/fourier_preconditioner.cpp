@@ -9,7 +9,7 @@
 namespace coatfft::detail {
 
 FourierPreconditioner::FourierPreconditioner(const Grid& grid, int threads, Planning planning)
-    : nx_(grid.nx()), ny_(grid.ny()), hx_(grid.nx() / 2 + 1) {
+    : grid_(grid), nx_(grid.nx()), ny_(grid.ny()), hx_(grid.nx() / 2 + 1) {
   const auto n_real = static_cast<std::size_t>(nx_ * ny_);
   const auto n_complex = static_cast<std::size_t>(hx_ * ny_);
   real_ = FftwRealBuffer(n_real);
@@ -37,6 +37,26 @@ double preconditioner_symbol(const Grid& grid, std::ptrdiff_t i, std::ptrdiff_t 
   if (i == 0 && j == 0) return norm / mean_inverse_wavenumber(dkx, dky);
   const double ky = dky * static_cast<double>(j <= grid.ny() / 2 ? j : j - grid.ny());
   return std::hypot(dkx * static_cast<double>(i), ky) * norm;
+}
+
+bool FourierPreconditioner::adapt_to_kernel(const Field& kernel) {
+  std::copy_n(kernel.data(), static_cast<std::size_t>(nx_ * ny_), real_.data());
+  forward_.execute();
+  const std::complex<double>* s = as_complex(spectrum_.data());
+  const double norm = 1.0 / static_cast<double>(nx_ * ny_);
+  // The factor sqrt(1 / (|k| K^)) of each mode, 1 for a half-space (up to a constant).
+  Field factor(hx_, ny_);
+  for (std::ptrdiff_t q = 1; q < hx_ * ny_; ++q) {
+    const double k_hat = s[q].real();  // the kernel is even in both offsets: K^ is real
+    if (!(k_hat > 0) || !std::isfinite(k_hat)) return false;
+    factor(q) = std::sqrt(1.0 / (preconditioner_symbol(grid_, q % hx_, q / hx_, 1.0) * k_hat));
+  }
+  if (hx_ * ny_ == 1) return false;       // a single cell: only the mean, which |k|'s rule sets
+  factor(0) = factor(ny_ > 1 ? hx_ : 1);  // mode (0, 1), else (1, 0)
+  for (std::ptrdiff_t j = 0; j < ny_; ++j)
+    for (std::ptrdiff_t i = 0; i < hx_; ++i)
+      sigma_(i, j) = preconditioner_symbol(grid_, i, j, norm) * factor(i, j);
+  return true;
 }
 
 void FourierPreconditioner::apply(Field& field) {
