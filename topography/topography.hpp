@@ -41,7 +41,7 @@ struct ReadOptions {
   std::uintmax_t max_bytes = scene::kMaxArrayFileBytes;
   /// The memory reading the map may take [bytes] (`--max-memory`); by default what the machine
   /// has available. A file declaring a larger map is refused before anything is allocated.
-  std::optional<double> max_memory;
+  std::optional<double> max_memory{};
 };
 
 /// A height map as read from a file.
