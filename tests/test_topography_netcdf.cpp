@@ -369,3 +369,22 @@ TEST_CASE("netcdf: attributes of the wrong type and text heights are refused, na
                                     (type == NC_CHAR ? "char" : "string") + "), not numbers"));
   }
 }
+
+TEST_CASE("netcdf: a map is held once while it is read", "[topography][netcdf]") {
+  // 4096 x 1024 floats laid out (x, y): the file in memory (16 MiB), the map (32 MiB) and a
+  // block of the transposed read (2 MiB) make 50 MiB; a second copy of the map would make 82.
+  const fs::path path = scratch("large.nc");
+  const auto [id, var] = create_heights(path, NC_64BIT_DATA, NC_FLOAT, 4096, 1024);
+  ok(nc_enddef(id));
+  std::vector<float> values(std::size_t{4096} * 1024);
+  for (std::size_t k = 0; k < values.size(); ++k) values[k] = static_cast<float>(k % 1000);
+  ok(nc_put_var_float(id, var, values.data()));
+  ok(nc_close(id));
+  // Measured from the peak of a child that does nothing.
+  const double start_mib = coatfft_test::run_bounded([] {}, 1u << 30, 30).peak_rss_mib;
+  const auto call = coatfft_test::run_bounded([&] { read_topography(path); }, 1u << 30, 30);
+  INFO(call.error << "; peak " << call.peak_rss_mib << " MiB, " << start_mib << " MiB at start");
+  CHECK(call.returned);
+  CHECK(call.error.empty());
+  CHECK(call.peak_rss_mib - start_mib < 66);
+}

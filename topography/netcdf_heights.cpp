@@ -22,8 +22,8 @@ using Index = Eigen::Index;
 
 // Deflate's largest compression ratio (RFC 1951: a 258-byte match in no fewer than 2 bits).
 constexpr std::uintmax_t kDeflateMaxRatio = 1032;
-// Values read at a time (8 MiB of doubles): the buffer of a transposed read.
-constexpr std::size_t kBlockValues = std::size_t{1} << 20;
+// Values read at a time (2 MiB of doubles): the buffer of a transposed read.
+constexpr std::size_t kBlockValues = std::size_t{1} << 18;
 
 // The heights' numeric type and its size in the file [bytes]; text and user-defined types
 // (compound, enum, vlen, opaque) are refused.
@@ -147,8 +147,10 @@ void read_blocks(const NetcdfFile& nc, int var, const Decoding& decode, bool yx,
                  "reading heights");
     std::transform(values, values + count[0] * row, values, decode);
     if (yx) continue;
-    for (std::size_t a = 0; a < count[0]; ++a)
-      for (std::size_t j = 0; j < row; ++j)
+    // z's columns are written in order; the block's rows are read a value at a time, each
+    // cache line of them used for the next few columns.
+    for (std::size_t j = 0; j < row; ++j)
+      for (std::size_t a = 0; a < count[0]; ++a)
         z(static_cast<Index>(first + a), static_cast<Index>(j)) = buffer[a * row + j];
   }
 }
