@@ -361,6 +361,17 @@ TEST_CASE("netcdf: attributes of the wrong type and text heights are refused, na
     const auto path = half_written("attribute.nc", NC_NETCDF4, NC_DOUBLE, c.define);
     CHECK_THROWS_WITH(read_topography(path), Catch::Equals(path.string() + c.message));
   }
+  // Global attributes are metadata: numbers and lists of strings there are skipped, not refused.
+  const auto global = half_written("global.nc", NC_NETCDF4, NC_DOUBLE, [](int id, int) {
+    const int year = 2026;
+    const char* names[2] = {"a", "b"};
+    ok(nc_put_att_int(id, NC_GLOBAL, "year", NC_INT, 1, &year));
+    ok(nc_put_att_string(id, NC_GLOBAL, "operators", 2, names));
+    ok(nc_put_att_text(id, NC_GLOBAL, "instrument", 4, "test"));
+  });
+  const topography::ReadOptions fill{"", topography::MissingPoints::fill};
+  CHECK(read_topography(global, fill).metadata ==
+        std::vector<std::pair<std::string, std::string>>{{"instrument", "test"}});
   for (const nc_type type : {NC_CHAR, NC_STRING}) {
     const fs::path path = scratch("text.nc");
     ok(nc_close(create_heights(path, NC_NETCDF4, type, 2, 2).first));

@@ -8,6 +8,7 @@
 #include <netcdf.h>
 
 #include <cmath>
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -57,8 +58,9 @@ std::vector<std::pair<std::string, std::string>> global_text(const NetcdfFile& n
     char name[NC_MAX_NAME + 1] = {};
     if (nc_inq_attname(nc.id(), NC_GLOBAL, k, name) != NC_NOERR) continue;
     nc_type type = NC_NAT;
-    if (nc_inq_atttype(nc.id(), NC_GLOBAL, name, &type) != NC_NOERR ||
-        (type != NC_CHAR && type != NC_STRING))
+    std::size_t length = 0;
+    if (nc_inq_att(nc.id(), NC_GLOBAL, name, &type, &length) != NC_NOERR ||
+        (type != NC_CHAR && (type != NC_STRING || length != 1)))
       continue;  // numbers and lists are no metadata text
     if (auto text = text_attribute(nc, NC_GLOBAL, "the file", name))
       metadata.emplace_back(name, *text);
