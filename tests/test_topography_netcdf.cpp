@@ -399,3 +399,26 @@ TEST_CASE("netcdf: a map is held once while it is read", "[topography][netcdf]")
   CHECK(call.error.empty());
   CHECK(call.peak_rss_mib - start_mib < 66);
 }
+
+TEST_CASE("netcdf: a NetCDF-3 header declaring more than its bytes hold is refused",
+          "[topography][netcdf]") {
+  // netcdf-c allocates an array for the variables a header counts before reading them: 3.8e9 of
+  // them in 120 bytes would ask for 30 GB. The count of a small file's variables, then of the
+  // characters of its first dimension's name, made huge.
+  const auto good = half_written("counts.nc", NC_CLOBBER, NC_DOUBLE);
+  std::string bytes(fs::file_size(good), '\0');
+  std::ifstream(good, std::ios::binary)
+      .read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  for (const std::string& count :
+       {std::string("\0\0\0\x0b\0\0\0\x01", 8), std::string("\0\0\0\x02\0\0\0\x01x", 9)}) {
+    std::string damaged = bytes;
+    const auto at = damaged.find(count);
+    REQUIRE(at != std::string::npos);
+    damaged[at + 4] = '\xe5';
+    const auto path = scratch("counts_damaged.nc");
+    std::ofstream(path, std::ios::binary) << damaged;
+    CHECK_THAT(bounded_refusal(path),
+               Catch::StartsWith(path.string() + ": the NetCDF header declares 384") &&
+                   Catch::EndsWith("bytes left: the file is damaged"));
+  }
+}

@@ -16,6 +16,7 @@
 #include "core/error.hpp"
 #include "scene/input_file.hpp"
 #include "topography/formats.hpp"
+#include "topography/netcdf3_header.hpp"
 #include "topography/netcdf_attributes.hpp"
 #include "topography/netcdf_file.hpp"
 #include "topography/netcdf_heights.hpp"
@@ -72,6 +73,7 @@ std::vector<std::pair<std::string, std::string>> global_text(const NetcdfFile& n
 
 Topography read_netcdf_topography(const std::filesystem::path& path, const ReadOptions& options) {
   std::string bytes = scene::read_input_file(path, "a NetCDF file", options.max_bytes);
+  require_netcdf3_header_fits(path, bytes);
   const NetcdfFile nc = NetcdfFile::open_memory(path, bytes);
   int var = -1;
   COATFFT_REQUIRE(nc_inq_varid(nc.id(), "heights", &var) == NC_NOERR, path.string(),
