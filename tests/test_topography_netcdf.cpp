@@ -421,4 +421,16 @@ TEST_CASE("netcdf: a NetCDF-3 header declaring more than its bytes hold is refus
                Catch::StartsWith(path.string() + ": the NetCDF header declares 384") &&
                    Catch::EndsWith("bytes left: the file is damaged"));
   }
+  // The type of heights (NC_DOUBLE, after its attribute list: ABSENT) made 12, which NetCDF-3
+  // does not have: netcdf-c 4.9.0 divides by its size, 0 (SIGFPE).
+  std::string damaged = bytes;
+  const auto at = damaged.find(std::string("\0\0\0\0\0\0\0\0\0\0\0\x06", 12));
+  REQUIRE(at != std::string::npos);
+  damaged[at + 11] = '\x0c';
+  const auto path = scratch("type_damaged.nc");
+  std::ofstream(path, std::ios::binary) << damaged;
+  CHECK_THROWS_WITH(read_topography(path),
+                    path.string() +
+                        ": the NetCDF header gives a variable the type 12, not one of "
+                        "NetCDF-3's: the file is damaged");
 }

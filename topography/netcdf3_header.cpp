@@ -62,6 +62,16 @@ class HeaderCursor {
              " bytes left: the file is damaged");
     return n;
   }
+  /// A type (NC_BYTE = 1 ... NC_DOUBLE = 6, and to NC_UINT64 = 11 in CDF-5), refused otherwise:
+  /// netcdf-c 4.9.0 gives a value of any other type no size, then divides by it (SIGFPE in
+  /// NC_check_vlen, for a variable).
+  std::uint64_t type(const char* of) {
+    const std::uint64_t value = take(4);
+    if (!ended_ && (value < 1 || value > (width_ == 8 ? 11u : 6u)))
+      refuse(path_, "the NetCDF header gives ", of, " the type ", value,
+             ", not one of NetCDF-3's: the file is damaged");
+    return value;
+  }
   /// A name: its length, then its characters padded to 4 bytes.
   void name() {
     const std::uint64_t length = count("characters of a name", 1);
@@ -73,7 +83,7 @@ class HeaderCursor {
     const std::uint64_t n = count("attributes", 2 * width_ + 4);
     for (std::uint64_t k = 0; k < n && !ended_; ++k) {
       name();
-      const std::uint64_t size = value_bytes(take(4));
+      const std::uint64_t size = value_bytes(type("an attribute"));
       skip((count("attribute values", size) * size + 3) / 4 * 4);
     }
   }
@@ -107,7 +117,8 @@ void require_netcdf3_header_fits(const std::filesystem::path& path, std::string_
     header.name();
     header.skip(header.count("dimensions of a variable", w) * w);
     header.attributes();
-    header.skip(4 + w + header.offset_width());  // type, size, start
+    header.type("a variable");
+    header.skip(w + header.offset_width());  // size, start
   }
 }
 
