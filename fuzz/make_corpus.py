@@ -3,8 +3,9 @@
 
 Small valid inputs (and a few near misses) from which libFuzzer mutates: the example scenes and
 scenes using every section and key, .npy files of every header version and layout the reader
-accepts, and CSV files with comments, separators and the numbers' corner cases. Uses only the
-standard library; rerun after changing it and commit the files it writes.
+accepts, CSV files with comments, separators and the numbers' corner cases, and topography
+files of each format (NetCDF-3 ones below netcdf_seeds). Uses only the standard library; rerun
+after changing it and commit the files it writes.
 Usage: fuzz/make_corpus.py
 """
 import pathlib
@@ -137,8 +138,94 @@ def damaged(archive):
     return archive[:end - 1] + bytes([archive[end - 1] ^ 0x40]) + archive[end:]
 
 
+# NetCDF-3 (classic, CDF-1; 64-bit offset, CDF-2) written from its format's grammar (netcdf-c's
+# docs, "The NetCDF File Format"): big-endian, names and values padded to 4 bytes.
+NC_TYPES = {"b": (1, "b"), "c": (2, "c"), "s": (3, ">h"), "i": (4, ">i"), "f": (5, ">f"),
+            "d": (6, ">d")}
+
+
+def nc_name(name):
+    data = name.encode()
+    return struct.pack(">i", len(data)) + data + b"\0" * (-len(data) % 4)
+
+
+def nc_attributes(attributes):
+    """(name, value) pairs: str as NC_CHAR, else (type letter, [numbers])."""
+    if not attributes:
+        return struct.pack(">ii", 0, 0)
+    out = struct.pack(">ii", 0x0C, len(attributes))
+    for name, value in attributes:
+        if isinstance(value, str):
+            kind, data, count = 2, value.encode(), len(value.encode())
+        else:
+            kind, form = NC_TYPES[value[0]]
+            data, count = b"".join(struct.pack(form, v) for v in value[1]), len(value[1])
+        out += nc_name(name) + struct.pack(">ii", kind, count) + data + b"\0" * (-len(data) % 4)
+    return out
+
+
+def netcdf3(dims, variables, attributes=(), version=1, data=True):
+    """dims: (name, length); variables: (name, dim ids, attributes, type letter, values). The
+    data follows the header (values, packed, padded), or not at all with data=False."""
+    def header(begins):
+        out = b"CDF" + bytes([version]) + struct.pack(">i", 0)
+        out += struct.pack(">ii", 0x0A, len(dims)) + b"".join(
+            nc_name(n) + struct.pack(">i", size) for n, size in dims)
+        out += nc_attributes(attributes) + struct.pack(">ii", 0x0B, len(variables))
+        for (name, ids, atts, kind, values), begin in zip(variables, begins):
+            count = 1
+            for i in ids:
+                count *= dims[i][1]
+            size = count * struct.calcsize(NC_TYPES[kind][1])
+            size = size + -size % 4 if size + -size % 4 < 2**32 else 2**32 - 1  # CDF-2's rule
+            out += nc_name(name) + struct.pack(">i", len(ids)) + b"".join(
+                struct.pack(">i", i) for i in ids) + nc_attributes(atts)
+            out += struct.pack(">iI", NC_TYPES[kind][0], size)
+            out += struct.pack(">I" if version == 1 else ">Q", begin)
+        return out
+    blocks = [v[4] if v[3] == "c" else b"".join(struct.pack(NC_TYPES[v[3]][1], x) for x in v[4])
+              for v in variables]
+    blocks = [b + b"\0" * (-len(b) % 4) for b in blocks]
+    begins, at = [], len(header([0] * len(variables)))
+    for block in blocks:
+        begins.append(at)
+        at += len(block)
+    return header(begins) + (b"".join(blocks) if data else b"")
+
+
+def netcdf_seeds():
+    """NetCDF-3 files of the layouts the reader takes, default-filled heights and a header
+    declaring 23000 x 23000 heights without them. No NetCDF-4 (HDF5) files: fuzz_topography
+    passes only NetCDF-3 input to the reader (fuzz/findings/README.md)."""
+    axes = [("x", 3), ("y", 2)]
+    coordinates = [("x", [0], [("length", ("d", [3e-6])), ("length_unit", "m"),
+                                ("periodic", ("i", [1]))], "d", [0, 1e-6, 2e-6]),
+                   ("y", [1], [("length", ("d", [2e-6])), ("unit", "um"),
+                                ("periodic", ("i", [1]))], "d", [0, 1e-6])]
+    fill = 9.969209968386869e36
+    seeds = {
+        "classic.nc": netcdf3(axes, coordinates + [
+            ("heights", [0, 1], [("units", "m"), ("_FillValue", ("d", [-1.0]))], "d",
+             [1e-9, 2e-9, 3e-9, 4e-9, -1.0, 6e-9])], [("instrument", "corpus")]),
+        "yx_packed.nc": netcdf3(list(reversed(axes)), [
+            ("heights", [0, 1], [("scale_factor", ("f", [0.5])), ("add_offset", ("d", [1.0])),
+                                 ("missing_value", ("s", [-1, -2])), ("units", "nm")],
+             "s", [1, 2, 3, -1, 5, -2])], version=2),
+        "default_fill.nc": netcdf3(axes, [("heights", [0, 1], [], "f",
+                                           [1.0, 2.0, 3.0, fill, fill, fill])]),
+        # Padded with zeros: netcdf-c's in-memory open refuses some files of under 112 bytes.
+        "declared_23000.nc": netcdf3([("x", 23000), ("y", 23000)],
+                                     [("heights", [0, 1], [], "d", [])], version=2,
+                                     data=False).ljust(512, b"\0"),
+        "text_heights.nc": netcdf3(axes, [("heights", [0, 1], [], "c", b"abcdef")]).ljust(128,
+                                                                                         b"\0"),
+    }
+    return seeds
+
+
 def topography_seeds():
-    """The first byte chooses the format (fuzz_topography.cpp): 0 X3P, 1 SDF, 2 x y z rows."""
+    """The first byte chooses the format (fuzz_topography.cpp): 0 X3P, 1 SDF, 2 x y z rows,
+    3 NetCDF; 4 to 7 the same with missing points filled."""
     sdf_header = ("aISO-1.0\r\nManufacID = corpus\r\nCreateDate = 010120260000\r\n"
                   "ModDate = 010120260000\r\nNumPoints = 3\r\nNumProfiles = 2\r\n"
                   "Xscale = 1.0E-6\r\nYscale = 2.0E-6\r\nZscale = 1.0E-9\r\n"
@@ -165,7 +252,7 @@ def topography_seeds():
         "mountainsmap.sdf": b"\1" + (REPO / "tests" / "data" / "topography"
                                        / "mm11_iso1_ascii_int32.sdf").read_bytes(),
         "rows.xyz": b"\2x y z\n0 0 1\n1 0 2\n0 1 3\n1 1 nan\n",
-        "shuffled.xyz": b"\5# comment\n1.0,0.5,3\n0.0,0.5,4\n0.0,0.0,1\n1.0,0.0,2\n",
+        "shuffled.xyz": b"\6# comment\n1.0,0.5,3\n0.0,0.5,4\n0.0,0.0,1\n1.0,0.0,2\n",
     }
 
 
@@ -185,7 +272,10 @@ def main():
     write("fuzz_scene", scenes)
     write("fuzz_npy", npy_seeds())
     write("fuzz_csv", csv_seeds())
-    write("fuzz_topography", topography_seeds())
+    seeds = topography_seeds()
+    for k, (name, data) in enumerate(netcdf_seeds().items()):
+        seeds[name] = bytes([3 + 4 * (k % 2)]) + data
+    write("fuzz_topography", seeds)
 
 
 if __name__ == "__main__":
