@@ -116,7 +116,23 @@ StagedOutput::StagedOutput(fs::path outdir, std::vector<std::string> names,
   COATFFT_REQUIRE(fs::is_directory(status), "output folder ", quoted(outdir), " exists and is ",
                   scene::describe_file_type(status.type()),
                   ": -o names the folder the run writes into");
-  for (const std::string& name : names_) check_output_target(outdir_ / name, "output", inputs_);
+  check_targets();
+}
+
+void StagedOutput::check_targets() const {
+  const std::vector<std::string> previous = read_manifest(outdir_ / manifest_name);
+  for (const std::string& name : names_) {
+    const fs::path target = outdir_ / name;
+    check_output_target(target, "output", inputs_);
+    // A file that no coatfft run wrote (the manifest does not list it) is the user's, even when
+    // it bears an output's name: it is never replaced.
+    std::error_code ec;
+    COATFFT_REQUIRE(name == manifest_name || !fs::exists(fs::symlink_status(target, ec)) ||
+                        std::find(previous.begin(), previous.end(), name) != previous.end(),
+                    "output ", quoted(target), " exists and no coatfft run wrote it (",
+                    manifest_name, " does not list it): it is left as it is; choose another "
+                    "output folder, or move the file away");
+  }
 }
 
 StagedOutput::~StagedOutput() {
@@ -189,7 +205,7 @@ void StagedOutput::commit() {
 }
 
 void StagedOutput::commit_into_existing() {
-  for (const std::string& name : names_) check_output_target(outdir_ / name, "output", inputs_);
+  check_targets();
   const std::vector<std::string> previous = read_manifest(outdir_ / manifest_name);
   std::vector<std::pair<std::string, bool>> done;  // name, whether an old file was set aside
   try {

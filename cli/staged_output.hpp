@@ -2,9 +2,9 @@
 // Output that cannot destroy (docs/scene_format.md, "Output folder"). A run's files are written
 // into a hidden staging folder (inside an existing OUTDIR, beside a new one) and appear in OUTDIR
 // together, once all of them are complete; a failure or an interruption at any point leaves OUTDIR
-// as it was. coatfft replaces only regular files it is about to produce, never an input of the run,
-// and removes only files that an earlier run wrote (listed in OUTDIR/.coatfft-outputs) and this run
-// does not produce.
+// as it was. coatfft replaces only regular files that an earlier run wrote (listed in
+// OUTDIR/.coatfft-outputs) and this run produces again, never an input of the run or a file of
+// the user's, and removes only files that an earlier run wrote and this run does not produce.
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -42,6 +42,9 @@ class StagedOutput {
   static constexpr const char* manifest_name = ".coatfft-outputs";
 
  private:
+  /// Every output name in OUTDIR: absent, or a regular file an earlier run wrote (listed in the
+  /// manifest) and none of the inputs; refused (InvalidArgument) otherwise.
+  void check_targets() const;
   void stage();
   void commit_into_existing();
   void remove_stale(const std::vector<std::string>& previous,

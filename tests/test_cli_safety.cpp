@@ -516,3 +516,35 @@ TEST_CASE("a topography's pad is checked against the memory before its gap is al
                                        "[contact]\ntopography = \"z.csv\"\nload = 1.0\n";
   CHECK(run_coatfft("check " + (dir / "small.toml").string() + " --max-memory 2G").status == 0);
 }
+
+TEST_CASE("a file of the user's with an output's name is never replaced", "[cli][safety]") {
+  // A folder holding the user's own fields.nc (or uz.npy) that no coatfft run wrote: the run was
+  // refused nowhere and replaced it. Now refused before any work, OUTDIR byte for byte as it was;
+  // the same outputs written by an earlier run (listed in .coatfft-outputs) are replaced.
+  const fs::path dir = fresh("safety_users_file");
+  const fs::path out = dir / "out";
+  fs::create_directories(out);
+  std::ofstream(out / "fields.nc") << "my own NetCDF file";
+  std::ofstream(out / "notes.txt") << "notes";
+  const fs::path netcdf = write_scene(std::string(kGoodScene) + "[output]\nformat = \"netcdf\"\n",
+                                      "safety_users_file/netcdf", "", "");
+  const auto before = snapshot(dir);
+  check_refusal(run_coatfft("run " + netcdf.string() + " -o " + out.string()),
+                "fields.nc\" exists and no coatfft run wrote it");
+  CHECK(snapshot(dir) == before);
+  // The user moves the file away; the run writes fields.nc, and a second run replaces its own.
+  fs::rename(out / "fields.nc", dir / "mine.nc");
+  REQUIRE(run_coatfft("run " + netcdf.string() + " -o " + out.string()).status == 0);
+  REQUIRE(run_coatfft("run " + netcdf.string() + " -o " + out.string()).status == 0);
+  CHECK(text_of(out / ".coatfft-outputs") == "fields.nc\ndisplacement.csv\nsummary.json\n");
+  // A .npy run into the same folder: fields.nc is stale (coatfft's) and removed; a uz.npy of the
+  // user's would stop it.
+  std::ofstream(out / "uz.npy") << "mine";
+  const fs::path npy = write_scene(kGoodScene, "safety_users_file/npy", "", "");
+  check_refusal(run_coatfft("run " + npy.string() + " -o " + out.string()), "uz.npy");
+  CHECK(text_of(out / "uz.npy") == "mine");
+  fs::remove(out / "uz.npy");
+  REQUIRE(run_coatfft("run " + npy.string() + " -o " + out.string()).status == 0);
+  CHECK_FALSE(fs::exists(out / "fields.nc"));
+  CHECK(text_of(out / "notes.txt") == "notes");
+}
