@@ -59,8 +59,12 @@ void topography_command(const TopographyOptions& o) {
   if (file) {
     COATFFT_REQUIRE(t.lx || format == topography::HeightsFormat::npy, o.input.string(),
                     ": the file carries no size; give --lx and --ly to write a NetCDF file");
-    const Field written = o.gap ? gap_of_topography(heights) : heights;
-    if (o.gap) topography::require_finite_map(o.input, written, "the gap max(z) - z");
+    Field gap;  // the heights are written as they are, not copied
+    if (o.gap) {
+      gap = gap_of_topography(heights);
+      topography::require_finite_map(o.input, gap, "the gap max(z) - z");
+    }
+    const Field& written = o.gap ? gap : heights;
     topography::write_heights(
         file->path(), *format, written, grid, t.periodic.value_or(false),
         {{{"source", o.input.filename().string()}, {"format", t.format}}, {}});

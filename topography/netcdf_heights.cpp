@@ -57,7 +57,7 @@ bool y_first(const NetcdfFile& nc, int var, std::array<std::size_t, 2>& sizes) {
 }
 
 // Refuses heights that cannot be in a file of `file_bytes` (netcdf_heights.hpp, "Bound"); after
-// require_point_limit, so that nx ny times the value size fits in 64 bits.
+// require_file_point_limit, so that nx ny times the value size fits in 64 bits.
 void require_in_file(const NetcdfFile& nc, int var, std::size_t size, std::size_t nx,
                      std::size_t ny, std::uintmax_t file_bytes) {
   std::size_t filters = 0;
@@ -166,8 +166,10 @@ Field read_netcdf_heights(const NetcdfFile& nc, int var, std::uintmax_t file_byt
   COATFFT_REQUIRE(nx > 0 && ny > 0, nc.path().string(), ": heights of ", nx, " x ", ny,
                   " points are empty");
   // Checked without forming nx ny, which may overflow for the dimensions a file can declare.
-  require_point_limit(nc.path(), "heights: x * y", nx, ny, options);
+  require_file_point_limit(nc.path(), "heights: x * y", nx, ny, options);
+  // What the file cannot hold is named as such before the memory it would take.
   require_in_file(nc, var, size, nx, ny, file_bytes);
+  require_map_memory(nc.path(), "heights: x * y", nx, ny, options);
   const Decoding decode = decoding(nc, var, type);
   Field z(static_cast<Index>(nx), static_cast<Index>(ny));
   read_blocks(nc, var, decode, yx, z);

@@ -56,10 +56,18 @@ inline std::uint64_t little_endian(const char* bytes, std::size_t width) {
   return word;
 }
 
-/// Refuses a map of nx x ny points before anything is allocated: its heights (a double each)
-/// must fit the file size limit `options.max_bytes`, and the memory reading it takes must fit
-/// `options.max_memory` (or what the machine has available). `sizes` names the counts
-/// ("SizeX * SizeY") as the file declares them.
+/// Refuses a map of nx x ny points whose heights (a double each) exceed the file size limit
+/// `options.max_bytes`; nx ny times 8 then fits in 64 bits. `sizes` names the counts ("SizeX *
+/// SizeY") as the file declares them.
+void require_file_point_limit(const std::filesystem::path& path, std::string_view sizes,
+                              std::size_t nx, std::size_t ny, const ReadOptions& options);
+
+/// Refuses a map of nx x ny points (a double each) that would not fit `options.max_memory`, or
+/// what the machine has available, before it is allocated.
+void require_map_memory(const std::filesystem::path& path, std::string_view sizes, std::size_t nx,
+                        std::size_t ny, const ReadOptions& options);
+
+/// Both, before anything is allocated.
 void require_point_limit(const std::filesystem::path& path, std::string_view sizes, std::size_t nx,
                          std::size_t ny, const ReadOptions& options);
 
