@@ -1,13 +1,12 @@
 // A misspelt scene key is named as the likely slip (scene/key_spelling.hpp): the optimal string
 // alignment distance against hand-counted edits, and the refusals of scenes with one slip.
 #include <catch2/catch.hpp>
-#include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "core/error.hpp"
 #include "scene/key_spelling.hpp"
 #include "scene/scene.hpp"
+#include "tests/scene_text.hpp"
 
 using namespace coatfft;
 
@@ -15,18 +14,12 @@ namespace {
 
 // The message read_scene refuses `text` with ("" when it reads).
 std::string refusal(const std::string& text) {
-  const auto dir = std::filesystem::temp_directory_path() / "coatfft_test_key_spelling";
-  std::filesystem::create_directories(dir);
-  const auto path = dir / "scene.toml";
-  std::ofstream(path) << text;
-  std::string message;
   try {
-    scene::read_scene(path);
+    coatfft_test::read_scene_text(text, "coatfft_test_key_spelling");
   } catch (const InvalidArgument& e) {
-    message = e.what();
+    return e.what();
   }
-  std::filesystem::remove_all(dir);
-  return message;
+  return "";
 }
 
 const std::string grid = "[grid]\nnx = 32\nny = 32\nlx = 1e-3\nly = 1e-3\n";

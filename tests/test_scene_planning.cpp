@@ -7,20 +7,15 @@
 #include <string>
 
 #include "scene/scene.hpp"
+#include "tests/scene_text.hpp"
 
 using namespace coatfft;
 
 namespace {
 
-// The scene read from `text`, written to a file of its own.
+// The scene read from `text`.
 scene::Scene read(const std::string& text) {
-  const auto dir = std::filesystem::temp_directory_path() / "coatfft_test_scene_planning";
-  std::filesystem::create_directories(dir);
-  const auto path = dir / "scene.toml";
-  std::ofstream(path) << text;
-  scene::Scene s = scene::read_scene(path);
-  std::filesystem::remove_all(dir);
-  return s;
+  return coatfft_test::read_scene_text(text, "coatfft_test_scene_planning");
 }
 
 std::string scene_text(int n, const std::string& load, const std::string& method) {
