@@ -224,7 +224,7 @@ struct SceneReading {
   /// The memory the run may use [bytes] (--max-memory; by default what the machine has): what is
   /// allocated while the scene is read (a measured topography, its padded gap) is checked against
   /// it first. The whole scene's estimate is check_memory's (scene/resources.hpp), after reading.
-  std::optional<double> max_memory;
+  std::optional<double> max_memory{};
 };
 
 Scene read_scene(const std::filesystem::path& path, const SceneReading& reading = {});
