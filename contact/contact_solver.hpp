@@ -97,7 +97,7 @@ struct ContactOptions {
   /// Called, when set, before each solve of a sweep (ContactSolver::solve_sweep) with its index
   /// (0, 1, ...) in the sweep's ascending order, the number of values and the value, so that a
   /// caller's progress can say which value the iterations are of.
-  std::function<void(std::size_t index, std::size_t count, double value)> on_value;
+  std::function<void(std::size_t index, std::size_t count, double value)> on_value{};
 };
 
 /// Which quantity the solve prescribes.

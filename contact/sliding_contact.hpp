@@ -30,7 +30,7 @@ struct SlidingOptions {
   int max_iterations = 30;  ///< normal solves at most (>= 1)
   /// Called, when set, before each normal solve with its number (1, 2, ...), so that a caller's
   /// progress can say which solve the iterations are of.
-  std::function<void(int solve)> on_solve;
+  std::function<void(int solve)> on_solve{};
 };
 
 struct SlidingReport {

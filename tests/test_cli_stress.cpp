@@ -345,8 +345,8 @@ namespace {
 // A coating of thickness 2e-4 m on steel (16 x 14 cells over 2 x 1.75 mm) under a Hertz
 // pressure (a = 0.6 mm) with the planes 2e-4 (the interface, below) and 3e-4 m, and the section's
 // rows at 2e-4 and 4e-4 m: every plane asked for is in the substrate. `extra` adds to it.
-std::string interface_scene(const std::string& coating, const std::string& extra) {
-  return "[substrate]\nmaterial = \"steel\"\n[[coating]]\nthickness = 2e-4\n" + coating + R"(
+std::string interface_scene(const std::string& coating_keys, const std::string& extra) {
+  return "[substrate]\nmaterial = \"steel\"\n[[coating]]\nthickness = 2e-4\n" + coating_keys + R"(
 [grid]
 nx = 16
 ny = 14

@@ -47,11 +47,11 @@ fs::path write_scene(const std::string& name, const std::string& text) {
   return dir / name;
 }
 
-// A sphere on a periodic steel surface, 32^2 cells; `contact` ends the [contact] section.
-std::string sphere_scene(const std::string& contact) {
+// A sphere on a periodic steel surface, 32^2 cells; `contact_keys` ends the [contact] section.
+std::string sphere_scene(const std::string& contact_keys) {
   return "[substrate]\nmaterial = \"steel\"\n[grid]\nboundary = \"periodic\"\nnx = 32\nny = 32\n"
          "lx = 3.0e-3\nly = 3.0e-3\n[contact]\nindenter = \"paraboloid\"\nradius = 0.01\n" +
-         contact;
+         contact_keys;
 }
 
 }  // namespace
