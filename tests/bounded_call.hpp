@@ -15,6 +15,8 @@
 #include <functional>
 #include <string>
 
+#include "tests/address_sanitized.hpp"
+
 namespace coatfft_test {
 
 struct BoundedCall {
@@ -23,16 +25,6 @@ struct BoundedCall {
   double peak_rss_mib = 0;  ///< the child's peak resident memory
   double seconds = 0;       ///< wall time of the child
 };
-
-inline bool address_sanitized() {
-#if defined(__SANITIZE_ADDRESS__)
-  return true;
-#elif defined(__has_feature)
-  return __has_feature(address_sanitizer);
-#else
-  return false;
-#endif
-}
 
 /// Runs `call` in a child whose address space may grow by `extra_bytes` beyond the parent's and
 /// that is killed after `seconds`.
