@@ -4,6 +4,7 @@
 // std::bad_alloc or SIGALRM in the child instead of taking the test machine's memory; the parent
 // gets what the call threw and the child's peak resident memory (wait4). Under AddressSanitizer,
 // which reserves terabytes of shadow, only the time bound and the measured peak apply.
+#include <malloc.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -36,6 +37,7 @@ inline BoundedCall run_bounded(const std::function<void()>& call, std::size_t ex
   const pid_t pid = fork();
   if (pid == 0) {
     close(pipe_ends[0]);
+    malloc_trim(0);  // the free memory at the top of the heap given back: the bound counts it
     std::size_t pages = 0;
     std::ifstream("/proc/self/statm") >> pages;  // the address space now [pages]
     const rlim_t limit = pages * static_cast<rlim_t>(sysconf(_SC_PAGESIZE)) + extra_bytes;

@@ -2,23 +2,22 @@
 // Writing topography files in tests: a folder of its own under the system's temporary folder
 // (removed with its content), little-endian bytes of values, and the metadata a reader found.
 #include <malloc.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <bit>
-#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <new>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 
 #include "core/error.hpp"
 #include "tests/address_sanitized.hpp"
+#include "tests/bounded_call.hpp"
 #include "topography/topography.hpp"
 
 namespace coatfft::testing {
@@ -85,9 +84,9 @@ inline topography::ReadOptions memory_limit(double max_memory) {
 inline const bool kLargeBlocksMapped = mallopt(M_MMAP_THRESHOLD, 1 << 16) == 1;
 
 // What `call` did in a child process whose address space may grow by `headroom` bytes beyond
-// the test's and whose CPU time is limited to `seconds`: a reader that allocates what a file
-// declares, rather than what it holds, ends in "out of memory" there (or is killed), not in a
-// refusal.
+// the test's and that is stopped after `seconds` (coatfft_test::run_bounded): a reader that
+// allocates what a file declares, rather than what it holds, ends in "out of memory" there (or
+// is killed), not in a refusal.
 struct BoundedRun {
   std::string outcome;  ///< the InvalidArgument's message, "returned", "out of memory", ...
   double seconds = 0;   ///< wall-clock time of the child
@@ -95,46 +94,23 @@ struct BoundedRun {
 
 inline BoundedRun run_bounded(std::uintmax_t headroom, int seconds,
                               const std::function<void()>& call) {
-  int channel[2];
-  if (pipe(channel) != 0) return {"no pipe", 0};
-  const auto start = std::chrono::steady_clock::now();
-  const pid_t pid = fork();
-  if (pid == 0) {
-    close(channel[0]);
-    // AddressSanitizer's allocator takes no mallopt (nor, below, the address-space bound).
-    if (!kLargeBlocksMapped && !coatfft_test::address_sanitized()) _exit(1);
-    malloc_trim(0);            // the free memory at the top of the heap given back
-    std::uintmax_t pages = 0;  // the child's virtual size now, the first field of statm
-    std::ifstream("/proc/self/statm") >> pages;
-    const rlim_t space = pages * static_cast<rlim_t>(sysconf(_SC_PAGESIZE)) + headroom;
-    const rlimit as{space, space}, cpu{static_cast<rlim_t>(seconds), static_cast<rlim_t>(seconds)};
-    // AddressSanitizer's shadow needs terabytes of address space: its pass keeps the time bound.
-    if (!coatfft_test::address_sanitized()) setrlimit(RLIMIT_AS, &as);
-    setrlimit(RLIMIT_CPU, &cpu);
-    std::string outcome;
-    try {
-      call();
-      outcome = "returned";
-    } catch (const InvalidArgument& error) {
-      outcome = error.what();
-    } catch (const std::bad_alloc&) {
-      outcome = "out of memory";
-    } catch (const std::exception& error) {
-      outcome = std::string("another error: ") + error.what();
-    }
-    [[maybe_unused]] const auto written = write(channel[1], outcome.data(), outcome.size());
-    _exit(0);
-  }
-  close(channel[1]);
-  std::string outcome;
-  char piece[4096];
-  for (ssize_t n; (n = read(channel[0], piece, sizeof piece)) > 0;) outcome.append(piece, n);
-  close(channel[0]);
-  int status = 0;
-  waitpid(pid, &status, 0);
-  const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
-  if (!WIFEXITED(status)) outcome = "killed by signal " + std::to_string(WTERMSIG(status));
-  return {outcome, elapsed.count()};
+  const coatfft_test::BoundedCall run = coatfft_test::run_bounded(
+      [&] {
+        // AddressSanitizer's allocator takes no mallopt (nor the address-space bound).
+        if (!kLargeBlocksMapped && !coatfft_test::address_sanitized()) _exit(1);
+        try {
+          call();
+        } catch (const std::bad_alloc&) {
+          throw std::runtime_error("out of memory");
+        } catch (const InvalidArgument&) {
+          throw;
+        } catch (const std::exception& error) {
+          throw std::runtime_error(std::string("another error: ") + error.what());
+        }
+      },
+      headroom, static_cast<unsigned>(seconds));
+  if (!run.returned) return {"killed or stopped", run.seconds};
+  return {run.error.empty() ? "returned" : run.error, run.seconds};
 }
 
 }  // namespace coatfft::testing
