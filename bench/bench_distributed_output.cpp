@@ -1,7 +1,7 @@
 // The fields' files of a distributed run (docs/scale.md, "NetCDF files by the ranks together"):
 // one N x N field (a rough surface made by the ranks) written as .npy by MPI-IO
-// (scene/npy_slab.hpp) and as NetCDF by PnetCDF's collective writes
-// (topography/netcdf_collective.hpp), each rank its rows; each time the median of repeats, from a
+// (io/npy_slab.hpp) and as NetCDF by PnetCDF's collective writes
+// (io/netcdf_collective.hpp), each rank its rows; each time the median of repeats, from a
 // barrier to the slowest rank, of creating, writing and closing the file (not synced to the disk:
 // the page cache's speed). With --serial, write_npy and write_netcdf of the whole field in a
 // process without MPI. One CSV row on stdout (rank 0); scripts/distributed_scale_run.sh
@@ -21,11 +21,11 @@
 #include "bench/slowest_rank_median.hpp"
 #include "distributed/mpi_session.hpp"
 #include "distributed/self_affine_slab.hpp"
-#include "scene/npy.hpp"
-#include "scene/npy_slab.hpp"
+#include "io/netcdf_collective.hpp"
+#include "io/netcdf_writer.hpp"
+#include "io/npy.hpp"
+#include "io/npy_slab.hpp"
 #include "surfaces/self_affine_surface.hpp"
-#include "topography/netcdf_collective.hpp"
-#include "topography/netcdf_writer.hpp"
 
 namespace {
 
@@ -76,11 +76,10 @@ Row run_distributed(const Options& o, const Grid& grid, const fs::path& folder) 
   Row row;
   row.npy_s = median_write_s(
       o.repeats, folder / "z.npy", root,
-      [&] { scene::write_npy_slab(comm, folder / "z.npy", z, slab); }, barrier, max);
+      [&] { io::write_npy_slab(comm, folder / "z.npy", z, slab); }, barrier, max);
   row.netcdf_s = median_write_s(
       o.repeats, folder / "z.nc", root,
-      [&] { topography::write_heights_slab(comm, folder / "z.nc", z, grid, slab, true); }, barrier,
-      max);
+      [&] { io::write_heights_slab(comm, folder / "z.nc", z, grid, slab, true); }, barrier, max);
   return row;
 }
 
@@ -90,15 +89,11 @@ Row run_serial(const Options& o, const Grid& grid, const fs::path& folder) {
   const auto same = [](double t) { return t; };
   Row row;
   row.npy_s = median_write_s(
-      o.repeats, folder / "z.npy", true, [&] { scene::write_npy(folder / "z.npy", z); }, none,
-      same);
+      o.repeats, folder / "z.npy", true, [&] { io::write_npy(folder / "z.npy", z); }, none, same);
   row.netcdf_s = median_write_s(
       o.repeats, folder / "z.nc", true,
-      [&] {
-        topography::write_heights(folder / "z.nc", topography::HeightsFormat::netcdf, z, grid,
-                                  true);
-      },
-      none, same);
+      [&] { io::write_heights(folder / "z.nc", io::HeightsFormat::netcdf, z, grid, true); }, none,
+      same);
   return row;
 }
 

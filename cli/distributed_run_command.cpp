@@ -19,9 +19,9 @@
 #include "cli/wisdom_file.hpp"
 #include "core/error.hpp"
 #include "distributed/fftw_mpi_wisdom.hpp"
+#include "io/npy_slab.hpp"
 #include "scene/distributed_run.hpp"
 #include "scene/netcdf_slab.hpp"
-#include "scene/npy_slab.hpp"
 #include "scene/scene_netcdf.hpp"
 
 namespace coatfft::cli {
@@ -72,14 +72,14 @@ void write_distributed_outputs(const Communicator& comm, DistributedOutput& out,
     if (out.paths.contains(scene::netcdf_output_name))
       scene::write_run_netcdf_slab(comm, path(scene::netcdf_output_name), spec, grid, run);
   } else {
-    if (spec.uz) scene::write_npy_slab(comm, path("uz.npy"), run.uz, run.slab);
-    if (spec.pressure) scene::write_npy_slab(comm, path("pressure.npy"), run.pressure, run.slab);
-    if (spec.gap) scene::write_npy_slab(comm, path("gap.npy"), run.gap, run.slab);
+    if (spec.uz) io::write_npy_slab(comm, path("uz.npy"), run.uz, run.slab);
+    if (spec.pressure) io::write_npy_slab(comm, path("pressure.npy"), run.pressure, run.slab);
+    if (spec.gap) io::write_npy_slab(comm, path("gap.npy"), run.gap, run.slab);
   }
   if (spec.displacement_csv) {
     std::ostringstream text;
     write_displacement_rows(text, grid, run.slab.y0, run.pressure, run.uz, comm.rank() == 0);
-    scene::write_text_slab(comm, path("displacement.csv"), text.str());
+    io::write_text_slab(comm, path("displacement.csv"), text.str());
   }
   on_rank_0(comm, [&] {
     write_summary(path("summary.json"), run.summary);

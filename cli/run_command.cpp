@@ -21,7 +21,7 @@
 #include "cli/wisdom_file.hpp"
 #include "core/detail/close_written.hpp"
 #include "core/error.hpp"
-#include "scene/npy.hpp"
+#include "io/npy.hpp"
 #include "scene/operator_from_scene.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_netcdf.hpp"
@@ -47,25 +47,24 @@ void write_stress_outputs(StagedOutput& out, const scene::OutputSpec& spec, cons
   const auto nx = static_cast<std::size_t>(grid.nx()), ny = static_cast<std::size_t>(grid.ny());
   const std::size_t n = s.von_mises.size() / (nx * ny);
   if (spec.stress)
-    scene::write_npy_array(out.path("stress.npy"), std::vector<std::size_t>{n, 6, ny, nx},
-                           s.stress);
+    io::write_npy_array(out.path("stress.npy"), std::vector<std::size_t>{n, 6, ny, nx}, s.stress);
   if (spec.von_mises)
-    scene::write_npy_array(out.path("von_mises.npy"), std::vector<std::size_t>{n, ny, nx},
-                           s.von_mises);
+    io::write_npy_array(out.path("von_mises.npy"), std::vector<std::size_t>{n, ny, nx},
+                        s.von_mises);
   const std::size_t nz = s.section_von_mises.size() / nx;
   if (spec.stress_section)
-    scene::write_npy_array(out.path("stress_section.npy"), std::vector<std::size_t>{nz, 6, nx},
-                           s.section);
+    io::write_npy_array(out.path("stress_section.npy"), std::vector<std::size_t>{nz, 6, nx},
+                        s.section);
   if (spec.von_mises_section)
-    scene::write_npy_array(out.path("von_mises_section.npy"), std::vector<std::size_t>{nz, nx},
-                           s.section_von_mises);
+    io::write_npy_array(out.path("von_mises_section.npy"), std::vector<std::size_t>{nz, nx},
+                        s.section_von_mises);
   const std::size_t ni = s.interfaces_von_mises.size() / (2 * nx * ny);
   if (spec.stress_interfaces)
-    scene::write_npy_array(out.path("stress_interfaces.npy"),
-                           std::vector<std::size_t>{ni, 2, 6, ny, nx}, s.interfaces);
+    io::write_npy_array(out.path("stress_interfaces.npy"),
+                        std::vector<std::size_t>{ni, 2, 6, ny, nx}, s.interfaces);
   if (spec.von_mises_interfaces)
-    scene::write_npy_array(out.path("von_mises_interfaces.npy"),
-                           std::vector<std::size_t>{ni, 2, ny, nx}, s.interfaces_von_mises);
+    io::write_npy_array(out.path("von_mises_interfaces.npy"),
+                        std::vector<std::size_t>{ni, 2, ny, nx}, s.interfaces_von_mises);
 }
 
 // The fields of a sweep, one per value, as one array (n_values, ny, nx).
@@ -73,7 +72,7 @@ void write_stacked(const std::filesystem::path& path, const std::vector<Field>& 
   const std::vector<double> values = scene::stacked_fields(fields);
   const std::size_t shape[3] = {fields.size(), static_cast<std::size_t>(fields.front().cols()),
                                 static_cast<std::size_t>(fields.front().rows())};
-  scene::write_npy_array(path, shape, values);
+  io::write_npy_array(path, shape, values);
 }
 
 // The .npy files: a sweep's uz, pressure and gap stacked, else one field each; stresses; ux, uy.
@@ -84,14 +83,14 @@ void write_npy_outputs(StagedOutput& out, const scene::OutputSpec& spec,
     if (spec.pressure) write_stacked(out.path("pressure.npy"), run.sweep->pressure);
     if (spec.gap) write_stacked(out.path("gap.npy"), run.sweep->gap);
   } else {
-    if (spec.uz) scene::write_npy(out.path("uz.npy"), run.uz);
-    if (spec.pressure) scene::write_npy(out.path("pressure.npy"), run.pressure);
-    if (spec.gap && run.gap) scene::write_npy(out.path("gap.npy"), *run.gap);
+    if (spec.uz) io::write_npy(out.path("uz.npy"), run.uz);
+    if (spec.pressure) io::write_npy(out.path("pressure.npy"), run.pressure);
+    if (spec.gap && run.gap) io::write_npy(out.path("gap.npy"), *run.gap);
   }
   if (run.stress) write_stress_outputs(out, spec, run.grid, *run.stress);
   if (spec.in_plane && run.ux && run.uy) {
-    scene::write_npy(out.path("ux.npy"), *run.ux);
-    scene::write_npy(out.path("uy.npy"), *run.uy);
+    io::write_npy(out.path("ux.npy"), *run.ux);
+    io::write_npy(out.path("uy.npy"), *run.uy);
   }
 }
 

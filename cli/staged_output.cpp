@@ -10,7 +10,7 @@
 
 #include "core/detail/close_written.hpp"
 #include "core/error.hpp"
-#include "scene/input_file.hpp"
+#include "io/input_file.hpp"
 
 namespace coatfft::cli {
 
@@ -18,9 +18,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Paths in messages are quoted as file text is (scene/input_file.hpp): escaped and shortened.
+// Paths in messages are quoted as file text is (io/input_file.hpp): escaped and shortened.
 std::string quoted(const fs::path& path) {
-  return scene::quoted_excerpt(path.string());
+  return io::quoted_excerpt(path.string());
 }
 
 // A hidden name beside `path`, unique to this process: ".NAME.partial-PID".
@@ -96,8 +96,7 @@ void check_output_target(const fs::path& target, std::string_view what,
   const fs::file_status status = fs::symlink_status(target, ec);
   if (!fs::exists(status)) return;
   COATFFT_REQUIRE(fs::is_regular_file(status), what, " ", quoted(target), " exists and is ",
-                  scene::describe_file_type(status.type()),
-                  ": coatfft replaces only regular files");
+                  io::describe_file_type(status.type()), ": coatfft replaces only regular files");
   for (const fs::path& input : inputs) {
     COATFFT_REQUIRE(!fs::equivalent(target, input, ec), what, " ", quoted(target),
                     " is an input of this run (", quoted(input), "): choose another output");
@@ -114,7 +113,7 @@ StagedOutput::StagedOutput(fs::path outdir, std::vector<std::string> names,
   const fs::file_status status = fs::status(outdir_, ec);
   if (!fs::exists(status)) return;
   COATFFT_REQUIRE(fs::is_directory(status), "output folder ", quoted(outdir), " exists and is ",
-                  scene::describe_file_type(status.type()),
+                  io::describe_file_type(status.type()),
                   ": -o names the folder the run writes into");
   check_targets();
 }
@@ -130,7 +129,8 @@ void StagedOutput::check_targets() const {
     COATFFT_REQUIRE(name == manifest_name || !fs::exists(fs::symlink_status(target, ec)) ||
                         std::find(previous.begin(), previous.end(), name) != previous.end(),
                     "output ", quoted(target), " exists and no coatfft run wrote it (",
-                    manifest_name, " does not list it): it is left as it is; choose another "
+                    manifest_name,
+                    " does not list it): it is left as it is; choose another "
                     "output folder, or move the file away");
   }
 }
@@ -253,7 +253,7 @@ StagedFile::StagedFile(fs::path target, std::string_view what, std::vector<fs::p
   COATFFT_REQUIRE(fs::exists(folder), what_, " ", quoted(target), ": the directory ",
                   quoted(target.parent_path()), " does not exist");
   COATFFT_REQUIRE(fs::is_directory(folder), what_, " ", quoted(target), ": ",
-                  quoted(target.parent_path()), " is ", scene::describe_file_type(folder.type()),
+                  quoted(target.parent_path()), " is ", io::describe_file_type(folder.type()),
                   ", not a directory");
   check_output_target(target_, what_, inputs_);
 }

@@ -12,12 +12,12 @@
 #include "cli/staged_output.hpp"
 #include "core/detail/shorten.hpp"
 #include "core/error.hpp"
+#include "io/netcdf_writer.hpp"
 #include "surfaces/self_affine_surface.hpp"
-#include "topography/netcdf_writer.hpp"
 #ifdef COATFFT_WITH_MPI
 #include "distributed/self_affine_slab.hpp"
-#include "scene/npy_slab.hpp"
-#include "topography/netcdf_collective.hpp"
+#include "io/netcdf_collective.hpp"
+#include "io/npy_slab.hpp"
 #endif
 
 namespace coatfft::cli {
@@ -39,11 +39,11 @@ namespace {
 struct SurfaceRequest {
   Grid grid;
   SelfAffineSpec spec;
-  topography::HeightsFormat format;
+  io::HeightsFormat format;
 };
 
 SurfaceRequest request(const SurfaceOptions& o) {
-  const topography::HeightsFormat format = topography::heights_format(o.output);
+  const io::HeightsFormat format = io::heights_format(o.output);
   for (const auto& [name, n] : {std::pair{"--nx", o.nx}, std::pair{"--ny", o.ny}})
     COATFFT_REQUIRE(n >= 2 && n <= max_surface_cells && n % 2 == 0, name, " = ", n,
                     " must be even and in [2, ", max_surface_cells, "]");
@@ -65,7 +65,7 @@ SurfaceRequest request(const SurfaceOptions& o) {
 
 // A NetCDF file in SurfaceTopography's layout says its size and that it is periodic; these say
 // how it was made.
-topography::NetcdfAttributes surface_attributes(const SurfaceOptions& o) {
+io::NetcdfAttributes surface_attributes(const SurfaceOptions& o) {
   return {{{"source", "coatfft surface"}, {"seed", o.seed}}, {{"hurst", o.hurst}}};
 }
 
@@ -82,7 +82,7 @@ void surface_command(const SurfaceOptions& o) {
   StagedFile file(o.output, "output file", {});
   refuse_existing_output(o.output, o.overwrite);
   const Field h = self_affine_surface(grid, spec);
-  topography::write_heights(file.path(), format, h, grid, true, surface_attributes(o));
+  io::write_heights(file.path(), format, h, grid, true, surface_attributes(o));
   refuse_existing_output(o.output, o.overwrite);  // made while the surface was
   file.commit();
   report(o, std::sqrt(h.square().mean()), spectral_rms_slope(grid, h));
@@ -108,10 +108,10 @@ void surface_command(const SurfaceOptions& o, const Communicator& comm) {
   comm.broadcast(staged);
   const Field h = self_affine_slab(comm, grid, spec);
   const Slab slab = slab_of(comm, grid.nx(), grid.ny());
-  if (format == topography::HeightsFormat::npy)
-    scene::write_npy_slab(comm, staged, h, slab);
+  if (format == io::HeightsFormat::npy)
+    io::write_npy_slab(comm, staged, h, slab);
   else
-    topography::write_heights_slab(comm, staged, h, grid, slab, true, surface_attributes(o));
+    io::write_heights_slab(comm, staged, h, grid, slab, true, surface_attributes(o));
   const double rms_height =
       std::sqrt(comm.sum(h.square().sum()) / static_cast<double>(grid.nb_cells()));
   const double rms_slope = spectral_rms_slope(comm, grid, h);

@@ -2,7 +2,7 @@
 // `coatfft surface -o FILE.npy|FILE.nc --nx N --ny N --lx L --ly L --hurst H (--rms-height R |
 // --rms-slope S) [--short-cutoff LS] [--long-cutoff LR] [--seed K] [--overwrite]`: a periodic
 // self-affine random surface (surfaces/self_affine_surface.hpp) written as a (ny, nx) float64 .npy
-// of heights [m], or as a NetCDF file in SurfaceTopography's layout (topography/netcdf_writer.hpp).
+// of heights [m], or as a NetCDF file in SurfaceTopography's layout (io/netcdf_writer.hpp).
 #include <cstdint>
 #include <filesystem>
 #include <optional>

@@ -6,8 +6,8 @@
 #include "cli/output_file.hpp"
 #include "cli/staged_output.hpp"
 #include "core/error.hpp"
+#include "io/netcdf_writer.hpp"
 #include "surfaces/detrend.hpp"
-#include "topography/netcdf_writer.hpp"
 #include "topography/topography_summary.hpp"
 
 namespace coatfft::cli {
@@ -34,14 +34,14 @@ void topography_command(const TopographyOptions& o) {
   const Detrend detrend = detrend_from_name(o.detrend, "--detrend");
   COATFFT_REQUIRE(o.lx.has_value() == o.ly.has_value(), "give both --lx and --ly, or neither");
   std::optional<StagedFile> file;
-  std::optional<topography::HeightsFormat> format;
+  std::optional<io::HeightsFormat> format;
   COATFFT_REQUIRE(!o.gap || o.output, "--gap needs -o FILE.npy");
   // The output is checked before any work: a file that cannot be written is refused at once.
   if (o.output) {
-    format = topography::heights_format(*o.output);
+    format = io::heights_format(*o.output);
     // A NetCDF file in SurfaceTopography's layout holds heights, not a gap.
-    COATFFT_REQUIRE(!o.gap || format == topography::HeightsFormat::npy,
-                    "--gap: ", o.output->string(), ": the gap is written as .npy (name it *.npy)");
+    COATFFT_REQUIRE(!o.gap || format == io::HeightsFormat::npy, "--gap: ", o.output->string(),
+                    ": the gap is written as .npy (name it *.npy)");
     file.emplace(*o.output, "output file", std::vector{o.input});
     refuse_existing_output(*o.output, o.overwrite);
   }
@@ -57,7 +57,7 @@ void topography_command(const TopographyOptions& o) {
   const nlohmann::json summary = topography::topography_summary(o.input, t, heights, detrend, sized,
                                                                 t.periodic.value_or(false));
   if (file) {
-    COATFFT_REQUIRE(t.lx || format == topography::HeightsFormat::npy, o.input.string(),
+    COATFFT_REQUIRE(t.lx || format == io::HeightsFormat::npy, o.input.string(),
                     ": the file carries no size; give --lx and --ly to write a NetCDF file");
     Field gap;  // the heights are written as they are, not copied
     if (o.gap) {
@@ -65,9 +65,8 @@ void topography_command(const TopographyOptions& o) {
       topography::require_finite_map(o.input, gap, "the gap max(z) - z");
     }
     const Field& written = o.gap ? gap : heights;
-    topography::write_heights(
-        file->path(), *format, written, grid, t.periodic.value_or(false),
-        {{{"source", o.input.filename().string()}, {"format", t.format}}, {}});
+    io::write_heights(file->path(), *format, written, grid, t.periodic.value_or(false),
+                      {{{"source", o.input.filename().string()}, {"format", t.format}}, {}});
     refuse_existing_output(*o.output, o.overwrite);  // made while the map was read
     file->commit();
   }

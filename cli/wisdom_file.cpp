@@ -5,7 +5,7 @@
 
 #include "convolution/fft/fftw_wisdom.hpp"
 #include "core/error.hpp"
-#include "scene/input_file.hpp"
+#include "io/input_file.hpp"
 #include "scene/operator_from_scene.hpp"
 
 namespace coatfft::cli {
@@ -25,10 +25,10 @@ bool same_file(const fs::path& a, const fs::path& b) {
 void load_wisdom(const scene::Scene& scene, const StagedOutput& out) {
   const fs::path& wisdom = scene.method.wisdom;
   if (wisdom.empty()) return;
-  const std::string where = "[method] wisdom = " + scene::quoted_excerpt(wisdom.string());
+  const std::string where = "[method] wisdom = " + io::quoted_excerpt(wisdom.string());
   for (const fs::path& input : scene.input_files)
     COATFFT_REQUIRE(!same_file(wisdom, input), where, " is an input of this run (",
-                    scene::quoted_excerpt(input.string()), "): name a file of its own");
+                    io::quoted_excerpt(input.string()), "): name a file of its own");
   for (const fs::path& target : out.targets())
     COATFFT_REQUIRE(!same_file(wisdom, target), where,
                     " is an output of this run: name a file outside the output folder's outputs");

@@ -1,4 +1,4 @@
-// libFuzzer target: coatfft::scene::read_csv_matrix on arbitrary bytes. InvalidArgument is the
+// libFuzzer target: coatfft::io::read_csv_matrix on arbitrary bytes. InvalidArgument is the
 // expected refusal; any other exception escapes and, like a crash or a sanitizer report, is a
 // finding.
 #include <cstddef>
@@ -6,13 +6,13 @@
 
 #include "core/error.hpp"
 #include "fuzz/fuzz_input.hpp"
-#include "scene/csv.hpp"
+#include "io/csv.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const coatfft::fuzz::ScratchFolder scratch("fuzz_csv");
   const auto path = scratch.write("input.csv", data, size);
   try {
-    const coatfft::Field field = coatfft::scene::read_csv_matrix(path);
+    const coatfft::Field field = coatfft::io::read_csv_matrix(path);
     if (field.size() == 0) __builtin_trap();  // the reader promises a non-empty array
   } catch (const coatfft::InvalidArgument&) {
   }

@@ -7,7 +7,7 @@
 
 #include "core/error.hpp"
 #include "fuzz/fuzz_input.hpp"
-#include "scene/npy.hpp"
+#include "io/npy.hpp"
 #include "scene/scene.hpp"
 
 namespace {
@@ -15,7 +15,7 @@ namespace {
 void write_input_maps(const coatfft::fuzz::ScratchFolder& folder) {
   coatfft::Field h(4, 3);
   for (Eigen::Index k = 0; k < h.size(); ++k) h(k) = 1e-6 * static_cast<double>(k % 5);
-  coatfft::scene::write_npy(folder.folder() / "h.npy", h);
+  coatfft::io::write_npy(folder.folder() / "h.npy", h);
   folder.write("h.csv", "0, 1e-6, 2e-6, 0\n1e-6, 0, 0, 1e-6\n0, 0, 3e-6, 0\n");
 }
 

@@ -22,12 +22,12 @@
 #include "distributed/distributed_dcfft_operator.hpp"
 #include "distributed/distributed_periodic_operator.hpp"
 #include "distributed/slab_fft.hpp"
+#include "io/grid_file.hpp"
+#include "io/input_file.hpp"
+#include "io/npy_slab.hpp"
 #include "loads/discretization_error.hpp"
 #include "scene/a_posteriori.hpp"
-#include "scene/grid_file.hpp"
-#include "scene/input_file.hpp"
 #include "scene/load_error_report.hpp"
-#include "scene/npy_slab.hpp"
 #include "scene/operator_from_scene.hpp"
 #include "scene/resources.hpp"
 #include "scene/run_summary.hpp"
@@ -81,7 +81,7 @@ std::string not_distributable(const Scene& scene) {
 // serial run checks its whole field (scene_pressure).
 Field slab_pressure(const Communicator& comm, const Scene& scene, const Slab& slab) {
   const PressureSpec& spec = *scene.pressure;
-  Field p = spec.kind == PressureKind::file ? read_npy_slab(comm, spec.file, slab, "value")
+  Field p = spec.kind == PressureKind::file ? io::read_npy_slab(comm, spec.file, slab, "value")
                                             : sample_load_rows(scene.grid, analytic_load(spec),
                                                                spec.sampling, slab.y0, slab.rows);
   require_load(scene, !comm.all(!(p != 0.0).any()));
@@ -92,7 +92,7 @@ Field slab_pressure(const Communicator& comm, const Scene& scene, const Slab& sl
 Field slab_heights(const Communicator& comm, const Scene& scene, const Slab& slab) {
   const ContactSpec& spec = *scene.contact;
   if (std::holds_alternative<HeightMap>(spec.indenter))
-    return read_npy_slab(comm, spec.height_file, slab, "height");
+    return io::read_npy_slab(comm, spec.height_file, slab, "height");
   return height_rows(scene.grid, spec.indenter, slab.y0, slab.rows);
 }
 
@@ -186,13 +186,14 @@ void require_same_scene(const Communicator& comm, const std::filesystem::path& s
     throw InvalidArgument(detail::concat("rank ", rank, " runs with --repeat ", other->repeat,
                                          ", rank 0 with --repeat ", all[0].repeat,
                                          ": every rank of a run takes the same options"));
-  const std::string what = other->nx != all[0].nx || other->ny != all[0].ny ||
-                                   other->lx != all[0].lx || other->ly != all[0].ly
-                               ? detail::concat(" has a grid of ", grid_of(*other), ", rank 0's ",
-                                                quoted_excerpt(first), " one of ", grid_of(all[0]))
-                               : detail::concat(" differs from rank 0's ", quoted_excerpt(first));
-  throw InvalidArgument(detail::concat("rank ", rank, "'s scene ", quoted_excerpt(differing), what,
-                                       ": every rank of a run reads the same scene"));
+  const std::string what =
+      other->nx != all[0].nx || other->ny != all[0].ny || other->lx != all[0].lx ||
+              other->ly != all[0].ly
+          ? detail::concat(" has a grid of ", grid_of(*other), ", rank 0's ",
+                           io::quoted_excerpt(first), " one of ", grid_of(all[0]))
+          : detail::concat(" differs from rank 0's ", io::quoted_excerpt(first));
+  throw InvalidArgument(detail::concat("rank ", rank, "'s scene ", io::quoted_excerpt(differing),
+                                       what, ": every rank of a run reads the same scene"));
 }
 
 }  // namespace
@@ -217,7 +218,7 @@ PreparedScene prepare_distributed_scene(const Communicator& comm,
     if (!scene->periodic && !scene->frf)
       check_love_body(*scene->body, scene->method.options.method);
     if (scene->pressure && scene->pressure->kind == PressureKind::file)
-      check_grid_npy(scene->pressure->file, scene->grid, "[pressure] path", "a pressure");
+      io::check_grid_npy(scene->pressure->file, scene->grid, "[pressure] path", "a pressure");
   });
   require_same_scene(comm, scene_file, *scene, options.repeat);
   const int sharing = comm.ranks_sharing_memory();

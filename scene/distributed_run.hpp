@@ -2,7 +2,7 @@
 // `coatfft run` on the ranks of a communicator (docs/scale.md): a [contact] or known-[pressure]
 // scene on row slabs (distributed/slab.hpp), by the distributed periodic or free-surface operator
 // and the distributed contact solver, each rank holding its rows of every field (a height map's
-// or a pressure file's rows read by each rank, scene/npy_slab.hpp; a closed-form load sampled by
+// or a pressure file's rows read by each rank, io/npy_slab.hpp; a closed-form load sampled by
 // rows). summary.json's object is the serial run's, the same on every rank, with
 // "ranks". What does not run distributed yet is refused by name before any work. Built with
 // COATFFT_MPI.

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "core/error.hpp"
-#include "scene/csv.hpp"
-#include "scene/input_file.hpp"
+#include "io/csv.hpp"
+#include "io/input_file.hpp"
 
 namespace coatfft::scene {
 
@@ -30,7 +30,7 @@ struct Header {
 // Columns are found by name: k, and the FRF as H or as frf (the column of `coatfft frf`, whose
 // table is read back as it is written). Other columns, such as kh_total, are skipped.
 Header read_header(const fs::path& path, std::size_t line, std::string_view text) {
-  const std::vector<std::string_view> names = csv_tokens(text);
+  const std::vector<std::string_view> names = io::csv_tokens(text);
   std::optional<std::size_t> k, H;
   std::string_view H_name;
   for (std::size_t c = 0; c < names.size(); ++c) {
@@ -58,14 +58,14 @@ struct Rows {
 // row's. The values of other columns are not read.
 void read_row(const fs::path& path, std::size_t line, std::string_view text, const Header& header,
               Rows& rows) {
-  const std::vector<std::string_view> tokens = csv_tokens(text);
+  const std::vector<std::string_view> tokens = io::csv_tokens(text);
   if (tokens.empty()) return;
   const std::size_t row = rows.k.size();
   COATFFT_REQUIRE(tokens.size() == header.columns, path.string(), ':', line, ": row ", row, " has ",
                   tokens.size(), " values, but the header (line ", header.line, ") names ",
                   header.columns, " columns");
-  const double k = csv_value(path, line, row, header.k, tokens[header.k]);
-  const double H = csv_value(path, line, row, header.H, tokens[header.H]);
+  const double k = io::csv_value(path, line, row, header.k, tokens[header.k]);
+  const double H = io::csv_value(path, line, row, header.H, tokens[header.H]);
   COATFFT_REQUIRE(std::isfinite(k) && k > 0, path.string(), ':', line, ": row ", row, ": k = ", k,
                   " rad/m, but it must be finite and > 0");
   COATFFT_REQUIRE(std::isfinite(H) && H > 0, path.string(), ':', line, ": row ", row, ": ",
@@ -81,7 +81,7 @@ void read_row(const fs::path& path, std::size_t line, std::string_view text, con
 
 std::shared_ptr<const TabulatedFrf> read_frf_table(const fs::path& path, std::optional<double> c0,
                                                    std::optional<double> c_inf) {
-  const std::string text = read_input_file(path, "an FRF table", kMaxFrfTableBytes);
+  const std::string text = io::read_input_file(path, "an FRF table", kMaxFrfTableBytes);
   std::optional<Header> header;
   Rows rows;
   std::size_t line = 0;
@@ -92,7 +92,7 @@ std::shared_ptr<const TabulatedFrf> read_frf_table(const fs::path& path, std::op
     begin = end + 1;
     if (header)
       read_row(path, line, content, *header, rows);
-    else if (!csv_tokens(content).empty())
+    else if (!io::csv_tokens(content).empty())
       header = read_header(path, line, content);
   }
   COATFFT_REQUIRE(header, path.string(), ": empty; the first line must name the columns (\"k,H\")");

@@ -2,7 +2,7 @@
 // The file of a body given by its FRF (the scene's [frf] section, docs/scene_format.md): a CSV
 // table whose first line names the columns k [rad/m] and H [m/Pa] (or frf, the name `coatfft frf`
 // gives it; in any order, other columns skipped), one wavenumber per line, values read as
-// scene/csv.hpp reads them. Every refusal is one line
+// io/csv.hpp reads them. Every refusal is one line
 // naming the file, the line and the value ("t.csv:12: k = 3 rad/m is not above ...").
 #include <cstdint>
 #include <filesystem>

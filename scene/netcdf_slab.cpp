@@ -2,8 +2,8 @@
 
 #include <string>
 
+#include "io/netcdf_collective.hpp"
 #include "scene/scene_netcdf.hpp"
-#include "topography/netcdf_collective.hpp"
 
 namespace coatfft::scene {
 
@@ -13,13 +13,13 @@ void write_run_netcdf_slab(const Communicator& comm, const std::filesystem::path
   // Every rank defines the same header: rank 0's summary (the ranks' own timings differ).
   std::string summary = run.summary.dump();
   comm.broadcast(summary);
-  topography::NetcdfDataset d = run_dataset(grid, nlohmann::json::parse(summary));
+  io::NetcdfDataset d = run_dataset(grid, nlohmann::json::parse(summary));
   d.first_row = run.slab.y0;
   d.rows = run.slab.rows;
   if (spec.uz) d.variables.push_back(field_variable("uz", run.uz));
   if (spec.pressure) d.variables.push_back(field_variable("pressure", run.pressure));
   if (spec.gap) d.variables.push_back(field_variable("gap", run.gap));
-  topography::write_netcdf_collective(comm, path, d);
+  io::write_netcdf_collective(comm, path, d);
 }
 
 }  // namespace coatfft::scene

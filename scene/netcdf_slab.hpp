@@ -1,7 +1,7 @@
 #pragma once
 // A distributed run's fields as one NetCDF file ([output] format = "netcdf" under mpirun): the
 // serial run's fields.nc (scene/scene_netcdf.hpp), each rank putting its rows of every field in
-// collective calls (topography/netcdf_collective.hpp), none gathering a field. Built with
+// collective calls (io/netcdf_collective.hpp), none gathering a field. Built with
 // COATFFT_MPI.
 #include <filesystem>
 

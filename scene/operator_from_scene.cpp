@@ -6,7 +6,7 @@
 #include <string>
 
 #include "core/error.hpp"
-#include "scene/input_file.hpp"
+#include "io/input_file.hpp"
 
 namespace coatfft::scene {
 
@@ -14,7 +14,7 @@ namespace fs = std::filesystem;
 
 std::string read_wisdom_file(const fs::path& path) {
   constexpr std::uintmax_t max_wisdom_bytes = 64 << 20;
-  return read_input_file(path, "an FFTW wisdom file", max_wisdom_bytes);
+  return io::read_input_file(path, "an FFTW wisdom file", max_wisdom_bytes);
 }
 
 bool holds_fftw_wisdom(const std::string& text) {

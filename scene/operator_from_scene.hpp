@@ -13,7 +13,7 @@
 namespace coatfft::scene {
 
 /// The text of the FFTW wisdom file at `path` (at most 64 MiB: wisdom of a few hundred plans is
-/// tens of kilobytes; a FIFO or a device is refused, scene/input_file.hpp).
+/// tens of kilobytes; a FIFO or a device is refused, io/input_file.hpp).
 std::string read_wisdom_file(const std::filesystem::path& path);
 /// Whether `text` is FFTW wisdom, by its first characters.
 bool holds_fftw_wisdom(const std::string& text);

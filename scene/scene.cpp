@@ -15,11 +15,11 @@
 #include "core/detail/shorten.hpp"
 #include "core/error.hpp"
 #include "core/threads.hpp"
+#include "io/grid_file.hpp"
+#include "io/input_file.hpp"
 #include "loads/load_limits.hpp"
 #include "materials/catalog.hpp"
 #include "scene/frf_table_file.hpp"
-#include "scene/grid_file.hpp"
-#include "scene/input_file.hpp"
 #include "scene/key_spelling.hpp"
 #include "scene/method_request.hpp"
 #include "scene/resources.hpp"
@@ -520,10 +520,10 @@ void read_indenter(SectionReader& reader, const SceneContext& context, ContactSp
     spec.height_file = file;
     spec.indenter = HeightMap{};
     if (context.height_map_values)
-      spec.indenter = HeightMap{read_grid_file(file, grid, "[contact] path", "height")};
+      spec.indenter = HeightMap{io::read_grid_file(file, grid, "[contact] path", "height")};
     else
-      check_grid_npy(file, grid, "[contact] path",
-                     "a height map");  // spec.indenter: an empty HeightMap
+      io::check_grid_npy(file, grid, "[contact] path",
+                         "a height map");  // spec.indenter: an empty HeightMap
   }
 }
 
@@ -661,7 +661,7 @@ void select_output(OutputSpec& spec, const std::string& name, const SectionReade
     std::string list;
     for (const OutputField& f : output_fields)
       list += (list.empty() ? "\"" : ", \"") + std::string(f.name) + "\"";
-    throw InvalidArgument(detail::concat(reader.where("fields"), ": ", quoted_excerpt(name),
+    throw InvalidArgument(detail::concat(reader.where("fields"), ": ", io::quoted_excerpt(name),
                                          " is not one of ", list));
   }
   COATFFT_REQUIRE(contact || name != "gap", reader.where("fields"),
@@ -913,7 +913,7 @@ auto with_file_name(const std::filesystem::path& path, Parse&& parse) {
 
 Scene read_scene(const std::filesystem::path& path, const SceneReading& reading) {
   // read_input_file's messages start with the path already.
-  const std::string text = read_input_file(path, "a scene file", max_scene_bytes);
+  const std::string text = io::read_input_file(path, "a scene file", max_scene_bytes);
   return with_file_name(path, [&] {
     const toml::table root = parse_scene_text(text, path);
     const std::filesystem::path scene_dir = path.parent_path();
@@ -993,7 +993,7 @@ Scene read_scene(const std::filesystem::path& path, const SceneReading& reading)
 }
 
 LayerStack read_scene_body(const std::filesystem::path& path) {
-  const std::string text = read_input_file(path, "a scene file", max_scene_bytes);
+  const std::string text = io::read_input_file(path, "a scene file", max_scene_bytes);
   return with_file_name(path, [&] { return read_body(parse_scene_text(text, path)); });
 }
 

@@ -219,7 +219,7 @@ void use_normal_compliance_body(Scene& scene);
 struct SceneReading {
   /// false: a height_map indenter's file is checked as far as its header (a .npy of the grid's
   /// shape) and its values are left unread (an empty HeightMap): a distributed run reads its rows
-  /// on each rank (scene/npy_slab.hpp).
+  /// on each rank (io/npy_slab.hpp).
   bool height_map_values = true;
   /// The memory the run may use [bytes] (--max-memory; by default what the machine has): what is
   /// allocated while the scene is read (a measured topography, its padded gap) is checked against

@@ -5,17 +5,17 @@
 #include <utility>
 #include <vector>
 
-#include "topography/netcdf_writer.hpp"
+#include "io/netcdf_writer.hpp"
 
 namespace coatfft::scene {
 
 namespace {
-using topography::NetcdfAttributes;
-using topography::NetcdfDataset;
-using topography::NetcdfDimension;
-using topography::NetcdfVariable;
+using io::NetcdfAttributes;
+using io::NetcdfDataset;
+using io::NetcdfDimension;
+using io::NetcdfVariable;
 
-NetcdfAttributes described(const char* units, const char* long_name) {
+io::NetcdfAttributes described(const char* units, const char* long_name) {
   return {{{"units", units}, {"long_name", long_name}}, {}};
 }
 
@@ -31,7 +31,7 @@ std::span<const double> stacked(const std::vector<Field>& fields, std::vector<do
 
 // The interfaces' planes from both sides (interface, side, component, x, y) and their von Mises
 // stress (interface, side, x, y); side 0 is the medium above the interface, 1 the one below.
-void add_interface_stress(NetcdfDataset& d, const OutputSpec& spec, const StressRun& s) {
+void add_interface_stress(io::NetcdfDataset& d, const OutputSpec& spec, const StressRun& s) {
   if (!spec.stress_interfaces && !spec.von_mises_interfaces) return;
   std::vector<double> depths;
   for (const auto& interface : s.summary.at("interfaces"))
@@ -55,7 +55,7 @@ void add_interface_stress(NetcdfDataset& d, const OutputSpec& spec, const Stress
 // The stress planes (depth, component, x, y) and their von Mises stress (depth, x, y); the
 // section (section_depth, component, x) and its von Mises stress (section_depth, x); the
 // interfaces' planes (add_interface_stress).
-void add_stress(NetcdfDataset& d, const OutputSpec& spec, const StressRun& s) {
+void add_stress(io::NetcdfDataset& d, const OutputSpec& spec, const StressRun& s) {
   const auto& summary = s.summary;
   d.dimensions.push_back({"component", 6, {}, {{{"names", "xx yy zz yz xz xy"}}, {}}});
   if (spec.stress || spec.von_mises) {
@@ -90,14 +90,14 @@ void add_stress(NetcdfDataset& d, const OutputSpec& spec, const StressRun& s) {
 }
 }  // namespace
 
-NetcdfDataset run_dataset(const Grid& grid, const nlohmann::json& summary) {
+io::NetcdfDataset run_dataset(const Grid& grid, const nlohmann::json& summary) {
   const bool periodic = summary.value("boundary", "free") == "periodic";
   return {grid, periodic, {}, {}, {{{"summary", summary.dump()}}, {}}};
 }
 
-NetcdfVariable field_variable(std::string_view name, std::span<const double> values,
-                              std::vector<std::string> leading) {
-  static const std::map<std::string_view, NetcdfAttributes> attributes = {
+io::NetcdfVariable field_variable(std::string_view name, std::span<const double> values,
+                                  std::vector<std::string> leading) {
+  static const std::map<std::string_view, io::NetcdfAttributes> attributes = {
       {"uz", described("m", "normal surface displacement, into the body")},
       {"pressure", described("Pa", "surface pressure")},
       {"gap", described("m", "gap after loading")},
@@ -106,13 +106,13 @@ NetcdfVariable field_variable(std::string_view name, std::span<const double> val
   return {std::string(name), std::move(leading), values, attributes.at(name)};
 }
 
-NetcdfVariable field_variable(std::string_view name, const Field& field) {
+io::NetcdfVariable field_variable(std::string_view name, const Field& field) {
   return field_variable(name, values(field));
 }
 
 void write_run_netcdf(const std::filesystem::path& path, const OutputSpec& spec,
                       const SceneRun& run) {
-  NetcdfDataset d = run_dataset(run.grid, run.summary);
+  io::NetcdfDataset d = run_dataset(run.grid, run.summary);
   std::vector<double> uz, pressure, gap, loads, approaches;
   if (run.sweep) {
     const auto& rows = run.summary.at("sweep");
@@ -142,7 +142,7 @@ void write_run_netcdf(const std::filesystem::path& path, const OutputSpec& spec,
     d.variables.push_back(field_variable("uy", *run.uy));
   }
   if (run.stress) add_stress(d, spec, *run.stress);
-  topography::write_netcdf(path, d);
+  io::write_netcdf(path, d);
 }
 
 }  // namespace coatfft::scene

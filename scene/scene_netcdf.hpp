@@ -7,9 +7,9 @@
 #include <nlohmann/json.hpp>
 #include <string_view>
 
+#include "io/netcdf_writer.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_run.hpp"
-#include "topography/netcdf_writer.hpp"
 
 namespace coatfft::scene {
 
@@ -18,14 +18,14 @@ inline constexpr const char* netcdf_output_name = "fields.nc";
 
 /// A run's file before its variables: the grid's axes, periodic or not as summary.json's
 /// "boundary" says, and summary.json's object as the file's attribute `summary`.
-topography::NetcdfDataset run_dataset(const Grid& grid, const nlohmann::json& summary);
+io::NetcdfDataset run_dataset(const Grid& grid, const nlohmann::json& summary);
 
 /// The variable of a run's surface field "uz", "pressure", "gap", "ux" or "uy" over (x, y), with
 /// its units and long name, holding `values`.
-topography::NetcdfVariable field_variable(std::string_view name, std::span<const double> values,
-                                          std::vector<std::string> leading = {});
+io::NetcdfVariable field_variable(std::string_view name, std::span<const double> values,
+                                  std::vector<std::string> leading = {});
 /// The same of one map (nx, ny), or of a slab's rows of it (nx, rows).
-topography::NetcdfVariable field_variable(std::string_view name, const Field& field);
+io::NetcdfVariable field_variable(std::string_view name, const Field& field);
 
 /// Writes the arrays of `run` that `spec` asks for (the .npy files' arrays) into the new file
 /// `path`.

@@ -1,10 +1,10 @@
 #include "scene/scene_pressure.hpp"
 
 #include "core/error.hpp"
+#include "io/grid_file.hpp"
 #include "loads/hertz_pressure.hpp"
 #include "loads/load_limits.hpp"
 #include "loads/uniform_disk_pressure.hpp"
-#include "scene/grid_file.hpp"
 
 namespace coatfft::scene {
 
@@ -14,7 +14,7 @@ Field pressure_from_scene(const Scene& scene) {
   const PressureSpec& spec = *scene.pressure;
   switch (spec.kind) {
     case PressureKind::file:
-      return read_grid_file(spec.file, scene.grid, "[pressure] path", "value");
+      return io::read_grid_file(spec.file, scene.grid, "[pressure] path", "value");
     case PressureKind::hertz:
       return hertz_pressure(scene.grid, spec.amplitude, spec.radius, spec.sampling);
     case PressureKind::uniform_disk:
@@ -54,9 +54,9 @@ Tractions scene_tractions(const Scene& scene, const Field& pressure) {
     return t;
   }
   if (!spec.path_x.empty())
-    t.qx = read_grid_file(spec.path_x, scene.grid, "[shear] path_x", "value");
+    t.qx = io::read_grid_file(spec.path_x, scene.grid, "[shear] path_x", "value");
   if (!spec.path_y.empty())
-    t.qy = read_grid_file(spec.path_y, scene.grid, "[shear] path_y", "value");
+    t.qy = io::read_grid_file(spec.path_y, scene.grid, "[shear] path_y", "value");
   return t;
 }
 

@@ -281,7 +281,7 @@ SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat,
 // be an input or an output of the run, nor a file of another kind).
 // Wisdom only makes planning faster: a file that does not hold FFTW's (or another version's) is
 // ignored, as a missing one is. A FIFO, a device or an oversized file is still refused before
-// anything is read (scene/input_file.hpp).
+// anything is read (io/input_file.hpp).
 void import_wisdom_read_only(const Scene& scene) {
   const fs::path& wisdom = scene.method.wisdom;
   std::error_code ec;

@@ -1,10 +1,21 @@
 #!/usr/bin/python3
-"""The dependency rules of docs/architecture.md, checked on the #include lines of the sources.
+"""The floors of docs/folders.md, checked on the #include lines of the sources.
 
-1. The library's modules include no front end: nothing of scene/, cli/, python/, bench/, tables/
-   or tests/.
-2. The scene layer (scene/) includes nothing of cli/ or python/: both front ends stand on it.
-3. Neither front end includes the other: python/ nothing of cli/, cli/ nothing of python/.
+Every folder with sources stands on a floor and includes only folders on its own floor or below:
+
+  floor 1  the library: core materials layers frf loads convolution model contact stress surfaces
+           validation distributed (and the umbrella header coatfft.hpp)
+  floor 2  io/           file formats (npy, csv, input files, grid files, row slabs, NetCDF)
+  floor 3  topography/   measured topographies
+  floor 4  scene/        scene files: read, check, run, summarise
+  floor 5  cli/ python/  the two front ends
+  floor 6  bench/ tables/ tests/ fuzz/ examples/   programs built on all of it
+
+Besides:
+1. A folder with sources that has no floor is itself a broken rule: a new folder is placed here.
+2. Neither front end includes the other: python/ nothing of cli/, cli/ nothing of python/.
+3. The serial library includes nothing of distributed/ (built only with COATFFT_MPI); the
+   umbrella header includes it under its own #if.
 4. Kernels never include operators: nothing in convolution/fft/ or convolution/kernels/, and no
    library file whose name says kernel, influence or lattice, includes convolution/operators/ or
    any *_operator.hpp (an operator is built on kernels, not the reverse).
@@ -16,43 +27,67 @@ import re
 import sys
 from pathlib import Path
 
-LIBRARY = ["core", "materials", "layers", "frf", "loads", "convolution", "model", "validation",
-           "contact", "stress", "surfaces"]
-FRONT = ["scene", "cli", "python", "bench", "tables", "tests"]
-FORBIDDEN = {**{m: FRONT for m in LIBRARY}, "scene": ["cli", "python"], "python": ["cli"],
-             "cli": ["python"]}
+SERIAL_LIBRARY = ["core", "materials", "layers", "frf", "loads", "convolution", "model",
+                  "validation", "contact", "stress", "surfaces"]
+FLOORS = {**{m: 1 for m in SERIAL_LIBRARY}, "distributed": 1, "coatfft.hpp": 1, "io": 2,
+          "topography": 3, "scene": 4, "cli": 5, "python": 5,
+          **{m: 6 for m in ["bench", "tables", "tests", "fuzz", "examples"]}}
+SIDEWAYS = {"cli": ["python"], "python": ["cli"], **{m: ["distributed"] for m in SERIAL_LIBRARY}}
 INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"')
+SOURCE = re.compile(r"\.(cpp|hpp|h|cc)$")
+SKIPPED = {"build", "shared"}  # build trees and the workplace's inputs are not the project's
 
 
 def folder_of(include, source, root):
     """The top-level folder an include names: "cli/x.hpp", or "../cli/x.hpp" and "x.hpp" resolved
     from the including file."""
     first = include.split("/")[0]
-    if first in LIBRARY + FRONT:
+    if first in FLOORS:
         return first
     target = (source.parent / include).resolve()
     return target.relative_to(root).parts[0] if root in target.parents else ""
 
 
+def include_rules(top, source, root):
+    """The broken rules of one source's include lines."""
+    broken = []
+    for number, line in enumerate(source.read_text().splitlines(), 1):
+        match = INCLUDE.match(line)
+        if not match:
+            continue
+        include = match.group(1)
+        folder = folder_of(include, source, root)
+        where = f"{source.relative_to(root)}:{number}"
+        if folder in FLOORS and FLOORS[folder] > FLOORS[top]:
+            broken.append(f"{where}: {top}/ (floor {FLOORS[top]}) must not include {folder}/ "
+                          f"(floor {FLOORS[folder]}): {include}")
+        if folder in SIDEWAYS.get(top, []):
+            broken.append(f"{where}: {top}/ must not include {folder}/ ({include})")
+        below = source.relative_to(root).parts[:2] in (("convolution", "fft"),
+                                                      ("convolution", "kernels"))
+        kernel = below or re.search(r"kernel|influence|lattice", source.name)
+        operator = "operators/" in include or include.endswith("_operator.hpp")
+        if top in SERIAL_LIBRARY and kernel and operator:
+            broken.append(f"{where}: a kernel includes an operator ({include})")
+    return broken
+
+
 def main(root):
     broken = []
-    for top, forbidden in FORBIDDEN.items():
-        for source in sorted((root / top).rglob("*.[ch]pp")):
-            for number, line in enumerate(source.read_text().splitlines(), 1):
-                match = INCLUDE.match(line)
-                if not match:
-                    continue
-                include = match.group(1)
-                folder = folder_of(include, source, root)
-                where = f"{source.relative_to(root)}:{number}"
-                if folder in forbidden:
-                    broken.append(f"{where}: {top}/ must not include {folder}/ ({include})")
-                below = source.relative_to(root).parts[:2] in (("convolution", "fft"),
-                                                              ("convolution", "kernels"))
-                kernel = below or re.search(r"kernel|influence|lattice", source.name)
-                operator = "operators/" in include or include.endswith("_operator.hpp")
-                if top in LIBRARY and kernel and operator:
-                    broken.append(f"{where}: a kernel includes an operator ({include})")
+    for entry in sorted(root.iterdir()):
+        if entry.name.startswith(".") or entry.name.startswith("build") or entry.name in SKIPPED:
+            continue
+        sources = ([entry] if entry.is_file() and SOURCE.search(entry.name)
+                   else sorted(p for p in entry.rglob("*") if SOURCE.search(p.name))
+                   if entry.is_dir() else [])
+        if not sources:
+            continue
+        if entry.name not in FLOORS:
+            broken.append(f"{entry.name}: a folder with sources on no floor (scripts/"
+                          "check_dependencies.py, docs/folders.md)")
+            continue
+        for source in sources:
+            broken += include_rules(entry.name, source, root)
     for line in broken:
         print(line)
     print(f"check_dependencies: {len(broken)} broken rule(s)")

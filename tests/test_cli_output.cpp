@@ -15,7 +15,7 @@
 #include <string>
 
 #include "core/error.hpp"
-#include "scene/npy.hpp"
+#include "io/npy.hpp"
 #include "scene/scene_run.hpp"
 #include "tests/cli_process.hpp"
 #include "tests/test_support.hpp"
@@ -132,10 +132,10 @@ coatfft::scene::SceneRun check_run_scene_as_run(const std::string& base, const s
   const fs::path out = scratch(name + "_out");
   fs::remove_all(out);
   REQUIRE(run_coatfft("run " + scene.string() + " -o " + out.string()).status == 0);
-  CHECK(same_bits(run.uz, coatfft::scene::read_npy(out / "uz.npy")));
-  CHECK(same_bits(run.pressure, coatfft::scene::read_npy(out / "pressure.npy")));
+  CHECK(same_bits(run.uz, coatfft::io::read_npy(out / "uz.npy")));
+  CHECK(same_bits(run.pressure, coatfft::io::read_npy(out / "pressure.npy")));
   CHECK(run.gap.has_value() == fs::exists(out / "gap.npy"));
-  if (run.gap) CHECK(same_bits(*run.gap, coatfft::scene::read_npy(out / "gap.npy")));
+  if (run.gap) CHECK(same_bits(*run.gap, coatfft::io::read_npy(out / "gap.npy")));
   CHECK(keys_of(out / "summary.json") == [&] {
     std::set<std::string> keys;
     for (const auto& item : run.summary.items()) keys.insert(item.key());
@@ -271,7 +271,7 @@ TEST_CASE("run_scene reads the wisdom file of the scene but never writes it", "[
   const auto before = snapshot(scene.parent_path());
   const coatfft::scene::SceneRun run = coatfft::scene::run_scene(scene);
   CHECK(snapshot(scene.parent_path()) == before);
-  CHECK(same_bits(run.uz, coatfft::scene::read_npy(out / "uz.npy")));
+  CHECK(same_bits(run.uz, coatfft::io::read_npy(out / "uz.npy")));
 }
 
 TEST_CASE("run_scene refuses a bad scene with the message coatfft run prints",

@@ -8,7 +8,7 @@
 #include <sstream>
 #include <string>
 
-#include "scene/npy.hpp"
+#include "io/npy.hpp"
 #include "tests/cli_process.hpp"
 
 using namespace coatfft_test;
@@ -41,7 +41,7 @@ TEST_CASE("a periodic wavy contact from the command line is Westergaard's", "[cl
   for (int i = 0; i < n; ++i)
     h.row(i).setConstant(delta * (1 - std::cos(2 * std::numbers::pi * (i + 0.5 - n / 2) / n)));
   const fs::path gap = scratch("wavy_gap.npy");
-  coatfft::scene::write_npy(gap, h);
+  coatfft::io::write_npy(gap, h);
   const double p_star = std::numbers::pi * e_star * delta / lambda;
   const double load = 0.5 * p_star * lambda * (2 * lambda / n);
   std::ostringstream scene;
@@ -64,9 +64,9 @@ TEST_CASE("a rough periodic contact made with coatfft surface", "[cli_periodic]"
                       " --nx 128 --ny 128 --lx 1e-3 --ly 1e-3 --hurst 0.8 --rms-height 0.5e-6 "
                       "--short-cutoff 3.2e-5 --seed 5")
               .status == 0);
-  const coatfft::Field topography = coatfft::scene::read_npy(z);
+  const coatfft::Field topography = coatfft::io::read_npy(z);
   const fs::path gap = scratch("rough_gap.npy");
-  coatfft::scene::write_npy(gap, topography.maxCoeff() - topography);
+  coatfft::io::write_npy(gap, topography.maxCoeff() - topography);
   const std::string scene =
       "[grid]\nnx = 128\nny = 128\nlx = 1e-3\nly = 1e-3\nboundary = \"periodic\"\n"
       "[substrate]\nmaterial = \"steel\"\n[[coating]]\nmaterial = \"titanium_nitride\"\n"
@@ -101,9 +101,9 @@ TEST_CASE("a sliding rough periodic contact on a coated body, with its interface
                       " --nx 64 --ny 64 --lx 0.5e-3 --ly 0.5e-3 --hurst 0.8 --rms-height 0.3e-6 "
                       "--short-cutoff 3e-5 --seed 3")
               .status == 0);
-  const coatfft::Field topography = coatfft::scene::read_npy(z);
+  const coatfft::Field topography = coatfft::io::read_npy(z);
   const fs::path gap = scratch("sliding_rough_gap.npy");
-  coatfft::scene::write_npy(gap, topography.maxCoeff() - topography);
+  coatfft::io::write_npy(gap, topography.maxCoeff() - topography);
   const std::string scene =
       "[grid]\nnx = 64\nny = 64\nlx = 0.5e-3\nly = 0.5e-3\nboundary = \"periodic\"\n"
       "[substrate]\nmaterial = \"steel\"\n[[coating]]\nmaterial = \"titanium_nitride\"\n"
@@ -117,7 +117,7 @@ TEST_CASE("a sliding rough periodic contact on a coated body, with its interface
   CHECK(s["friction_coupling"]["pressure_shift"].get<double>() > 0.0);
   CHECK(s["total_load"].get<double>() == Approx(5.0).epsilon(1e-9));
   for (const char* name : {"ux.npy", "uy.npy"}) {
-    const coatfft::Field u = coatfft::scene::read_npy(out / name);
+    const coatfft::Field u = coatfft::io::read_npy(out / name);
     CHECK(std::abs(u.mean()) < 1e-12 * u.abs().maxCoeff());
   }
   // The interface (2e-5 m) seen from the coating and from the substrate.
@@ -138,9 +138,9 @@ TEST_CASE("a light rough periodic contact converges only on a solution", "[cli_p
                       " --nx 64 --ny 64 --lx 0.5e-3 --ly 0.5e-3 --hurst 0.8 --rms-height 0.2e-6 "
                       "--seed 1")
               .status == 0);
-  const coatfft::Field topography = coatfft::scene::read_npy(z);
+  const coatfft::Field topography = coatfft::io::read_npy(z);
   const fs::path gap = scratch("light_rough_gap.npy");
-  coatfft::scene::write_npy(gap, topography.maxCoeff() - topography);
+  coatfft::io::write_npy(gap, topography.maxCoeff() - topography);
   const std::string scene =
       "[grid]\nnx = 64\nny = 64\nlx = 0.5e-3\nly = 0.5e-3\nboundary = \"periodic\"\n"
       "[substrate]\nmaterial = \"steel\"\n[contact]\nindenter = \"height_map\"\npath = \"" +
@@ -173,7 +173,7 @@ TEST_CASE("a periodic scene's stresses balance its mean pressure on every plane"
   const nlohmann::json s = read_summary(out);
   CHECK(s["stress"]["periodic"] == true);
   CHECK(s["stress"]["alpha"].is_null());
-  const coatfft::Field ux = coatfft::scene::read_npy(out / "ux.npy");
+  const coatfft::Field ux = coatfft::io::read_npy(out / "ux.npy");
   CHECK(std::abs(ux.mean()) < 1e-12 * ux.abs().maxCoeff());
   REQUIRE(npy_shape(out / "stress.npy") == "(2, 6, 64, 64)");
   const std::vector<double> stress = npy_values(out / "stress.npy");

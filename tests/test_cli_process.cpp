@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "frf/frf.hpp"
+#include "io/npy.hpp"
 #include "layers/layer_stack.hpp"
 #include "materials/catalog.hpp"
-#include "scene/npy.hpp"
 #include "tests/cli_process.hpp"
 #include "validation/hankel_displacement.hpp"
 #include "validation/hertz.hpp"
@@ -50,7 +50,7 @@ TEST_CASE("coatfft run on the bundled example matches Hertz", "[cli]") {
   const double u0 = coatfft::hertz_displacement(0.0, 1e9, 1e-3, E_star);
   // nx odd: the centre cell sits on the origin, where the error is far below the edge error.
   CHECK(summary["uz_center"].get<double>() == Approx(u0).epsilon(2e-3));
-  const coatfft::Field uz = coatfft::scene::read_npy(out / "uz.npy");
+  const coatfft::Field uz = coatfft::io::read_npy(out / "uz.npy");
   CHECK(uz.rows() == 65);
   CHECK(uz.maxCoeff() == summary["uz_max"].get<double>());
 }
@@ -96,17 +96,17 @@ TEST_CASE("coatfft run reads pressure files and refuses malformed ones", "[cli][
 
   SECTION("a good .npy file gives the same result as the built-in load") {
     coatfft::Field p = coatfft::Field::Constant(33, 33, 1e8);
-    coatfft::scene::write_npy(scratch("p.npy"), p);
+    coatfft::io::write_npy(scratch("p.npy"), p);
     fs::remove_all(out);
     const auto result =
         run_coatfft("run " + scene_with("file_good", hertz_keys, file_pressure).string() + " -o " +
                     out.string());
     INFO(result.stderr_text);
     REQUIRE(result.status == 0);
-    CHECK(coatfft::scene::read_npy(out / "pressure.npy").isApprox(p, 0.0));
+    CHECK(coatfft::io::read_npy(out / "pressure.npy").isApprox(p, 0.0));
   }
   SECTION("wrong shape") {
-    coatfft::scene::write_npy(scratch("p.npy"), coatfft::Field::Constant(32, 33, 1e8));
+    coatfft::io::write_npy(scratch("p.npy"), coatfft::Field::Constant(32, 33, 1e8));
     fs::remove_all(out);
     const auto result =
         run_coatfft("run " + scene_with("file_shape", hertz_keys, file_pressure).string() + " -o " +
@@ -241,7 +241,7 @@ TEST_CASE("coatfft run reports no contact radius for a contact that is not round
       const double x = -0.4e-3 + (i + 0.5) * dx, y = -0.4e-3 + (j + 0.5) * dx;
       h(i, j) = x * x / (2 * 0.01) + y * y / (2 * 0.02);
     }
-  coatfft::scene::write_npy(scratch("h_ellipse.npy"), h);
+  coatfft::io::write_npy(scratch("h_ellipse.npy"), h);
   const std::string sphere = "indenter = \"sphere\"\nradius = 0.01";
   for (const auto& [name, indenter] :
        {std::pair{"contact_height_map", "indenter = \"height_map\"\npath = \"h_ellipse.npy\""},
@@ -290,8 +290,8 @@ TEST_CASE("coatfft run with report_approach = false computes no g(0) and the sam
     const fs::path out_without = run_scene_ok(coated_scene, method + "_no_approach", "load = 100.0",
                                               "load = 100.0\nreport_approach = false");
     const nlohmann::json with = read_summary(out_with), without = read_summary(out_without);
-    const coatfft::Field p_with = coatfft::scene::read_npy(out_with / "pressure.npy");
-    const coatfft::Field p_without = coatfft::scene::read_npy(out_without / "pressure.npy");
+    const coatfft::Field p_with = coatfft::io::read_npy(out_with / "pressure.npy");
+    const coatfft::Field p_without = coatfft::io::read_npy(out_without / "pressure.npy");
     CHECK(with["g0_method"] == "regularized");
     CHECK(with["approach"].is_number());
     CHECK(without["g0_method"] == "omitted");
@@ -317,7 +317,7 @@ TEST_CASE("coatfft run refuses bad contact scenes with exit 2 and no output",
       csv << "\n";
     }
   }
-  coatfft::scene::write_npy(scratch("h_shape.npy"), coatfft::Field::Zero(64, 32));
+  coatfft::io::write_npy(scratch("h_shape.npy"), coatfft::Field::Zero(64, 32));
   const std::string sphere = "indenter = \"sphere\"\nradius = 0.01";
   const std::array cases{
       BadCase{"zero_load", "load = 100.0", "load = 0.0", "load"},
@@ -429,7 +429,7 @@ TEST_CASE("coatfft run saves FFTW wisdom and reuses it", "[cli]") {
     CHECK(fs::file_size(wisdom) > 0);  // written by the first run, read (and kept) by the second
   }
   // Wisdom changes how FFTW computes, not what: both runs give the same displacement.
-  const coatfft::Field u0 = coatfft::scene::read_npy(scratch("wisdom_out0") / "uz.npy");
-  const coatfft::Field u1 = coatfft::scene::read_npy(scratch("wisdom_out1") / "uz.npy");
+  const coatfft::Field u0 = coatfft::io::read_npy(scratch("wisdom_out0") / "uz.npy");
+  const coatfft::Field u1 = coatfft::io::read_npy(scratch("wisdom_out1") / "uz.npy");
   CHECK((u0 - u1).abs().maxCoeff() <= 1e-13 * u0.abs().maxCoeff());
 }

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "core/grid.hpp"
-#include "scene/npy.hpp"
+#include "io/npy.hpp"
 #include "tests/cli_process.hpp"
 
 using namespace coatfft_test;
@@ -190,7 +190,7 @@ TEST_CASE("[shear] file equals proportional for the same tractions", "[cli_stres
       run_scene_ok(kStress + "[shear]\nkind = \"proportional\"\nmu = 0.25\n", "shear_p");
   // q_x = 0.25 p written as a file.
   const fs::path p_file = scratch("shear_qx.npy");
-  coatfft::scene::write_npy(p_file, 0.25 * coatfft::scene::read_npy(prop / "pressure.npy"));
+  coatfft::io::write_npy(p_file, 0.25 * coatfft::io::read_npy(prop / "pressure.npy"));
   const fs::path file = run_scene_ok(
       kStress + "[shear]\nkind = \"file\"\npath_x = \"" + p_file.string() + "\"\n", "shear_f");
   CHECK(npy_values(prop / "stress.npy") == npy_values(file / "stress.npy"));

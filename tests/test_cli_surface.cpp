@@ -7,7 +7,7 @@
 #include <iterator>
 #include <string>
 
-#include "scene/npy.hpp"
+#include "io/npy.hpp"
 #include "tests/address_sanitized.hpp"
 #include "tests/cli_process.hpp"
 
@@ -50,7 +50,7 @@ TEST_CASE("coatfft surface writes a reproducible self-affine surface", "[cli_sur
   const auto r = run_coatfft("surface -o " + a.string() + kSurface + " --rms-height 0.5e-6");
   INFO(r.stderr_text);
   REQUIRE(r.status == 0);
-  const coatfft::Field h = coatfft::scene::read_npy(a);
+  const coatfft::Field h = coatfft::io::read_npy(a);
   CHECK(h.rows() == 64);  // (ny, nx) on disk, (nx, ny) in memory
   CHECK(h.cols() == 48);
   CHECK(std::sqrt(h.square().mean()) == Approx(0.5e-6).epsilon(1e-12));
@@ -131,14 +131,14 @@ TEST_CASE("a scene's measured topography is pressed by a rigid flat, its tilt re
                       " --nx 32 --ny 32 --lx 0.25e-3 --ly 0.25e-3 --hurst 0.8 --rms-height 0.2e-6"
                       " --seed 4")
               .status == 0);
-  const coatfft::Field z = coatfft::scene::read_npy(z_file);
-  coatfft::scene::write_npy(scratch("topography_gap.npy"), z.maxCoeff() - z);
+  const coatfft::Field z = coatfft::io::read_npy(z_file);
+  coatfft::io::write_npy(scratch("topography_gap.npy"), z.maxCoeff() - z);
   coatfft::Field tilted = z;
   const double dx = 0.25e-3 / 32;
   for (Eigen::Index j = 0; j < 32; ++j)
     for (Eigen::Index i = 0; i < 32; ++i)
       tilted(i, j) += 2e-3 * (i + 0.5 - 16) * dx - 1e-3 * (j + 0.5 - 16) * dx + 1e-6;
-  coatfft::scene::write_npy(scratch("topography_tilted.npy"), tilted);
+  coatfft::io::write_npy(scratch("topography_tilted.npy"), tilted);
   const std::string base =
       "[grid]\nnx = 32\nny = 32\nlx = 0.25e-3\nly = 0.25e-3\nboundary = \"periodic\"\n"
       "[substrate]\nmaterial = \"steel\"\n[contact]\nload = 0.5\n";
@@ -152,14 +152,14 @@ TEST_CASE("a scene's measured topography is pressed by a rigid flat, its tilt re
   const fs::path from_tilt = run(
       "topography = \"" + scratch("topography_tilted.npy").string() + "\"\ndetrend = \"plane\"\n",
       "topography_tilted");
-  const coatfft::Field p_map = coatfft::scene::read_npy(from_map / "pressure.npy");
-  CHECK((coatfft::scene::read_npy(from_z / "pressure.npy") - p_map).abs().maxCoeff() == 0.0);
+  const coatfft::Field p_map = coatfft::io::read_npy(from_map / "pressure.npy");
+  CHECK((coatfft::io::read_npy(from_z / "pressure.npy") - p_map).abs().maxCoeff() == 0.0);
   // The untilted z has its own small plane (its rms slope is not zero): compare against z
   // detrended the same way.
   const fs::path from_plane =
       run("topography = \"" + z_file.string() + "\"\ndetrend = \"plane\"\n", "topography_plane");
-  const coatfft::Field p_plane = coatfft::scene::read_npy(from_plane / "pressure.npy");
-  CHECK((coatfft::scene::read_npy(from_tilt / "pressure.npy") - p_plane).abs().maxCoeff() <
+  const coatfft::Field p_plane = coatfft::io::read_npy(from_plane / "pressure.npy");
+  CHECK((coatfft::io::read_npy(from_tilt / "pressure.npy") - p_plane).abs().maxCoeff() <
         1e-6 * p_plane.maxCoeff());
   CHECK(read_summary(from_z)["indenter"] == "topography");
 }
@@ -262,7 +262,7 @@ TEST_CASE("coatfft topography: missing points named with its own flag, their fil
   coatfft::Field one = coatfft::Field::Constant(512, 512, std::nan(""));
   one(7, 9) = 1e-6;
   const fs::path map = scratch("missing_one.npy");
-  coatfft::scene::write_npy(map, one);
+  coatfft::io::write_npy(map, one);
   const auto bounded =
       run_coatfft("topography " + map.string() + " --missing fill --max-memory 20M",
                   // A sanitized program reserves terabytes of address space for its shadow.

@@ -14,7 +14,7 @@
 #include <set>
 #include <string>
 
-#include "scene/npy.hpp"
+#include "io/npy.hpp"
 #include "scene/scene.hpp"
 #include "tests/cli_process.hpp"
 #include "validation/axisymmetric_stress.hpp"
@@ -338,8 +338,8 @@ TEST_CASE("example auto_tolerance.toml: auto within its tolerance of frf-split",
   CHECK(named.summary["method_requested"] == "frf-split");
   const double reference = number(named.summary["uz_max"]);
   CHECK(std::abs(number(s["uz_max"]) - reference) <= tolerance * reference);
-  const coatfft::Field u_auto = coatfft::scene::read_npy(run.out / "uz.npy");
-  const coatfft::Field u_split = coatfft::scene::read_npy(named.out / "uz.npy");
+  const coatfft::Field u_auto = coatfft::io::read_npy(run.out / "uz.npy");
+  const coatfft::Field u_split = coatfft::io::read_npy(named.out / "uz.npy");
   REQUIRE(u_auto.rows() == u_split.rows());
   REQUIRE(u_auto.cols() == u_split.cols());
   CHECK((u_auto - u_split).abs().maxCoeff() <= tolerance * u_split.abs().maxCoeff());
@@ -400,7 +400,7 @@ TEST_CASE("example rough_sphere_contact.toml: a rough sphere carries its load on
   // constant), periodic as make_rough_sphere.py generates it, so its rms slope is taken by
   // periodic central differences, as the script does (0.0105).
   const coatfft::Grid& g = scene.grid;
-  const coatfft::Field gap = coatfft::scene::read_npy(kScenes / "rough_sphere.npy");
+  const coatfft::Field gap = coatfft::io::read_npy(kScenes / "rough_sphere.npy");
   REQUIRE(gap.rows() == g.nx());
   REQUIRE(gap.cols() == g.ny());
   coatfft::Field z(g.nx(), g.ny());
@@ -477,7 +477,7 @@ TEST_CASE("example rough_coated_sliding.toml: a sliding rough contact balances i
   }
   // Every periodic displacement has zero mean over the period.
   for (const char* name : {"ux.npy", "uy.npy"}) {
-    const coatfft::Field u = coatfft::scene::read_npy(run.out / name);
+    const coatfft::Field u = coatfft::io::read_npy(run.out / name);
     CHECK(std::abs(u.mean()) < 1e-12 * u.abs().maxCoeff());
   }
   // Floor of the real area: Persson's (2001) erf(sqrt 2 p / (E* s)) with the stiffer medium's

@@ -1,4 +1,4 @@
-// A NetCDF file written by the ranks together (topography/netcdf_collective.hpp) against the
+// A NetCDF file written by the ranks together (io/netcdf_collective.hpp) against the
 // serial writer's file of the whole fields: byte for byte, for maps with and without a leading
 // dimension, a variable without maps and the file's attributes, on grids whose rows split unevenly
 // and where a rank holds no rows, whole or a block of columns at a time. Runs under mpirun at 1, 2
@@ -15,11 +15,11 @@
 #include "core/error.hpp"
 #include "distributed/communicator.hpp"
 #include "distributed/slab.hpp"
-#include "topography/netcdf_collective.hpp"
-#include "topography/netcdf_writer.hpp"
+#include "io/netcdf_collective.hpp"
+#include "io/netcdf_writer.hpp"
 
 using namespace coatfft;
-using namespace coatfft::topography;
+using namespace coatfft::io;
 
 namespace {
 

@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "io/netcdf_writer.hpp"
 #include "tests/bounded_call.hpp"
-#include "topography/netcdf_writer.hpp"
 #include "topography/topography.hpp"
 
 namespace fs = std::filesystem;
@@ -101,8 +101,7 @@ TEST_CASE("netcdf: coatfft's heights file read back as written", "[topography][n
   for (Eigen::Index j = 0; j < 4; ++j)
     for (Eigen::Index i = 0; i < 6; ++i) z(i, j) = 1e-9 * static_cast<double>(i + 10 * j);
   const auto path = scratch("w.nc");
-  topography::write_heights(path, topography::HeightsFormat::netcdf, z, grid, false,
-                            {{{"source", "test"}}, {}});
+  io::write_heights(path, io::HeightsFormat::netcdf, z, grid, false, {{{"source", "test"}}, {}});
   const auto t = read_topography(path);
   CHECK((t.heights - z).abs().maxCoeff() == 0.0);
   CHECK(*t.lx == 3e-6);
@@ -110,9 +109,8 @@ TEST_CASE("netcdf: coatfft's heights file read back as written", "[topography][n
   CHECK_FALSE(*t.periodic);
   CHECK(t.unit == "m");
   // An existing file is never overwritten.
-  CHECK_THROWS_WITH(
-      topography::write_heights(path, topography::HeightsFormat::netcdf, z, grid, false),
-      Catch::Contains("cannot create"));
+  CHECK_THROWS_WITH(io::write_heights(path, io::HeightsFormat::netcdf, z, grid, false),
+                    Catch::Contains("cannot create"));
 }
 
 TEST_CASE("netcdf: truncated files, no heights, wrong dimensions are refused",
@@ -157,7 +155,7 @@ TEST_CASE("netcdf: variables beyond the 64-bit offset format's limit take the 64
   for (const std::ptrdiff_t n : {5461, 5462}) shapes.push_back({n, 1, true});
   int refused = 0;
   for (const Shape& s : shapes) {
-    topography::NetcdfDataset d{Grid(s.n, s.n, 1.0, 1.0), false, {}, {}, {}};
+    io::NetcdfDataset d{Grid(s.n, s.n, 1.0, 1.0), false, {}, {}, {}};
     if (s.stack) {
       d.dimensions = {{"depth", 3, {}, {}}, {"component", 6, {}, {}}};
       d.variables.push_back({"stress", {"depth", "component"}, {}, {}});
@@ -187,7 +185,7 @@ TEST_CASE("netcdf: variables beyond the 64-bit offset format's limit take the 64
     fs::remove(path);
     INFO(s.n << "^2 cells, " << s.maps << " maps" << (s.stack ? " after a stack" : ""));
     REQUIRE((status == NC_NOERR || status == NC_EVARSIZE));
-    CHECK(topography::needs_64bit_data(d) == (status == NC_EVARSIZE));
+    CHECK(io::needs_64bit_data(d) == (status == NC_EVARSIZE));
     refused += status == NC_EVARSIZE;
   }
   CHECK(refused == 5);  // 23171^2 and 32768^2 with 2 or 3 maps, 5462^2 after the stack

@@ -21,10 +21,10 @@
 #include "core/error.hpp"
 #include "core/grid.hpp"
 #include "frf/frf.hpp"
+#include "io/npy.hpp"
 #include "layers/layer_stack.hpp"
 #include "materials/catalog.hpp"
 #include "scene/frf_validation.hpp"
-#include "scene/npy.hpp"
 #include "tests/cli_process.hpp"
 
 namespace fs = std::filesystem;
@@ -223,8 +223,8 @@ TEST_CASE("coatfft run on a table body reports it and matches the stack", "[cli]
   CHECK(table["c0"].get<double>() == Approx(coatfft::make_frf(coated_stack())->c0()).epsilon(1e-8));
   // The table interpolates H to <= 2.0e-7 (6e-9 for this body), and frf-split is linear in H:
   // the displacements agree to validate-frf's default tolerance, 1e-6.
-  const coatfft::Field u_table = coatfft::scene::read_npy(table_out / "uz.npy");
-  const coatfft::Field u_stack = coatfft::scene::read_npy(stack_out / "uz.npy");
+  const coatfft::Field u_table = coatfft::io::read_npy(table_out / "uz.npy");
+  const coatfft::Field u_stack = coatfft::io::read_npy(stack_out / "uz.npy");
   CHECK((u_table - u_stack).abs().maxCoeff() <= 1e-6 * u_stack.abs().maxCoeff());
 }
 
@@ -260,8 +260,8 @@ TEST_CASE("the table coatfft frf writes is read back as an [frf] table", "[cli][
   CHECK(summary["frf_table"]["points"] == 12 * per_decade + 1);
   // As for a table written here: 80 points per decade interpolate H to <= 2e-7, and frf-split
   // is linear in H, so the displacements agree to validate-frf's default tolerance, 1e-6.
-  const coatfft::Field u_table = coatfft::scene::read_npy(table_out / "uz.npy");
-  const coatfft::Field u_stack = coatfft::scene::read_npy(stack_out / "uz.npy");
+  const coatfft::Field u_table = coatfft::io::read_npy(table_out / "uz.npy");
+  const coatfft::Field u_stack = coatfft::io::read_npy(stack_out / "uz.npy");
   CHECK((u_table - u_stack).abs().maxCoeff() <= 1e-6 * u_stack.abs().maxCoeff());
 }
 

@@ -8,24 +8,24 @@
 #include <string>
 #include <vector>
 
-#include "topography/netcdf_file.hpp"
+#include "io/netcdf_file.hpp"
 
 namespace coatfft::topography {
 
 /// The text of attribute `name` of variable `var` (named `owner` in messages): NC_CHAR, or one
 /// NC_STRING (what netCDF4-python writes in NETCDF4 files for text beyond ASCII, such as "µm");
 /// nothing where the attribute is absent. Any other type is refused.
-std::optional<std::string> text_attribute(const NetcdfFile& nc, int var, const char* owner,
+std::optional<std::string> text_attribute(const io::NetcdfFile& nc, int var, const char* owner,
                                           const char* name);
 
 /// The values of numeric attribute `name` of `var`, as doubles (CF allows several for
 /// missing_value); empty where absent. Text is refused.
-std::vector<double> number_attributes(const NetcdfFile& nc, int var, const char* owner,
+std::vector<double> number_attributes(const io::NetcdfFile& nc, int var, const char* owner,
                                       const char* name);
 
 /// The one value of numeric attribute `name` of `var`; nothing where absent. Text and lists are
 /// refused.
-std::optional<double> number_attribute(const NetcdfFile& nc, int var, const char* owner,
+std::optional<double> number_attribute(const io::NetcdfFile& nc, int var, const char* owner,
                                        const char* name);
 
 }  // namespace coatfft::topography

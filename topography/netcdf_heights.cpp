@@ -27,11 +27,11 @@ constexpr std::size_t kBlockValues = std::size_t{1} << 18;
 
 // The heights' numeric type and its size in the file [bytes]; text and user-defined types
 // (compound, enum, vlen, opaque) are refused.
-std::size_t value_size(const NetcdfFile& nc, int var, nc_type& type) {
-  check_netcdf(nc_inq_vartype(nc.id(), var, &type), nc.path(), "heights");
+std::size_t value_size(const io::NetcdfFile& nc, int var, nc_type& type) {
+  io::check_netcdf(nc_inq_vartype(nc.id(), var, &type), nc.path(), "heights");
   char name[NC_MAX_NAME + 1] = {};
   std::size_t size = 0;
-  check_netcdf(nc_inq_type(nc.id(), type, name, &size), nc.path(), "heights");
+  io::check_netcdf(nc_inq_type(nc.id(), type, name, &size), nc.path(), "heights");
   COATFFT_REQUIRE(type != NC_CHAR && type != NC_STRING, nc.path().string(),
                   ": the variable heights holds text (of type ", name, "), not numbers");
   COATFFT_REQUIRE(type <= NC_MAX_ATOMIC_TYPE, nc.path().string(),
@@ -40,17 +40,17 @@ std::size_t value_size(const NetcdfFile& nc, int var, nc_type& type) {
 }
 
 // The heights' sizes (first, second dimension) and whether they are named (y, x).
-bool y_first(const NetcdfFile& nc, int var, std::array<std::size_t, 2>& sizes) {
+bool y_first(const io::NetcdfFile& nc, int var, std::array<std::size_t, 2>& sizes) {
   int dims = 0;
-  check_netcdf(nc_inq_varndims(nc.id(), var, &dims), nc.path(), "heights");
+  io::check_netcdf(nc_inq_varndims(nc.id(), var, &dims), nc.path(), "heights");
   COATFFT_REQUIRE(dims == 2, nc.path().string(), ": the variable heights has ", dims,
                   " dimensions, not 2 (x and y)");
   std::array<int, 2> ids{};
-  check_netcdf(nc_inq_vardimid(nc.id(), var, ids.data()), nc.path(), "heights");
+  io::check_netcdf(nc_inq_vardimid(nc.id(), var, ids.data()), nc.path(), "heights");
   std::array<std::string, 2> names;
   for (int d = 0; d < 2; ++d) {
     char name[NC_MAX_NAME + 1] = {};
-    check_netcdf(nc_inq_dim(nc.id(), ids[d], name, &sizes[d]), nc.path(), "heights");
+    io::check_netcdf(nc_inq_dim(nc.id(), ids[d], name, &sizes[d]), nc.path(), "heights");
     names[d] = name;
   }
   return names[0] == "y" && names[1] == "x";
@@ -58,7 +58,7 @@ bool y_first(const NetcdfFile& nc, int var, std::array<std::size_t, 2>& sizes) {
 
 // Refuses heights that cannot be in a file of `file_bytes` (netcdf_heights.hpp, "Bound"); after
 // require_file_point_limit, so that nx ny times the value size fits in 64 bits.
-void require_in_file(const NetcdfFile& nc, int var, std::size_t size, std::size_t nx,
+void require_in_file(const io::NetcdfFile& nc, int var, std::size_t size, std::size_t nx,
                      std::size_t ny, std::uintmax_t file_bytes) {
   std::size_t filters = 0;
   if (nc_inq_var_filter_ids(nc.id(), var, &filters, nullptr) != NC_NOERR) filters = 0;
@@ -112,13 +112,13 @@ struct Decoding {
   }
 };
 
-Decoding decoding(const NetcdfFile& nc, int var, nc_type type) {
+Decoding decoding(const io::NetcdfFile& nc, int var, nc_type type) {
   Decoding d{number_attributes(nc, var, "heights", "missing_value"), 1.0, 0.0};
   if (const auto fill = number_attribute(nc, var, "heights", "_FillValue")) {
     d.missing.push_back(*fill);
   } else {
     int no_fill = 0;
-    check_netcdf(nc_inq_var_fill(nc.id(), var, &no_fill, nullptr), nc.path(), "heights");
+    io::check_netcdf(nc_inq_var_fill(nc.id(), var, &no_fill, nullptr), nc.path(), "heights");
     if (const auto type_fill = default_fill(type); type_fill && !no_fill)
       d.missing.push_back(*type_fill);
   }
@@ -135,7 +135,7 @@ Decoding decoding(const NetcdfFile& nc, int var, nc_type type) {
 
 // Reads the heights into `z` by blocks of rows of the variable (its first dimension): straight
 // into z's storage for (y, x), whose rows are z's columns; through a buffer for (x, y).
-void read_blocks(const NetcdfFile& nc, int var, const Decoding& decode, bool yx, Field& z) {
+void read_blocks(const io::NetcdfFile& nc, int var, const Decoding& decode, bool yx, Field& z) {
   const auto rows = static_cast<std::size_t>(yx ? z.cols() : z.rows());
   const auto row = static_cast<std::size_t>(yx ? z.rows() : z.cols());
   const std::size_t block = std::max<std::size_t>(1, kBlockValues / row);
@@ -143,8 +143,8 @@ void read_blocks(const NetcdfFile& nc, int var, const Decoding& decode, bool yx,
   for (std::size_t first = 0; first < rows; first += block) {
     const std::array<std::size_t, 2> start{first, 0}, count{std::min(block, rows - first), row};
     double* values = yx ? z.data() + first * row : buffer.data();
-    check_netcdf(nc_get_vara_double(nc.id(), var, start.data(), count.data(), values), nc.path(),
-                 "reading heights");
+    io::check_netcdf(nc_get_vara_double(nc.id(), var, start.data(), count.data(), values),
+                     nc.path(), "reading heights");
     std::transform(values, values + count[0] * row, values, decode);
     if (yx) continue;
     // z's columns are written in order; the block's rows are read a value at a time, each
@@ -156,7 +156,7 @@ void read_blocks(const NetcdfFile& nc, int var, const Decoding& decode, bool yx,
 }
 }  // namespace
 
-Field read_netcdf_heights(const NetcdfFile& nc, int var, std::uintmax_t file_bytes,
+Field read_netcdf_heights(const io::NetcdfFile& nc, int var, std::uintmax_t file_bytes,
                           const ReadOptions& options) {
   nc_type type = NC_NAT;
   const std::size_t size = value_size(nc, var, type);

@@ -21,7 +21,7 @@
 #include <cstdint>
 
 #include "core/types.hpp"
-#include "topography/netcdf_file.hpp"
+#include "io/netcdf_file.hpp"
 #include "topography/topography.hpp"
 
 namespace coatfft::topography {
@@ -31,7 +31,7 @@ namespace coatfft::topography {
 /// named (y, x) as xarray users write, heights(y, x). Missing points are NaN. Refuses text,
 /// other than two dimensions, attributes of the wrong type, and a map that cannot be in the file
 /// or would not fit `options`' limits, each before the map is allocated.
-Field read_netcdf_heights(const NetcdfFile& nc, int var, std::uintmax_t file_bytes,
+Field read_netcdf_heights(const io::NetcdfFile& nc, int var, std::uintmax_t file_bytes,
                           const ReadOptions& options);
 
 }  // namespace coatfft::topography

@@ -14,18 +14,18 @@
 #include <vector>
 
 #include "core/error.hpp"
-#include "scene/input_file.hpp"
+#include "io/input_file.hpp"
+#include "io/netcdf_file.hpp"
 #include "topography/formats.hpp"
 #include "topography/netcdf3_header.hpp"
 #include "topography/netcdf_attributes.hpp"
-#include "topography/netcdf_file.hpp"
 #include "topography/netcdf_heights.hpp"
 #include "topography/units.hpp"
 
 namespace coatfft::topography {
 
 namespace {
-std::optional<std::string> unit_attribute(const NetcdfFile& nc, int var, const char* owner) {
+std::optional<std::string> unit_attribute(const io::NetcdfFile& nc, int var, const char* owner) {
   for (const char* name : {"length_unit", "unit", "units"})
     if (auto unit = text_attribute(nc, var, owner, name)) return unit;
   return {};
@@ -38,7 +38,7 @@ struct Coordinate {
   std::optional<bool> periodic;
 };
 
-Coordinate read_coordinate(const NetcdfFile& nc, const char* name) {
+Coordinate read_coordinate(const io::NetcdfFile& nc, const char* name) {
   int var = -1;
   if (nc_inq_varid(nc.id(), name, &var) != NC_NOERR) return {};
   Coordinate axis{number_attribute(nc, var, name, "length"), unit_attribute(nc, var, name), {}};
@@ -51,7 +51,7 @@ Coordinate read_coordinate(const NetcdfFile& nc, const char* name) {
 }
 
 // The file's global text attributes (instrument, history, ...), as metadata.
-std::vector<std::pair<std::string, std::string>> global_text(const NetcdfFile& nc) {
+std::vector<std::pair<std::string, std::string>> global_text(const io::NetcdfFile& nc) {
   int count = 0;
   std::vector<std::pair<std::string, std::string>> metadata;
   if (nc_inq_natts(nc.id(), &count) != NC_NOERR) return metadata;
@@ -72,9 +72,9 @@ std::vector<std::pair<std::string, std::string>> global_text(const NetcdfFile& n
 }  // namespace
 
 Topography read_netcdf_topography(const std::filesystem::path& path, const ReadOptions& options) {
-  std::string bytes = scene::read_input_file(path, "a NetCDF file", options.max_bytes);
+  std::string bytes = io::read_input_file(path, "a NetCDF file", options.max_bytes);
   require_netcdf3_header_fits(path, bytes);
-  const NetcdfFile nc = NetcdfFile::open_memory(path, bytes);
+  const io::NetcdfFile nc = io::NetcdfFile::open_memory(path, bytes);
   int var = -1;
   COATFFT_REQUIRE(nc_inq_varid(nc.id(), "heights", &var) == NC_NOERR, path.string(),
                   ": no variable named heights (the layout of docs/measured_surfaces.md)");

@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "core/error.hpp"
-#include "scene/input_file.hpp"
+#include "io/input_file.hpp"
 #include "topography/formats.hpp"
 #include "topography/reader_support.hpp"
 
@@ -139,7 +139,7 @@ template <typename T>
 T header_value(const fs::path& path, std::string_view keyword, std::string_view value) {
   const auto number = parse_number<T>(value);
   if (!number)
-    refuse(path, keyword, " = ", scene::quoted_excerpt(value), " is not ",
+    refuse(path, keyword, " = ", io::quoted_excerpt(value), " is not ",
            std::is_integral_v<T> ? "an integer" : "a number");
   return *number;
 }
@@ -220,7 +220,7 @@ double parse_datum(const fs::path& path, std::string_view token, int code, std::
   if (!type.is_float) {
     const auto value = parse_number<long long>(token);
     if (!value || *value < type.min || *value > type.max)
-      refuse(path, "value ", index + 1, " of the data section, ", scene::quoted_excerpt(token),
+      refuse(path, "value ", index + 1, " of the data section, ", io::quoted_excerpt(token),
              ", is not an integer of DataType ", code, " (", type.name, ")");
     return static_cast<double>(*value);
   }
@@ -231,7 +231,7 @@ double parse_datum(const fs::path& path, std::string_view token, int code, std::
   char* end = nullptr;
   const double value = std::strtod(copy.c_str(), &end);
   if (copy.empty() || end != copy.c_str() + copy.size())
-    refuse(path, "value ", index + 1, " of the data section, ", scene::quoted_excerpt(token),
+    refuse(path, "value ", index + 1, " of the data section, ", io::quoted_excerpt(token),
            ", is not a number");
   return value;
 }
@@ -345,7 +345,7 @@ Header read_binary_header(std::string_view bytes) {
 
 /// The values, read from the file piece by piece after the header (so that the map is held
 /// once, not beside the file's bytes), then the trailer.
-Field read_binary_data(const fs::path& path, scene::InputFile& file, Header& header) {
+Field read_binary_data(const fs::path& path, io::InputFile& file, Header& header) {
   const int code = static_cast<int>(header.data_type);
   const std::size_t width = kDataTypes[code].bytes;
   const std::size_t count = header.nx * header.ny;
@@ -381,7 +381,7 @@ Field read_binary_data(const fs::path& path, scene::InputFile& file, Header& hea
 }
 
 /// The header and the values of either variant; `start` holds the first bytes of the file.
-std::pair<Header, Field> read_header_and_values(const fs::path& path, scene::InputFile& file,
+std::pair<Header, Field> read_header_and_values(const fs::path& path, io::InputFile& file,
                                                 std::string start, const ReadOptions& options) {
   if (start.front() == 'b') {
     if (start.size() < kBinaryHeaderBytes)
@@ -408,13 +408,13 @@ std::pair<Header, Field> read_header_and_values(const fs::path& path, scene::Inp
 }  // namespace
 
 Topography read_sdf_topography(const std::filesystem::path& path, const ReadOptions& options) {
-  scene::InputFile file(path, "an SDF file", options.max_bytes);
+  io::InputFile file(path, "an SDF file", options.max_bytes);
   std::string start(
       static_cast<std::size_t>(std::min<std::uintmax_t>(file.size(), kBinaryHeaderBytes)), '\0');
   file.read_exact(start.data(), start.size());
   const std::string_view version = std::string_view(start).substr(0, 8);
   if (!is_version(version))
-    refuse(path, "not an SDF file: it starts with ", scene::quoted_excerpt(version),
+    refuse(path, "not an SDF file: it starts with ", io::quoted_excerpt(version),
            ", not a version of ISO 25178-71 such as aISO-1.0, bISO-1.0, aBCR-1.0");
   auto [header, heights] = read_header_and_values(path, file, std::move(start), options);
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "core/error.hpp"
-#include "scene/csv.hpp"
+#include "io/csv.hpp"
 #include "topography/formats.hpp"
 
 namespace coatfft::topography {
@@ -80,7 +80,7 @@ Topography xyz_topography(const std::filesystem::path& path, const Field& rows,
 
 Topography read_text_topography(const std::filesystem::path& path, const ReadOptions& options,
                                 bool xyz) {
-  const Field matrix = scene::read_csv_matrix(path, options.max_bytes);
+  const Field matrix = io::read_csv_matrix(path, options.max_bytes);
   COATFFT_REQUIRE(!xyz || matrix.rows() == 3, path.string(),
                   ": x y z rows need three columns, not ", matrix.rows());
   if (matrix.rows() == 3) {

@@ -16,7 +16,7 @@ MissingPoints missing_points_from_name(std::string_view name, std::string_view w
   if (name == "refuse") return MissingPoints::refuse;
   if (name == "fill") return MissingPoints::fill;
   throw InvalidArgument(
-      detail::concat(what, " must be \"refuse\" or \"fill\", not ", scene::quoted_excerpt(name)));
+      detail::concat(what, " must be \"refuse\" or \"fill\", not ", io::quoted_excerpt(name)));
 }
 
 namespace {
@@ -29,7 +29,7 @@ Topography read_format(const fs::path& path, const ReadOptions& options) {
   if (ext == ".x3p") return read_x3p_topography(path, options);
   if (ext == ".sdf") return read_sdf_topography(path, options);
   throw InvalidArgument(detail::concat(path.string(), ": unknown topography format ",
-                                       scene::quoted_excerpt(ext),
+                                       io::quoted_excerpt(ext),
                                        " (known: .npy, .csv, .txt, .asc, .xyz, .nc, .x3p, .sdf)"));
 }
 

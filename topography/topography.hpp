@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "core/types.hpp"
-#include "scene/input_file.hpp"
+#include "io/input_file.hpp"
 
 namespace coatfft::topography {
 
@@ -38,7 +38,7 @@ struct ReadOptions {
   /// read in it, and a different `unit` given here is refused.
   std::string unit;
   MissingPoints missing = MissingPoints::refuse;
-  std::uintmax_t max_bytes = scene::kMaxArrayFileBytes;
+  std::uintmax_t max_bytes = io::kMaxArrayFileBytes;
   /// The memory reading the map may take [bytes] (`--max-memory`); by default what the machine
   /// has available. A file declaring a larger map is refused before anything is allocated.
   std::optional<double> max_memory{};

@@ -5,7 +5,7 @@
 #include <utility>
 
 #include "core/error.hpp"
-#include "scene/input_file.hpp"
+#include "io/input_file.hpp"
 
 namespace coatfft::topography {
 
@@ -26,7 +26,7 @@ constexpr std::array<std::pair<std::string_view, double>, 24> kUnits{{
 double metres_per_unit(std::string_view unit, std::string_view what) {
   for (const auto& [name, metres] : kUnits)
     if (unit == name) return metres;
-  throw InvalidArgument(detail::concat("unknown unit ", scene::quoted_excerpt(unit), " in ", what,
+  throw InvalidArgument(detail::concat("unknown unit ", io::quoted_excerpt(unit), " in ", what,
                                        " (known: m, mm, um or \u00b5m, nm, pm, \u00c5 or A)"));
 }
 

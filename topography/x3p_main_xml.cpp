@@ -4,7 +4,7 @@
 #include <limits>
 #include <utility>
 
-#include "scene/input_file.hpp"
+#include "io/input_file.hpp"
 #include "topography/reader_support.hpp"
 
 namespace coatfft::topography {
@@ -86,7 +86,7 @@ void MainXmlScanner::scan(bool at_end) {
   if (pending_.size() > kMaxRecordBytes)
     refuse(path_, "main.xml: a tag or comment of more than ", kMaxRecordBytes, " bytes");
   if (at_end && !pending_.empty())
-    refuse(path_, "main.xml ends inside ", scene::quoted_excerpt(pending_), " (truncated)");
+    refuse(path_, "main.xml ends inside ", io::quoted_excerpt(pending_), " (truncated)");
 }
 
 bool MainXmlScanner::at(std::initializer_list<std::string_view> names) const {
@@ -129,7 +129,7 @@ void MainXmlScanner::list_markup(std::string_view unit, bool end_tag, std::strin
     datum_.emplace();
     return;
   }
-  refuse(path_, "main.xml: Record3/DataList holds ", scene::quoted_excerpt(unit),
+  refuse(path_, "main.xml: Record3/DataList holds ", io::quoted_excerpt(unit),
          ", where only <Datum> elements belong");
 }
 
@@ -138,11 +138,11 @@ void MainXmlScanner::text(std::string_view run) {
   if (datum_) {
     datum_->append(run);
     if (datum_->size() > 1024)  // longer than any number with blanks around it
-      refuse(path_, "main.xml: Record3/DataList/Datum = ", scene::quoted_excerpt(*datum_),
+      refuse(path_, "main.xml: Record3/DataList/Datum = ", io::quoted_excerpt(*datum_),
              " is not a number");
   } else if (in_list_) {
     if (!trimmed(run).empty())
-      refuse(path_, "main.xml: Record3/DataList holds the text ", scene::quoted_excerpt(run),
+      refuse(path_, "main.xml: Record3/DataList holds the text ", io::quoted_excerpt(run),
              ", where only <Datum> elements belong");
   } else {
     append_record(run);

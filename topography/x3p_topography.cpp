@@ -25,7 +25,7 @@
 #include <utility>
 
 #include "core/error.hpp"
-#include "scene/input_file.hpp"
+#include "io/input_file.hpp"
 #include "topography/formats.hpp"
 #include "topography/reader_support.hpp"
 #include "topography/x3p_main_xml.hpp"
@@ -67,7 +67,7 @@ bool is_md5_hex(std::string_view text) {
 // not held whole beside the map (a stored archive holds the map's values).
 
 struct FileSource {
-  scene::InputFile* file;
+  io::InputFile* file;
   std::uint64_t position = 0;
   zip_error_t error;
 };
@@ -129,7 +129,7 @@ struct ZipFileClose {
 
 class Archive {
  public:
-  Archive(const fs::path& path, scene::InputFile& file)
+  Archive(const fs::path& path, io::InputFile& file)
       : path_(path), source_(std::make_unique<FileSource>(FileSource{&file, 0, {}})) {
     zip_error_init(&source_->error);
     zip_error_t error;
@@ -239,8 +239,7 @@ const XMLElement& require(const fs::path& path, const XMLElement* root, std::str
 double number_in(const fs::path& path, std::string_view text, std::string_view where) {
   const auto value = parse_number<double>(text);
   if (!value || !std::isfinite(*value))
-    refuse(path, "main.xml: ", where, " = ", scene::quoted_excerpt(trimmed(text)),
-           " is not a number");
+    refuse(path, "main.xml: ", where, " = ", io::quoted_excerpt(trimmed(text)), " is not a number");
   return *value;
 }
 
@@ -254,7 +253,7 @@ std::size_t size_of(const fs::path& path, const XMLElement* root, std::string_vi
   const auto value =
       text.empty() || text.front() == '+' ? std::nullopt : parse_number<std::size_t>(text);
   if (!value || *value == 0)
-    refuse(path, "main.xml: ", where, " = ", scene::quoted_excerpt(text),
+    refuse(path, "main.xml: ", where, " = ", io::quoted_excerpt(text),
            " is not a positive integer");
   return *value;
 }
@@ -294,7 +293,7 @@ std::optional<ValueType> value_type(const fs::path& path, const XMLElement& axis
   if (code == "L") return ValueType::int32;
   if (code == "F") return ValueType::float32;
   if (code == "D") return ValueType::float64;
-  refuse(path, "main.xml: ", where, "/DataType = ", scene::quoted_excerpt(code),
+  refuse(path, "main.xml: ", where, "/DataType = ", io::quoted_excerpt(code),
          " is not a data type of ISO 25178-72 (I, L, F or D)");
 }
 
@@ -307,7 +306,7 @@ Axis read_axis(const fs::path& path, const XMLElement* root, std::string_view na
   const std::string axis_type = text_of(&require(path, &axis, "AxisType"));
   const std::string expected = name == "CZ" ? "A" : "I";
   if (axis_type != expected)
-    refuse(path, "main.xml: ", where, "/AxisType = ", scene::quoted_excerpt(axis_type),
+    refuse(path, "main.xml: ", where, "/AxisType = ", io::quoted_excerpt(axis_type),
            name == "CZ" ? ", but the heights must be absolute (A)"
                         : ", but only incremental lateral axes (I, a regular grid) are read");
   Axis result;
@@ -343,7 +342,7 @@ void read_matrix_dimension(const fs::path& path, const XMLElement* root, Record&
 Record read_record(const fs::path& path, const XMLElement* root, const ReadOptions& options) {
   const std::string feature = text_of(&require(path, root, "Record1/FeatureType"));
   if (feature != "SUR")
-    refuse(path, "main.xml: FeatureType = ", scene::quoted_excerpt(feature),
+    refuse(path, "main.xml: FeatureType = ", io::quoted_excerpt(feature),
            ", but only areal surfaces (SUR) are read");
   Record record;
   record.x = read_axis(path, root, "CX");
@@ -377,7 +376,7 @@ void verify_record_checksum(const fs::path& path, const Archive& archive, const 
   const std::string_view line = trimmed(content);
   const std::string_view stated = line.substr(0, line.find_first_of(" \t\r\n"));
   if (!is_md5_hex(stated))
-    refuse(path, checksum_file, " holds ", scene::quoted_excerpt(stated),
+    refuse(path, checksum_file, " holds ", io::quoted_excerpt(stated),
            ", not the MD5 checksum of main.xml (32 hex digits)");
   if (lower_ascii(stated) != actual)
     refuse(path, "main.xml does not match its MD5 checksum in ", checksum_file, " (",
@@ -389,7 +388,7 @@ void verify_data_checksum(const fs::path& path, const XMLElement* checksum,
   if (checksum == nullptr) return;  // optional in ISO 25178-72
   const std::string stated = text_of(checksum);
   if (!is_md5_hex(stated))
-    refuse(path, "main.xml: ", local_name(checksum->Name()), " = ", scene::quoted_excerpt(stated),
+    refuse(path, "main.xml: ", local_name(checksum->Name()), " = ", io::quoted_excerpt(stated),
            " is not an MD5 checksum (32 hex digits)");
   if (lower_ascii(stated) != actual)
     refuse(path, entry, " does not match its MD5 checksum in main.xml (", lower_ascii(stated),
@@ -563,7 +562,7 @@ std::pair<std::string, std::size_t> read_main_xml(const fs::path& path, const Ar
 }  // namespace
 
 Topography read_x3p_topography(const std::filesystem::path& path, const ReadOptions& options) {
-  scene::InputFile file(path, "an X3P file", options.max_bytes);
+  io::InputFile file(path, "an X3P file", options.max_bytes);
   const Archive archive(path, file);
   tinyxml2::XMLDocument document;
   const auto [main_md5, values] = read_main_xml(path, archive, options.max_bytes, document);

@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-namespace coatfft::topography {
+namespace coatfft::io {
 
 /// Throws InvalidArgument "PATH: WHAT: netcdf-c's message" unless `status` is NC_NOERR.
 void check_netcdf(int status, const std::filesystem::path& path, std::string_view what);
@@ -17,10 +17,10 @@ class NetcdfFile {
   static NetcdfFile open_memory(const std::filesystem::path& path, std::string& bytes);
   /// Creates `path` as a NetCDF-3 file with 64-bit offsets (the format SurfaceTopography writes
   /// and its serial reader takes), or with `large_variables` in the 64-bit data format (CDF-5,
-  /// topography/netcdf_writer.hpp), refusing to overwrite an existing file.
+  /// io/netcdf_writer.hpp), refusing to overwrite an existing file.
   static NetcdfFile create(const std::filesystem::path& path, bool large_variables = false);
   /// Takes the handle `id` of a dataset opened or created as `path` (a collective write's,
-  /// topography/netcdf_collective.hpp); closed by this object.
+  /// io/netcdf_collective.hpp); closed by this object.
   NetcdfFile(std::filesystem::path path, int id) : path_(std::move(path)), id_(id) {}
 
   NetcdfFile(NetcdfFile&& other) noexcept;
@@ -49,4 +49,4 @@ class NetcdfFile {
   std::string error_;
 };
 
-}  // namespace coatfft::topography
+}  // namespace coatfft::io

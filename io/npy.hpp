@@ -1,9 +1,9 @@
 #pragma once
-// Reading and writing 2-D float64 arrays as NumPy .npy (format 1.0, C order); CSV is scene/csv.hpp.
+// Reading and writing 2-D float64 arrays as NumPy .npy (format 1.0, C order); CSV is io/csv.hpp.
 // A Field (nx, ny) is stored as shape (ny, nx): row j is y_j (docs/conventions.md), which is
 // the Field's own memory layout, so no transposition happens.
 //
-// The readers take only regular files (scene/input_file.hpp) and check every size before they
+// The readers take only regular files (io/input_file.hpp) and check every size before they
 // allocate. Their refusals are one-line InvalidArgument messages that start with the path; a
 // place in a CSV file is "PATH:LINE:" with 1-based line numbers, a place in the array is
 // "row j, column i" with 0-based indices as NumPy writes a[j, i]; text echoed from the file is
@@ -14,9 +14,9 @@
 #include <string>
 
 #include "core/types.hpp"
-#include "scene/input_file.hpp"
+#include "io/input_file.hpp"
 
-namespace coatfft::scene {
+namespace coatfft::io {
 
 /// The bytes before the data of a C-order little-endian float64 .npy file (format 1.0) of shape
 /// `shape`: magic, version, header length and the header dict, padded so that the data starts on
@@ -42,7 +42,7 @@ void write_npy(const std::filesystem::path& path, const Field& field);
 Field read_npy(const std::filesystem::path& path, std::uintmax_t max_bytes = kMaxArrayFileBytes);
 
 /// A 2-D .npy file's shape and where its values lie, for a reader of some of its rows only
-/// (scene/npy_slab.hpp).
+/// (io/npy_slab.hpp).
 struct NpyArray {
   std::size_t rows = 0, cols = 0;  ///< the array's shape (rows, cols)
   std::uintmax_t data_offset = 0;  ///< the bytes before the values
@@ -65,4 +65,4 @@ NpyArray read_npy_row_header(const std::filesystem::path& path, std::size_t ny, 
 void npy_to_doubles(const NpyArray& array, const unsigned char* bytes, std::size_t count,
                     double* out);
 
-}  // namespace coatfft::scene
+}  // namespace coatfft::io

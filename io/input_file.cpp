@@ -1,4 +1,4 @@
-#include "scene/input_file.hpp"
+#include "io/input_file.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -9,7 +9,7 @@
 
 #include "core/error.hpp"
 
-namespace coatfft::scene {
+namespace coatfft::io {
 
 namespace fs = std::filesystem;
 
@@ -168,4 +168,4 @@ std::string read_input_file(const fs::path& path, std::string_view what, std::ui
   return content;
 }
 
-}  // namespace coatfft::scene
+}  // namespace coatfft::io

@@ -1,4 +1,4 @@
-#include "scene/npy.hpp"
+#include "io/npy.hpp"
 
 #include <algorithm>
 #include <array>
@@ -18,9 +18,9 @@
 
 #include "core/detail/close_written.hpp"
 #include "core/error.hpp"
-#include "scene/input_file.hpp"
+#include "io/input_file.hpp"
 
-namespace coatfft::scene {
+namespace coatfft::io {
 
 namespace fs = std::filesystem;
 
@@ -400,4 +400,4 @@ Field read_npy(const fs::path& path, std::uintmax_t max_bytes) {
   return field;
 }
 
-}  // namespace coatfft::scene
+}  // namespace coatfft::io

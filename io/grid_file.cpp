@@ -1,13 +1,13 @@
-#include "scene/grid_file.hpp"
+#include "io/grid_file.hpp"
 
 #include <cmath>
 #include <string>
 
 #include "core/error.hpp"
-#include "scene/csv.hpp"
-#include "scene/npy.hpp"
+#include "io/csv.hpp"
+#include "io/npy.hpp"
 
-namespace coatfft::scene {
+namespace coatfft::io {
 
 Field read_grid_file(const std::filesystem::path& file, const Grid& grid, std::string_view key,
                      std::string_view value_word) {
@@ -31,9 +31,9 @@ void check_grid_npy(const std::filesystem::path& file, const Grid& grid, std::st
                   ": a distributed run reads ", what,
                   " from .npy only (numpy.save writes one; `coatfft topography` converts a "
                   "measured surface)");
-  // Refused here, before any work, as scene/npy_slab.hpp would refuse it after the set-up.
+  // Refused here, before any work, as io/npy_slab.hpp would refuse it after the set-up.
   read_npy_row_header(file, static_cast<std::size_t>(grid.ny()),
                       static_cast<std::size_t>(grid.nx()));
 }
 
-}  // namespace coatfft::scene
+}  // namespace coatfft::io

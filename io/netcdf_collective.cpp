@@ -1,4 +1,4 @@
-#include "topography/netcdf_collective.hpp"
+#include "io/netcdf_collective.hpp"
 
 #include <mpi.h>
 #include <netcdf.h>
@@ -8,9 +8,9 @@
 
 #include "core/error.hpp"
 #include "distributed/detail/mpi_handle.hpp"
-#include "topography/netcdf_file.hpp"
+#include "io/netcdf_file.hpp"
 
-namespace coatfft::topography {
+namespace coatfft::io {
 
 namespace {
 
@@ -63,4 +63,4 @@ void write_heights_slab(const Communicator& comm, const std::filesystem::path& p
   write_netcdf_collective(comm, path, std::move(d));
 }
 
-}  // namespace coatfft::topography
+}  // namespace coatfft::io

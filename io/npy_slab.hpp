@@ -1,7 +1,7 @@
 #pragma once
 // A distributed field (distributed/slab.hpp) read from and written as one .npy file without
 // gathering it: every rank reads or writes its rows at their offset (the file's rows are the
-// field's, scene/npy.hpp) in one collective MPI-IO call; rank 0 writes the preamble. Built with
+// field's, io/npy.hpp) in one collective MPI-IO call; rank 0 writes the preamble. Built with
 // COATFFT_MPI.
 #include <filesystem>
 #include <string_view>
@@ -10,7 +10,7 @@
 #include "distributed/communicator.hpp"
 #include "distributed/slab.hpp"
 
-namespace coatfft::scene {
+namespace coatfft::io {
 
 /// Writes this rank's rows `rows` (nx, slab.rows) of the (nx, ny) field as `path`: the file
 /// write_npy writes of the whole field, byte for byte. Collective; InvalidArgument on every rank
@@ -33,4 +33,4 @@ void write_text_slab(const Communicator& comm, const std::filesystem::path& path
 Field read_npy_slab(const Communicator& comm, const std::filesystem::path& path, const Slab& slab,
                     std::string_view value_word);
 
-}  // namespace coatfft::scene
+}  // namespace coatfft::io

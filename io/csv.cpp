@@ -1,4 +1,4 @@
-#include "scene/csv.hpp"
+#include "io/csv.hpp"
 
 #include <locale.h>
 
@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "core/error.hpp"
-#include "scene/input_file.hpp"
+#include "io/input_file.hpp"
 
-namespace coatfft::scene {
+namespace coatfft::io {
 
 namespace fs = std::filesystem;
 
@@ -153,4 +153,4 @@ Field read_csv_matrix(const fs::path& path, std::uintmax_t max_bytes) {
   return field;
 }
 
-}  // namespace coatfft::scene
+}  // namespace coatfft::io

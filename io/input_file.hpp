@@ -16,7 +16,7 @@
 #include <string>
 #include <string_view>
 
-namespace coatfft::scene {
+namespace coatfft::io {
 
 /// Text from a file as echoed in a message: in double quotes, with '"', '\\' and non-printable
 /// bytes escaped ("\\x01"), and at most 80 characters inside the quotes ("..." ends a longer
@@ -73,4 +73,4 @@ class InputFile {
   std::uintmax_t size_ = 0;
 };
 
-}  // namespace coatfft::scene
+}  // namespace coatfft::io

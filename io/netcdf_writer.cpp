@@ -1,4 +1,4 @@
-#include "topography/netcdf_writer.hpp"
+#include "io/netcdf_writer.hpp"
 
 #include <netcdf.h>
 
@@ -6,10 +6,10 @@
 #include <map>
 
 #include "core/error.hpp"
-#include "scene/npy.hpp"
-#include "topography/netcdf_file.hpp"
+#include "io/netcdf_file.hpp"
+#include "io/npy.hpp"
 
-namespace coatfft::topography {
+namespace coatfft::io {
 
 namespace {
 void put_attributes(NetcdfFile& nc, int var, const NetcdfAttributes& attributes) {
@@ -174,9 +174,9 @@ void write_netcdf(const std::filesystem::path& path, const NetcdfDataset& datase
   nc.close();
 }
 
-}  // namespace coatfft::topography
+}  // namespace coatfft::io
 
-namespace coatfft::topography {
+namespace coatfft::io {
 
 HeightsFormat heights_format(const std::filesystem::path& target) {
   const std::string ext = target.extension().string();
@@ -190,7 +190,7 @@ void write_heights(const std::filesystem::path& path, HeightsFormat format, cons
                    const Grid& grid, bool periodic, const NetcdfAttributes& attributes) {
   COATFFT_REQUIRE(heights.rows() == grid.nx() && heights.cols() == grid.ny(),
                   "write_heights: the heights are not of the grid's shape");
-  if (format == HeightsFormat::npy) return scene::write_npy(path, heights);
+  if (format == HeightsFormat::npy) return io::write_npy(path, heights);
   write_netcdf(path, heights_dataset(grid, periodic, heights, attributes));
 }
 
@@ -203,4 +203,4 @@ NetcdfDataset heights_dataset(const Grid& grid, bool periodic, const Field& heig
   return dataset;
 }
 
-}  // namespace coatfft::topography
+}  // namespace coatfft::io

@@ -1,11 +1,11 @@
-#include "topography/netcdf_file.hpp"
+#include "io/netcdf_file.hpp"
 
 #include <netcdf.h>
 #include <netcdf_mem.h>
 
 #include "core/error.hpp"
 
-namespace coatfft::topography {
+namespace coatfft::io {
 
 void check_netcdf(int status, const std::filesystem::path& path, std::string_view what) {
   if (status != NC_NOERR)
@@ -54,4 +54,4 @@ void NetcdfFile::check(int status, std::string_view what) {
     error_ = detail::concat(path_.string(), ": ", what, ": ", nc_strerror(status));
 }
 
-}  // namespace coatfft::topography
+}  // namespace coatfft::io

@@ -1,6 +1,6 @@
 #pragma once
 // Reading 2-D arrays from plain CSV files (pressure and height maps). A Field (nx, ny) is read
-// from ny lines of nx values: row j is y_j, as in the .npy files (scene/npy.hpp, whose rules for
+// from ny lines of nx values: row j is y_j, as in the .npy files (io/npy.hpp, whose rules for
 // messages this reader follows: "PATH:LINE: row j, column i: ...", 1-based lines, 0-based rows
 // and columns, values quoted and shortened).
 #include <cstddef>
@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "core/types.hpp"
-#include "scene/input_file.hpp"
+#include "io/input_file.hpp"
 
-namespace coatfft::scene {
+namespace coatfft::io {
 
 /// Reads a CSV matrix (rows separated by newlines, values by commas, semicolons, tabs or blanks;
 /// '#' starts a comment; lines without values are skipped; a UTF-8 byte order mark at the start
@@ -34,4 +34,4 @@ std::vector<std::string_view> csv_tokens(std::string_view line);
 double csv_value(const std::filesystem::path& path, std::size_t line, std::size_t row,
                  std::size_t column, std::string_view token);
 
-}  // namespace coatfft::scene
+}  // namespace coatfft::io

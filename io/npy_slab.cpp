@@ -1,4 +1,4 @@
-#include "scene/npy_slab.hpp"
+#include "io/npy_slab.hpp"
 
 #include <mpi.h>
 
@@ -13,9 +13,9 @@
 #include "core/error.hpp"
 #include "distributed/agreed_refusal.hpp"
 #include "distributed/detail/mpi_handle.hpp"
-#include "scene/npy.hpp"
+#include "io/npy.hpp"
 
-namespace coatfft::scene {
+namespace coatfft::io {
 
 namespace {
 
@@ -138,4 +138,4 @@ Field read_npy_slab(const Communicator& comm, const std::filesystem::path& path,
   return rows;
 }
 
-}  // namespace coatfft::scene
+}  // namespace coatfft::io

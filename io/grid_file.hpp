@@ -7,7 +7,7 @@
 #include "core/grid.hpp"
 #include "core/types.hpp"
 
-namespace coatfft::scene {
+namespace coatfft::io {
 
 /// Reads `file` (.npy or .csv, by its extension) as a Field (nx, ny) of `grid`. Refuses, in one
 /// line, another extension (naming the scene's `key`), another shape, or a value that is not
@@ -17,9 +17,9 @@ Field read_grid_file(const std::filesystem::path& file, const Grid& grid, std::s
 
 /// The checks of read_grid_file that need no values: `file` is a .npy file (the only kind a
 /// distributed run reads by rows) whose header is sound, in C order, and gives the grid's shape;
-/// the values are left to the reader of each rank's rows (scene/npy_slab.hpp). `what` names the
+/// the values are left to the reader of each rank's rows (io/npy_slab.hpp). `what` names the
 /// file's contents in the refusal ("a height map").
 void check_grid_npy(const std::filesystem::path& file, const Grid& grid, std::string_view key,
                     std::string_view what);
 
-}  // namespace coatfft::scene
+}  // namespace coatfft::io

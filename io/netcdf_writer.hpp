@@ -14,7 +14,7 @@
 #include "core/grid.hpp"
 #include "core/types.hpp"
 
-namespace coatfft::topography {
+namespace coatfft::io {
 
 /// Text and numeric attributes of a variable or of the file, in their order.
 struct NetcdfAttributes {
@@ -49,7 +49,7 @@ struct NetcdfDataset {
   std::vector<NetcdfVariable> variables;
   NetcdfAttributes attributes;  ///< of the file (global)
   /// The grid's rows that the maps' data hold: all of them (rows < 0), or a rank's slab in a
-  /// collective write (topography/netcdf_collective.hpp), `rows` rows from `first_row` on.
+  /// collective write (io/netcdf_collective.hpp), `rows` rows from `first_row` on.
   std::ptrdiff_t first_row = 0;
   std::ptrdiff_t rows = -1;
   /// Whether this writer puts the coordinates and the variables without maps (in a collective
@@ -79,9 +79,9 @@ class NetcdfFile;
 void define_netcdf(NetcdfFile& nc, const NetcdfDataset& dataset);
 void put_netcdf(NetcdfFile& nc, const NetcdfDataset& dataset);
 
-}  // namespace coatfft::topography
+}  // namespace coatfft::io
 
-namespace coatfft::topography {
+namespace coatfft::io {
 
 enum class HeightsFormat { npy, netcdf };
 
@@ -99,4 +99,4 @@ NetcdfDataset heights_dataset(const Grid& grid, bool periodic, const Field& heig
 void write_heights(const std::filesystem::path& path, HeightsFormat format, const Field& heights,
                    const Grid& grid, bool periodic, const NetcdfAttributes& attributes = {});
 
-}  // namespace coatfft::topography
+}  // namespace coatfft::io

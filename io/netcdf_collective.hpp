@@ -9,9 +9,9 @@
 #include "core/types.hpp"
 #include "distributed/communicator.hpp"
 #include "distributed/slab.hpp"
-#include "topography/netcdf_writer.hpp"
+#include "io/netcdf_writer.hpp"
 
-namespace coatfft::topography {
+namespace coatfft::io {
 
 /// Writes `dataset`, whose maps hold this rank's rows (`first_row`, `rows`), as the new file
 /// `path`; the coordinates and the variables without maps come from rank 0. Every rank passes the
@@ -26,4 +26,4 @@ void write_heights_slab(const Communicator& comm, const std::filesystem::path& p
                         const Field& rows, const Grid& grid, const Slab& slab, bool periodic,
                         const NetcdfAttributes& attributes = {});
 
-}  // namespace coatfft::topography
+}  // namespace coatfft::io
