@@ -14,6 +14,7 @@
 #include "scene/resources.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_pressure.hpp"
+#include "scene/scene_run.hpp"
 
 namespace coatfft::cli {
 
@@ -30,15 +31,14 @@ std::optional<double> predicted_error(const scene::Scene& scene) {
 }  // namespace
 
 void check_command(const CheckOptions& options) {
-  scene::Scene scene =
-      scene::read_scene(options.scene, scene::SceneReading{.max_memory = options.max_memory});
-  // As run does: a pressure is applied once (run --repeat aside), a contact solve about
-  // contact_applications times.
-  const double applications = scene.contact ? scene::contact_applications : 1.0;
-  scene::check_memory(scene, options.max_memory);  // before the choice too, as run does
-  const std::optional<scene::AutomaticChoice> automatic =
-      scene::resolve_automatic_method(scene, applications);
-  check_memory(scene, options.max_memory);
+  // run's preparation itself: the scene read, its memory checked before and after name = "auto"
+  // chooses, for the applications run makes (a pressure applied once, run --repeat aside).
+  scene::SceneRunOptions run;
+  run.max_memory = options.max_memory;
+  scene::PreparedScene prepared = scene::prepare_scene(options.scene, run);
+  scene::Scene& scene = prepared.scene;
+  const std::optional<scene::AutomaticChoice>& automatic = prepared.automatic;
+  const double applications = scene::expected_applications(scene, run.repeat);
   if (scene.pressure) {  // reads and checks the loads as run does
     const Field pressure = scene::scene_pressure(scene);
     scene::scene_tractions(scene, pressure);

@@ -26,6 +26,8 @@ constexpr double rounding_error = 1e-13;
 // cases of bench_auto_calibration (docs/auto.md section 1); taken as 0.1.
 constexpr double split_error_per_tolerance = 0.1;
 constexpr std::ptrdiff_t direct_max_cells = 65536;
+// Why a candidate is left out of a distributed choice (AutoRequest::distributed).
+constexpr const char* not_distributed = "does not run distributed";
 
 using detail::brief;
 
@@ -121,6 +123,10 @@ MethodCandidate lattice_cost(const Context& x, Method method, double alpha) {
 MethodCandidate lattice_candidate(const Context& x, Method method, double best_total) {
   const double alpha = lattice_alpha(x.grid);
   MethodCandidate c = lattice_cost(x, method, alpha);
+  if (x.request.distributed) {
+    c.note = not_distributed;
+    return c;
+  }
   const PipelineErrorProxy proxy = pipeline_error_proxy(x.grid, 2.0);
   const double prediction =
       predicted_split_setup_seconds(proxy.grid, split_frf_kernel_work(proxy.grid, x.frf), 1) +
@@ -181,6 +187,11 @@ MethodChoice choose(Context x) {
   MethodChoice choice;
   choice.candidates = {love_candidate(x, Method::direct), love_candidate(x, Method::dcfft),
                        split_candidate(x, split_tolerance_for(x.request.tolerance))};
+  if (x.request.distributed) {
+    MethodCandidate& direct = choice.candidates.front();
+    direct.admissible = false;
+    direct.note = not_distributed;
+  }
   const auto best = [&] {
     double t = kInfinity;
     for (const auto& c : choice.candidates)

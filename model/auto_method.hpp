@@ -26,7 +26,10 @@ struct AutoRequest {
   Planning planning = Planning::estimate;
   /// The operator is the first FFTW plan of its process (a command-line run): the methods that
   /// use FFTW then also pay fftw_start_seconds (model/cost_model.hpp).
-  bool first_in_process = false;
+  bool first_in_process = false;  /// The operator runs on the ranks of a communicator
+                                  /// (distributed/make_distributed_operator.hpp):
+  /// only dcfft and frf-split are candidates, and the lattice pipelines' error is not predicted.
+  bool distributed = false;
 };
 
 /// One method as the model sees it.

@@ -106,7 +106,12 @@ void reduce_thin_periodic_body(Scene& scene) {
 
 }  // namespace
 
-std::optional<AutomaticChoice> resolve_automatic_method(Scene& scene, double applications) {
+double expected_applications(const Scene& scene, int repeat) {
+  return scene.contact ? contact_applications : static_cast<double>(repeat);
+}
+
+std::optional<AutomaticChoice> resolve_automatic_method(Scene& scene, double applications,
+                                                        bool distributed) {
   MethodSpec& m = scene.method;
   if (m.auto_periodic && scene.body) reduce_thin_periodic_body(scene);
   if (!m.automatic) return std::nullopt;
@@ -116,6 +121,7 @@ std::optional<AutomaticChoice> resolve_automatic_method(Scene& scene, double app
   request.max_threads = m.options.threads;
   request.planning = m.options.planning;
   request.first_in_process = true;  // a command-line run builds one operator
+  request.distributed = distributed;
   AutomaticChoice choice =
       scene.frf ? choose_automatically(scene.grid, *scene.frf, reference_loads(scene), request)
                 : choose_automatically(scene.grid, *scene.body, reference_loads(scene), request);

@@ -48,10 +48,16 @@ AutomaticChoice choose_automatically(const Grid& grid, const LayerStack& body,
 AutomaticChoice choose_automatically(const Grid& grid, const Frf& frf,
                                      std::vector<ReferenceLoad> loads, const AutoRequest& request);
 
-/// For name = "auto": chooses the body and the method for `applications` applications and
-/// writes them into scene.method (options; reduced_body when reduced). Nothing for a named
+/// For name = "auto": chooses the body and the method for `applications` applications (among
+/// those that run on the ranks of a communicator when `distributed`: AutoRequest::distributed)
+/// and writes them into scene.method (options; reduced_body when reduced). Nothing for a named
 /// method. Throws InvalidArgument when no method meets the tolerance.
-std::optional<AutomaticChoice> resolve_automatic_method(Scene& scene, double applications);
+std::optional<AutomaticChoice> resolve_automatic_method(Scene& scene, double applications,
+                                                        bool distributed = false);
+
+/// The applications a run of `scene` makes, for the choice: contact_applications for a contact,
+/// else the `repeat` timed applications of a known load.
+double expected_applications(const Scene& scene, int repeat);
 
 /// summary.json's "auto" object: tolerance, the method chosen and why, its predicted error and
 /// times, the candidates, and the reduction with its estimated effect.

@@ -19,8 +19,7 @@
 #include "core/memory.hpp"
 #include "distributed/agreed_refusal.hpp"
 #include "distributed/distributed_contact.hpp"
-#include "distributed/distributed_dcfft_operator.hpp"
-#include "distributed/distributed_periodic_operator.hpp"
+#include "distributed/make_distributed_operator.hpp"
 #include "distributed/slab_fft.hpp"
 #include "io/grid_file.hpp"
 #include "io/input_file.hpp"
@@ -55,11 +54,16 @@ MemoryNeed rank_memory(int ranks, const Scene& scene) {
 
 // The first part of the scene that a distributed run refuses, or "" (check_distributable).
 std::string not_distributable(const Scene& scene) {
-  if (scene.method.automatic)
-    return "[method] name = \"auto\" (its reference computations; name the method: \"dcfft\" "
-           "or \"frf-split\" on a free boundary)";
+  // "auto" on a free coated body (or FRF table) reduces the body by reference displacements
+  // (model/body_reduction.hpp); on a homogeneous body or a periodic boundary it needs none.
+  const bool homogeneous = scene.body && scene.body->is_homogeneous();
+  if (scene.method.automatic && !homogeneous)
+    return detail::concat("[method] name = \"auto\" on a free boundary of ",
+                          scene.frf ? "a body given by its FRF" : "a coated body",
+                          " (its choice computes reference displacements of the body; name the "
+                          "method: \"frf-split\")");
   const Method method = scene.method.options.method;
-  if (!scene.periodic && method != Method::dcfft && method != Method::frf_split)
+  if (!scene.method.automatic && !scene.periodic && !runs_distributed(method))
     return detail::concat("[method] name = \"", to_string(method),
                           "\" on a free boundary (there a distributed run takes \"dcfft\" or "
                           "\"frf-split\")");
@@ -107,41 +111,11 @@ FieldNumbers slab_numbers(const Communicator& comm, const Grid& grid, const Slab
           comm.sum(centre ? uz(grid.centre_i(), j) : 0.0), comm.max(local_max)};
 }
 
-// The distributed operator and what summary.json reports of it, as operator_from_scene's: the
-// periodic kernel of the body's FRF, or on a free boundary DC-FFT with Love's coefficients
-// (dcfft) or frf-split's of the body's FRF.
-std::unique_ptr<DistributedOperator> distributed_operator(const Communicator& comm,
-                                                          const Scene& scene,
-                                                          OperatorReport& report) {
-  const auto start = Clock::now();
-  const OperatorOptions& o = scene.method.options;
-  const Grid& grid = scene.grid;
-  std::unique_ptr<DistributedOperator> op;
-  if (scene.periodic) {
-    const std::shared_ptr<const Frf> frf = body_frf(scene);
-    PeriodicKernelOptions kernel;
-    kernel.threads = o.threads;
-    op = std::make_unique<DistributedPeriodicOperator>(comm, grid, *frf, kernel, o.planning,
-                                                       o.threads, o.method);
-    report.frf = frf->name();
-  } else if (o.method == Method::frf_split) {
-    const std::shared_ptr<const Frf> frf = body_frf(scene);
-    SplitKernelOptions split = o.split;
-    split.threads = o.threads;
-    SplitKernelReport split_report;
-    op = std::make_unique<DistributedDcfftOperator>(comm, grid, *frf, split, o.planning, o.threads,
-                                                    &split_report);
-    report.frf = frf->name();
-    report.split = split_report;
-  } else {
-    op = std::make_unique<DistributedDcfftOperator>(
-        comm, grid, scene.body->substrate().plane_strain_modulus(), o.planning, o.threads);
-  }
-  report.method = op->method();
-  report.fft_nx = scene.periodic ? grid.nx() : 2 * grid.nx();
-  report.fft_ny = scene.periodic ? grid.ny() : 2 * grid.ny();
-  report.setup_seconds = seconds_since(start);
-  return op;
+// The distributed operator of the scene's body, as operator_from_scene builds the serial one.
+BuiltDistributedOperator distributed_operator(const Communicator& comm, const Scene& scene) {
+  return build_scene_operator(scene, [&](const auto& body) {
+    return make_distributed_operator(comm, scene.grid, body, scene.method.options);
+  });
 }
 
 // What every rank's run must share: its scene file's text (by its FNV-1a digest, Fowler, Noll and
@@ -210,10 +184,13 @@ PreparedScene prepare_distributed_scene(const Communicator& comm,
   // Each rank reads its own scene (an MPMD launch may give each another one): its refusal, the
   // other ranks' scenes and its memory are agreed before the ranks' first collective step.
   std::optional<Scene> scene;
+  std::optional<AutomaticChoice> automatic;
   agreed_refusal(comm, [&] {
     check_repeat(options.repeat);
     scene = read_scene(scene_file, SceneReading{.height_map_values = false});
     check_distributable(*scene);
+    automatic =
+        resolve_automatic_method(*scene, expected_applications(*scene, options.repeat), true);
     // The serial run's refusal, before the set-up here (its operator is built otherwise).
     if (!scene->periodic && !scene->frf)
       check_love_body(*scene->body, scene->method.options.method);
@@ -229,7 +206,7 @@ PreparedScene prepare_distributed_scene(const Communicator& comm,
     require_memory(rank_memory(comm.size(), *scene), limit, "each rank", "--max-memory (per rank)",
                    "use fewer cells or more ranks");
   });
-  return {std::move(*scene), std::nullopt};
+  return {std::move(*scene), std::move(automatic)};
 }
 
 namespace {
@@ -272,13 +249,13 @@ nlohmann::json slab_load_discretization(const Communicator& comm, const Scene& s
 
 // A known load: its rows, the timed applications, and the serial run's reports over the ranks.
 DistributedSceneRun compute_pressure(const Communicator& comm, const Scene& scene,
+                                     const std::optional<AutomaticChoice>& automatic,
                                      const SceneRunOptions& options, ProgressObserver& progress) {
   std::ptrdiff_t unused = 0;
   const Slab rows = detail::slab_of(comm, scene.grid.nx(), scene.grid.ny(), unused);
   Field pressure = slab_pressure(comm, scene, rows);  // before the set-up, as serially
   progress.stage(setup_stage(scene));
-  OperatorReport report;
-  const auto op = distributed_operator(comm, scene, report);
+  auto [op, report] = distributed_operator(comm, scene);
   const Slab slab = op->slab();
   COATFFT_REQUIRE(slab.y0 == rows.y0 && slab.rows == rows.rows,
                   "distributed run: the operator's rows are not the load's");
@@ -288,7 +265,7 @@ DistributedSceneRun compute_pressure(const Communicator& comm, const Scene& scen
   const FieldNumbers numbers = slab_numbers(comm, scene.grid, slab, pressure, uz);
   const double max_abs_uz = comm.max(slab.rows > 0 ? uz.abs().maxCoeff() : 0.0);
   nlohmann::json summary =
-      common_summary(scene, std::nullopt, report, apply_seconds, options.repeat, numbers);
+      common_summary(scene, automatic, report, apply_seconds, options.repeat, numbers);
   summary["a_posteriori"] =
       scene.periodic ? nlohmann::json() : a_posteriori_check(scene, numbers.uz_center, max_abs_uz);
   summary["load_discretization"] =
@@ -303,12 +280,12 @@ DistributedSceneRun compute_pressure(const Communicator& comm, const Scene& scen
 
 // A contact: the heights' rows, the solve, the timed applications.
 DistributedSceneRun compute_contact(const Communicator& comm, Scene scene,
+                                    const std::optional<AutomaticChoice>& automatic,
                                     const SceneRunOptions& options, ProgressObserver& progress) {
   use_normal_compliance_body(scene);
   const ContactSpec& spec = *scene.contact;
   progress.stage(setup_stage(scene));
-  OperatorReport report;
-  const auto op = distributed_operator(comm, scene, report);
+  auto [op, report] = distributed_operator(comm, scene);
   const Slab slab = op->slab();  // this rank's rows of every field
   const Field heights = slab_heights(comm, scene, slab);
   const auto solver =
@@ -328,7 +305,7 @@ DistributedSceneRun compute_contact(const Communicator& comm, Scene scene,
   const FieldNumbers numbers =
       slab_numbers(comm, scene.grid, slab, result.pressure, result.displacement);
   nlohmann::json summary =
-      common_summary(scene, std::nullopt, report, apply_seconds, options.repeat, numbers);
+      common_summary(scene, automatic, report, apply_seconds, options.repeat, numbers);
   add_contact_summary(summary, scene, result, solve_seconds);
   add_rank_summary(summary, comm, scene, *op);
   return {slab,
@@ -346,8 +323,9 @@ DistributedSceneRun compute_distributed_scene(const Communicator& comm,
                                               const SceneRunOptions& options) {
   ProgressObserver silent;
   ProgressObserver& progress = options.progress ? *options.progress : silent;
-  return prepared.scene.contact ? compute_contact(comm, prepared.scene, options, progress)
-                                : compute_pressure(comm, prepared.scene, options, progress);
+  return prepared.scene.contact
+             ? compute_contact(comm, prepared.scene, prepared.automatic, options, progress)
+             : compute_pressure(comm, prepared.scene, prepared.automatic, options, progress);
 }
 
 }  // namespace coatfft::scene

@@ -21,12 +21,10 @@ bool holds_fftw_wisdom(const std::string& text) {
   return text.rfind("(fftw-3", 0) == 0;
 }
 
-namespace {
-
 // The periodic kernel's refusal of an FRF it cannot sum names the library's terms (its remainder,
 // c_inf); in a scene the cause is the thinnest coating against the cells: named by its key.
-[[noreturn]] void refuse_periodic_kernel(const Scene& scene, const LayerStack& body,
-                                         const std::string& message) {
+void refuse_periodic_kernel(const Scene& scene, const LayerStack& body,
+                            const std::string& message) {
   const auto& coatings = body.coatings();
   const auto thinnest = std::min_element(
       coatings.begin(), coatings.end(),
@@ -40,22 +38,10 @@ namespace {
       "thinner than a hundredth of a cell where its effect is within the tolerance"));
 }
 
-}  // namespace
-
 BuiltOperator operator_from_scene(const Scene& scene) {
-  const MethodSpec& method = scene.method;
-  // name = "auto" may have reduced the body (scene/automatic_method.hpp).
-  const LayerStack& body = method.reduced_body ? *method.reduced_body : *scene.body;
-  // A periodic grid's operator too: method.options.boundary says which (read_scene).
-  BuiltOperator built;
-  try {
-    built = scene.frf ? make_operator(scene.grid, *scene.frf, method.options)
-                      : make_operator(scene.grid, body, method.options);
-  } catch (const InvalidArgument& e) {
-    const std::string message = e.what();
-    if (scene.frf || message.rfind("periodic kernel:", 0) != 0) throw;
-    refuse_periodic_kernel(scene, body, message);
-  }
+  BuiltOperator built = build_scene_operator(scene, [&](const auto& body) {
+    return make_operator(scene.grid, body, scene.method.options);
+  });
   refuse_untrustworthy(built.report);
   return built;
 }

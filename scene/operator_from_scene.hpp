@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "convolution/operators/make_operator.hpp"
+#include "core/error.hpp"
 #include "scene/scene.hpp"
 
 namespace coatfft::scene {
@@ -24,8 +25,32 @@ bool holds_fftw_wisdom(const std::string& text);
 inline constexpr double pipeline_warning_error = 1e-2;
 inline constexpr double pipeline_refusal_error = 1.0;
 
-/// Builds the operator. Throws InvalidArgument when the method cannot handle the body (e.g. Love
-/// DC-FFT on a coating), and when an FRF pipeline's predicted error exceeds pipeline_refusal_error.
+/// Throws the periodic kernel's refusal `message` of `body` in the scene's terms: the thinnest
+/// coating's key, its thickness against the cells, and what to do.
+[[noreturn]] void refuse_periodic_kernel(const Scene& scene, const LayerStack& body,
+                                         const std::string& message);
+
+/// `factory(body or frf)` (make_operator's, or make_distributed_operator's, on the scene's grid
+/// and options) on the body it builds for: a table body's FRF, else the body name = "auto" may
+/// have reduced (scene/automatic_method.hpp). The periodic kernel's refusal is rethrown by
+/// refuse_periodic_kernel.
+template <typename Factory>
+auto build_scene_operator(const Scene& scene, Factory&& factory) {
+  const LayerStack* body = scene.method.reduced_body ? &*scene.method.reduced_body
+                           : scene.body              ? &*scene.body
+                                                     : nullptr;
+  try {
+    return scene.frf ? factory(*scene.frf) : factory(*body);
+  } catch (const InvalidArgument& e) {
+    const std::string message = e.what();
+    if (scene.frf || message.rfind("periodic kernel:", 0) != 0) throw;
+    refuse_periodic_kernel(scene, *body, message);
+  }
+}
+
+/// Builds the operator (make_operator by build_scene_operator). Throws InvalidArgument when the
+/// method cannot handle the body (e.g. Love DC-FFT on a coating), and when an FRF pipeline's
+/// predicted error exceeds pipeline_refusal_error.
 BuiltOperator operator_from_scene(const Scene& scene);
 
 /// Throws InvalidArgument when the report's predicted error exceeds pipeline_refusal_error; the

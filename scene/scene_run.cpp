@@ -299,8 +299,8 @@ PreparedScene prepare_scene(const fs::path& scene_file, const SceneRunOptions& o
   // one's; before it, the estimate of the scene as read (DC-FFT's padded lattice, the least any
   // candidate but direct summation on a small grid needs) refuses a grid too large for any.
   check_memory(scene, options.max_memory);
-  std::optional<AutomaticChoice> automatic = resolve_automatic_method(
-      scene, scene.contact ? contact_applications : static_cast<double>(options.repeat));
+  std::optional<AutomaticChoice> automatic =
+      resolve_automatic_method(scene, expected_applications(scene, options.repeat));
   check_memory(scene, options.max_memory);
   return {std::move(scene), std::move(automatic)};
 }

@@ -2,8 +2,9 @@
 """`coatfft run` under mpirun (docs/scale.md) against the serial program.
 
 A periodic rough TiN-coated contact (a height map read by rows) at 2 and 3 ranks (3: uneven
-slabs), a paraboloid on it, a free Hertz contact on steel (DC-FFT) at 3 ranks and a free contact
-on the coated body (frf-split) at 2 and 3 ranks: summary.json has
+slabs), a paraboloid on it, a free Hertz contact on steel (DC-FFT) at 3 ranks, a free contact
+on the coated body (frf-split) at 2 and 3 ranks, and the Hertz pressure on steel without [method]
+(name = "auto", which chooses DC-FFT as serially) at 2 ranks: summary.json has
 the serial run's keys and "ranks", the same iterations, and the load, approach, pressure,
 displacement and gap equal the serial run's to 1e-10 (the grids are below the nested start's 128
 cells a side, which the distributed solve does not take yet: docs/scale.md); displacement.csv
@@ -151,6 +152,18 @@ def refused(tmp, expect, scene_text):
         fail(f"not refused with \"{expect}\": exit {r.returncode}, {r.stderr!r}")
 
 
+def check_auto_choice(tmp):
+    """The homogeneous Hertz scene without [method] at 2 ranks: "auto" chose dcfft, as serially,
+    with the serial run's report of the choice."""
+    s, d = (json.loads((tmp / f"hertz_auto_{o}" / "summary.json").read_text())
+            for o in ("serial", "np2"))
+    if (d["method_requested"], d["method"]) != ("auto", "dcfft") or d["method"] != s["method"]:
+        fail(f"hertz_auto: {d['method_requested']} chose {d['method']} (serial {s['method']})")
+    if d["auto"]["method"] != s["auto"]["method"]:
+        fail(f"hertz_auto: the choice's report {d['auto']['method']} (serial {s['auto']['method']})")
+    print(f"hertz_auto at 2 ranks: \"auto\" chose {d['method']}, as serially")
+
+
 def check_topography_by_gap(tmp, heights, nx, ny):
     """A measured topography, refused under mpirun: its gap from `coatfft topography --gap` as a
     height map at 3 ranks gives the serial topography scene's contact (tilted, detrended)."""
@@ -206,6 +219,8 @@ def main():
         # frf-split, cell averages on 97 rows: at 3 ranks the second starts on row 33, whose 2 x 2
         # blocks pair it with the first rank's last), and a pressure map read by rows.
         hertz_example = (SCENES / "hertz.toml").read_text()
+        # Without [method]: "auto", whose choice on a homogeneous body needs no reference.
+        hertz_auto = hertz_example[:hertz_example.index("[method]")]
         coated_example = (SCENES / "coated_hertz.toml").read_text()
         np.save(tmp / "p.npy", 1e8 * (heights - heights.min()))
         pressure_map = grid(nx, ny) + BODY + '[pressure]\nkind = "file"\npath = "p.npy"\n'
@@ -213,6 +228,7 @@ def main():
                                         ("hertz", hertz, (3,)), ("rough_float32", rough32, (3,)),
                                         ("coated_free", coated_free, (2, 3)),
                                         ("hertz_example", hertz_example, (3,)),
+                                        ("hertz_auto", hertz_auto, (2,)),
                                         ("coated_hertz_example", coated_example, (2, 3)),
                                         ("pressure_map", pressure_map, (3,)),
                                         ("rough_netcdf", rough + NETCDF, (3,)),
@@ -227,6 +243,7 @@ def main():
                     fail(f"{name} at {ranks} ranks: {r.stderr}")
                 check_equal(name, tmp / f"{name}_serial", out, ranks)
 
+        check_auto_choice(tmp)
         check_topography_by_gap(tmp, heights, nx, ny)
 
         # A wisdom file: written by rank 0 with every rank's plans, read again by the next run.
@@ -246,7 +263,8 @@ def main():
                 coated_free.replace('name = "frf-split"', 'name = "dcfft"'))
         refused(tmp, 'name = "frf-dcfft" on a free boundary',
                 coated_free.replace('name = "frf-split"', 'name = "frf-dcfft"'))
-        refused(tmp, '[method] name = "auto"', hertz.replace('name = "dcfft"', 'name = "auto"'))
+        refused(tmp, '[method] name = "auto" on a free boundary of a coated body',
+                coated_free.replace('name = "frf-split"', 'name = "auto"'))
         refused(tmp, "the contact reaches the domain edge", hertz.replace("load = 0.5", "load = 500.0"))
         np.savetxt(tmp / "p.csv", 1e8 * (heights - heights.min()), delimiter=",")
         refused(tmp, "[pressure] path", pressure_map.replace("p.npy", "p.csv"))

@@ -10,6 +10,7 @@
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 #include "contact/contact_solver.hpp"
 #include "contact/indenter.hpp"
@@ -18,6 +19,7 @@
 #include "convolution/kernels/periodic_kernel.hpp"
 #include "convolution/kernels/split_frf_kernel.hpp"
 #include "convolution/operators/dcfft_operator.hpp"
+#include "convolution/operators/make_operator.hpp"
 #include "convolution/operators/periodic_operator.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
@@ -27,6 +29,7 @@
 #include "distributed/distributed_contact.hpp"
 #include "distributed/distributed_dcfft_operator.hpp"
 #include "distributed/distributed_periodic_operator.hpp"
+#include "distributed/make_distributed_operator.hpp"
 #include "distributed/self_affine_slab.hpp"
 #include "distributed/slab.hpp"
 #include "frf/frf.hpp"
@@ -169,6 +172,48 @@ TEST_CASE("the distributed DC-FFT operator equals the serial one on the free sur
     CHECK_FALSE(distributed.periodic());
     CHECK(distributed.method() == Method::dcfft);
   }
+}
+
+// The distributed factory against the serial one: for every method and boundary that runs
+// distributed, the operator make_operator builds for the same body and options (to rounding: the
+// transforms' orders of operations), and the same report; the others refused by name.
+TEST_CASE("make_distributed_operator builds make_operator's operator, or refuses by name") {
+  const Communicator comm = Communicator::world();
+  const Grid grid(24, 20, 1e-3, 0.8e-3);
+  const LayerStack homogeneous({}, steel);
+  const LayerStack coated({Coating{tin, 20e-6, Interface::bonded}}, steel);
+  const Field p = random_pressure(grid, 7);
+  for (const auto& [body, method, boundary] :
+       {std::tuple{&homogeneous, Method::dcfft, Boundary::free},
+        std::tuple{&coated, Method::frf_split, Boundary::free},
+        std::tuple{&coated, Method::frf_split, Boundary::periodic},
+        std::tuple{&homogeneous, Method::dcfft, Boundary::periodic}}) {
+    OperatorOptions options;
+    options.method = method;
+    options.boundary = boundary;
+    const BuiltOperator serial = make_operator(grid, *body, options);
+    const BuiltDistributedOperator distributed =
+        make_distributed_operator(comm, grid, *body, options);
+    INFO(to_string(method) << (boundary == Boundary::periodic ? ", periodic" : ", free"));
+    CHECK(distributed.report.method == serial.report.method);
+    CHECK(distributed.report.frf == serial.report.frf);
+    CHECK(distributed.op->periodic() == (boundary == Boundary::periodic));
+    const Field u = distributed.op->apply(rows_of(p, distributed.op->slab()));
+    CHECK(relative_difference(comm, u, rows_of(serial.op->apply(p), distributed.op->slab())) <
+          1e-12);
+  }
+  OperatorOptions pipeline;
+  pipeline.method = Method::frf_dcfft;
+  CHECK_THROWS_WITH(make_distributed_operator(comm, grid, coated, pipeline),
+                    Catch::Contains("\"frf-dcfft\" does not run distributed"));
+  pipeline.method = Method::direct;
+  CHECK_THROWS_WITH(make_distributed_operator(comm, grid, homogeneous, pipeline),
+                    Catch::Contains("\"direct\" does not run distributed"));
+  const OperatorOptions love;  // dcfft on a free boundary
+  CHECK_THROWS_WITH(make_distributed_operator(comm, grid, coated, love),
+                    Catch::Contains("homogeneous"));
+  CHECK_THROWS_WITH(make_distributed_operator(comm, grid, *make_frf(coated), love),
+                    Catch::Contains("a body given by its FRF takes \"frf-split\""));
 }
 
 TEST_CASE("the distributed frf-split operator equals the serial one on a coated free surface") {
