@@ -99,14 +99,12 @@ def differences(root):
     return found
 
 
-def main(root):
-    found = differences(root)
-    for line in found:
-        print(line)
-    print(f"folders_doc_check: {len(found)} difference(s)")
+def main(arguments):
+    root = Path(arguments[1]) if len(arguments) > 1 else Path(__file__).parent.parent
+    found = differences(root.resolve())
+    print("\n".join(found + [f"folders_doc_check: {len(found)} difference(s)"]))
     return 1 if found else 0
 
 
 if __name__ == "__main__":
-    sys.exit(main(Path(sys.argv[1] if len(sys.argv) > 1 else Path(__file__).parent.parent)
-                  .resolve()))
+    sys.exit(main(sys.argv))
