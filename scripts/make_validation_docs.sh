@@ -1,16 +1,16 @@
 #!/usr/bin/env bash
 # Builds coatfft (Release, with the validation table programs of tables/) and regenerates the
-# generated tables of docs/validation.md, all of them or those named:
-#   hertz_dcfft     docs/validation_hertz_dcfft.md and docs/validation.md's generated block
+# generated tables of docs/validation.md and docs/validation/, all of them or those named:
+#   hertz_dcfft     docs/validation/hertz_dcfft.md and docs/validation.md's generated block
 #                   hertz_dcfft (hertz_dcfft_table: DC-FFT vs Hertz)
-#   contact         docs/validation_contact.md          contact_table        (contact solver vs Hertz/punch)
-#   frf_pipelines   docs/validation_frf_pipelines.md    frf_pipelines_table  (Spinu 2021's FRF pipelines and g(0))
-#   split_kernel    docs/validation_split_kernel.md     split_kernel_table   (frf-split vs Hankel reference)
-#   hard_cases      docs/validation_hard_cases.md       hard_cases_table     (every FRF method on the hard bodies)
-#   pipeline_error  docs/validation_pipeline_error.md   pipeline_error_table (error model of the FRF pipelines)
-#   stress          docs/validation_stress.md           stress_table         (stresses at depth vs Johnson, Hamilton, Hankel)
-#   traction        docs/validation_traction.md         traction_table       (surface displacements under tangential tractions; sliding)
-#   rough_contact   docs/validation_rough_contact.md    rough_contact_table  (rough periodic contact: area against load, kappa;
+#   contact         docs/validation/contact.md          contact_table        (contact solver vs Hertz/punch)
+#   frf_pipelines   docs/validation/frf_pipelines.md    frf_pipelines_table  (Spinu 2021's FRF pipelines and g(0))
+#   split_kernel    docs/validation/split_kernel.md     split_kernel_table   (frf-split vs Hankel reference)
+#   hard_cases      docs/validation/hard_cases.md       hard_cases_table     (every FRF method on the hard bodies)
+#   pipeline_error  docs/validation/pipeline_error.md   pipeline_error_table (error model of the FRF pipelines)
+#   stress          docs/validation/stress.md           stress_table         (stresses at depth vs Johnson, Hamilton, Hankel)
+#   traction        docs/validation/traction.md         traction_table       (surface displacements under tangential tractions; sliding)
+#   rough_contact   docs/validation/rough_contact.md    rough_contact_table  (rough periodic contact: area against load, kappa;
 #                   and its plot docs/figures/rough_contact_area.png, scripts/plot_rough_contact.py)
 #   coated          docs/validation.md's generated block coated_convergence, from the existing
 #                   bench/results/sweep.csv (no program is run: scripts/run_benchmarks.sh runs the
@@ -42,16 +42,16 @@ trap 'rm -rf "$tmp"' EXIT
 for t in "${tables[@]}"; do
   case "$t" in
     hertz_dcfft)
-      "$build/tables/hertz_dcfft_table" docs/validation_hertz_dcfft.md --csv "$tmp/hertz_dcfft.csv"
+      "$build/tables/hertz_dcfft_table" docs/validation/hertz_dcfft.md --csv "$tmp/hertz_dcfft.csv"
       "$python" scripts/markdown_blocks.py docs/validation.md hertz_dcfft "$tmp/hertz_dcfft.csv" ;;
     coated)
       "$python" scripts/markdown_blocks.py docs/validation.md coated_convergence \
         bench/results/sweep.csv --view coated-convergence ;;
     rough_contact)
-      "$build/tables/rough_contact_table" docs/validation_rough_contact.md
-      "$python" scripts/plot_rough_contact.py docs/validation_rough_contact.md \
+      "$build/tables/rough_contact_table" docs/validation/rough_contact.md
+      "$python" scripts/plot_rough_contact.py docs/validation/rough_contact.md \
         docs/figures/rough_contact_area.png ;;
-    *) "$build/tables/${t}_table" "docs/validation_$t.md" ;;
+    *) "$build/tables/${t}_table" "docs/validation/$t.md" ;;
   esac
 done
 echo "regenerated: ${tables[*]}"

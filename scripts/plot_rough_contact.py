@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Plot the real contact area against the load of docs/validation_rough_contact.md.
+"""Plot the real contact area against the load of docs/validation/rough_contact.md.
 
 Input: the markdown that `rough_contact_table` writes; its table "Area against load: bare and
 coated steel" gives A/A0 at each p_m/(E* g) for steel, TiN 5 um on steel and a soft 5 um coating.
@@ -42,7 +42,7 @@ def read_body_table(path):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("table", nargs="?", type=pathlib.Path,
-                        default=ROOT / "docs" / "validation_rough_contact.md")
+                        default=ROOT / "docs" / "validation" / "rough_contact.md")
     parser.add_argument("out", nargs="?", type=pathlib.Path,
                         default=ROOT / "docs" / "figures" / "rough_contact_area.png")
     args = parser.parse_args()

@@ -1,11 +1,11 @@
-// Contact solver against closed forms on DC-FFT (docs/validation_contact.md):
+// Contact solver against closed forms on DC-FFT (docs/validation/contact.md):
 //  - Hertz sphere under load control: errors in the contact radius sqrt(A/pi), the peak pressure
 //    and the approach, and, under approach control at the Hertz approach, the error in the load;
 //  - rigid flat punch under approach control: error in the load against W = 2 a E* delta;
 //  - coated sphere on the frf-split operator: coating = substrate against the bare substrate,
 //    stiff and soft coatings, and the thick- and thin-coating limits (the coating's and the
 //    substrate's Hertz solutions).
-// Writes docs/validation_contact.md and prints the same Markdown.
+// Writes docs/validation/contact.md and prints the same Markdown.
 //
 // --check: the Hertz and punch rows at N = 64 and 128 and the coated rows that the trends rest
 // on, held to the bounds of the contact tests: Hertz a within dx/2, p0 and delta within
@@ -448,5 +448,5 @@ int main(int argc, char** argv) {
   return tables::table_main(
       argc, argv,
       {"contact_table", "Contact solver against Hertz and the flat punch; coated contact trends",
-       "docs/validation_contact.md", check, write_table});
+       "docs/validation/contact.md", check, write_table});
 }

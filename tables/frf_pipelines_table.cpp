@@ -8,7 +8,7 @@
 //  3. the g(0) quadrature-tolerance sweep (Spinu 2021, Fig. 3(b)): time and error of the plain
 //     adaptive quadrature against the regularized value, and the resulting displacement error;
 //  4. the cost of the regularized g(0) for each FRF class of frf/.
-// Writes docs/validation_frf_pipelines.md.
+// Writes docs/validation/frf_pipelines.md.
 //
 // --check: N = 64, alpha = 2, 4, 8 (section 2's rows): the local errors of both pipelines within
 // 0.1 percentage point of docs/theory.md's 4.3 table (an independent numpy implementation, 2
@@ -399,5 +399,5 @@ int main(int argc, char** argv) {
       argc, argv,
       {"frf_pipelines_table",
        "frf-spectral and frf-dcfft (Spinu 2021) on Hertz over a half-space; g(0)",
-       "docs/validation_frf_pipelines.md", check, write_table});
+       "docs/validation/frf_pipelines.md", check, write_table});
 }

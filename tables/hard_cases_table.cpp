@@ -3,7 +3,7 @@
 // and frictionless) or in the substrate), on grids of 64^2 and 1024^2 cells: cell-averaged Hertz
 // pressure through frf-spectral and frf-dcfft (Spinu 2021; regularized g(0), alpha = 2, 4, 16)
 // and frf-split, against the continuous Hankel displacement at the cell centres nearest
-// r/a = 0, 0.5, 2. Writes docs/validation_hard_cases.md; exits 1 if any value of u is NaN or Inf
+// r/a = 0, 0.5, 2. Writes docs/validation/hard_cases.md; exits 1 if any value of u is NaN or Inf
 // (or a method throws).
 //
 // --check: N = 64, alpha = 2 and 16 and frf-split on every body; requires finite values and, at
@@ -314,5 +314,5 @@ int main(int argc, char** argv) {
   return tables::table_main(
       argc, argv,
       {"hard_cases_table", "Every FRF method on hard coated bodies against the Hankel reference",
-       "docs/validation_hard_cases.md", check, write_table});
+       "docs/validation/hard_cases.md", check, write_table});
 }

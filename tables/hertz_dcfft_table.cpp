@@ -154,7 +154,7 @@ int main(int argc, char** argv) {
       argc, argv,
       {"hertz_dcfft_table",
        "DC-FFT on the Hertz pressure against the closed form, N = 32 ... 512",
-       "docs/validation_hertz_dcfft.md",
+       "docs/validation/hertz_dcfft.md",
        check,
        [&](const std::string& output) { return write_table(output, csv_path); },
        {{"--csv", "Also write the errors as a CSV (# key = value headers)", &csv_path}}});

@@ -10,7 +10,7 @@
 //     five other loads;
 //  4. the thin domain 4 mm x 40 um on 64^2 cells (dx/dy = 100) with TiN 2 um on steel;
 //  5. the cost of the prediction against that of the operator.
-// Writes docs/validation_pipeline_error.md.
+// Writes docs/validation/pipeline_error.md.
 //
 // --check: the prediction equals the measured error to 1e-9 where the grid is its own proxy (64^2
 // square, the thin domain), within 2 % on 256^2 (square and thin: convergence in N), within 1e-3
@@ -590,5 +590,5 @@ int main(int argc, char** argv) {
       argc, argv,
       {"pipeline_error_table",
        "Error model of frf-spectral and frf-dcfft (Spinu 2021): predicted against measured",
-       "docs/validation_pipeline_error.md", check, write_table});
+       "docs/validation/pipeline_error.md", check, write_table});
 }

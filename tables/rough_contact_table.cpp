@@ -3,7 +3,7 @@
 // rigid flat, periodic boundaries (convolution/operators/periodic_operator.hpp), load control. In
 // the near-linear regime of small loads, A/A0 = kappa p_m/(E* g), g the rms slope; published kappa
 // is about 2 (Persson 2001: sqrt(8/pi) = 1.6 at vanishing load; Hyun et al. 2004: 1.9-2.2 for
-// H = 0.3-0.8 on finely resolved surfaces). Writes docs/validation_rough_contact.md.
+// H = 0.3-0.8 on finely resolved surfaces). Writes docs/validation/rough_contact.md.
 //
 // --check on a 256^2 surface with a short cut-off of 32 cells (a few seconds): kappa within
 // [1.6, 2.8] (2.37 measured), A/A0 increasing with the load, a thin stiff coating in less contact
@@ -128,7 +128,7 @@ std::string write_body_table() {
   for (const auto& c : curves)
     for (const Point& p : c) most = std::max(most, p.iterations);
   md << "\nEvery solve converged to 1e-10 (at most " << most << " iterations).\n\n"
-     << "![A/A0 against p_m/(E* g) for the three bodies](figures/rough_contact_area.png)\n\n"
+     << "![A/A0 against p_m/(E* g) for the three bodies](../figures/rough_contact_area.png)\n\n"
      << "(docs/figures/rough_contact_area.png, drawn from this table by "
         "scripts/plot_rough_contact.py.)\n";
   return md.str();
@@ -181,5 +181,5 @@ int main(int argc, char** argv) {
   return tables::table_main(
       argc, argv,
       {"rough_contact_table", "Rough contact on periodic surfaces: area against load",
-       "docs/validation_rough_contact.md", check, write_table});
+       "docs/validation/rough_contact.md", check, write_table});
 }

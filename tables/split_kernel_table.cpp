@@ -2,7 +2,7 @@
 // coated and layered bodies under a Hertz pressure: DC-FFT with the split kernel against the
 // continuous Hankel-integral displacement (validation/hankel_displacement.hpp), over a sweep of
 // modulus ratio, thickness, Poisson's ratio, interface and two-coating stacks, with frf-dcfft of
-// Spinu (2021) (alpha = 2 and 4) alongside. Writes docs/validation_split_kernel.md (--quick: a
+// Spinu (2021) (alpha = 2 and 4) alongside. Writes docs/validation/split_kernel.md (--quick: a
 // reduced sweep and no further sections).
 //
 // The discrete problem: cell-averaged Hertz pressure (exact cell forces), cell size a/32, N = 129
@@ -452,7 +452,7 @@ int main(int argc, char** argv) {
       argc, argv,
       {"split_kernel_table",
        "frf-split on coated Hertz cases against the continuous Hankel displacement",
-       "docs/validation_split_kernel.md",
+       "docs/validation/split_kernel.md",
        check,
        [&](const std::string& output) { return write_table(output, quick); },
        {{"--quick", "A reduced sweep and no further sections (partial file)", nullptr, &quick}}});

@@ -5,7 +5,7 @@
 // Hankel integrals of the depth FRFs for coated bodies (validation/axisymmetric_stress.hpp). The
 // load is the cell-averaged one (exact cell forces) on grids of cell a/m with the origin a cell
 // centre (N = 4m + 1), so the error left is the piecewise-constant load plus the kernel's.
-// Writes docs/validation_stress.md.
+// Writes docs/validation/stress.md.
 //
 // --check: at a/16 (the errors are the load's discretisation, O(dx^2): four times those at a/32
 // of the table), the homogeneous Hertz row y = 0 within 2e-3 p0 at z = a/4 and a (1.6e-3 and
@@ -259,7 +259,7 @@ std::string section_coated(int m) {
   return md.str();
 }
 
-// The hard bodies of docs/validation_hard_cases.md, on planes a cell or more deep.
+// The hard bodies of docs/validation/hard_cases.md, on planes a cell or more deep.
 std::string section_hard() {
   const Material s(1e11, 0.3);
   struct Hard {
@@ -469,5 +469,5 @@ int main(int argc, char** argv) {
   return tables::table_main(
       argc, argv,
       {"stress_table", "Stresses inside the body against independent references",
-       "docs/validation_stress.md", check, write_table});
+       "docs/validation/stress.md", check, write_table});
 }

@@ -13,7 +13,7 @@
 //    amount of order beta mu (Johnson 1985, section 7.2).
 // Loads are cell averages (exact cell forces) on grids of cell a/m with N = 4m + 1 cells a side
 // (the origin a cell centre), so the error left is the piecewise-constant load's plus the
-// kernels'. Writes docs/validation_traction.md.
+// kernels'. Writes docs/validation/traction.md.
 //
 // --check, at the tolerances of the measured values: at a/16 the half-space within 2e-3 u_x(0) of
 // Johnson (1.4e-3 measured) and the disk's centre within 7e-4 of Cerruti (3.4e-4; the Hankel
@@ -763,5 +763,5 @@ int main(int argc, char** argv) {
   return tables::table_main(
       argc, argv,
       {"traction_table", "Surface displacements under tangential tractions against references",
-       "docs/validation_traction.md", check, write_table});
+       "docs/validation/traction.md", check, write_table});
 }

@@ -78,7 +78,7 @@ load = 10.0
 )";
 
 // TiN 2 um on steel by frf-spectral on 64^2 square cells: Spinu's (2021) pipeline at alpha = 2 is
-// about 2.5 % off (docs/validation_frf_pipelines.md), so the run warns.
+// about 2.5 % off (docs/validation/frf_pipelines.md), so the run warns.
 inline const char* kPipelineWarningScene = R"([grid]
 nx = 64
 ny = 64

@@ -132,7 +132,7 @@ TEST_CASE("bench_sweep --tiny writes a complete, consistent CSV", "[bench_sweep]
   }
   // Spinu (2021), section 5: "even with a coarse mesh of 32 x 32, the error is kept under 1.5%";
   // our centre-sampled Hertz load gives 3.5e-3 against the closed form (docs/
-  // validation_hertz_dcfft.md), and the discretisation error must shrink from 32 to 64.
+  // validation/hertz_dcfft.md), and the discretisation error must shrink from 32 to 64.
   CHECK(find("dcfft", 32, 0.0, "none").max_err < 1.5e-2);
   CHECK(find("dcfft", 64, 0.0, "none").max_err < 0.5 * find("dcfft", 32, 0.0, "none").max_err);
   // FRF pipelines: periodicity error ~ 1/alpha (docs/theory.md 4.3: 2.5% of u(0) at alpha = 2,
@@ -170,7 +170,7 @@ TEST_CASE("bench_figures --tiny writes the data of the figures of Spinu (2021)",
     max_abs = std::max(max_abs, std::abs(std::stod(split(line)[2])));
   }
   CHECK(data == 64 * 64);
-  // Same bound as the sweep's dcfft row at N = 64 (8.6e-4, docs/validation_hertz_dcfft.md).
+  // Same bound as the sweep's dcfft row at N = 64 (8.6e-4, docs/validation/hertz_dcfft.md).
   CHECK(max_abs < 1e-3);
   CHECK(max_abs > 1e-4);
 }

@@ -395,7 +395,7 @@ TEST_CASE("messages: version, unknown command, one contact-edge line", "[cli][sa
 
 TEST_CASE("the FRF pipelines warn above 1e-2 predicted error and refuse above 1", "[cli][safety]") {
   // TiN 2 um on steel, 64 x 64 cells. Square cells: Spinu's (2021) pipelines at alpha = 2 are
-  // about 2.5 % off (docs/validation_frf_pipelines.md), so a warning with the prediction. Cells
+  // about 2.5 % off (docs/validation/frf_pipelines.md), so a warning with the prediction. Cells
   // with dx/dy = 100: the pipelines' result is off by more than max |u| itself; refused, with
   // the exact method named.
   const std::string base = kPipelineWarningScene;

@@ -156,7 +156,7 @@ TEST_CASE("example hertz.toml: DC-FFT within the grid's error of Hertz", "[examp
   const double h_over_a = scene.grid.dx() / load.radius;  // 0.046 on 65 cells over 3a
 
   // Centre sampling (this scene's) makes an O(h) error at the load's edge that swings with
-  // where the circle cuts the cells: docs/validation_hertz_dcfft.md has 8.6e-4 at N = 64 (0.018
+  // where the circle cuts the cells: docs/validation/hertz_dcfft.md has 8.6e-4 at N = 64 (0.018
   // h/a) and 3.5e-3 at N = 32 (0.038 h/a); on the odd grids of this domain from 33 to 129 cells
   // it is 0.018 h/a to 0.099 h/a (N = 39), and at this scene's N = 65 1.36e-3 (0.029 h/a),
   // above the N = 64 row. The bound is that envelope, 0.1 h/a (4.6e-3 here).

@@ -52,7 +52,7 @@ void check_axis_modes(const Grid& g, const LayerStack& body) {
   }
   // An oblique wavevector: the double series to |p|, |q| <= 400, whose truncation (it converges
   // like 1/P, the sign flips make it far closer) left 1.4e-8 of a cell's displacement
-  // (docs/validation_traction.md).
+  // (docs/validation/traction.md).
   const auto a = alias_sum(g, r, 2, 1, 400, 400);
   for (int c = 0; c < 6; ++c) {
     INFO("oblique mode, kernel " << c);

@@ -25,7 +25,7 @@ const LayerStack bare(steel);
 const LayerStack tin({Coating{material_by_name("titanium_nitride"), 2e-6, Interface::bonded}},
                      steel);
 // A stiff coating as thick as the reference load's radius (L = 3 mm, a = 1 mm): the regime where
-// the coating raises the error most (docs/validation_pipeline_error.md, section 3).
+// the coating raises the error most (docs/validation/pipeline_error.md, section 3).
 const LayerStack stiff({Coating{Material(2100e9, 0.3), 1e-3, Interface::bonded}}, steel);
 
 // The error of `method` on `grid` measured directly, through make_operator with its defaults,
@@ -70,7 +70,7 @@ TEST_CASE("a grid that is its own proxy is predicted exactly", "[pipeline_error]
 
 TEST_CASE("on a larger grid the 64-cell proxy is within its convergence in N", "[pipeline_error]") {
   // The pipelines' error is a periodisation error, nearly independent of N: 64 cells across the
-  // shorter side are converged to ~1 % at alpha = 2 (docs/validation_pipeline_error.md,
+  // shorter side are converged to ~1 % at alpha = 2 (docs/validation/pipeline_error.md,
   // section 2), so 2 % is the bound. The thin domain at 256^2 keeps its 256 cells along x
   // (cells no smaller than ly/64), where the reference load spans under a cell.
   const Grid square(256, 256, 3e-3, 3e-3);
@@ -93,7 +93,7 @@ TEST_CASE("the model flags cells of aspect ratio 100 and gives ~2 % on square ce
   for (const Method method : pipelines) {
     INFO(to_string(method));
     // Measured: +120 % at the centre and negative displacements
-    // (docs/validation_pipeline_error.md).
+    // (docs/validation/pipeline_error.md).
     CHECK(predicted_pipeline_error(thin, method, 2.0) > 1.0);
     CHECK(predicted_pipeline_error(thin, *tin_frf, method, 2.0) > 1.0);
     const double e2 = predicted_pipeline_error(square, method, 2.0);

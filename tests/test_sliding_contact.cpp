@@ -60,7 +60,7 @@ TEST_CASE("sliding contact: the coupling iterated to its fixed point", "[contact
   CHECK(r.pressure_change <= 1e-9);
   CHECK(r.solves >= 4);  // a contraction by about beta mu = 0.07 per solve from 1 to 1e-9
   // The largest change sits at the contact's moving rim and grows as cells resolve it (2.1 beta
-  // mu at 65^2, 3.2 at 257^2: docs/validation_traction.md); the centroid's shift does not
+  // mu at 65^2, 3.2 at 257^2: docs/validation/traction.md); the centroid's shift does not
   // (-0.48 beta mu a on every grid there).
   CHECK(r.pressure_shift > 0.3 * beta * mu);
   CHECK(r.pressure_shift < 3.0 * beta * mu);

@@ -23,7 +23,7 @@ namespace {
 constexpr const char* estimate_name = "predicted_pipeline_error";
 
 // Cells across the shorter side of the proxy: the homogeneous error is converged in N there to
-// ~1 % at alpha = 2 and 4 and ~4 % at alpha = 8 (docs/validation_pipeline_error.md, section 2).
+// ~1 % at alpha = 2 and 4 and ~4 % at alpha = 8 (docs/validation/pipeline_error.md, section 2).
 constexpr double proxy_cells = 64.0;
 // Points of the extended lattice max(alpha, 2)^2 px py of a proxy (8 MiB per real array): 64^2
 // cells up to alpha = 11, beyond which the proxy is coarsened rather than made expensive.
@@ -178,7 +178,7 @@ double coated_error(const PipelineErrorProxy& proxy, const Frf& frf, Method meth
 // (a the reference load's radius), where the load's spectrum has fallen to a few percent: the
 // coating is then too thin (or the body too nearly homogeneous) to change the error, which the
 // homogeneous model gives at a fraction of the split kernel's cost. TiN 2 um under a 1 mm load
-// passes (FRF model within 0.5 % of the homogeneous one, docs/validation_pipeline_error.md); a
+// passes (FRF model within 0.5 % of the homogeneous one, docs/validation/pipeline_error.md); a
 // half-space passes exactly.
 bool homogeneous_enough(const Frf& frf, const PipelineErrorProxy& proxy) {
   const double c0 = frf.c0();

@@ -8,7 +8,7 @@ A Hertz pressure (p0 = 1 GPa, a = 0.5 mm) is cell-averaged on an N x N grid over
 (40 planes) of each body; their rows y = 0 make the section. For the half-space the shear stress
 (sigma_1 - sigma_3)/2 on the axis has Johnson's (1985) closed form (eq. 3.45; largest, 0.310 p0,
 at z = 0.48a); the check is that form within 1e-3 p0 on every plane from z = a/4 down (the load
-is discretised at dx = a/24: docs/validation_stress.md measures 4e-4 p0 at a/32, 1.6e-3 at
+is discretised at dx = a/24: docs/validation/stress.md measures 4e-4 p0 at a/32, 1.6e-3 at
 a/16, at z = a/4).
 
 Run: /usr/bin/python3 examples/python/coating_stresses.py [--out DIR] [--n N]

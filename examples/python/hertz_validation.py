@@ -14,7 +14,7 @@ u_H the closed-form displacement of the continuous load (Johnson 1985, eq. 3.41a
 
 The bound: the operator is exact to rounding, so the error is the load's discretisation: the
 centre-sampled pressure, whose square-root edge at r = a no cell resolves. It decreases about
-like dx (docs/validation_hertz_dcfft.md, N = 32 ... 512: 3.5e-3 ... 9.5e-5, orders 0.7 to 2
+like dx (docs/validation/hertz_dcfft.md, N = 32 ... 512: 3.5e-3 ... 9.5e-5, orders 0.7 to 2
 between successive grids) and stays below 0.05 dx/a over that table (its largest ratio to dx/a
 is 0.038, at N = 32; 0.013-0.020 from N = 64 on). The check is that bound, 1.2e-3 at N = 128
 (measured: 4.7e-4, the table's value).

@@ -182,7 +182,7 @@ def test_surface_displacements_against_johnson(steel):
     # The Hertz-type traction q0 sqrt(1 - r^2/a^2) along x on a half-space (Johnson 1985, section
     # 3.6): u_x = pi q0/(32 G a) [4 (2 - nu) a^2 - (4 - 3 nu) x^2 - (4 - nu) y^2] and
     # u_y = pi q0/(32 G a) 2 nu x y for r <= a. The cell-averaged load at a/16 leaves 1.4e-3 of
-    # u_x(0) (docs/validation_traction.md); inside the contact less.
+    # u_x(0) (docs/validation/traction.md); inside the contact less.
     grid, q = hertz_case()
     ux, uy, uz = coatfft.surface_displacements(steel, grid, np.zeros_like(q), qx=q)
     assert ux.shape == uy.shape == uz.shape == (65, 65)
