@@ -68,6 +68,7 @@
 #include "model/body_reduction.hpp"
 #include "model/cost_model.hpp"
 #include "model/grid_refinement.hpp"
+#include "model/operator_plan.hpp"
 #include "stress/stress_invariants.hpp"
 #include "stress/stress_kernel.hpp"
 #include "stress/stress_operator.hpp"

@@ -37,7 +37,7 @@ void check_command(const CheckOptions& options) {
   run.max_memory = options.max_memory;
   scene::PreparedScene prepared = scene::prepare_scene(options.scene, run);
   scene::Scene& scene = prepared.scene;
-  const std::optional<scene::AutomaticChoice>& automatic = prepared.automatic;
+  const std::optional<AutomaticChoice>& automatic = prepared.automatic;
   const double applications = scene::expected_applications(scene, run.repeat);
   if (scene.pressure) {  // reads and checks the loads as run does
     const Field pressure = scene::scene_pressure(scene);
@@ -47,7 +47,7 @@ void check_command(const CheckOptions& options) {
   report.method = scene.method.options.method;
   report.predicted_error = predicted_error(scene);
   if (report.predicted_error) report.alpha = scene.method.options.alpha;
-  scene::refuse_untrustworthy(report);
+  refuse_untrustworthy(report, "[method] name");
 
   const Grid& grid = scene.grid;
   const MemoryNeed memory = scene::estimate_memory(scene);
@@ -78,7 +78,7 @@ void check_command(const CheckOptions& options) {
   out["available_memory_bytes"] = available ? nlohmann::json(*available) : nlohmann::json();
   if (report.predicted_error) out["predicted_error"] = *report.predicted_error;
   if (automatic) out["predicted_error"] = out["auto"]["predicted_error"];
-  out["warnings"] = scene::operator_warnings(report);
+  out["warnings"] = operator_warnings(report);
   if (const auto* table = dynamic_cast<const TabulatedFrf*>(scene.frf.get()))
     for (const std::string& warning : table->warnings())
       out["warnings"].push_back("[frf] " + warning);

@@ -25,6 +25,14 @@ Method parse_method(std::string_view name) {
   return detail::parse_name(name, all_methods);
 }
 
+std::string_view to_string(Boundary boundary) {
+  return boundary == Boundary::periodic ? "periodic" : "free";
+}
+
+Boundary parse_boundary(std::string_view name) {
+  return detail::parse_name(name, std::array{Boundary::free, Boundary::periodic});
+}
+
 bool uses_love_coefficients(Method method) {
   return method == Method::direct || method == Method::dcfft;
 }

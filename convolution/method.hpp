@@ -13,6 +13,14 @@ namespace coatfft {
 /// operator factory takes it: the surface's, the tangential and the stress operator.
 enum class Boundary { free, periodic };
 
+/// The boundary's name in scene files ([grid] boundary), Python's keyword and reports: "free",
+/// "periodic".
+std::string_view to_string(Boundary boundary);
+
+/// The Boundary named `name` (as to_string writes it); throws InvalidArgument
+/// ("\"x\" is not one of \"free\", \"periodic\"") otherwise.
+Boundary parse_boundary(std::string_view name);
+
 enum class Method {
   direct,        ///< brute-force sum of Love's coefficients (reference; homogeneous only)
   dcfft,         ///< DC-FFT of Love's coefficients (Liu, Wang & Liu 2000; homogeneous only)

@@ -25,7 +25,6 @@ constexpr double rounding_error = 1e-13;
 // frf-split's operator error per unit of its kernel tolerance: at most 0.05 over the coated
 // cases of bench_auto_calibration (docs/auto.md section 1); taken as 0.1.
 constexpr double split_error_per_tolerance = 0.1;
-constexpr std::ptrdiff_t direct_max_cells = 65536;
 // Why a candidate is left out of a distributed choice (AutoRequest::distributed).
 constexpr const char* not_distributed = "does not run distributed";
 
@@ -63,8 +62,9 @@ MethodCandidate love_candidate(const Context& x, Method method) {
   if (method == Method::direct) {
     c.setup_seconds = predicted_love_setup_seconds(x.grid, 1, 1);
     c.apply_seconds = predicted_direct_apply_seconds(x.grid);
-    c.admissible = cells <= direct_max_cells;
-    c.note = c.admissible ? "exact, O(N^2) per application" : "more than 65536 cells";
+    c.admissible = cells <= static_cast<double>(max_direct_cells);
+    c.note = c.admissible ? "exact, O(N^2) per application"
+                          : detail::concat("more than ", max_direct_cells, " cells");
   } else {
     c.setup_seconds = predicted_love_setup_seconds(x.grid, x.fft_nx, x.fft_ny);
     c.apply_seconds = predicted_dcfft_apply_seconds(x.fft_nx, x.fft_ny, x.threads);

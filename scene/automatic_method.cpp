@@ -43,11 +43,6 @@ std::vector<ReferenceLoad> contact_loads(const Scene& scene, const ContactSpec& 
 
 }  // namespace
 
-std::vector<ReferenceLoad> unknown_load_references(const Grid& grid) {
-  return {{AxisymmetricLoad::hertz, std::max(grid.dx(), grid.dy())},
-          {AxisymmetricLoad::hertz, 0.5 * std::min(grid.lx(), grid.ly())}};
-}
-
 std::vector<ReferenceLoad> reference_loads(const Scene& scene) {
   const Grid& grid = scene.grid;
   std::vector<ReferenceLoad> loads;
@@ -63,49 +58,6 @@ std::vector<ReferenceLoad> reference_loads(const Scene& scene) {
   return loads;
 }
 
-AutomaticChoice choose_automatically(const Grid& grid, const LayerStack& body,
-                                     std::vector<ReferenceLoad> loads, AutoRequest request) {
-  AutomaticChoice choice;
-  choice.applications = request.applications;
-  choice.reference_loads = std::move(loads);
-  choice.reduction = reduce_body(body, choice.reference_loads, reduction_share * request.tolerance);
-  request.tolerance -= choice.reduction->estimated_effect;
-  choice.method = choose_method(grid, choice.reduction->body, request);
-  return choice;
-}
-
-AutomaticChoice choose_automatically(const Grid& grid, const Frf& frf,
-                                     std::vector<ReferenceLoad> loads, const AutoRequest& request) {
-  AutomaticChoice choice;
-  choice.applications = request.applications;
-  choice.reference_loads = std::move(loads);
-  choice.method = choose_method(grid, frf, request);
-  return choice;
-}
-
-namespace {
-
-// A periodic "auto" is the exact method of its body (method_request.hpp). A coating thinner than
-// a hundredth of a cell is first reduced as the free path's choice reduces it (reduce_body, for
-// the scene's reference loads; the closed-form bound decides, with no quadrature): the periodic
-// kernel would otherwise resolve the FRF out to k ~ 1/h (1e13 rad/m for a picometre film) and
-// refuse, for an effect far below the tolerance.
-void reduce_thin_periodic_body(Scene& scene) {
-  MethodSpec& m = scene.method;
-  const LayerStack& body = *scene.body;
-  const double cell = std::min(scene.grid.dx(), scene.grid.dy());
-  const bool thin = std::any_of(body.coatings().begin(), body.coatings().end(),
-                                [&](const Coating& c) { return c.thickness < 1e-2 * cell; });
-  if (!thin) return;
-  const BodyReduction r = reduce_body(body, reference_loads(scene), reduction_share * m.tolerance);
-  if (r.kind == "none") return;
-  m.reduced_body = r.body;
-  m.options.method = exact_method(r.body);
-  m.reduction_note = r.why;
-}
-
-}  // namespace
-
 double expected_applications(const Scene& scene, int repeat) {
   return scene.contact ? contact_applications : static_cast<double>(repeat);
 }
@@ -113,24 +65,23 @@ double expected_applications(const Scene& scene, int repeat) {
 std::optional<AutomaticChoice> resolve_automatic_method(Scene& scene, double applications,
                                                         bool distributed) {
   MethodSpec& m = scene.method;
-  if (m.auto_periodic && scene.body) reduce_thin_periodic_body(scene);
-  if (!m.automatic) return std::nullopt;
-  AutoRequest request;
-  request.tolerance = m.tolerance;
-  request.applications = applications;
-  request.max_threads = m.options.threads;
-  request.planning = m.options.planning;
-  request.first_in_process = true;  // a command-line run builds one operator
-  request.distributed = distributed;
-  AutomaticChoice choice =
-      scene.frf ? choose_automatically(scene.grid, *scene.frf, reference_loads(scene), request)
-                : choose_automatically(scene.grid, *scene.body, reference_loads(scene), request);
-  if (choice.reduction && choice.reduction->kind != "none") m.reduced_body = choice.reduction->body;
-  // g(0) omitted is the scene's own choice (a load-controlled contact without the approach).
-  const G0Method g0 = m.options.g0;
-  m.options = choice.method.options;
-  m.options.g0 = g0;
-  return choice;
+  OperatorRequest request;
+  request.automatic = m.automatic || m.auto_periodic;
+  request.options = m.options;
+  AutoRequest& choice = request.automatic_request;
+  choice.tolerance = m.tolerance;
+  choice.applications = applications;
+  choice.max_threads = m.options.threads;
+  choice.planning = m.options.planning;
+  choice.first_in_process = true;  // a command-line run builds one operator
+  choice.distributed = distributed;
+  if (request.automatic) request.loads = reference_loads(scene);
+  OperatorPlan plan = scene.frf ? plan_operator(scene.grid, *scene.frf, request)
+                                : plan_operator(scene.grid, *scene.body, request);
+  m.options = plan.options;
+  if (plan.reduced_body) m.reduced_body = std::move(plan.reduced_body);
+  if (!plan.reduction_note.empty()) m.reduction_note = plan.reduction_note;
+  return std::move(plan.choice);
 }
 
 namespace {

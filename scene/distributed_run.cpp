@@ -191,9 +191,6 @@ PreparedScene prepare_distributed_scene(const Communicator& comm,
     check_distributable(*scene);
     automatic =
         resolve_automatic_method(*scene, expected_applications(*scene, options.repeat), true);
-    // The serial run's refusal, before the set-up here (its operator is built otherwise).
-    if (!scene->periodic && !scene->frf)
-      check_love_body(*scene->body, scene->method.options.method);
     if (scene->pressure && scene->pressure->kind == PressureKind::file)
       io::check_grid_npy(scene->pressure->file, scene->grid, "[pressure] path", "a pressure");
   });

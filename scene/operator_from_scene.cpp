@@ -39,30 +39,12 @@ void refuse_periodic_kernel(const Scene& scene, const LayerStack& body,
 }
 
 BuiltOperator operator_from_scene(const Scene& scene) {
-  BuiltOperator built = build_scene_operator(scene, [&](const auto& body) {
-    return make_operator(scene.grid, body, scene.method.options);
+  // The plan is resolve_automatic_method's, held in scene.method: its options, and the body
+  // build_scene_operator picks (the reduced one, if any).
+  const OperatorPlan plan{scene.method.options, std::nullopt, {}, std::nullopt};
+  return build_scene_operator(scene, [&](const auto& body) {
+    return build_operator(scene.grid, body, plan, "[method] name");
   });
-  refuse_untrustworthy(built.report);
-  return built;
-}
-
-void refuse_untrustworthy(const OperatorReport& report, std::string_view who) {
-  const std::optional<double> error = report.predicted_error;
-  COATFFT_REQUIRE(!error || *error <= pipeline_refusal_error, who, " = \"",
-                  to_string(report.method), "\": predicted error ", *error,
-                  " of max |u| on these cells with alpha = ", report.alpha.value_or(0),
-                  " (docs/theory.md 4.6): the result would be meaningless; use \"frf-split\" "
-                  "(exact on any cells) or square cells and a larger alpha");
-}
-
-std::vector<std::string> operator_warnings(const OperatorReport& report) {
-  std::vector<std::string> warnings;
-  if (report.predicted_error && *report.predicted_error > pipeline_warning_error)
-    warnings.push_back(detail::concat(
-        "method ", to_string(report.method), ": predicted error ", *report.predicted_error,
-        " of max |u| (periodisation of the FRF pipelines at alpha = ", report.alpha.value_or(0),
-        ", docs/theory.md 4.6); \"frf-split\" is exact, or raise alpha"));
-  return warnings;
 }
 
 nlohmann::json operator_report_json(const OperatorReport& report) {

@@ -1,7 +1,8 @@
 #pragma once
-// The scene's operator: make_operator on the scene's grid, body and [method] options (which
-// writes no file: the program loads and saves the FFTW wisdom file around it, cli/wisdom_file.hpp),
-// and the operator's report as the keys of summary.json.
+// The scene's operator: the library's build_operator (model/operator_plan.hpp) on the scene's
+// grid, body and [method] options as planned by resolve_automatic_method (which writes no file:
+// the program loads and saves the FFTW wisdom file around it, cli/wisdom_file.hpp), and the
+// operator's report as the keys of summary.json.
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
@@ -9,6 +10,7 @@
 
 #include "convolution/operators/make_operator.hpp"
 #include "core/error.hpp"
+#include "model/operator_plan.hpp"
 #include "scene/scene.hpp"
 
 namespace coatfft::scene {
@@ -18,12 +20,6 @@ namespace coatfft::scene {
 std::string read_wisdom_file(const std::filesystem::path& path);
 /// Whether `text` is FFTW wisdom, by its first characters.
 bool holds_fftw_wisdom(const std::string& text);
-
-/// Thresholds on the predicted error of the FRF pipelines frf-spectral and frf-dcfft
-/// (OperatorReport::predicted_error, docs/theory.md 4.6), relative to max |u|: above the first a
-/// run warns, above the second its result cannot be trusted at all and it is refused.
-inline constexpr double pipeline_warning_error = 1e-2;
-inline constexpr double pipeline_refusal_error = 1.0;
 
 /// Throws the periodic kernel's refusal `message` of `body` in the scene's terms: the thinnest
 /// coating's key, its thickness against the cells, and what to do.
@@ -48,18 +44,11 @@ auto build_scene_operator(const Scene& scene, Factory&& factory) {
   }
 }
 
-/// Builds the operator (make_operator by build_scene_operator). Throws InvalidArgument when the
-/// method cannot handle the body (e.g. Love DC-FFT on a coating), and when an FRF pipeline's
-/// predicted error exceeds pipeline_refusal_error.
+/// Builds the operator (the library's build_operator, model/operator_plan.hpp, by
+/// build_scene_operator). Throws InvalidArgument when the method cannot handle the body (e.g. Love
+/// DC-FFT on a coating), and when an FRF pipeline's predicted error exceeds
+/// pipeline_refusal_error.
 BuiltOperator operator_from_scene(const Scene& scene);
-
-/// Throws InvalidArgument when the report's predicted error exceeds pipeline_refusal_error; the
-/// message starts with `who` and the method's name (`[method] name = "frf-spectral"`).
-void refuse_untrustworthy(const OperatorReport& report, std::string_view who = "[method] name");
-
-/// Warnings about what was built, for stderr and summary.json's "warnings": an FRF pipeline whose
-/// predicted error exceeds pipeline_warning_error.
-std::vector<std::string> operator_warnings(const OperatorReport& report);
 
 /// The method-specific keys of summary.json: frf, alpha, g0, g0_method, g0_seconds,
 /// g0_estimated_error (an omitted g(0) is reported as null), split_beta, split_seconds.

@@ -79,7 +79,7 @@ nlohmann::json common_summary(const Scene& scene, const std::optional<AutomaticC
   const Grid& grid = scene.grid;
   nlohmann::json summary;
   summary["method"] = to_string(report.method);
-  summary["boundary"] = scene.periodic ? "periodic" : "free";
+  summary["boundary"] = to_string(scene.periodic ? Boundary::periodic : Boundary::free);
   summary["body"] = body_summary(scene);
   summary["nx"] = grid.nx();
   summary["ny"] = grid.ny();

@@ -932,13 +932,6 @@ Scene read_scene(const std::filesystem::path& path, const SceneReading& reading)
     resolve_periodic_method(scene.method, scene.body && !scene.frf ? &*scene.body : nullptr);
     if (grid.tolerance_total) scene.grid = refine_grid(root, grid, scene);
     in_section("method", [&] { check_operator_options(scene.grid, scene.method.options); });
-    // Direct summation costs (nx ny)^2 operations per application: hours beyond this size.
-    COATFFT_REQUIRE(
-        scene.method.options.method != Method::direct || scene.grid.nb_cells() <= max_direct_cells,
-        "[method] name = \"direct\" on ", scene.grid.nx(), " x ", scene.grid.ny(),
-        " cells: direct summation is limited to ", max_direct_cells,
-        " cells (its cost grows as (nx ny)^2); use \"dcfft\", which gives the same "
-        "result");
     COATFFT_REQUIRE(root.contains("pressure") != root.contains("contact"),
                     "a scene needs exactly one of [pressure] (known load) and [contact]");
     if (root.contains("pressure"))

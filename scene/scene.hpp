@@ -70,10 +70,6 @@ struct MethodSpec {
 /// cells measured plans repay their planning within the solve (docs/benchmarks.md, "Planning").
 inline constexpr std::ptrdiff_t contact_measure_cells = 2048 * 2048;
 
-/// The most cells `direct` is run on: its cost grows as (nx ny)^2, hours beyond this size (and
-/// dcfft gives the same result).
-inline constexpr std::ptrdiff_t max_direct_cells = 1 << 16;
-
 /// [contact]: a frictionless normal contact with an indenter (contact/).
 struct ContactSpec {
   std::string indenter_name;  ///< "sphere", "paraboloid", "cylinder", "flat_punch", "height_map"

@@ -142,6 +142,11 @@ void check_operator_options(const Grid& grid, const OperatorOptions& o) {
   COATFFT_REQUIRE(o.g0_tolerance > 0 && o.g0_tolerance < 1, "g(0) tolerance = ", o.g0_tolerance,
                   " must be in (0, 1)");
   COATFFT_REQUIRE(std::isfinite(o.alpha) && o.alpha >= 1, "alpha = ", o.alpha, " must be >= 1");
+  COATFFT_REQUIRE(o.method != Method::direct || grid.nb_cells() <= max_direct_cells,
+                  "direct summation on ", grid.nx(), " x ", grid.ny(), " cells: it is limited to ",
+                  max_direct_cells,
+                  " cells (its cost grows as (nx ny)^2); use \"dcfft\", which "
+                  "gives the same result");
   COATFFT_REQUIRE(
       o.boundary == Boundary::free || o.method == Method::dcfft || o.method == Method::frf_split,
       "method \"", to_string(o.method),

@@ -85,8 +85,11 @@ void check_love_body(const LayerStack& body, Method method);
 /// Throws InvalidArgument, with a message naming the option ("alpha = 1.5: ..."), unless
 /// `options` can be used on `grid` (alpha, tolerances, threads, a method the boundary allows).
 /// make_operator calls it first; a reader of user input calls it to refuse bad input before any
-/// work starts.
+/// work starts. Direct summation is refused beyond max_direct_cells.
 void check_operator_options(const Grid& grid, const OperatorOptions& options);
+
+/// Direct summation costs (nx ny)^2 operations per application: hours beyond this many cells.
+inline constexpr std::ptrdiff_t max_direct_cells = 1 << 16;
 
 /// The operator of `options.method` for `body` on `grid`. Throws InvalidArgument for bad options
 /// and for a method that cannot handle the body (direct and dcfft need a homogeneous body).

@@ -16,6 +16,7 @@
 #include "core/error.hpp"
 #include "core/memory.hpp"
 #include "core/threads.hpp"
+#include "model/operator_plan.hpp"
 #include "operator.hpp"
 #include "scene/automatic_method.hpp"
 #include "scene/method_request.hpp"
@@ -63,7 +64,13 @@ struct MethodKeywords {
 // goes through (scene/method_request.hpp). load_radius and applications, the cost model's inputs
 // that a scene derives from its load, are Python's own keywords of method = "auto".
 scene::MethodSpec method_spec(const MethodKeywords& k) {
-  const bool periodic = k.boundary == "periodic";
+  Boundary boundary = Boundary::free;
+  try {
+    boundary = parse_boundary(k.boundary);
+  } catch (const InvalidArgument& e) {
+    throw InvalidArgument(detail::concat("make_operator: boundary = ", e.what()));
+  }
+  const bool periodic = boundary == Boundary::periodic;
   for (const auto& [given, name] : {std::pair{k.load_radius.has_value(), "load_radius"},
                                     std::pair{k.applications.has_value(), "applications"}}) {
     COATFFT_REQUIRE(k.method == "auto" || !given, "make_operator: ", name,
@@ -87,46 +94,35 @@ scene::MethodSpec method_spec(const MethodKeywords& k) {
   return scene::method_from_request(r, {where, "method"});
 }
 
-OperatorOptions named_options(const Grid& grid, const MethodKeywords& k) {
-  const OperatorOptions o = method_spec(k).options;
-  COATFFT_REQUIRE(o.method != Method::direct || grid.nb_cells() <= scene::max_direct_cells,
-                  "make_operator: method = \"direct\" on ", grid.nx(), " x ", grid.ny(),
-                  " cells: direct summation is limited to ", scene::max_direct_cells,
-                  " cells (its cost grows as (nx ny)^2); use \"dcfft\", which gives the same "
-                  "result");
-  check_operator_options(grid, o);
-  return o;
-}
-
 // FFTW's first plan in a process costs milliseconds once (model/cost_model.hpp): only the first
 // operator of a Python session pays it.
 bool first_operator = true;
 
-scene::AutomaticChoice automatic_choice(const Grid& grid, const Body& body,
-                                        const MethodKeywords& k) {
+// The keywords as the library's operator request (model/operator_plan.hpp), which plans a scene's
+// operator too: "auto"'s tolerance, applications and reference load, or the named method.
+OperatorRequest operator_request(const Grid& grid, const MethodKeywords& k) {
   const scene::MethodSpec spec = method_spec(k);
-  AutoRequest request;
-  request.tolerance = spec.tolerance;
-  request.applications = k.applications.value_or(1.0);
-  COATFFT_REQUIRE(request.applications >= 1 && std::isfinite(request.applications),
-                  "make_operator: applications = ", request.applications,
+  OperatorRequest request;
+  request.automatic = spec.automatic || spec.auto_periodic;
+  request.options = spec.options;
+  AutoRequest& choice = request.automatic_request;
+  choice.tolerance = spec.tolerance;
+  choice.applications = k.applications.value_or(1.0);
+  COATFFT_REQUIRE(choice.applications >= 1 && std::isfinite(choice.applications),
+                  "make_operator: applications = ", choice.applications,
                   " must be finite and >= 1");
-  request.max_threads = spec.options.threads;
-  request.planning = spec.options.planning;
-  request.first_in_process = first_operator;
-  std::vector<ReferenceLoad> loads = scene::unknown_load_references(grid);
+  choice.max_threads = spec.options.threads;
+  choice.planning = spec.options.planning;
+  choice.first_in_process = first_operator;
   if (k.load_radius) {
     require_load_radius(grid, *k.load_radius, "make_operator: load_radius");
-    loads = {{AxisymmetricLoad::hertz, std::max(*k.load_radius, 0.5 * grid.dx())}};
+    request.loads = {{AxisymmetricLoad::hertz, std::max(*k.load_radius, 0.5 * grid.dx())}};
   }
-  return without_gil([&] {
-    return body.frf ? scene::choose_automatically(grid, *body.frf, loads, request)
-                    : scene::choose_automatically(grid, *body.stack, loads, request);
-  });
+  return request;
 }
 
 py::dict report_dict(const Grid& grid, const BuiltOperator& built, const MethodKeywords& k,
-                     const std::optional<scene::AutomaticChoice>& choice) {
+                     const std::optional<AutomaticChoice>& choice, double choice_tolerance) {
   nlohmann::json json = scene::operator_report_json(built.report);
   json["method"] = to_string(built.report.method);
   json["method_requested"] = k.method;
@@ -137,8 +133,8 @@ py::dict report_dict(const Grid& grid, const BuiltOperator& built, const MethodK
   json["fft_ny"] = built.report.fft_ny;
   json["setup_seconds"] = built.report.setup_seconds;
   json["kernel_seconds"] = built.report.kernel_seconds;
-  json["warnings"] = scene::operator_warnings(built.report);
-  if (choice) json["auto"] = scene::automatic_choice_json(*choice, *k.tolerance);
+  json["warnings"] = operator_warnings(built.report);
+  if (choice) json["auto"] = scene::automatic_choice_json(*choice, choice_tolerance);
   return dict_from_json_text(json.dump());
 }
 
@@ -155,46 +151,26 @@ void require_operator_memory(const Grid& grid, const OperatorOptions& options) {
                                                         : "use fewer cells");
 }
 
-// boundary = "periodic" (docs/python.md): the exact periodic operator, "dcfft" or "frf-split";
-// "auto" takes the one the body allows. The keywords go through the check a scene's [method]
-// on [grid] boundary = "periodic" goes through (scene::method_from_request).
-OperatorOptions periodic_options(const Grid& grid, const Body& body, const MethodKeywords& k) {
-  scene::MethodSpec spec = method_spec(k);
-  scene::resolve_periodic_method(spec, body.stack ? &*body.stack : nullptr);
-  check_operator_options(grid, spec.options);
-  return spec.options;
-}
-
 std::unique_ptr<Operator> make_operator_py(const Grid& grid, py::handle body_object,
-                                           MethodKeywords k) {
+                                           const MethodKeywords& k) {
   const Body body = body_from_object(body_object);
-  std::optional<scene::AutomaticChoice> choice;
-  OperatorOptions options;
-  const LayerStack* stack = body.stack ? &*body.stack : nullptr;
-  COATFFT_REQUIRE(k.boundary == "free" || k.boundary == "periodic", "make_operator: boundary = \"",
-                  k.boundary, "\" is not one of \"free\", \"periodic\"");
-  if (k.boundary == "periodic") {
-    options = periodic_options(grid, body, k);
-  } else if (k.method == "auto") {
-    k.tolerance = k.tolerance.value_or(AutoRequest{}.tolerance);
-    // The default method is the least any choice needs: a grid too large for it is refused
-    // before the automatic choice spends time on it.
-    require_operator_memory(grid, OperatorOptions{});
-    choice = automatic_choice(grid, body, k);
-    options = choice->method.options;
-    if (choice->reduction) stack = &choice->reduction->body;
-  } else {
-    options = named_options(grid, k);
-  }
-  require_operator_memory(grid, options);
+  const OperatorRequest request = operator_request(grid, k);
+  // The default method is the least any choice needs: a grid too large for it is refused before
+  // the automatic choice spends time on it.
+  if (request.automatic) require_operator_memory(grid, OperatorOptions{});
+  const OperatorPlan plan = without_gil([&] {
+    return body.stack ? plan_operator(grid, *body.stack, request)
+                      : plan_operator(grid, *body.frf, request);
+  });
+  require_operator_memory(grid, plan.options);
   BuiltOperator built = without_gil([&] {
-    return stack ? make_operator(grid, *stack, options) : make_operator(grid, *body.frf, options);
+    return body.stack ? build_operator(grid, *body.stack, plan, "make_operator: method")
+                      : build_operator(grid, *body.frf, plan, "make_operator: method");
   });
   first_operator = false;
-  scene::refuse_untrustworthy(built.report, "make_operator: method");
-  py::dict report = report_dict(grid, built, k, choice);
+  py::dict report = report_dict(grid, built, k, plan.choice, request.automatic_request.tolerance);
   warn_each(report["warnings"]);
-  return std::make_unique<Operator>(std::move(built), std::move(report), options.threads,
+  return std::make_unique<Operator>(std::move(built), std::move(report), plan.options.threads,
                                     body.response());
 }
 

@@ -385,11 +385,16 @@ def test_keywords_that_do_not_apply_are_refused():
            lambda: coatfft.make_operator(GRID, STEEL, method="direct", planning="measure"))
 
 
-def test_direct_is_limited_as_in_scenes():
+def test_direct_is_limited_as_in_scenes(tmp_path):
+    # One limit, the library's (check_operator_options), for Python's keywords and a scene alike.
     grid = coatfft.Grid(257, 256, 1e-3, 1e-3)  # 65792 cells > 65536
-    raises(ValueError, r'make_operator: method = "direct" on 257 x 256 cells: direct summation is '
-           r"limited to 65536 cells",
-           lambda: coatfft.make_operator(grid, STEEL, method="direct"))
+    limit = r"direct summation on 257 x 256 cells: it is limited to 65536 cells"
+    raises(ValueError, limit, lambda: coatfft.make_operator(grid, STEEL, method="direct"))
+    scene = tmp_path / "direct.toml"
+    scene.write_text('[grid]\nnx = 257\nny = 256\nlx = 1e-3\nly = 1e-3\n[substrate]\n'
+                     'material = "steel"\n[pressure]\nkind = "hertz"\np0 = 1e9\na = 2e-4\n'
+                     '[method]\nname = "direct"\n')
+    raises(ValueError, r"\[method\] " + limit, lambda: coatfft.run_scene(str(scene)))
 
 
 def test_body_refused_by_the_method():

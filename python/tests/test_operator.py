@@ -389,6 +389,13 @@ def test_periodic_boundary_against_the_wavy_closed_form(steel, tin_stack):
     assert coated.method == "frf-split"
     bare = np.abs(coatfft.make_operator(grid, steel, boundary="periodic").apply(p)).max()
     assert 0.9 * bare < np.abs(coated.apply(p)).max() < bare
+    # A film far thinner than a cell (1 pm against 16 um): auto leaves it out where its effect
+    # is within the tolerance, as a scene's periodic auto does (model/operator_plan.hpp), and
+    # builds Love's operator of the bare substrate, its displacement the bare one's.
+    film = coatfft.LayerStack(steel, [coatfft.Coating(tin_stack.coatings[0].material, 1e-12)])
+    reduced = coatfft.make_operator(grid, film, boundary="periodic")
+    assert reduced.method == "dcfft"
+    assert rel_max(reduced.apply(p), exact) < 1e-3
 
 
 def test_periodic_boundary_refusals(steel):
