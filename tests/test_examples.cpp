@@ -13,7 +13,6 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <set>
-#include <sstream>
 #include <string>
 
 #include "io/npy.hpp"
@@ -73,6 +72,21 @@ std::vector<double> npy_data(const fs::path& file) {
   std::vector<double> v((all.size() - start) / sizeof(double));
   std::memcpy(v.data(), all.data() + start, v.size() * sizeof(double));
   return v;
+}
+
+// What `coatfft run SCENE -o OUT` (OUT emptied first) prints on stdout, and its exit status.
+std::string printed_by_run(const fs::path& scene, const fs::path& out, int& status) {
+  fs::remove_all(out);
+  const std::string command =
+      std::string(COATFFT_EXE) + " run " + scene.string() + " -o " + out.string() + " 2>/dev/null";
+  FILE* pipe = popen(command.c_str(), "r");
+  REQUIRE(pipe != nullptr);
+  std::string printed;
+  char buffer[512];
+  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) printed += buffer;
+  const int raw = pclose(pipe);
+  status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  return printed;
 }
 
 double number(const nlohmann::json& value) {
@@ -514,16 +528,9 @@ TEST_CASE("example coated_sphere.toml: README's first run, between the bare bodi
   // Run as README runs it (no --quiet): what it prints on stdout is read here.
   const Scene scene = example_scene("coated_sphere");
   const fs::path out = scratch("example_coated_sphere");
-  fs::remove_all(out);
-  const std::string command = std::string(COATFFT_EXE) + " run " +
-                              (kScenes / "coated_sphere.toml").string() + " -o " + out.string() +
-                              " 2>/dev/null";
-  FILE* pipe = popen(command.c_str(), "r");
-  REQUIRE(pipe != nullptr);
-  std::string printed;
-  char buffer[512];
-  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) printed += buffer;
-  REQUIRE(pclose(pipe) == 0);
+  int status = -1;
+  const std::string printed = printed_by_run(kScenes / "coated_sphere.toml", out, status);
+  REQUIRE(status == 0);
   nlohmann::json s;
   std::ifstream(out / "summary.json") >> s;
   INFO(printed);
@@ -533,10 +540,8 @@ TEST_CASE("example coated_sphere.toml: README's first run, between the bare bodi
   std::string expected;
   for (const std::string& line : coatfft::scene::run_highlights(s)) expected += line + "\n";
   CHECK(printed == expected);
-  std::istringstream lines(printed);
-  std::vector<std::string> text;
-  for (std::string line; std::getline(lines, line);) text.push_back(line);
-  REQUIRE(text.size() == 4);  // radius, pressure, von Mises, the interface's shear
+  // Radius, pressure, von Mises, the interface's shear.
+  CHECK(std::count(printed.begin(), printed.end(), '\n') == 4);
 
   // Between Hertz on bare steel and on bare TiN (recomputed here from the scene, Johnson 1985
   // section 4.2.1): the stiff coating shrinks the contact and raises its peak. Measured:
@@ -559,4 +564,14 @@ TEST_CASE("example coated_sphere.toml: README's first run, between the bare bodi
         Approx(steel.contact_radius).epsilon(1e-12));
   CHECK(number(s["hertz_bare"]["top_coating"]["max_pressure"]) ==
         Approx(tin.max_pressure).epsilon(1e-12));
+
+  // A contact that did not converge has no answer to tell: exit 3 and nothing on stdout.
+  std::ifstream in(kScenes / "coated_sphere.toml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // One iteration, and no [stress] (its cost has nothing to show here).
+  text = text.substr(0, text.find("\n[stress]\n"));
+  text.insert(text.find("\n[method]\n"), "\nmax_iterations = 1\n");
+  const fs::path stopped = write_scene(text, "example_coated_sphere_stopped", "", "");
+  CHECK(printed_by_run(stopped, scratch("example_coated_sphere_stopped"), status).empty());
+  CHECK(status == 3);
 }
