@@ -67,14 +67,14 @@ void add_contact_lines(const nlohmann::json& summary, std::vector<std::string>& 
   if (summary.contains("sweep") && number(summary, "load"))
     lines.push_back("at the sweep's largest load, " + detail::brief(*number(summary, "load")) +
                     " N:");
-  const auto radius = number(summary, "contact_radius"), area = number(summary, "contact_area"),
+  const auto radius = number(summary, "contact_radius"),
              equivalent = number(summary, "equivalent_radius");
   if (radius)
     lines.push_back("contact radius " + length(*radius) +
                     hertz_note(summary, "contact_radius", length));
-  else if (area && equivalent)
-    lines.push_back("contact area " + detail::brief(*area) + " m^2 (a disk of radius " +
-                    length(*equivalent) + ")");
+  else if (equivalent)
+    lines.push_back("equivalent contact radius " + length(*equivalent) +
+                    " (of the disk of the contact's area; the contact is not round)");
   if (const auto peak = number(summary, "max_pressure"))
     lines.push_back("peak pressure " + stress(*peak) + hertz_note(summary, "max_pressure", stress));
 }

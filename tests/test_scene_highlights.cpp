@@ -213,13 +213,14 @@ TEST_CASE("run highlights: only the lines that apply, in readable units", "[high
   // A known load without [stress]: nothing to tell.
   CHECK(run_highlights({{"total_load", 1.0}, {"uz_max", 1e-6}}).empty());
   // A contact without Hertz's values (a cylinder, or an approach): no comparison; a contact
-  // that is not round gives its area and the radius of the disk of that area.
+  // that is not round gives the radius of the disk of its area.
   const nlohmann::json cylinder = {{"contact_area", 3.0e-8},
                                    {"equivalent_radius", 9.772e-5},
                                    {"contact_radius", nullptr},
                                    {"max_pressure", 9.996e8}};
   CHECK(run_highlights(cylinder) ==
-        std::vector<std::string>{"contact area 3e-08 m^2 (a disk of radius 97.7 µm)",
+        std::vector<std::string>{"equivalent contact radius 97.7 µm (of the disk of the contact's "
+                                 "area; the contact is not round)",
                                  "peak pressure 1 GPa"});
   // Stresses: the largest von Mises stress off the interface, its medium named without "at the
   // interface", a cell centre's rounding (1e-22 m) printed as 0; the interface's shear stress at
