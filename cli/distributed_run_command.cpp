@@ -115,6 +115,9 @@ scene::RunStatus run_command(const RunOptions& options, const Communicator& comm
   progress.stage("writing " + joined(names));
   write_distributed_outputs(comm, out, scene.output, scene.grid, run);
   progress.finish();
+  // What the run found, as the serial run prints it (cli/run_command.cpp), by rank 0 alone.
+  if (comm.rank() == 0 && run.status == scene::RunStatus::ok && !options.quiet)
+    print_highlights(run.summary);
   return run.status;
 }
 

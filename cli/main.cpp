@@ -70,8 +70,10 @@ Command add_run(CLI::App& app) {
       ->check(CLI::Range(1, coatfft::scene::max_repeat));
   cmd->add_option("--max-memory", args->max_memory,
                   "Memory the run may use, e.g. 4G (default: what the machine has available)");
-  cmd->add_flag("--quiet", args->options.quiet,
-                "No progress on the terminal (warnings and errors are still printed)");
+  cmd->add_flag(
+      "--quiet", args->options.quiet,
+      "No progress and no lines of results on the terminal (warnings and errors are still "
+      "printed)");
   return {cmd, [args] {
             if (!args->max_memory.empty())
               args->options.max_memory =

@@ -141,6 +141,9 @@ scene::RunStatus run_command(const RunOptions& options) {
   print_warnings(run.summary);
   write_outputs(out, spec, run, progress);
   progress.finish();
+  // What the run found, once its files are in place; a contact that did not converge has no
+  // answer to tell (main.cpp says so), and --quiet keeps the terminal silent.
+  if (run.status == scene::RunStatus::ok && !options.quiet) print_highlights(run.summary);
   return run.status;
 }
 

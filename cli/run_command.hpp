@@ -17,7 +17,8 @@ struct RunOptions {
   int repeat = 1;  ///< operator applications timed; apply_seconds is their median
   /// Memory the run may use [bytes] (--max-memory); by default what the machine has available.
   std::optional<double> max_memory;
-  /// No progress on the terminal (--quiet); warnings and errors are still printed.
+  /// No progress on the terminal and no lines of what the run found (--quiet); warnings and
+  /// errors are still printed.
   bool quiet = false;
 };
 
@@ -25,7 +26,9 @@ struct RunOptions {
 /// its [output] section asks for (by default OUTDIR/{uz.npy, pressure.npy, displacement.csv,
 /// summary.json}, + gap.npy for a contact) all at once (cli/staged_output.hpp). Reports progress
 /// on stderr when it is a terminal, unless quiet (cli/progress.hpp), and the operator's warnings
-/// once computed. Throws InvalidArgument on bad input, and leaves OUTDIR as it was on any failure.
+/// once computed; after a run that converged, unless quiet, what it found on stdout
+/// (scene/run_highlights.hpp). Throws InvalidArgument on bad input, and leaves OUTDIR as it was on
+/// any failure.
 scene::RunStatus run_command(const RunOptions& options);
 
 #ifdef COATFFT_WITH_MPI

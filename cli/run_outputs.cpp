@@ -7,6 +7,7 @@
 
 #include "core/detail/close_written.hpp"
 #include "core/error.hpp"
+#include "scene/run_highlights.hpp"
 #include "scene/scene_netcdf.hpp"
 
 namespace coatfft::cli {
@@ -60,6 +61,11 @@ void print_warnings(const nlohmann::json& summary) {
   for (const auto& warning : summary["warnings"]) {
     std::cerr << "coatfft: warning: " << warning.get<std::string>() << '\n';
   }
+}
+
+void print_highlights(const nlohmann::json& summary) {
+  for (const std::string& line : scene::run_highlights(summary)) std::cout << line << '\n';
+  std::cout.flush();
 }
 
 }  // namespace coatfft::cli

@@ -1,7 +1,8 @@
 #pragma once
 // What `coatfft run` writes besides the fields' arrays, shared by the serial run
 // (cli/run_command.cpp) and the distributed one (cli/distributed_run_command.cpp): the output
-// names of a scene's [output], displacement.csv's lines, summary.json, and the warnings on stderr.
+// names of a scene's [output], displacement.csv's lines, summary.json, the warnings on stderr and
+// the lines of what the run found on stdout.
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <ostream>
@@ -34,5 +35,9 @@ void write_summary(const std::filesystem::path& path, const nlohmann::json& summ
 /// planes', and the contact solver's note (why it did not converge; main.cpp adds the exit
 /// status's line).
 void print_warnings(const nlohmann::json& summary);
+
+/// What the run found, in a few lines on stdout (scene/run_highlights.hpp): the contact's radius
+/// and peak pressure against Hertz's, the largest stresses and where they are.
+void print_highlights(const nlohmann::json& summary);
 
 }  // namespace coatfft::cli

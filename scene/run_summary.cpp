@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <variant>
 
@@ -34,23 +35,49 @@ nlohmann::json body_summary(const Scene& scene) {
   return {{"substrate", medium(scene.body->substrate())}, {"coatings", coatings}};
 }
 
-// summary.json's "hertz": the Hertz solution of a sphere or paraboloid on a homogeneous body, for
-// comparison; null for any other contact.
-nlohmann::json hertz_json(const Scene& scene) {
-  const ContactSpec& spec = *scene.contact;
-  const bool hertzian = std::holds_alternative<Paraboloid>(spec.indenter) ||
-                        std::holds_alternative<Sphere>(spec.indenter);
-  if (!hertzian || scene.frf || !scene.body->is_homogeneous() || scene.periodic) return nullptr;
-  const double R = std::holds_alternative<Sphere>(spec.indenter)
-                       ? std::get<Sphere>(spec.indenter).radius
-                       : std::get<Paraboloid>(spec.indenter).radius;
-  const double E_star = scene.body->substrate().plane_strain_modulus();
+// The radius of a sphere or paraboloid indenter (the shapes Hertz's solution describes); none
+// for the other shapes.
+std::optional<double> hertz_radius(const ContactSpec& spec) {
+  if (const auto* sphere = std::get_if<Sphere>(&spec.indenter)) return sphere->radius;
+  if (const auto* paraboloid = std::get_if<Paraboloid>(&spec.indenter)) return paraboloid->radius;
+  return std::nullopt;
+}
+
+// Hertz's solution (Johnson 1985, section 4.2.1) of an indenter of radius R at the scene's load or
+// approach on a half-space of plane-strain modulus E*.
+nlohmann::json hertz_on_half_space(const ContactSpec& spec, double R, double E_star) {
   const HertzSphere hertz = spec.load ? hertz_sphere_for_load(*spec.load, R, E_star)
                                       : hertz_sphere_for_approach(*spec.approach, R, E_star);
   return {{"load", hertz.load},
           {"contact_radius", hertz.contact_radius},
           {"max_pressure", hertz.max_pressure},
           {"approach", hertz.approach}};
+}
+
+// summary.json's "hertz": the Hertz solution of a sphere or paraboloid on a homogeneous body, for
+// comparison; null for any other contact.
+nlohmann::json hertz_json(const Scene& scene) {
+  const std::optional<double> R = hertz_radius(*scene.contact);
+  if (!R || scene.frf || !scene.body->is_homogeneous() || scene.periodic) return nullptr;
+  return hertz_on_half_space(*scene.contact, *R, scene.body->substrate().plane_strain_modulus());
+}
+
+// summary.json's "hertz_bare": the Hertz solution of a sphere or paraboloid under one load on the
+// bare substrate and, on a coated body, on the bare top coating, each a half-space. Under one
+// coating the contact lies between the two: the body's compliance k H(k) runs from the
+// substrate's 2/E* at wavelengths long against the coating to the coating's at short ones
+// (docs/frf.md). Null for any other contact, an approach or a sweep.
+nlohmann::json hertz_bare_json(const Scene& scene) {
+  const ContactSpec& spec = *scene.contact;
+  const std::optional<double> R = hertz_radius(spec);
+  if (!R || !spec.load || !spec.sweep.empty() || scene.frf || scene.periodic) return nullptr;
+  const LayerStack& body = *scene.body;
+  nlohmann::json bare = {
+      {"substrate", hertz_on_half_space(spec, *R, body.substrate().plane_strain_modulus())}};
+  if (!body.coatings().empty())
+    bare["top_coating"] =
+        hertz_on_half_space(spec, *R, body.coatings().front().material.plane_strain_modulus());
+  return bare;
 }
 
 }  // namespace
@@ -169,6 +196,7 @@ void add_contact_summary(nlohmann::json& summary, const Scene& scene, const Cont
   }
   // Absent, not null, when it does not apply: summary.json has always been so.
   if (nlohmann::json hertz = hertz_json(scene); !hertz.is_null()) summary["hertz"] = hertz;
+  if (nlohmann::json bare = hertz_bare_json(scene); !bare.is_null()) summary["hertz_bare"] = bare;
 }
 
 bool reports_hertz_error(const Scene& scene) {

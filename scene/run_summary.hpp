@@ -48,7 +48,8 @@ void check_repeat(int repeat);
 ContactOptions solver_options(const ContactSpec& spec, int threads, ProgressObserver& progress);
 
 /// The contact's keys of summary.json, after common_summary's: the result's numbers (the same on
-/// every rank of a distributed solve), its warning, the Hertz solution where one applies.
+/// every rank of a distributed solve), its warning, the Hertz solution where one applies (on the
+/// homogeneous body, and on the bare substrate and top coating under one load: "hertz_bare").
 void add_contact_summary(nlohmann::json& summary, const Scene& scene, const ContactResult& result,
                          double solve_seconds);
 

@@ -13,7 +13,8 @@ again with fields.nc (written by the ranks together): the serial file's format, 
 coordinates and attributes, summary.json as its `summary`, the fields as above. A wisdom file is
 written by rank 0 and read by the next run; one that does not hold wisdom is refused and left as
 it is. Scenes that do not run distributed, and bad height maps, are refused on one line with exit
-status 2 and no output. Usage: mpi_cli_run.py COATFFT MPIEXEC
+status 2 and no output. The lines a run prints on stdout (what it found) are the serial run's.
+Usage: mpi_cli_run.py COATFFT MPIEXEC
 """
 import json
 import os
@@ -235,13 +236,16 @@ def main():
                                         ("pressure_map_netcdf", pressure_map + NETCDF, (2,))):
             scene = tmp / f"{name}.toml"
             scene.write_text(text)
-            if (r := run(["run", str(scene), "-o", str(tmp / f"{name}_serial"), "--quiet"])).returncode:
-                fail(r.stderr)
+            if (serial := run(["run", str(scene), "-o", str(tmp / f"{name}_serial")])).returncode:
+                fail(serial.stderr)
             for ranks in rank_counts:
                 out = tmp / f"{name}_np{ranks}"
                 if (r := run(["run", str(scene), "-o", str(out)], ranks)).returncode:
                     fail(f"{name} at {ranks} ranks: {r.stderr}")
                 check_equal(name, tmp / f"{name}_serial", out, ranks)
+                # What the run found (a contact's radius and peak pressure), printed once.
+                if r.stdout != serial.stdout:
+                    fail(f"{name} at {ranks} ranks printed {r.stdout!r}, serially {serial.stdout!r}")
 
         check_auto_choice(tmp)
         check_topography_by_gap(tmp, heights, nx, ny)

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -15,6 +16,7 @@
 #include <string>
 
 #include "io/npy.hpp"
+#include "scene/run_highlights.hpp"
 #include "scene/scene.hpp"
 #include "tests/cli_process.hpp"
 #include "validation/axisymmetric_stress.hpp"
@@ -36,6 +38,7 @@ const std::set<std::string> kTested = {
     "hertz",          "coated_hertz",        "sphere_contact",     "tabulated_frf",
     "tin_2um",        "polymer_coating",     "three_layer",        "rough_sphere_contact",
     "auto_tolerance", "coated_hertz_stress", "coated_hertz_shear", "rough_coated_sliding",
+    "coated_sphere",
 };
 
 struct Run {
@@ -69,6 +72,21 @@ std::vector<double> npy_data(const fs::path& file) {
   std::vector<double> v((all.size() - start) / sizeof(double));
   std::memcpy(v.data(), all.data() + start, v.size() * sizeof(double));
   return v;
+}
+
+// What `coatfft run SCENE -o OUT` (OUT emptied first) prints on stdout, and its exit status.
+std::string printed_by_run(const fs::path& scene, const fs::path& out, int& status) {
+  fs::remove_all(out);
+  const std::string command =
+      std::string(COATFFT_EXE) + " run " + scene.string() + " -o " + out.string() + " 2>/dev/null";
+  FILE* pipe = popen(command.c_str(), "r");
+  REQUIRE(pipe != nullptr);
+  std::string printed;
+  char buffer[512];
+  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) printed += buffer;
+  const int raw = pclose(pipe);
+  status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  return printed;
 }
 
 double number(const nlohmann::json& value) {
@@ -503,4 +521,57 @@ TEST_CASE("example rough_coated_sliding.toml: a sliding rough contact balances i
   coating["medium"] = "coating 1";
   CHECK(tensile == coating);
   CHECK(number(tensile["value"]) > 1e9);
+}
+
+TEST_CASE("example coated_sphere.toml: README's first run, between the bare bodies' Hertz contacts",
+          "[examples]") {
+  // Run as README runs it (no --quiet): what it prints on stdout is read here.
+  const Scene scene = example_scene("coated_sphere");
+  const fs::path out = scratch("example_coated_sphere");
+  int status = -1;
+  const std::string printed = printed_by_run(kScenes / "coated_sphere.toml", out, status);
+  REQUIRE(status == 0);
+  nlohmann::json s;
+  std::ifstream(out / "summary.json") >> s;
+  INFO(printed);
+  REQUIRE(s["converged"] == true);
+
+  // The lines printed are those of its summary.json, one per line.
+  std::string expected;
+  for (const std::string& line : coatfft::scene::run_highlights(s)) expected += line + "\n";
+  CHECK(printed == expected);
+  // Radius, pressure, von Mises, the interface's shear.
+  CHECK(std::count(printed.begin(), printed.end(), '\n') == 4);
+
+  // Between Hertz on bare steel and on bare TiN (recomputed here from the scene, Johnson 1985
+  // section 4.2.1): the stiff coating shrinks the contact and raises its peak. Measured:
+  // a = 13.6 um (bare steel 14.8, bare TiN 12.1), p = 2.37 GPa (2.18, 3.28), the same to 0.3 %
+  // and 0.03 % on 257^2 cells. The margins to steel's, 1.19 um = 0.97 dx and 0.19 GPa = 8.8 %,
+  // exceed the contact's discretisation (dx / 2 on the radius, O((dx/a)^2) = 8e-3 on the
+  // pressure: tests/test_scene_highlights.cpp).
+  const double R = std::get<coatfft::Sphere>(scene.contact->indenter).radius;
+  const double W = *scene.contact->load;
+  const auto steel =
+      coatfft::hertz_sphere_for_load(W, R, scene.body->substrate().plane_strain_modulus());
+  const auto tin = coatfft::hertz_sphere_for_load(
+      W, R, scene.body->coatings().front().material.plane_strain_modulus());
+  const double a = number(s["contact_radius"]), p = number(s["max_pressure"]);
+  CHECK(a > tin.contact_radius);
+  CHECK(a < steel.contact_radius);
+  CHECK(p > steel.max_pressure);
+  CHECK(p < tin.max_pressure);
+  CHECK(number(s["hertz_bare"]["substrate"]["contact_radius"]) ==
+        Approx(steel.contact_radius).epsilon(1e-12));
+  CHECK(number(s["hertz_bare"]["top_coating"]["max_pressure"]) ==
+        Approx(tin.max_pressure).epsilon(1e-12));
+
+  // A contact that did not converge has no answer to tell: exit 3 and nothing on stdout.
+  std::ifstream in(kScenes / "coated_sphere.toml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // One iteration, and no [stress] (its cost has nothing to show here).
+  text = text.substr(0, text.find("\n[stress]\n"));
+  text.insert(text.find("\n[method]\n"), "\nmax_iterations = 1\n");
+  const fs::path stopped = write_scene(text, "example_coated_sphere_stopped", "", "");
+  CHECK(printed_by_run(stopped, scratch("example_coated_sphere_stopped"), status).empty());
+  CHECK(status == 3);
 }
