@@ -23,6 +23,7 @@ Besides:
 Prints each broken rule with its file and line; exits 1 when there is one.
 Usage: check_dependencies.py [source root]   (default: the repository of this script)
 """
+import fnmatch
 import re
 import sys
 from pathlib import Path
@@ -35,7 +36,18 @@ FLOORS = {**{m: 1 for m in SERIAL_LIBRARY}, "distributed": 1, "coatfft.hpp": 1, 
 SIDEWAYS = {"cli": ["python"], "python": ["cli"], **{m: ["distributed"] for m in SERIAL_LIBRARY}}
 INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"')
 SOURCE = re.compile(r"\.(cpp|hpp|h|cc)$")
-SKIPPED = {"build", "shared"}  # build trees and the workplace's inputs are not the project's
+SKIPPED = {"shared"}  # the workplace's inputs are not the project's
+
+
+def skipped(root, name):
+    """Hidden entries, the workplace's inputs, and the top-level folders .gitignore names
+    (/build*/, /out*/: build trees and the examples' outputs) are not the project's sources."""
+    if name.startswith(".") or name in SKIPPED:
+        return True
+    ignore = root / ".gitignore"
+    patterns = [line.strip().strip("/") for line in ignore.read_text().splitlines()
+                if line.startswith("/")] if ignore.exists() else []
+    return any(fnmatch.fnmatch(name, pattern) for pattern in patterns)
 
 
 def folder_of(include, source, root):
@@ -75,7 +87,7 @@ def include_rules(top, source, root):
 def main(root):
     broken = []
     for entry in sorted(root.iterdir()):
-        if entry.name.startswith(".") or entry.name.startswith("build") or entry.name in SKIPPED:
+        if skipped(root, entry.name):
             continue
         sources = ([entry] if entry.is_file() and SOURCE.search(entry.name)
                    else sorted(p for p in entry.rglob("*") if SOURCE.search(p.name))

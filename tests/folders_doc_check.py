@@ -28,14 +28,10 @@ def load_rules(root):
     return module
 
 
-def skipped(name, rules):
-    return name.startswith(".") or name.startswith("build") or name in rules.SKIPPED
-
-
 def top_folders(root, rules):
     """The project's top-level folders (not the hidden ones, build trees or the workplace's)."""
     return {entry.name for entry in root.iterdir()
-            if entry.is_dir() and not skipped(entry.name, rules)}
+            if entry.is_dir() and not rules.skipped(root, entry.name)}
 
 
 def folders_with_sources(root, rules):
