@@ -8,10 +8,10 @@
 #include <vector>
 
 #include "contact/detail/cell_passes.hpp"
+#include "contact/detail/fourier_preconditioner.hpp"
 #include "contact/detail/load_scaling.hpp"
 #include "contact/detail/polonsky_keer_iteration.hpp"
 #include "contact/detail/solver_ranks.hpp"
-#include "contact/fourier_preconditioner.hpp"
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"

@@ -2,10 +2,10 @@
 #include <memory>
 #include <optional>
 
-#include "contact/contact_patches.hpp"
 #include "contact/contact_solver.hpp"
-#include "contact/grid_transfer.hpp"
-#include "contact/initial_pressure.hpp"
+#include "contact/detail/contact_patches.hpp"
+#include "contact/detail/grid_transfer.hpp"
+#include "contact/detail/initial_pressure.hpp"
 
 namespace coatfft {
 

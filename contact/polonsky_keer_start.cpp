@@ -1,9 +1,9 @@
 #include <cmath>
 
 #include "contact/detail/cell_passes.hpp"
+#include "contact/detail/initial_pressure.hpp"
 #include "contact/detail/polonsky_keer_iteration.hpp"
 #include "contact/detail/solver_ranks.hpp"
-#include "contact/initial_pressure.hpp"
 #include "core/error.hpp"
 
 namespace coatfft::detail {

@@ -1,4 +1,4 @@
-#include "core/gsl_quadrature.hpp"
+#include "core/detail/gsl_quadrature.hpp"
 
 #include <mutex>
 

@@ -8,8 +8,8 @@
 #include <string>
 #include <utility>
 
+#include "core/detail/gsl_quadrature.hpp"
 #include "core/error.hpp"
-#include "core/gsl_quadrature.hpp"
 
 namespace coatfft {
 

@@ -6,11 +6,11 @@
 #include <memory>
 #include <tuple>
 
-#include "convolution/operators/dcfft_operator.hpp"
+#include "convolution/operators/detail/dcfft_operator.hpp"
 #include "convolution/operators/pipeline_error.hpp"
 #include "core/detail/brief.hpp"
+#include "core/detail/fft_size.hpp"
 #include "core/error.hpp"
-#include "core/fft_size.hpp"
 #include "core/threads.hpp"
 #include "model/cost_model.hpp"
 

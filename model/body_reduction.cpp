@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "core/detail/brief.hpp"
+#include "core/detail/gsl_quadrature.hpp"
 #include "core/error.hpp"
-#include "core/gsl_quadrature.hpp"
 #include "validation/hankel_displacement.hpp"
 
 namespace coatfft {

@@ -8,8 +8,8 @@
 #include <sstream>
 
 #include "convolution/operators/make_operator.hpp"
+#include "core/detail/fft_size.hpp"
 #include "core/error.hpp"
-#include "core/fft_size.hpp"
 #include "frf/frf.hpp"
 #include "layers/layer_stack.hpp"
 #include "validation/hankel_displacement.hpp"

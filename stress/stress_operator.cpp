@@ -7,9 +7,9 @@
 #include <string>
 #include <utility>
 
+#include "core/detail/fft_size.hpp"
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
-#include "core/fft_size.hpp"
 #include "frf/stress_frf.hpp"
 
 namespace coatfft {

@@ -11,8 +11,8 @@
 #include "convolution/kernels/angular_influence.hpp"
 #include "convolution/kernels/cerruti_influence.hpp"
 #include "convolution/kernels/love_influence.hpp"
+#include "core/detail/gsl_quadrature.hpp"
 #include "core/error.hpp"
-#include "core/gsl_quadrature.hpp"
 #include "materials/material.hpp"
 
 using coatfft::angular_influence;

@@ -13,8 +13,8 @@
 #include <numbers>
 #include <vector>
 
+#include "core/detail/gsl_quadrature.hpp"
 #include "core/error.hpp"
-#include "core/gsl_quadrature.hpp"
 #include "layers/layer_stack.hpp"
 #include "tests/test_support.hpp"
 #include "validation/axisymmetric_stress.hpp"

@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "convolution/kernels/cerruti_influence.hpp"
+#include "core/detail/gsl_quadrature.hpp"
 #include "core/error.hpp"
-#include "core/gsl_quadrature.hpp"
 #include "long_double_gauss_legendre.hpp"
 #include "materials/material.hpp"
 

@@ -11,8 +11,8 @@
 #include <memory>
 #include <numbers>
 
+#include "core/detail/gsl_quadrature.hpp"
 #include "core/error.hpp"
-#include "core/gsl_quadrature.hpp"
 #include "validation/hertz.hpp"
 
 namespace coatfft {

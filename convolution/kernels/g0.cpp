@@ -8,10 +8,10 @@
 #include <limits>
 #include <numbers>
 
+#include "core/detail/gsl_quadrature.hpp"
 #include "core/detail/parse_name.hpp"
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
-#include "core/gsl_quadrature.hpp"
 
 namespace coatfft {
 namespace {

@@ -1,14 +1,14 @@
-#include "convolution/operators/dcfft_operator.hpp"
+#include "convolution/operators/detail/dcfft_operator.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <complex>
 
-#include "convolution/kernels/coarse_kernel.hpp"
+#include "convolution/kernels/detail/coarse_kernel.hpp"
+#include "core/detail/fft_size.hpp"
 #include "core/detail/parallel_for.hpp"
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
-#include "core/fft_size.hpp"
 
 namespace coatfft {
 namespace {

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "convolution/operators/dcfft_operator.hpp"
-#include "core/fft_size.hpp"
+#include "convolution/operators/detail/dcfft_operator.hpp"
+#include "core/detail/fft_size.hpp"
 
 namespace coatfft {
 

@@ -17,7 +17,7 @@
 // cycle (no convergence in 3000 iterations at a ratio of 1000), where the geometric mean converged
 // in 230-350.
 #include "contact/detail/solver_ranks.hpp"
-#include "convolution/fft/fftw_plan.hpp"
+#include "convolution/fft/detail/fftw_plan.hpp"
 #include "core/grid.hpp"
 #include "core/types.hpp"
 
