@@ -215,7 +215,7 @@ MethodChoice choose(Context x) {
 double lattice_alpha(const Grid& grid) {
   if (grid.nx() != grid.ny()) return 2.0;
   const auto n = static_cast<double>(grid.nx());
-  return static_cast<double>(fast_fft_size(2 * grid.nx())) / n;
+  return static_cast<double>(detail::fast_fft_size(2 * grid.nx())) / n;
 }
 
 double split_tolerance_for(double tolerance) {

@@ -6,8 +6,8 @@
 #include "core/detail/fft_size.hpp"
 #include "core/error.hpp"
 
-using coatfft::fast_even_fft_size;
-using coatfft::fast_fft_size;
+using coatfft::detail::fast_even_fft_size;
+using coatfft::detail::fast_fft_size;
 
 namespace {
 

@@ -25,7 +25,7 @@ std::ptrdiff_t DcfftOperator::padded_size(std::ptrdiff_t n, InfluenceKernel::For
   // A sampled spectrum exists on its own lattice only; coefficients wrap exactly on any period
   // M >= 2n - 1 (offsets -(n - 1)..n - 1 do not overlap), of which the fastest even one is taken.
   if (form == InfluenceKernel::Form::spectrum) return 2 * n;
-  return fast_even_fft_size(2 * n - 1);
+  return detail::fast_even_fft_size(2 * n - 1);
 }
 
 DcfftOperator::DcfftOperator(const InfluenceKernel& kernel, Planning planning, int threads)
