@@ -7,7 +7,10 @@ Usage: scripts/compare_builds.py OLD_COATFFT NEW_COATFFT OUTPUT.csv [--rounds R]
 For each scene (every method on a coated or homogeneous body at N x N cells, and a contact
 solve) it records the median over R rounds of setup_seconds and apply_seconds (each the median
 of 5 applications), their ratio new/old, and the largest difference between the two builds'
-uz.npy relative to max |uz| (0 when the numbers did not change).
+uz.npy relative to max |uz| (0 when the numbers did not change). Then every bundled example
+(examples/scenes/*.toml) is run once by each build: the summary.json keys whose values differ
+(timings and warnings aside) and the .npy files that are not bitwise equal are printed, and
+written to OUTPUT.csv's comment lines.
 """
 import argparse
 import json
@@ -53,6 +56,41 @@ def run(binary, scene_file, out):
     return summary, np.load(out / "uz.npy")
 
 
+EXAMPLES = pathlib.Path(__file__).resolve().parent.parent / "examples" / "scenes"
+
+
+def without_timings(value):
+    """summary.json without the keys that measure time and the warnings that may name it."""
+    if isinstance(value, dict):
+        return {k: without_timings(v) for k, v in value.items()
+                if not k.endswith("seconds") and k != "warnings"}
+    if isinstance(value, list):
+        return [without_timings(v) for v in value]
+    return value
+
+
+def compare_examples(old, new, tmp):
+    """One line per bundled example: the summary keys and .npy files the two builds disagree on."""
+    lines = []
+    for scene_file in sorted(EXAMPLES.glob("*.toml")):
+        outs = {w: tmp / f"example_{scene_file.stem}_{w}" for w in ("old", "new")}
+        codes = {w: subprocess.run([b, "run", str(scene_file), "-o", str(outs[w]), "--quiet"],
+                                   capture_output=True).returncode
+                 for w, b in (("old", old), ("new", new))}
+        if codes["old"] != codes["new"] or codes["old"] not in (0, 3):
+            lines.append(f"{scene_file.name}: exit {codes['old']} (old), {codes['new']} (new)")
+            continue
+        a, b = (without_timings(json.loads((outs[w] / "summary.json").read_text()))
+                for w in ("old", "new"))
+        keys = sorted(k for k in set(a) | set(b) if a.get(k) != b.get(k))
+        fields = sorted(f.name for f in outs["old"].glob("*.npy")
+                        if not np.array_equal(np.load(f), np.load(outs["new"] / f.name),
+                                              equal_nan=True))
+        lines.append(f"{scene_file.name}: summary keys differing {keys or 'none'}, "
+                     f".npy differing {fields or 'none'}")
+    return lines
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("old")
@@ -81,9 +119,12 @@ def main():
                          med["old"][1], med["new"][1], med["new"][1] / med["old"][1], diff))
             print(f"{label}: setup {rows[-1][3]:.2f}x, apply {rows[-1][6]:.2f}x, uz diff {diff:.1e}",
                   file=sys.stderr)
+        examples = compare_examples(args.old, args.new, tmp)
+        print("\n".join(examples), file=sys.stderr)
     with open(args.output, "w") as f:
         f.write(f"# n = {args.n}\n# rounds = {args.rounds}\n# old = {args.old}\n"
                 f"# new = {args.new}\n")
+        f.writelines(f"# example {line}\n" for line in examples)
         f.write("case,setup_old_s,setup_new_s,setup_ratio,apply_old_s,apply_new_s,apply_ratio,"
                 "uz_max_rel_diff\n")
         for row in rows:
