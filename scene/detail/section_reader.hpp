@@ -43,27 +43,16 @@ class SectionReader {
   }
   double number(std::string_view key, double fallback) { return has(key) ? number(key) : fallback; }
 
-  std::int64_t integer(std::string_view key) {
-    const toml::node& node = require(key);
-    COATFFT_REQUIRE(node.is_integer(), where(key), " must be an integer, got ", describe(node));
-    return node.value<std::int64_t>().value();
-  }
+  std::int64_t integer(std::string_view key) { return typed<std::int64_t>(key, "an integer"); }
   std::int64_t integer(std::string_view key, std::int64_t fallback) {
     return has(key) ? integer(key) : fallback;
   }
 
   bool boolean(std::string_view key, bool fallback) {
-    if (!has(key)) return fallback;
-    const toml::node& node = require(key);
-    COATFFT_REQUIRE(node.is_boolean(), where(key), " must be true or false, got ", describe(node));
-    return node.value<bool>().value();
+    return has(key) ? typed<bool>(key, "true or false") : fallback;
   }
 
-  std::string string(std::string_view key) {
-    const toml::node& node = require(key);
-    COATFFT_REQUIRE(node.is_string(), where(key), " must be a string, got ", describe(node));
-    return node.value<std::string>().value();
-  }
+  std::string string(std::string_view key) { return typed<std::string>(key, "a string"); }
   std::string string(std::string_view key, std::string fallback) {
     return has(key) ? string(key) : fallback;
   }
@@ -140,6 +129,14 @@ class SectionReader {
                     misspelling({key}));
     used_.insert(std::string(key));
     return *node;
+  }
+  // The value of type T (an integer, a boolean or a string) at `key`, refused as "must be `what`"
+  // when the key holds another type.
+  template <typename T>
+  T typed(std::string_view key, std::string_view what) {
+    const toml::node& node = require(key);
+    COATFFT_REQUIRE(node.is<T>(), where(key), " must be ", what, ", got ", describe(node));
+    return node.value<T>().value();
   }
   static std::string line_of(const toml::node& node) {
     return node.source().begin ? detail::concat(" (line ", node.source().begin.line, ")") : "";
