@@ -79,7 +79,6 @@ void read_topography(SectionReader& reader, const SceneContext& context, Contact
   spec.topography = std::move(t.report);
 }
 
-// `stack_body`: the body the operator is built from when it is a stack, nullptr for a table.
 // [contact] indenter and its keys: the shape, checked against the grid (a height map's shape and
 // values; a cylinder's length, a punch's radius within the domain).
 void read_indenter(SectionReader& reader, const SceneContext& context, ContactSpec& spec) {
