@@ -1,6 +1,6 @@
 // Contact solver on a stiff thin coating: iterations against the stiffness contrast and the
-// contact fraction, for the two preconditioner symbols (contact/fourier_preconditioner.hpp). A
-// rigid flat on the periodic rough surface of the rough-contact benchmarks (bench/rough_gap.hpp)
+// contact fraction, for the two preconditioner symbols (contact/detail/fourier_preconditioner.hpp).
+// A rigid flat on the periodic rough surface of the rough-contact benchmarks (bench/rough_gap.hpp)
 // presses a coating 2 um thick, of Young's modulus `contrast` times steel's (nu 0.3), bonded on
 // steel; period 0.5 mm, so the coating is half a cell thick at 128^2 and the operator's k K^
 // spans nearly the whole ratio of the moduli over the grid's wavenumbers. For each contrast the

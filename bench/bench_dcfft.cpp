@@ -22,7 +22,7 @@
 #include "bench/bench_report.hpp"
 #include "bench/child_process.hpp"
 #include "bench/command_line.hpp"
-#include "convolution/fft/fftw_plan.hpp"
+#include "convolution/fft/detail/fftw_plan.hpp"
 #include "convolution/kernels/influence_kernel.hpp"
 #include "convolution/operators/make_operator.hpp"
 #include "core/detail/timing.hpp"

@@ -35,7 +35,7 @@
 #include "convolution/kernels/influence_kernel.hpp"
 #include "convolution/kernels/periodic_kernel.hpp"
 #include "convolution/kernels/split_frf_kernel.hpp"
-#include "convolution/operators/dcfft_operator.hpp"
+#include "convolution/operators/detail/dcfft_operator.hpp"
 #include "convolution/operators/periodic_operator.hpp"
 #include "core/detail/timing.hpp"
 #include "distributed/distributed_contact.hpp"

@@ -1,10 +1,10 @@
 // One DC-FFT application on grids whose doubled size 2N is a poor FFT length (N = 127, 511: 2N =
 // 2 x 127, 2 x 7 x 73) next to the power of two above (N = 128, 512), for Love's kernel (dcfft)
 // and the split kernel of a coated body (frf-split): DcfftOperator pads to the smallest even
-// 7-smooth length >= 2N - 1 (core/fft_size.hpp), so an odd N should cost about what N + 1 does.
-// The old padding to exactly 2N is timed too: the same kernel handed over as its spectrum on the
-// 2N lattice (the spectrum form keeps M = 2N). All operators of one (method, N pair) are applied
-// in turn, round after round, so that they see the same load; medians per operator. Prints
+// 7-smooth length >= 2N - 1 (core/detail/fft_size.hpp), so an odd N should cost about what N + 1
+// does. The old padding to exactly 2N is timed too: the same kernel handed over as its spectrum on
+// the 2N lattice (the spectrum form keeps M = 2N). All operators of one (method, N pair) are
+// applied in turn, round after round, so that they see the same load; medians per operator. Prints
 // "# key = value" headers and CSV rows and writes them to bench/results/fft_sizes.csv (or OUTPUT).
 //   bench_fft_sizes [OUTPUT] [--budget 4] [--threads 1]
 #include <fftw3.h>
@@ -21,7 +21,7 @@
 
 #include "bench/bench_report.hpp"
 #include "bench/command_line.hpp"
-#include "convolution/fft/fftw_plan.hpp"
+#include "convolution/fft/detail/fftw_plan.hpp"
 #include "convolution/kernels/influence_kernel.hpp"
 #include "convolution/kernels/split_frf_kernel.hpp"
 #include "convolution/operators/make_operator.hpp"

@@ -25,7 +25,7 @@
 #include "bench/command_line.hpp"
 #include "bench/rough_gap.hpp"
 #include "contact/contact_solver.hpp"
-#include "convolution/fft/fftw_plan.hpp"
+#include "convolution/fft/detail/fftw_plan.hpp"
 #include "convolution/kernels/periodic_kernel.hpp"
 #include "convolution/operators/make_operator.hpp"
 #include "convolution/operators/periodic_operator.hpp"

@@ -20,7 +20,7 @@
 #include "cli/validate_frf_command.hpp"
 #include "core/detail/mpi_launch.hpp"
 #ifdef COATFFT_WITH_MPI
-#include "distributed/agreed_refusal.hpp"
+#include "distributed/detail/agreed_refusal.hpp"
 #include "distributed/mpi_session.hpp"
 #endif
 #include "core/detail/shorten.hpp"

@@ -1,4 +1,4 @@
-#include "contact/contact_patches.hpp"
+#include "contact/detail/contact_patches.hpp"
 
 #include <array>
 #include <vector>

@@ -33,7 +33,7 @@ enum class Conjugation {
   polak_ribiere,
 };
 
-/// The multiplier of the preconditioner (contact/fourier_preconditioner.hpp).
+/// The multiplier of the preconditioner (contact/detail/fourier_preconditioner.hpp).
 enum class PreconditionerSymbol {
   /// |k|: the inverse of the half-space symbol 2/(E* k) up to a constant, whatever the body.
   half_space,
@@ -73,7 +73,7 @@ struct ContactOptions {
   /// "Preconditioning"), FFTW_ESTIMATE below. The nested start's coarse solves use estimate.
   std::optional<Planning> preconditioner_planning;
   /// Move the displacement by linearity (u <- u - tau K t), recomputing u = K p only after a step
-  /// that changed the contact set, from a Hertzian start (contact/initial_pressure.hpp): one
+  /// that changed the contact set, from a Hertzian start (contact/detail/initial_pressure.hpp): one
   /// operator application per iteration, two in those that changed the set (docs/contact.md,
   /// "Operator applications"). Off gives Polonsky & Keer's original: their uniform start and
   /// u = K p recomputed at every iteration (two applications per iteration). Both solve the same

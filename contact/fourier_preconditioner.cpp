@@ -1,4 +1,4 @@
-#include "contact/fourier_preconditioner.hpp"
+#include "contact/detail/fourier_preconditioner.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "contact/grid_transfer.hpp"
+#include "contact/detail/grid_transfer.hpp"
 
 namespace coatfft::detail {
 

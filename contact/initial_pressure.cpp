@@ -1,4 +1,4 @@
-#include "contact/initial_pressure.hpp"
+#include "contact/detail/initial_pressure.hpp"
 
 #include <algorithm>
 #include <bit>

@@ -1,10 +1,10 @@
-#include "core/gsl_quadrature.hpp"
+#include "core/detail/gsl_quadrature.hpp"
 
 #include <mutex>
 
 #include "core/error.hpp"
 
-namespace coatfft {
+namespace coatfft::detail {
 namespace {
 
 std::mutex& handler_mutex() {
@@ -70,4 +70,4 @@ GslIntegral gsl_qags(const std::function<double(double)>& f, double a, double b,
   return checked(r, "gsl_integration_qags", a, b);
 }
 
-}  // namespace coatfft
+}  // namespace coatfft::detail

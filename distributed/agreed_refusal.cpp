@@ -1,4 +1,4 @@
-#include "distributed/agreed_refusal.hpp"
+#include "distributed/detail/agreed_refusal.hpp"
 
 #include <exception>
 #include <new>

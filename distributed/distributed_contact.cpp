@@ -2,17 +2,17 @@
 
 #include <vector>
 
+#include "contact/detail/fourier_preconditioner.hpp"
 #include "contact/detail/solver_ranks.hpp"
-#include "contact/fourier_preconditioner.hpp"
 #include "distributed/detail/communicator_ranks.hpp"
-#include "distributed/slab_fft.hpp"
+#include "distributed/detail/slab_fft.hpp"
 
 namespace coatfft {
 
 namespace {
 
-// The half-space preconditioner (contact/fourier_preconditioner.hpp) on this rank's rows: its
-// symbol on this rank's half-spectrum columns, applied by the slab transform.
+// The half-space preconditioner (contact/detail/fourier_preconditioner.hpp) on this rank's rows:
+// its symbol on this rank's half-spectrum columns, applied by the slab transform.
 class SlabPreconditioner final : public detail::Preconditioner {
  public:
   SlabPreconditioner(const Communicator& comm, const Grid& grid, int threads, Planning planning)

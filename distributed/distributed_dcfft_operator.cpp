@@ -7,13 +7,13 @@
 #include <complex>
 #include <vector>
 
-#include "convolution/fft/fftw_plan.hpp"
+#include "convolution/fft/detail/fftw_plan.hpp"
 #include "convolution/kernels/love_influence.hpp"
 #include "core/detail/parallel_for.hpp"
 #include "core/error.hpp"
+#include "distributed/detail/distributed_split_kernel.hpp"
 #include "distributed/detail/mpi_handle.hpp"
-#include "distributed/distributed_split_kernel.hpp"
-#include "distributed/slab_fft.hpp"
+#include "distributed/detail/slab_fft.hpp"
 
 namespace coatfft {
 

@@ -13,7 +13,7 @@
 // real spectrum is computed distributed too, as the 2-D DCT-I of their quarter (each rank its
 // rows, FFTW-MPI's transpose, each rank its columns); frf-split's quarter rows are computed on
 // each rank, its short-range lattice transformed distributed as well
-// (distributed/distributed_split_kernel.hpp). Construction and apply() are collective.
+// (distributed/detail/distributed_split_kernel.hpp). Construction and apply() are collective.
 #include <cstddef>
 #include <functional>
 #include <memory>

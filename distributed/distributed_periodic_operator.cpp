@@ -2,10 +2,10 @@
 
 #include <vector>
 
-#include "convolution/kernels/periodic_kernel_parts.hpp"
+#include "convolution/kernels/detail/periodic_kernel_parts.hpp"
 #include "core/detail/parallel_for.hpp"
 #include "core/error.hpp"
-#include "distributed/slab_fft.hpp"
+#include "distributed/detail/slab_fft.hpp"
 
 namespace coatfft {
 

@@ -1,4 +1,4 @@
-#include "distributed/distributed_split_kernel.hpp"
+#include "distributed/detail/distributed_split_kernel.hpp"
 
 #include <fftw3-mpi.h>
 #include <mpi.h>
@@ -9,12 +9,12 @@
 #include <cstdint>
 #include <vector>
 
-#include "convolution/fft/fftw_plan.hpp"
-#include "convolution/kernels/split_kernel/split_plan.hpp"
+#include "convolution/fft/detail/fftw_plan.hpp"
+#include "convolution/kernels/split_kernel/detail/split_plan.hpp"
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
 #include "distributed/detail/mpi_handle.hpp"
-#include "distributed/slab_fft.hpp"
+#include "distributed/detail/slab_fft.hpp"
 
 namespace coatfft::detail {
 namespace {
@@ -41,8 +41,9 @@ RowBlock overlap(RowBlock a, RowBlock b) {
 // lattice's limit per rank, require_lattice, keeps them far below).
 std::vector<int> mpi_counts(const Communicator& comm, const std::vector<std::int64_t>& n) {
   const bool fit = std::all_of(n.begin(), n.end(), [](std::int64_t v) { return v <= INT_MAX; });
-  COATFFT_REQUIRE(comm.all(fit), "split_frf_kernel: more lattice entries to exchange between two "
-                                 "ranks than MPI's counts take; use more ranks");
+  COATFFT_REQUIRE(comm.all(fit),
+                  "split_frf_kernel: more lattice entries to exchange between two "
+                  "ranks than MPI's counts take; use more ranks");
   return std::vector<int>(n.begin(), n.end());
 }
 

@@ -22,9 +22,10 @@ void require_distributed(const OperatorOptions& o, bool love) {
 }
 
 // The operator of `frf` (periodic, or frf-split's on a free boundary), as make_operator's.
-std::unique_ptr<DistributedOperator> frf_operator(const Communicator& comm, const Grid& grid,
-                                                  const Frf& frf, const OperatorOptions& o,
-                                                  OperatorReport& report) {
+std::unique_ptr<DistributedOperator> distributed_frf_operator(const Communicator& comm,
+                                                              const Grid& grid, const Frf& frf,
+                                                              const OperatorOptions& o,
+                                                              OperatorReport& report) {
   report.frf = frf.name();
   if (o.boundary == Boundary::periodic) {
     PeriodicKernelOptions kernel;
@@ -42,8 +43,9 @@ std::unique_ptr<DistributedOperator> frf_operator(const Communicator& comm, cons
 }
 
 // The report's lattice and time, once the operator is built.
-BuiltDistributedOperator finished(std::unique_ptr<DistributedOperator> op, OperatorReport report,
-                                  const Grid& grid, Clock::time_point start) {
+BuiltDistributedOperator built_distributed(std::unique_ptr<DistributedOperator> op,
+                                           OperatorReport report, const Grid& grid,
+                                           Clock::time_point start) {
   const bool periodic = op->periodic();
   report.method = op->method();
   report.fft_nx = periodic ? grid.nx() : 2 * grid.nx();
@@ -69,10 +71,10 @@ BuiltDistributedOperator make_distributed_operator(const Communicator& comm, con
     check_love_body(body, options.method);
     auto op = std::make_unique<DistributedDcfftOperator>(
         comm, grid, body.substrate().plane_strain_modulus(), options.planning, options.threads);
-    return finished(std::move(op), std::move(report), grid, start);
+    return built_distributed(std::move(op), std::move(report), grid, start);
   }
-  auto op = frf_operator(comm, grid, *make_frf(body), options, report);
-  return finished(std::move(op), std::move(report), grid, start);
+  auto op = distributed_frf_operator(comm, grid, *make_frf(body), options, report);
+  return built_distributed(std::move(op), std::move(report), grid, start);
 }
 
 BuiltDistributedOperator make_distributed_operator(const Communicator& comm, const Grid& grid,
@@ -81,8 +83,8 @@ BuiltDistributedOperator make_distributed_operator(const Communicator& comm, con
   check_operator_options(grid, options);
   require_distributed(options, false);
   OperatorReport report;
-  auto op = frf_operator(comm, grid, frf, options, report);
-  return finished(std::move(op), std::move(report), grid, start);
+  auto op = distributed_frf_operator(comm, grid, frf, options, report);
+  return built_distributed(std::move(op), std::move(report), grid, start);
 }
 
 }  // namespace coatfft

@@ -5,7 +5,7 @@
 
 #include <mutex>
 
-#include "convolution/fft/fftw_plan.hpp"
+#include "convolution/fft/detail/fftw_plan.hpp"
 #include "core/detail/mpi_launch.hpp"
 #include "core/error.hpp"
 

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "core/error.hpp"
-#include "distributed/slab_fft.hpp"
+#include "distributed/detail/slab_fft.hpp"
 #include "surfaces/detail/self_affine_spectrum.hpp"
 
 namespace coatfft {

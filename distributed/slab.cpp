@@ -4,7 +4,7 @@
 
 #include "core/error.hpp"
 #include "distributed/detail/mpi_handle.hpp"
-#include "distributed/slab_fft.hpp"
+#include "distributed/detail/slab_fft.hpp"
 
 namespace coatfft {
 

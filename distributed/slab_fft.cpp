@@ -1,4 +1,4 @@
-#include "distributed/slab_fft.hpp"
+#include "distributed/detail/slab_fft.hpp"
 
 #include <fftw3-mpi.h>
 

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "frf/hyperbolic_series.hpp"
+#include "frf/detail/hyperbolic_series.hpp"
 
 namespace coatfft {
 

@@ -9,7 +9,7 @@
 #include <limits>
 
 #include "core/error.hpp"
-#include "frf/hyperbolic_series.hpp"
+#include "frf/detail/hyperbolic_series.hpp"
 
 namespace coatfft {
 

@@ -8,8 +8,8 @@
 #include <string>
 #include <utility>
 
+#include "core/detail/gsl_quadrature.hpp"
 #include "core/error.hpp"
-#include "core/gsl_quadrature.hpp"
 
 namespace coatfft {
 
@@ -159,7 +159,7 @@ TabulatedFrf::TabulatedFrf(std::vector<double> k, std::vector<double> H, std::op
   auto spline = std::make_unique<Spline>();
   spline->interp.reset(gsl_interp_alloc(gsl_interp_cspline, k_.size()));
   COATFFT_REQUIRE(spline->interp != nullptr, "TabulatedFrf: cannot allocate the interpolant");
-  const GslHandlerOff off;
+  const detail::GslHandlerOff off;
   const int status =
       gsl_interp_init(spline->interp.get(), log_k_.data(), kH_.data(), log_k_.size());
   COATFFT_REQUIRE(status == GSL_SUCCESS, "TabulatedFrf: gsl_interp_init: ", gsl_strerror(status));

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "core/error.hpp"
-#include "distributed/agreed_refusal.hpp"
+#include "distributed/detail/agreed_refusal.hpp"
 #include "distributed/detail/mpi_handle.hpp"
 #include "io/npy.hpp"
 

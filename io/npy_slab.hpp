@@ -28,8 +28,8 @@ void write_text_slab(const Communicator& comm, const std::filesystem::path& path
 /// C order (Fortran's keeps a row's values apart), of the slab's grid's shape (ny, nx), every value
 /// finite (a `value_word`: "height"). Collective; InvalidArgument with the same one-line message
 /// on every rank for a file read_npy refuses (each rank checks the header, agreed as
-/// distributed/agreed_refusal.hpp agrees) and for the first value in the file's order that is not
-/// finite (named with the rank that read it and that rank's path).
+/// distributed/detail/agreed_refusal.hpp agrees) and for the first value in the file's order that
+/// is not finite (named with the rank that read it and that rank's path).
 Field read_npy_slab(const Communicator& comm, const std::filesystem::path& path, const Slab& slab,
                     std::string_view value_word);
 

@@ -1,4 +1,4 @@
-#include "loads/disk_cell_geometry.hpp"
+#include "loads/detail/disk_cell_geometry.hpp"
 
 #include <algorithm>
 #include <cmath>

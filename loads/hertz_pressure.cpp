@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "loads/disk_cell_geometry.hpp"
+#include "loads/detail/disk_cell_geometry.hpp"
 
 namespace coatfft {
 namespace {

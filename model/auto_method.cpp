@@ -6,11 +6,11 @@
 #include <memory>
 #include <tuple>
 
-#include "convolution/operators/dcfft_operator.hpp"
+#include "convolution/operators/detail/dcfft_operator.hpp"
 #include "convolution/operators/pipeline_error.hpp"
 #include "core/detail/brief.hpp"
+#include "core/detail/fft_size.hpp"
 #include "core/error.hpp"
-#include "core/fft_size.hpp"
 #include "core/threads.hpp"
 #include "model/cost_model.hpp"
 
@@ -226,7 +226,7 @@ MethodChoice choose(Context x) {
 double lattice_alpha(const Grid& grid) {
   if (grid.nx() != grid.ny()) return 2.0;
   const auto n = static_cast<double>(grid.nx());
-  return static_cast<double>(fast_fft_size(2 * grid.nx())) / n;
+  return static_cast<double>(detail::fast_fft_size(2 * grid.nx())) / n;
 }
 
 double split_tolerance_for(double tolerance) {

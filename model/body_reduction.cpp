@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "core/detail/brief.hpp"
+#include "core/detail/gsl_quadrature.hpp"
 #include "core/error.hpp"
-#include "core/gsl_quadrature.hpp"
 #include "validation/hankel_displacement.hpp"
 
 namespace coatfft {
@@ -56,7 +56,7 @@ double tail_bound(const ReferenceLoad& load, double kdh_end) {
 // the FRFs agree to rounding need not be resolved).
 double integrate(const std::function<double(double)>& f, double a, double b, double abs_tol,
                  gsl_integration_workspace* ws) {
-  return gsl_qag(f, a, b, abs_tol, kReferenceRelTol, GSL_INTEG_GAUSS21, ws).value;
+  return detail::gsl_qag(f, a, b, abs_tol, kReferenceRelTol, GSL_INTEG_GAUSS21, ws).value;
 }
 
 // The panels of the integral in t = k a: half-periods of P up to t_exact, then doubling.
@@ -84,8 +84,8 @@ double centre_integral(const Frf& full, const ReferenceLoad& load) {
 // reduction_effect with its denominator `u0` (centre_integral) given.
 double effect_bound(const Frf& full, const Frf& reduced, const ReferenceLoad& load, double u0,
                     double stop_above) {
-  const GslHandlerOff quiet;
-  const GslWorkspace ws = make_gsl_workspace(200);
+  const detail::GslHandlerOff quiet;
+  const detail::GslWorkspace ws = detail::make_gsl_workspace(200);
   const double a = load.radius;
   const auto dh = [&](double k) { return std::abs(full(k) - reduced(k)); };
   const auto exact = [&](double k) {

@@ -8,8 +8,8 @@
 #include <sstream>
 
 #include "convolution/operators/make_operator.hpp"
+#include "core/detail/fft_size.hpp"
 #include "core/error.hpp"
-#include "core/fft_size.hpp"
 #include "frf/frf.hpp"
 #include "layers/layer_stack.hpp"
 #include "validation/hankel_displacement.hpp"
@@ -31,12 +31,12 @@ constexpr int max_trials = 24;
 
 std::ptrdiff_t previous_fast_size(std::ptrdiff_t n) {
   std::ptrdiff_t m = n - 1;
-  while (m > 1 && fast_fft_size(m) != m) --m;
+  while (m > 1 && detail::fast_fft_size(m) != m) --m;
   return m;
 }
 
 std::ptrdiff_t next_fast_size(std::ptrdiff_t n) {
-  return fast_fft_size(n + 1);
+  return detail::fast_fft_size(n + 1);
 }
 
 // Cells of an axis of n cells of size d that cover |x| <= reach, keeping the grid's own cells:
@@ -65,7 +65,7 @@ class Search {
   Grid grid(std::ptrdiff_t n) const {
     const bool x_long = lx_ >= ly_;
     const double ratio = (x_long ? ly_ / lx_ : lx_ / ly_) * static_cast<double>(n);
-    const auto n_short = fast_fft_size(
+    const auto n_short = detail::fast_fft_size(
         std::max<std::ptrdiff_t>(1, static_cast<std::ptrdiff_t>(std::ceil(ratio * (1.0 - 1e-12)))));
     return x_long ? Grid(n, n_short, lx_, ly_) : Grid(n_short, n, lx_, ly_);
   }
@@ -74,7 +74,7 @@ class Search {
   std::ptrdiff_t cells_for(double per_radius) const {
     const double n = std::ceil(std::max(lx_, ly_) / load_.radius * per_radius);
     return n > 1e15 ? std::numeric_limits<std::ptrdiff_t>::max()
-                    : fast_fft_size(static_cast<std::ptrdiff_t>(n));
+                    : detail::fast_fft_size(static_cast<std::ptrdiff_t>(n));
   }
 
   // Estimates grid(n) and updates the bracket: the smallest passing size, the largest failing
@@ -192,7 +192,7 @@ GridChoice choose_grid_for_tolerance(double lx, double ly, const AnalyticLoad& l
   const double target = (1.0 - operator_share) * tolerance;
   Search search(lx, ly, load, target, options);
   // The largest fast size within the limit: every size tried is a fast size.
-  const std::ptrdiff_t max_cells = fast_fft_size(options.max_cells) == options.max_cells
+  const std::ptrdiff_t max_cells = detail::fast_fft_size(options.max_cells) == options.max_cells
                                        ? options.max_cells
                                        : previous_fast_size(options.max_cells);
   const std::ptrdiff_t n_min = search.cells_for(min_cells_per_radius);
@@ -218,8 +218,8 @@ GridChoice choose_grid_for_tolerance(double lx, double ly, const AnalyticLoad& l
       refuse(tolerance, operator_share, target, search, needed, max_cells);
     const double wanted =
         std::clamp(needed, static_cast<double>(lower), static_cast<double>(upper));
-    search.try_size(
-        std::clamp(fast_fft_size(static_cast<std::ptrdiff_t>(std::ceil(wanted))), lower, upper));
+    search.try_size(std::clamp(
+        detail::fast_fft_size(static_cast<std::ptrdiff_t>(std::ceil(wanted))), lower, upper));
   }
   const RefinementPoint pass = search.pass();
   COATFFT_REQUIRE(pass.n > 0, "choose_grid_for_tolerance: tolerance = ", tolerance,

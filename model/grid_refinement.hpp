@@ -39,11 +39,11 @@ struct GridRefinementOptions {
 /// load error (estimate_load_discretization_error, on a homogeneous half-space: DC-FFT, exact for
 /// cell-wise loads, times options.body_factor) is at most (1 - operator_share) tolerance: the
 /// rest of the total `tolerance` (in (0, 1)) is left to the operator (operator_share in [0, 1)).
-/// nx and ny are fast FFT sizes 2^a 3^b 5^c 7^d (core/fft_size.hpp), at most options.max_cells;
-/// the cells are at most as long along the shorter axis as along the longer one, and at least 4
-/// per load radius. Search: estimates at 8 and 16 cells per radius fit a convergence order that
-/// predicts the size; estimates then bracket it between neighbouring fast sizes of the longer
-/// axis (the chosen one meets the share, the next coarser one does not, as estimated). Each
+/// nx and ny are fast FFT sizes 2^a 3^b 5^c 7^d (core/detail/fft_size.hpp), at most
+/// options.max_cells; the cells are at most as long along the shorter axis as along the longer one,
+/// and at least 4 per load radius. Search: estimates at 8 and 16 cells per radius fit a convergence
+/// order that predicts the size; estimates then bracket it between neighbouring fast sizes of the
+/// longer axis (the chosen one meets the share, the next coarser one does not, as estimated). Each
 /// estimate uses a window of the grid's own cells around the load (at least 1.5 a each side),
 /// which gives the same estimate as the whole grid at a cost set by a/dx alone. Typically 4 to 10
 /// estimates; measured 0.05 to 0.1 s (tolerance 1e-2) and 0.3 to 0.5 s (1e-3) for a Hertz load on

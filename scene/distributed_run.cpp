@@ -17,10 +17,10 @@
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
 #include "core/memory.hpp"
-#include "distributed/agreed_refusal.hpp"
+#include "distributed/detail/agreed_refusal.hpp"
+#include "distributed/detail/slab_fft.hpp"
 #include "distributed/distributed_contact.hpp"
 #include "distributed/make_distributed_operator.hpp"
-#include "distributed/slab_fft.hpp"
 #include "io/grid_file.hpp"
 #include "io/input_file.hpp"
 #include "io/npy_slab.hpp"
@@ -30,6 +30,7 @@
 #include "scene/load_error_report.hpp"
 #include "scene/operator_from_scene.hpp"
 #include "scene/resources.hpp"
+#include "scene/row_layout.hpp"
 #include "scene/run_summary.hpp"
 #include "scene/scene_pressure.hpp"
 
@@ -101,15 +102,10 @@ Field slab_heights(const Communicator& comm, const Scene& scene, const Slab& sla
   return height_rows(scene.grid, spec.indenter, slab.y0, slab.rows);
 }
 
-// summary.json's numbers of the fields, each over the ranks: uz_center from the rank that holds
-// the centre's row.
-FieldNumbers slab_numbers(const Communicator& comm, const Grid& grid, const Slab& slab,
-                          const Field& pressure, const Field& uz) {
-  const std::ptrdiff_t j = grid.centre_j() - slab.y0;
-  const bool centre = j >= 0 && j < slab.rows;
-  const double local_max = slab.rows > 0 ? uz.maxCoeff() : -std::numeric_limits<double>::infinity();
-  return {comm.sum(pressure.sum()) * grid.dx() * grid.dy(),
-          comm.sum(centre ? uz(grid.centre_i(), j) : 0.0), comm.max(local_max)};
+// A slab's rows, its numbers combined over the ranks.
+RowLayout slab_rows(const Communicator& comm, const Slab& slab) {
+  return {slab.y0, [&comm](double value) { return comm.sum(value); },
+          [&comm](double value) { return comm.max(value); }};
 }
 
 // The distributed operator of the scene's body, as operator_from_scene builds the serial one.
@@ -230,21 +226,6 @@ double timed_applications(const Communicator& comm, DistributedOperator& op, con
   return seconds;
 }
 
-// The load-discretisation estimate of the serial run (loads/discretization_error.hpp) on the
-// ranks' rows, its maximum over the ranks.
-nlohmann::json slab_load_discretization(const Communicator& comm, const Scene& scene,
-                                        DistributedOperator& op, const Field& pressure,
-                                        std::ptrdiff_t y0, double max_abs_uz) {
-  const PressureSpec& load = *scene.pressure;
-  if (load.kind == PressureKind::file) return nullptr;
-  const LoadDifference d =
-      load_discretization_difference(scene.grid, analytic_load(load), pressure, y0);
-  const Field u = op.apply(d.difference);
-  return load_discretization_json(
-      load,
-      load_discretization_estimate(d, comm.max(u.size() ? u.abs().maxCoeff() : 0.0), max_abs_uz));
-}
-
 // A known load: its rows, the timed applications, and the serial run's reports over the ranks.
 DistributedSceneRun compute_pressure(const Communicator& comm, const Scene& scene,
                                      const std::optional<AutomaticChoice>& automatic,
@@ -260,18 +241,11 @@ DistributedSceneRun compute_pressure(const Communicator& comm, const Scene& scen
   Field uz;
   const double apply_seconds =
       timed_applications(comm, *op, pressure, uz, options.repeat, progress);
-  const FieldNumbers numbers = slab_numbers(comm, scene.grid, slab, pressure, uz);
-  const double max_abs_uz = comm.max(slab.rows > 0 ? uz.abs().maxCoeff() : 0.0);
+  const RowLayout layout = slab_rows(comm, slab);
+  const FieldNumbers numbers = field_numbers(scene.grid, layout, pressure, uz);
   nlohmann::json summary =
       common_summary(scene, automatic, report, apply_seconds, options.repeat, numbers);
-  summary["a_posteriori"] =
-      scene.periodic ? nlohmann::json() : a_posteriori_check(scene, numbers.uz_center, max_abs_uz);
-  summary["load_discretization"] =
-      slab_load_discretization(comm, scene, *op, pressure, slab.y0, max_abs_uz);
-  summary["refinement"] = refinement_json(scene);
-  if (reports_hertz_error(scene))
-    summary["max_error_vs_hertz"] =
-        comm.max(hertz_error_rows(scene, uz, slab.y0));  // 0 on a rank without rows
+  add_known_load_reports(summary, scene, layout, numbers, *op, pressure, uz);
   add_rank_summary(summary, comm, scene, *op);
   return {slab, std::move(pressure), std::move(uz), Field(), std::move(summary), RunStatus::ok};
 }
@@ -301,7 +275,7 @@ DistributedSceneRun compute_contact(const Communicator& comm, Scene scene,
   const double apply_seconds =
       timed_applications(comm, *op, result.pressure, uz, options.repeat, progress);
   const FieldNumbers numbers =
-      slab_numbers(comm, scene.grid, slab, result.pressure, result.displacement);
+      field_numbers(scene.grid, slab_rows(comm, slab), result.pressure, result.displacement);
   nlohmann::json summary =
       common_summary(scene, automatic, report, apply_seconds, options.repeat, numbers);
   add_contact_summary(summary, scene, result, solve_seconds);

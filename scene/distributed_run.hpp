@@ -33,9 +33,9 @@ void check_distributable(const Scene& scene);
 /// values left unread, check_distributable, and the memory a rank needs (the serial estimate over
 /// the ranks, plus the slab transforms' overhead, docs/scale.md) checked against --max-memory
 /// (per rank) or the available memory shared by the ranks of this machine. What each rank checks
-/// alone is agreed (distributed/agreed_refusal.hpp): a refusal on any rank is thrown on every
-/// rank, naming it, as are scene files (or --repeat) that differ between the ranks, naming both.
-/// Collective.
+/// alone is agreed (distributed/detail/agreed_refusal.hpp): a refusal on any rank is thrown on
+/// every rank, naming it, as are scene files (or --repeat) that differ between the ranks, naming
+/// both. Collective.
 PreparedScene prepare_distributed_scene(const Communicator& comm,
                                         const std::filesystem::path& scene_file,
                                         const SceneRunOptions& options);

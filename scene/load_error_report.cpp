@@ -4,14 +4,6 @@
 
 namespace coatfft::scene {
 
-nlohmann::json load_discretization_json(const Scene& scene, SurfaceOperator& op,
-                                        const Field& pressure, const Field& uz) {
-  if (!scene.pressure || scene.pressure->kind == PressureKind::file) return nullptr;
-  const PressureSpec& p = *scene.pressure;
-  return load_discretization_json(
-      p, estimate_load_discretization_error(op, analytic_load(p), pressure, uz.abs().maxCoeff()));
-}
-
 nlohmann::json load_discretization_json(const PressureSpec& load,
                                         const LoadDiscretizationEstimate& estimate) {
   return {{"estimated_error", estimate.relative_error},

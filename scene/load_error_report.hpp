@@ -11,11 +11,8 @@
 namespace coatfft::scene {
 
 /// {"estimated_error": max |u_cellwise - u_continuous| / max |u| (estimated), "absolute_error"
-/// [m], "sampling"}, or null for a load given as a file.
-nlohmann::json load_discretization_json(const Scene& scene, SurfaceOperator& op,
-                                        const Field& pressure, const Field& uz);
-
-/// The same object from an estimate made otherwise (a distributed run's, over its ranks).
+/// [m], "sampling"} of an estimate
+/// (scene/row_layout.cpp makes it, on the rows a run holds).
 nlohmann::json load_discretization_json(const PressureSpec& load,
                                         const LoadDiscretizationEstimate& estimate);
 

@@ -95,11 +95,6 @@ void check_repeat(int repeat) {
                   max_repeat);
 }
 
-FieldNumbers field_numbers(const Grid& grid, const Field& pressure, const Field& uz) {
-  return {pressure.sum() * grid.dx() * grid.dy(), uz(grid.centre_i(), grid.centre_j()),
-          uz.maxCoeff()};
-}
-
 nlohmann::json common_summary(const Scene& scene, const std::optional<AutomaticChoice>& automatic,
                               const OperatorReport& report, double apply_seconds, int repeat,
                               const FieldNumbers& fields) {

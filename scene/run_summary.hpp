@@ -25,8 +25,7 @@ inline constexpr const char* domain_edge_refusal =
 struct FieldNumbers {
   double total_load = 0.0, uz_center = 0.0, uz_max = 0.0;
 };
-/// Those of whole fields (nx, ny) of `grid`.
-FieldNumbers field_numbers(const Grid& grid, const Field& pressure, const Field& uz);
+/// (field_numbers: scene/row_layout.hpp, for the rows a run holds.)
 
 /// The keys of every run: the method and its report, the body, the grid, the timings, the
 /// fields' numbers, the memory estimate, the warnings (not printed), the automatic choice.

@@ -22,6 +22,7 @@
 #include "scene/load_error_report.hpp"
 #include "scene/operator_from_scene.hpp"
 #include "scene/resources.hpp"
+#include "scene/row_layout.hpp"
 #include "scene/run_summary.hpp"
 #include "scene/scene_pressure.hpp"
 #include "scene/scene_topography.hpp"
@@ -58,13 +59,11 @@ SceneRun compute_pressure(const Scene& scene, const Automatic& automatic, int re
   Field uz;
   const double apply_seconds = time_applications(scene, *built.op, pressure, uz, repeat);
 
-  nlohmann::json summary = common_summary(scene, automatic, built.report, apply_seconds, repeat,
-                                          field_numbers(grid, pressure, uz));
-  // The a-posteriori check compares with the free surface's Hankel reference.
-  summary["a_posteriori"] = scene.periodic ? nlohmann::json() : a_posteriori_check(scene, uz);
-  summary["load_discretization"] = load_discretization_json(scene, *built.op, pressure, uz);
-  summary["refinement"] = refinement_json(scene);
-  if (reports_hertz_error(scene)) summary["max_error_vs_hertz"] = hertz_error_rows(scene, uz, 0);
+  const RowLayout whole;  // every row, as a distributed run's slab is its rows
+  const FieldNumbers numbers = field_numbers(grid, whole, pressure, uz);
+  nlohmann::json summary =
+      common_summary(scene, automatic, built.report, apply_seconds, repeat, numbers);
+  add_known_load_reports(summary, scene, whole, numbers, *built.op, pressure, uz);
   return {grid,         std::move(pressure), std::move(uz),
           std::nullopt, std::move(summary),  RunStatus::ok};
 }
@@ -261,7 +260,7 @@ SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat,
   const double apply_seconds = time_applications(scene, *built.op, result.pressure, uz, repeat);
   nlohmann::json summary =
       common_summary(scene, automatic, built.report, apply_seconds, repeat,
-                     field_numbers(scene.grid, result.pressure, result.displacement));
+                     field_numbers(scene.grid, RowLayout{}, result.pressure, result.displacement));
   add_contact_summary(summary, scene, result, solve_seconds);
   if (!coupling.is_null()) summary["friction_coupling"] = coupling;
   if (topography) summary["topography"]["contact_at_edge"] = map_edge;

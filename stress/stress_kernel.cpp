@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "convolution/fft/parity_transform.hpp"
-#include "convolution/kernels/ewald_window.hpp"
+#include "convolution/kernels/detail/ewald_window.hpp"
 #include "convolution/kernels/lattice_coefficients.hpp"
 #include "core/detail/parallel_for.hpp"
 #include "core/detail/sinc.hpp"

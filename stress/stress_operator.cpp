@@ -7,9 +7,9 @@
 #include <string>
 #include <utility>
 
+#include "core/detail/fft_size.hpp"
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
-#include "core/fft_size.hpp"
 #include "frf/stress_frf.hpp"
 
 namespace coatfft {
@@ -63,8 +63,8 @@ double estimated_stress_bytes(const Grid& grid, std::size_t planes, int alpha, b
     const double quarter = (grid.nx() / 2 + 1.0) * (grid.ny() / 2 + 1.0);
     return 8.0 * (n * (6 * loads * quarter + 7 * cells) + 4 * loads * quarter);
   }
-  const double hx = double(fast_even_fft_size(2 * grid.nx() - 1)) / 2 + 1;
-  const double hy = double(fast_even_fft_size(2 * grid.ny() - 1)) / 2 + 1;
+  const double hx = double(detail::fast_even_fft_size(2 * grid.nx() - 1)) / 2 + 1;
+  const double hy = double(detail::fast_even_fft_size(2 * grid.ny() - 1)) / 2 + 1;
   // Per plane: six spectrum quarters per load and the six output fields (plus von Mises on
   // output); while a group of up to 8 planes is built: six quarters of DC-FFT's lattice and six
   // of the long-range band, about (34 alpha)^2 entries (sqrt(45) 32 alpha/(2 pi) per side); the

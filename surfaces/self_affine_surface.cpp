@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "convolution/fft/fftw_plan.hpp"
+#include "convolution/fft/detail/fftw_plan.hpp"
 #include "core/error.hpp"
 #include "core/memory.hpp"
 #include "surfaces/detail/self_affine_spectrum.hpp"

@@ -11,8 +11,8 @@
 #include "convolution/kernels/angular_influence.hpp"
 #include "convolution/kernels/cerruti_influence.hpp"
 #include "convolution/kernels/love_influence.hpp"
+#include "core/detail/gsl_quadrature.hpp"
 #include "core/error.hpp"
-#include "core/gsl_quadrature.hpp"
 #include "materials/material.hpp"
 
 using coatfft::angular_influence;
@@ -40,16 +40,16 @@ AngularCoefficients point_kernels(double X, double Y, double beta, bool flat = f
 // Nested GSL QAG (61-point Gauss-Kronrod) over the cell: for beta > 0 the kernels are analytic on
 // the real plane, so the plain rule converges to its tolerance 1e-13.
 double cell_quadrature(const std::function<double(double, double)>& f, double dx, double dy) {
-  const coatfft::GslHandlerOff quiet;
-  auto inner_ws = coatfft::make_gsl_workspace(200);
-  auto outer_ws = coatfft::make_gsl_workspace(200);
+  const coatfft::detail::GslHandlerOff quiet;
+  auto inner_ws = coatfft::detail::make_gsl_workspace(200);
+  auto outer_ws = coatfft::detail::make_gsl_workspace(200);
   const auto inner = [&](double yp) {
-    return coatfft::gsl_qag([&](double xp) { return f(xp, yp); }, -0.5 * dx, 0.5 * dx, 1e-20, 1e-13,
-                            GSL_INTEG_GAUSS61, inner_ws.get())
+    return coatfft::detail::gsl_qag([&](double xp) { return f(xp, yp); }, -0.5 * dx, 0.5 * dx,
+                                    1e-20, 1e-13, GSL_INTEG_GAUSS61, inner_ws.get())
         .value;
   };
-  const auto r =
-      coatfft::gsl_qag(inner, -0.5 * dy, 0.5 * dy, 1e-20, 1e-13, GSL_INTEG_GAUSS61, outer_ws.get());
+  const auto r = coatfft::detail::gsl_qag(inner, -0.5 * dy, 0.5 * dy, 1e-20, 1e-13,
+                                          GSL_INTEG_GAUSS61, outer_ws.get());
   return r.value;
 }
 

@@ -13,8 +13,8 @@
 #include <numbers>
 #include <vector>
 
+#include "core/detail/gsl_quadrature.hpp"
 #include "core/error.hpp"
-#include "core/gsl_quadrature.hpp"
 #include "layers/layer_stack.hpp"
 #include "tests/test_support.hpp"
 #include "validation/axisymmetric_stress.hpp"
@@ -97,23 +97,23 @@ double point_component(const Material& m, int c, double r, double z, double s, d
 // Gauss-Kronrod quadrature (GSL), over half the disk (the field is even in phi), with the radial
 // range split at s = r where the kernel peaks for small z.
 double disk_component(const Material& m, int c, double r, double z) {
-  const coatfft::GslHandlerOff quiet;
-  const auto inner_ws = coatfft::make_gsl_workspace(2000);
-  const auto outer_ws = coatfft::make_gsl_workspace(2000);
+  const coatfft::detail::GslHandlerOff quiet;
+  const auto inner_ws = coatfft::detail::make_gsl_workspace(2000);
+  const auto outer_ws = coatfft::detail::make_gsl_workspace(2000);
   // Targets 1e-11 of the integral's scale (1 for stresses / kP, kA/mu for displacements / kP).
   const double unit = c < 4 ? 1.0 : kA / m.shear_modulus();
   const std::function<double(double)> ring = [&](double s) {
-    const auto in =
-        coatfft::gsl_qag([&](double phi) { return point_component(m, c, r, z, s, phi); }, 0.0, pi,
-                         1e-12 * unit / (kA * kA), 1e-13, GSL_INTEG_GAUSS21, inner_ws.get());
+    const auto in = coatfft::detail::gsl_qag(
+        [&](double phi) { return point_component(m, c, r, z, s, phi); }, 0.0, pi,
+        1e-12 * unit / (kA * kA), 1e-13, GSL_INTEG_GAUSS21, inner_ws.get());
     return 2.0 * s * in.value;
   };
   std::vector<double> cuts{0.0, kA};
   if (r > 0 && r < kA) cuts.insert(cuts.begin() + 1, r);
   double sum = 0.0;
   for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
-    const auto out = coatfft::gsl_qag(ring, cuts[i], cuts[i + 1], 1e-11 * unit, 1e-13,
-                                      GSL_INTEG_GAUSS21, outer_ws.get());
+    const auto out = coatfft::detail::gsl_qag(ring, cuts[i], cuts[i + 1], 1e-11 * unit, 1e-13,
+                                              GSL_INTEG_GAUSS21, outer_ws.get());
     REQUIRE(out.status == GSL_SUCCESS);
     sum += out.value;
   }

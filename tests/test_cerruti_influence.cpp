@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "convolution/kernels/cerruti_influence.hpp"
+#include "core/detail/gsl_quadrature.hpp"
 #include "core/error.hpp"
-#include "core/gsl_quadrature.hpp"
 #include "long_double_gauss_legendre.hpp"
 #include "materials/material.hpp"
 
@@ -61,15 +61,15 @@ std::vector<std::array<double, 2>> pieces(double lo, double hi, double s) {
 // Every inner and outer error estimate must be within 1e-12 of its value.
 double nested_quadrature(const std::function<double(double, double)>& f, double xlo, double xhi,
                          double xs, double ylo, double yhi, double ys) {
-  const coatfft::GslHandlerOff quiet;
-  auto inner_ws = coatfft::make_gsl_workspace(1000);
-  auto outer_ws = coatfft::make_gsl_workspace(1000);
+  const coatfft::detail::GslHandlerOff quiet;
+  auto inner_ws = coatfft::detail::make_gsl_workspace(1000);
+  auto outer_ws = coatfft::detail::make_gsl_workspace(1000);
   double worst = 0.0;  // the largest inner error estimate relative to its value (or 1e-18)
   const auto inner = [&](double yp) {
     double sum = 0.0;
     for (const auto& p : pieces(xlo, xhi, xs)) {
-      const auto r = coatfft::gsl_qags([&](double xp) { return f(xp, yp); }, p[0], p[1], 1e-18,
-                                       2e-14, inner_ws.get());
+      const auto r = coatfft::detail::gsl_qags([&](double xp) { return f(xp, yp); }, p[0], p[1],
+                                               1e-18, 2e-14, inner_ws.get());
       worst = std::max(worst, r.error / std::max(std::abs(r.value), 1e-6));
       sum += r.value;
     }
@@ -77,7 +77,7 @@ double nested_quadrature(const std::function<double(double, double)>& f, double 
   };
   double total = 0.0;
   for (const auto& p : pieces(ylo, yhi, ys)) {
-    const auto r = coatfft::gsl_qags(inner, p[0], p[1], 1e-18, 1e-13, outer_ws.get());
+    const auto r = coatfft::detail::gsl_qags(inner, p[0], p[1], 1e-18, 1e-13, outer_ws.get());
     // QAGS may stop on rounding (the inner values carry ~1e-15 noise); its estimate still holds.
     REQUIRE((r.status == GSL_SUCCESS || r.status == GSL_EROUND));
     REQUIRE(r.error <= 1e-12 * std::abs(r.value) + 1e-17);
@@ -142,14 +142,14 @@ double pressure_ux_polar(double x, double y, double dx, double dy, double nu) {
     for (double cy : {-b, b})
       if (cx != x || cy != y) cuts.push_back(std::atan2(cy - y, cx - x));
   std::sort(cuts.begin(), cuts.end());
-  const coatfft::GslHandlerOff quiet;
-  auto ws = coatfft::make_gsl_workspace(1000);
+  const coatfft::detail::GslHandlerOff quiet;
+  auto ws = coatfft::detail::make_gsl_workspace(1000);
   double sum = 0.0;
   for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
     if (cuts[i + 1] <= cuts[i]) continue;
-    const auto r =
-        coatfft::gsl_qag([&](double t) { return std::cos(t) * ray_chord(t, x, y, a, b); }, cuts[i],
-                         cuts[i + 1], 1e-17 * std::max(dx, dy), 2e-14, GSL_INTEG_GAUSS21, ws.get());
+    const auto r = coatfft::detail::gsl_qag(
+        [&](double t) { return std::cos(t) * ray_chord(t, x, y, a, b); }, cuts[i], cuts[i + 1],
+        1e-17 * std::max(dx, dy), 2e-14, GSL_INTEG_GAUSS21, ws.get());
     // At x = 0 the integral is 0 and the tolerance unattainable: GSL_EROUND with a tiny estimate.
     REQUIRE((r.status == GSL_SUCCESS || r.status == GSL_EROUND));
     INFO("QAG piece " << i << ": " << r.value << " +- " << r.error);
@@ -434,12 +434,12 @@ TEST_CASE("cerruti_influence over a disk of cells tends to the uniformly sheared
   // bound 0.1 (h/c)^2.
   const double nu = 0.3;
   const Material m = unit_shear(nu);
-  const coatfft::GslHandlerOff quiet;
-  auto ws = coatfft::make_gsl_workspace(100);
+  const coatfft::detail::GslHandlerOff quiet;
+  auto ws = coatfft::detail::make_gsl_workspace(100);
   const double radius = 1.0;
-  const auto integral =
-      coatfft::gsl_qag([nu](double phi) { return (1.0 - nu) + nu * std::cos(phi) * std::cos(phi); },
-                       0.0, 2.0 * pi, 0.0, 1e-13, GSL_INTEG_GAUSS21, ws.get());
+  const auto integral = coatfft::detail::gsl_qag(
+      [nu](double phi) { return (1.0 - nu) + nu * std::cos(phi) * std::cos(phi); }, 0.0, 2.0 * pi,
+      0.0, 1e-13, GSL_INTEG_GAUSS21, ws.get());
   REQUIRE(integral.status == GSL_SUCCESS);
   const double disk = (2.0 - nu) * radius / 2.0;  // mu = 1 Pa, q = 1 Pa
   CHECK(integral.value * radius / (2.0 * pi) == Approx(disk).epsilon(1e-14));

@@ -205,7 +205,7 @@ TEST_CASE("A stiff thin coating converges in bounded iterations, to the same sol
   // that the |k| preconditioner leaves in the contact block's condition number, so the fixed-set
   // iteration needs about sqrt(1000) ~ 32 times the 25 iterations of a steel body here: 800 is
   // the bound. Measured 501 (20 % contact) and 550 (88 %); before Powell's restart and the
-  // widened-set rule (contact_solver.cpp) no convergence in 5000 and 1309 iterations.
+  // widened-set rule (polonsky_keer_iteration.cpp) no convergence in 5000 and 1309 iterations.
   const Grid grid(64, 64, 0.25e-3, 0.25e-3);
   const LayerStack stack({Coating{Material(1000 * steel.youngs_modulus(), 0.3), 2e-6}}, steel);
   const Field h = rough_gap(grid, 0.8, 5);

@@ -6,14 +6,14 @@
 #include <random>
 
 #include "contact/complementarity.hpp"
-#include "contact/contact_patches.hpp"
 #include "contact/contact_solver.hpp"
-#include "contact/grid_transfer.hpp"
+#include "contact/detail/contact_patches.hpp"
+#include "contact/detail/grid_transfer.hpp"
 #include "contact/indenter.hpp"
 #include "convolution/kernels/influence_kernel.hpp"
 #include "convolution/kernels/periodic_kernel.hpp"
-#include "convolution/operators/dcfft_operator.hpp"
-#include "convolution/operators/direct_operator.hpp"
+#include "convolution/operators/detail/dcfft_operator.hpp"
+#include "convolution/operators/detail/direct_operator.hpp"
 #include "convolution/operators/periodic_operator.hpp"
 #include "core/norms.hpp"
 #include "frf/frf.hpp"

@@ -1,10 +1,10 @@
-// The preconditioner of the contact iteration (contact/fourier_preconditioner.hpp): |k| and the
-// operator-adapted symbol.
+// The preconditioner of the contact iteration (contact/detail/fourier_preconditioner.hpp): |k| and
+// the operator-adapted symbol.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
 
-#include "contact/fourier_preconditioner.hpp"
+#include "contact/detail/fourier_preconditioner.hpp"
 #include "convolution/kernels/periodic_kernel.hpp"
 #include "convolution/operators/periodic_operator.hpp"
 #include "core/grid.hpp"

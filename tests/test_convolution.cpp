@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "convolution/fft/fftw_plan.hpp"
+#include "convolution/fft/detail/fftw_plan.hpp"
 #include "convolution/kernels/influence_kernel.hpp"
 #include "convolution/kernels/split_frf_kernel.hpp"
-#include "convolution/operators/dcfft_operator.hpp"
-#include "convolution/operators/direct_operator.hpp"
+#include "convolution/operators/detail/dcfft_operator.hpp"
+#include "convolution/operators/detail/direct_operator.hpp"
 #include "core/error.hpp"
 #include "core/norms.hpp"
 #include "frf/frf.hpp"

@@ -14,8 +14,8 @@
 
 #include "convolution/kernels/influence_kernel.hpp"
 #include "convolution/kernels/love_influence.hpp"
-#include "convolution/operators/dcfft_operator.hpp"
-#include "convolution/operators/direct_operator.hpp"
+#include "convolution/operators/detail/dcfft_operator.hpp"
+#include "convolution/operators/detail/direct_operator.hpp"
 #include "core/error.hpp"
 #include "core/grid.hpp"
 #include "core/norms.hpp"

@@ -3,11 +3,11 @@
 #include <catch2/catch.hpp>
 #include <cstddef>
 
+#include "core/detail/fft_size.hpp"
 #include "core/error.hpp"
-#include "core/fft_size.hpp"
 
-using coatfft::fast_even_fft_size;
-using coatfft::fast_fft_size;
+using coatfft::detail::fast_even_fft_size;
+using coatfft::detail::fast_fft_size;
 
 namespace {
 

@@ -5,8 +5,8 @@
 
 #include "convolution/kernels/frf_influence_kernel.hpp"
 #include "convolution/kernels/influence_kernel.hpp"
-#include "convolution/operators/dcfft_operator.hpp"
-#include "convolution/operators/frf_spectral_operator.hpp"
+#include "convolution/operators/detail/dcfft_operator.hpp"
+#include "convolution/operators/detail/frf_spectral_operator.hpp"
 #include "convolution/operators/make_operator.hpp"
 #include "core/error.hpp"
 #include "core/grid.hpp"

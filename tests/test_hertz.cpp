@@ -9,7 +9,7 @@
 #include <numbers>
 
 #include "convolution/kernels/influence_kernel.hpp"
-#include "convolution/operators/dcfft_operator.hpp"
+#include "convolution/operators/detail/dcfft_operator.hpp"
 #include "core/error.hpp"
 #include "materials/catalog.hpp"
 #include "validation/hertz.hpp"

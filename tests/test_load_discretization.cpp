@@ -197,7 +197,7 @@ TEST_CASE("load_error_body_factor is 1 on a half-space", "[loads][estimate]") {
 
 namespace {
 
-// 2^a 3^b 5^c 7^d, by trial division (independent of core/fft_size.hpp).
+// 2^a 3^b 5^c 7^d, by trial division (independent of core/detail/fft_size.hpp).
 bool seven_smooth(std::ptrdiff_t n) {
   for (const std::ptrdiff_t prime : {2, 3, 5, 7})
     while (n % prime == 0) n /= prime;

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "convolution/kernels/influence_kernel.hpp"
-#include "convolution/operators/dcfft_operator.hpp"
+#include "convolution/operators/detail/dcfft_operator.hpp"
 #include "loads/hertz_pressure.hpp"
 #include "validation/hertz.hpp"
 

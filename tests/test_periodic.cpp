@@ -12,7 +12,7 @@
 #include "convolution/kernels/influence_kernel.hpp"
 #include "convolution/kernels/periodic_kernel.hpp"
 #include "convolution/kernels/split_frf_kernel.hpp"
-#include "convolution/operators/dcfft_operator.hpp"
+#include "convolution/operators/detail/dcfft_operator.hpp"
 #include "convolution/operators/make_operator.hpp"
 #include "convolution/operators/operator_memory.hpp"
 #include "convolution/operators/periodic_operator.hpp"

@@ -10,7 +10,7 @@
 #include "contact/sliding_contact.hpp"
 #include "convolution/kernels/influence_kernel.hpp"
 #include "convolution/operators/cerruti_operator.hpp"
-#include "convolution/operators/dcfft_operator.hpp"
+#include "convolution/operators/detail/dcfft_operator.hpp"
 #include "core/error.hpp"
 #include "tests/test_materials.hpp"
 #include "validation/hertz_contact.hpp"

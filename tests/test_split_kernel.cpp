@@ -8,12 +8,12 @@
 #include <utility>
 #include <vector>
 
-#include "convolution/kernels/cell_average_stencil.hpp"
+#include "convolution/kernels/detail/cell_average_stencil.hpp"
 #include "convolution/kernels/influence_kernel.hpp"
 #include "convolution/kernels/love_influence.hpp"
 #include "convolution/kernels/split_frf_kernel.hpp"
-#include "convolution/operators/dcfft_operator.hpp"
-#include "convolution/operators/direct_operator.hpp"
+#include "convolution/operators/detail/dcfft_operator.hpp"
+#include "convolution/operators/detail/direct_operator.hpp"
 #include "core/error.hpp"
 #include "core/grid.hpp"
 #include "frf/coated_frf.hpp"

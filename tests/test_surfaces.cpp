@@ -9,7 +9,7 @@
 #include <optional>
 #include <vector>
 
-#include "convolution/fft/fftw_plan.hpp"
+#include "convolution/fft/detail/fftw_plan.hpp"
 #include "core/error.hpp"
 #include "surfaces/self_affine_surface.hpp"
 

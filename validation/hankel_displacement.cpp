@@ -11,8 +11,8 @@
 #include <memory>
 #include <numbers>
 
+#include "core/detail/gsl_quadrature.hpp"
 #include "core/error.hpp"
-#include "core/gsl_quadrature.hpp"
 #include "validation/hertz.hpp"
 
 namespace coatfft {
@@ -26,7 +26,7 @@ constexpr std::size_t kLimit = 1000;
 // Adaptive Gauss-Kronrod (21 points) on [lo, hi]; the nodes are interior, so k = 0 is never hit.
 double integrate_panel(const std::function<double(double)>& f, double lo, double hi, double epsabs,
                        double epsrel, gsl_integration_workspace* ws) {
-  const GslIntegral r = gsl_qag(f, lo, hi, epsabs, epsrel, GSL_INTEG_GAUSS21, ws);
+  const detail::GslIntegral r = detail::gsl_qag(f, lo, hi, epsabs, epsrel, GSL_INTEG_GAUSS21, ws);
   const int status = r.status;
   const double result = r.value, abserr = r.error;
   // GSL_EROUND means the requested tolerance is below the attainable rounding: keep the result if
@@ -110,11 +110,11 @@ std::complex<double> bessel_amplitude(int n, double rho, double s) {
 // \int_S^inf Re[g(s) e^{i omega s}] ds for a smooth, algebraically decaying g.
 double oscillatory_tail(const std::function<std::complex<double>(double)>& g, double omega,
                         double S, double epsabs) {
-  const GslWorkspace ws = make_gsl_workspace(kLimit);
+  const detail::GslWorkspace ws = detail::make_gsl_workspace(kLimit);
   double total = 0.0;
   if (omega == 0.0) {
     const std::function<double(double)> f = [&g](double s) { return g(s).real(); };
-    gsl_function gf = as_gsl_function(f);
+    gsl_function gf = detail::as_gsl_function(f);
     double result = 0.0, abserr = 0.0;
     const int status =
         gsl_integration_qagiu(&gf, S, epsabs, 0.0, kLimit, ws.get(), &result, &abserr);
@@ -127,12 +127,12 @@ double oscillatory_tail(const std::function<std::complex<double>(double)>& g, do
   // Re[g e^{i w s}] = Re g cos(w s) - Im g sin(w s); for w < 0 use |w| and flip the sine.
   const double w = std::abs(omega);
   const double sine_sign = omega > 0 ? -1.0 : 1.0;
-  const GslWorkspace cycles = make_gsl_workspace(kLimit);
+  const detail::GslWorkspace cycles = detail::make_gsl_workspace(kLimit);
   for (auto kind : {GSL_INTEG_COSINE, GSL_INTEG_SINE}) {
     const std::function<double(double)> f = [&g, kind, sine_sign](double s) {
       return kind == GSL_INTEG_COSINE ? g(s).real() : sine_sign * g(s).imag();
     };
-    gsl_function gf = as_gsl_function(f);
+    gsl_function gf = detail::as_gsl_function(f);
     gsl_integration_qawo_table* table = gsl_integration_qawo_table_alloc(w, 1.0, kind, 50);
     double result = 0.0, abserr = 0.0;
     const int status = gsl_integration_qawf(&gf, S, epsabs, kLimit, ws.get(), cycles.get(), table,
@@ -233,8 +233,8 @@ double hankel_displacement(const Frf& frf, AxisymmetricLoad load, double amplitu
                   " Pa, but it must be finite");
   COATFFT_REQUIRE(rel_tol >= 1e-14 && rel_tol < 1e-2, "hankel_displacement: rel_tol = ", rel_tol,
                   ", but it must lie in [1e-14, 1e-2)");
-  const GslHandlerOff handler_off;
-  const GslWorkspace ws = make_gsl_workspace(kLimit);
+  const detail::GslHandlerOff handler_off;
+  const detail::GslWorkspace ws = detail::make_gsl_workspace(kLimit);
   const double c_inf = frf.c_inf();
   // u ~ amplitude a C: the dimensionless integrals below are O(max(C0, Cinf)/a) or O(1).
   const double scale = std::max(frf.c0(), c_inf) / a;
@@ -268,8 +268,8 @@ double hankel_load_integral(const std::function<double(double)>& g, double g_inf
                             double a, double r, double scale, double rel_tol) {
   COATFFT_REQUIRE(order >= 0 && order <= 2, "hankel_load_integral: order ", order,
                   " is not 0, 1 or 2");
-  const GslHandlerOff handler_off;
-  const GslWorkspace ws = make_gsl_workspace(kLimit);
+  const detail::GslHandlerOff handler_off;
+  const detail::GslWorkspace ws = detail::make_gsl_workspace(kLimit);
   // Beyond K both g = g_inf and the Hankel expansions hold (k a >= 500 and k r >= 500, where 8
   // terms are exact to double precision).
   const double rho = r / a;

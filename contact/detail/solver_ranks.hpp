@@ -15,7 +15,7 @@
 
 namespace coatfft::detail {
 
-/// z <- P z on a field the preconditioner owns (contact/fourier_preconditioner.hpp).
+/// z <- P z on a field the preconditioner owns (contact/detail/fourier_preconditioner.hpp).
 class Preconditioner {
  public:
   virtual ~Preconditioner() = default;

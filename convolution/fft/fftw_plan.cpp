@@ -1,4 +1,4 @@
-#include "convolution/fft/fftw_plan.hpp"
+#include "convolution/fft/detail/fftw_plan.hpp"
 
 #include <unistd.h>
 

@@ -4,10 +4,10 @@
 #include <complex>
 #include <utility>
 
-#include "convolution/fft/fftw_plan.hpp"
+#include "convolution/fft/detail/fftw_plan.hpp"
 #include "convolution/fft/parity_transform.hpp"
+#include "core/detail/fft_size.hpp"
 #include "core/error.hpp"
-#include "core/fft_size.hpp"
 #include "core/interrupt.hpp"
 
 namespace coatfft {
@@ -51,10 +51,10 @@ ParityConvolution::ParityConvolution(const Grid& grid, int nb_loads, Planning pl
   COATFFT_REQUIRE(!periodic || (grid.nx() % 2 == 0 && grid.ny() % 2 == 0),
                   "parity convolution: a periodic grid needs nx and ny even");
   // Any period >= 2n - 1 keeps the offsets -(n - 1)..n - 1 apart (DC-FFT); even, for the parity
-  // transforms, and 7-smooth, for FFTW (core/fft_size.hpp). A periodic surface's period is the
-  // grid's own.
-  mx_ = periodic ? grid_.nx() : fast_even_fft_size(2 * grid_.nx() - 1);
-  my_ = periodic ? grid_.ny() : fast_even_fft_size(2 * grid_.ny() - 1);
+  // transforms, and 7-smooth, for FFTW (core/detail/fft_size.hpp). A periodic surface's period is
+  // the grid's own.
+  mx_ = periodic ? grid_.nx() : detail::fast_even_fft_size(2 * grid_.nx() - 1);
+  my_ = periodic ? grid_.ny() : detail::fast_even_fft_size(2 * grid_.ny() - 1);
   hx_ = mx_ / 2 + 1;
   hy_ = my_ / 2 + 1;
   plan_transforms(planning);

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstddef>
 
-#include "convolution/fft/fftw_plan.hpp"
+#include "convolution/fft/detail/fftw_plan.hpp"
 #include "core/error.hpp"
 
 namespace coatfft {

@@ -1,4 +1,4 @@
-#include "convolution/kernels/coarse_kernel.hpp"
+#include "convolution/kernels/detail/coarse_kernel.hpp"
 
 #include <cstdlib>
 

@@ -7,8 +7,8 @@
 #include <utility>
 #include <vector>
 
-#include "convolution/fft/fftw_plan.hpp"
-#include "convolution/kernels/frf_lattice.hpp"
+#include "convolution/fft/detail/fftw_plan.hpp"
+#include "convolution/kernels/detail/frf_lattice.hpp"
 #include "core/detail/sinc.hpp"
 #include "core/error.hpp"
 

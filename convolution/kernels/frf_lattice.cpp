@@ -1,4 +1,4 @@
-#include "convolution/kernels/frf_lattice.hpp"
+#include "convolution/kernels/detail/frf_lattice.hpp"
 
 #include <algorithm>
 #include <cmath>

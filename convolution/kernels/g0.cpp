@@ -8,10 +8,10 @@
 #include <limits>
 #include <numbers>
 
+#include "core/detail/gsl_quadrature.hpp"
 #include "core/detail/parse_name.hpp"
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
-#include "core/gsl_quadrature.hpp"
 
 namespace coatfft {
 namespace {
@@ -27,7 +27,7 @@ struct Estimate {
 // tens of panels); when it is reached, GSL's estimate of the error is reported, not hidden.
 constexpr std::size_t max_intervals = 200;
 
-Estimate to_estimate(const GslIntegral& r) {
+Estimate to_estimate(const detail::GslIntegral& r) {
   return {r.value, r.error};
 }
 
@@ -45,9 +45,9 @@ Estimate remainder_integral(const Frf& frf, double X, double Y, double abs_tol) 
   auto s = [&](double rho) { return rho * frf(rho) - c0; };
   // Each piece to a third of the absolute tolerance (QAG, 31-point Gauss-Kronrod): the remainder
   // can be ~0 (homogeneous body: pure rounding noise), so no relative tolerance is asked.
-  const GslWorkspace ws = make_gsl_workspace(max_intervals);
+  const detail::GslWorkspace ws = detail::make_gsl_workspace(max_intervals);
   const auto qag = [&](const std::function<double(double)>& f, double lo, double hi) {
-    return to_estimate(gsl_qag(f, lo, hi, abs_tol / 3.0, 0.0, GSL_INTEG_GAUSS31, ws.get()));
+    return to_estimate(detail::gsl_qag(f, lo, hi, abs_tol / 3.0, 0.0, GSL_INTEG_GAUSS31, ws.get()));
   };
   // Piece A: rho in [0, m], full circle.
   Estimate a = qag([&](double rho) { return 2.0 * pi * s(rho); }, 0.0, m);
@@ -84,8 +84,8 @@ Estimate remainder_integral(const Frf& frf, double X, double Y, double abs_tol) 
 // tolerance, so that their errors do not dominate the outer one; the reported error is the outer
 // estimate plus the inner estimates integrated over ky (accumulated at the outer rule's nodes).
 Estimate quadrature_integral(const Frf& frf, double X, double Y, double tol) {
-  const GslWorkspace outer_ws = make_gsl_workspace(max_intervals);
-  const GslWorkspace inner_ws = make_gsl_workspace(max_intervals);
+  const detail::GslWorkspace outer_ws = detail::make_gsl_workspace(max_intervals);
+  const detail::GslWorkspace inner_ws = detail::make_gsl_workspace(max_intervals);
   double inner_error_sum = 0.0;  // sum over outer nodes of |inner error|, for the estimate
   double inner_calls = 0.0;
   // QAGS refuses relative tolerances below 50 machine epsilons (GSL_EBADTOL): a tighter request is
@@ -93,13 +93,14 @@ Estimate quadrature_integral(const Frf& frf, double X, double Y, double tol) {
   const double floor = 50.0 * std::numeric_limits<double>::epsilon() * (1.0 + 1e-6);
   const double outer_tol = std::max(tol, floor), inner_tol = std::max(0.1 * tol, floor);
   const std::function<double(double)> inner_integral = [&](double ky) {
-    const GslIntegral r = gsl_qags([&](double kx) { return frf(std::hypot(kx, ky)); }, 0.0, X, 0.0,
-                                   inner_tol, inner_ws.get());
+    const detail::GslIntegral r = detail::gsl_qags(
+        [&](double kx) { return frf(std::hypot(kx, ky)); }, 0.0, X, 0.0, inner_tol, inner_ws.get());
     inner_error_sum += r.error;
     inner_calls += 1.0;
     return r.value;
   };
-  const GslIntegral outer = gsl_qags(inner_integral, 0.0, Y, 0.0, outer_tol, outer_ws.get());
+  const detail::GslIntegral outer =
+      detail::gsl_qags(inner_integral, 0.0, Y, 0.0, outer_tol, outer_ws.get());
   // The inner errors, averaged over the outer nodes, integrated over [0, Y].
   const double inner_error = inner_calls > 0 ? Y * inner_error_sum / inner_calls : 0.0;
   return {outer.value, outer.error + inner_error};

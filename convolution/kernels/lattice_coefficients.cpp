@@ -7,7 +7,7 @@
 #include <numbers>
 
 #include "convolution/fft/parity_transform.hpp"
-#include "convolution/kernels/ewald_window.hpp"
+#include "convolution/kernels/detail/ewald_window.hpp"
 #include "core/detail/brief.hpp"
 #include "core/detail/parallel_for.hpp"
 #include "core/detail/sinc.hpp"

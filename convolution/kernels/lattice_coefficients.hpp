@@ -2,7 +2,7 @@
 // Cell-integrated influence coefficients of spectra that decay fast in k but reach far in space:
 // the spectrum times the cell's transform, sampled on a lattice with every alias
 // k + 2 pi (p/dx, q/dy) folded in (no truncation at Nyquist), brought to space by the parity
-// transforms (DCT/DST). An Ewald-type split (convolution/kernels/ewald_window.hpp) keeps the
+// transforms (DCT/DST). An Ewald-type split (convolution/kernels/detail/ewald_window.hpp) keeps the
 // periodic images small: the short-range part F (1 - w) on DC-FFT's own lattice of period 2L, the
 // band-limited long-range part F w on a lattice alpha times the domain (docs/theory.md 2.9.4).
 // The stress kernels' lattices (stress/stress_kernel.cpp) work the same way for the planes at

@@ -2,8 +2,8 @@
 
 #include <vector>
 
-#include "convolution/fft/fftw_plan.hpp"
-#include "convolution/kernels/periodic_kernel_parts.hpp"
+#include "convolution/fft/detail/fftw_plan.hpp"
+#include "convolution/kernels/detail/periodic_kernel_parts.hpp"
 #include "core/detail/parallel_for.hpp"
 
 namespace coatfft {

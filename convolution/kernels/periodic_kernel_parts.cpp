@@ -1,4 +1,4 @@
-#include "convolution/kernels/periodic_kernel_parts.hpp"
+#include "convolution/kernels/detail/periodic_kernel_parts.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -7,9 +7,9 @@
 #include <numbers>
 #include <vector>
 
-#include "convolution/fft/fftw_plan.hpp"
+#include "convolution/fft/detail/fftw_plan.hpp"
 #include "convolution/kernels/angular_influence.hpp"
-#include "convolution/kernels/ewald.hpp"
+#include "convolution/kernels/detail/ewald.hpp"
 #include "core/detail/brief.hpp"
 #include "core/detail/parallel_for.hpp"
 #include "core/detail/sinc.hpp"

@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-#include "convolution/kernels/split_kernel/split_plan.hpp"
+#include "convolution/kernels/split_kernel/detail/split_plan.hpp"
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
 

@@ -1,14 +1,14 @@
-#include "convolution/operators/dcfft_operator.hpp"
+#include "convolution/operators/detail/dcfft_operator.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <complex>
 
-#include "convolution/kernels/coarse_kernel.hpp"
+#include "convolution/kernels/detail/coarse_kernel.hpp"
+#include "core/detail/fft_size.hpp"
 #include "core/detail/parallel_for.hpp"
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
-#include "core/fft_size.hpp"
 
 namespace coatfft {
 namespace {
@@ -25,7 +25,7 @@ std::ptrdiff_t DcfftOperator::padded_size(std::ptrdiff_t n, InfluenceKernel::For
   // A sampled spectrum exists on its own lattice only; coefficients wrap exactly on any period
   // M >= 2n - 1 (offsets -(n - 1)..n - 1 do not overlap), of which the fastest even one is taken.
   if (form == InfluenceKernel::Form::spectrum) return 2 * n;
-  return fast_even_fft_size(2 * n - 1);
+  return detail::fast_even_fft_size(2 * n - 1);
 }
 
 DcfftOperator::DcfftOperator(const InfluenceKernel& kernel, Planning planning, int threads)

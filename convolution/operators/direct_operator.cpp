@@ -1,4 +1,4 @@
-#include "convolution/operators/direct_operator.hpp"
+#include "convolution/operators/detail/direct_operator.hpp"
 
 #include "core/error.hpp"
 #include "core/interrupt.hpp"

@@ -1,4 +1,4 @@
-#include "convolution/operators/frf_spectral_operator.hpp"
+#include "convolution/operators/detail/frf_spectral_operator.hpp"
 
 #include <algorithm>
 #include <chrono>

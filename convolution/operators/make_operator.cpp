@@ -7,9 +7,9 @@
 
 #include "convolution/kernels/frf_influence_kernel.hpp"
 #include "convolution/kernels/periodic_kernel.hpp"
-#include "convolution/operators/dcfft_operator.hpp"
-#include "convolution/operators/direct_operator.hpp"
-#include "convolution/operators/frf_spectral_operator.hpp"
+#include "convolution/operators/detail/dcfft_operator.hpp"
+#include "convolution/operators/detail/direct_operator.hpp"
+#include "convolution/operators/detail/frf_spectral_operator.hpp"
 #include "convolution/operators/periodic_operator.hpp"
 #include "convolution/operators/pipeline_error.hpp"
 #include "core/detail/timing.hpp"

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "convolution/operators/dcfft_operator.hpp"
-#include "core/fft_size.hpp"
+#include "convolution/operators/detail/dcfft_operator.hpp"
+#include "core/detail/fft_size.hpp"
 
 namespace coatfft {
 
@@ -44,8 +44,8 @@ OperatorMemory estimated_memory(const Grid& grid, const OperatorOptions& options
 }
 
 double estimated_cerruti_bytes(const Grid& grid) {
-  const double hx = double(fast_even_fft_size(2 * grid.nx() - 1)) / 2 + 1;
-  const double my = double(fast_even_fft_size(2 * grid.ny() - 1));
+  const double hx = double(detail::fast_even_fft_size(2 * grid.nx() - 1)) / 2 + 1;
+  const double my = double(detail::fast_even_fft_size(2 * grid.ny() - 1));
   const double cells = double(grid.nx()) * double(grid.ny());
   return 8.0 * (9 * hx * (my / 2 + 1) + 3 * 2 * hx * my + 9 * cells +
                 4 * (grid.nx() + 1.0) * (grid.ny() + 1.0) + 4 * std::pow(34.0 * 16, 2));

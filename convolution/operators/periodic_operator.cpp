@@ -4,8 +4,8 @@
 #include <complex>
 #include <type_traits>
 
-#include "convolution/fft/fftw_plan.hpp"
-#include "convolution/kernels/coarse_kernel.hpp"
+#include "convolution/fft/detail/fftw_plan.hpp"
+#include "convolution/kernels/detail/coarse_kernel.hpp"
 #include "core/error.hpp"
 
 namespace coatfft {

@@ -33,9 +33,9 @@ class SurfaceOperator {
   /// surfaces of a half-space.
   virtual bool periodic() const { return false; }
   /// The same body on the grid with half the cells per side (same lx, ly; nx and ny even), as the
-  /// Galerkin coarse operator (convolution/kernels/coarse_kernel.hpp), for the contact solver's
-  /// coarse-to-fine start; costs about one application. Null where the grid has an odd side or
-  /// the operator kind offers none (only the periodic and DC-FFT operators do).
+  /// Galerkin coarse operator (convolution/kernels/detail/coarse_kernel.hpp), for the contact
+  /// solver's coarse-to-fine start; costs about one application. Null where the grid has an odd
+  /// side or the operator kind offers none (only the periodic and DC-FFT operators do).
   virtual std::unique_ptr<SurfaceOperator> coarsened() { return nullptr; }
 
   /// Allocating convenience form (the displacement of the pressure's shape).

@@ -6,9 +6,9 @@
 #include <utility>
 #include <vector>
 
-#include "convolution/kernels/cell_average_stencil.hpp"
-#include "convolution/kernels/split_kernel/split_plan.hpp"
-#include "convolution/kernels/split_kernel/tables.hpp"
+#include "convolution/kernels/detail/cell_average_stencil.hpp"
+#include "convolution/kernels/split_kernel/detail/split_plan.hpp"
+#include "convolution/kernels/split_kernel/detail/tables.hpp"
 #include "core/detail/gauss_legendre.hpp"
 #include "core/detail/parallel_for.hpp"
 #include "core/detail/timing.hpp"

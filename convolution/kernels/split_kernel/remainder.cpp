@@ -1,4 +1,4 @@
-#include "convolution/kernels/split_kernel/remainder.hpp"
+#include "convolution/kernels/split_kernel/detail/remainder.hpp"
 
 namespace coatfft::detail::split {
 namespace {

@@ -6,9 +6,9 @@
 #include <cmath>
 #include <vector>
 
-#include "convolution/fft/fftw_plan.hpp"
-#include "convolution/kernels/split_kernel/split_plan.hpp"
-#include "convolution/kernels/split_kernel/tables.hpp"
+#include "convolution/fft/detail/fftw_plan.hpp"
+#include "convolution/kernels/split_kernel/detail/split_plan.hpp"
+#include "convolution/kernels/split_kernel/detail/tables.hpp"
 #include "core/detail/parallel_for.hpp"
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"

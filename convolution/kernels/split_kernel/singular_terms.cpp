@@ -2,7 +2,7 @@
 
 #include "convolution/kernels/love_influence.hpp"
 #include "convolution/kernels/split_frf_kernel.hpp"
-#include "convolution/kernels/split_kernel/split_plan.hpp"
+#include "convolution/kernels/split_kernel/detail/split_plan.hpp"
 #include "core/detail/gauss_legendre.hpp"
 #include "core/detail/parallel_for.hpp"
 

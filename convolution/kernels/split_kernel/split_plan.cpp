@@ -1,4 +1,4 @@
-#include "convolution/kernels/split_kernel/split_plan.hpp"
+#include "convolution/kernels/split_kernel/detail/split_plan.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "convolution/kernels/split_kernel/tables.hpp"
+#include "convolution/kernels/split_kernel/detail/tables.hpp"
 
 #include <gsl/gsl_sf_bessel.h>
 

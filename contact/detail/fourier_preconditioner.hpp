@@ -13,11 +13,11 @@
 // gain is smaller, 0.6 to 1.1 times the iterations of |k|: docs/contact.md, "Stiffness
 // contrast"). The inverse symbol itself, 1 / K^, is exact on the whole grid but not on a contact
 // block of small patches, where its high wavenumbers, the coating's, weigh up to the ratio too
-// much: measured before Powell's restart (contact_solver.cpp), it let the contact set cycle (no
-// convergence in 3000 iterations at a ratio of 1000), where the geometric mean converged in
-// 230-350.
+// much: measured before Powell's restart (polonsky_keer_iteration.cpp), it let the contact set
+// cycle (no convergence in 3000 iterations at a ratio of 1000), where the geometric mean converged
+// in 230-350.
 #include "contact/detail/solver_ranks.hpp"
-#include "convolution/fft/fftw_plan.hpp"
+#include "convolution/fft/detail/fftw_plan.hpp"
 #include "core/grid.hpp"
 #include "core/types.hpp"
 

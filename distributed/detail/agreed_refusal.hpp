@@ -5,7 +5,7 @@
 // and refuses with it.
 #include <functional>
 
-#include "communicator.hpp"
+#include "../communicator.hpp"
 
 namespace coatfft {
 

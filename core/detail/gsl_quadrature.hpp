@@ -10,7 +10,7 @@
 #include <functional>
 #include <memory>
 
-namespace coatfft {
+namespace coatfft::detail {
 
 /// Switches GSL's process-global error handler off for its lifetime. A reference count under a
 /// mutex lets concurrent integrals overlap: the first one in saves the caller's handler, the last
@@ -54,4 +54,4 @@ GslIntegral gsl_qag(const std::function<double(double)>& f, double a, double b, 
 GslIntegral gsl_qags(const std::function<double(double)>& f, double a, double b, double epsabs,
                      double epsrel, gsl_integration_workspace* ws);
 
-}  // namespace coatfft
+}  // namespace coatfft::detail

@@ -9,7 +9,7 @@
 #include <cstddef>
 #include <utility>
 
-#include "convolution/fft/fftw_plan.hpp"
+#include "convolution/fft/detail/fftw_plan.hpp"
 #include "convolution/fft/planning.hpp"
 #include "distributed/communicator.hpp"
 #include "distributed/slab.hpp"

@@ -5,7 +5,7 @@
 // Ewald's split. The kernel is K = IDFT(M) + real_space, less its mean.
 #include <cstddef>
 
-#include "convolution/kernels/ewald.hpp"
+#include "convolution/kernels/detail/ewald.hpp"
 #include "convolution/kernels/periodic_kernel.hpp"
 
 namespace coatfft::detail {

@@ -8,8 +8,8 @@
 #include <cstddef>
 #include <numbers>
 
-#include "../../core/detail/gauss_legendre.hpp"
-#include "../../core/grid.hpp"
+#include "../../../core/detail/gauss_legendre.hpp"
+#include "../../../core/grid.hpp"
 
 namespace coatfft::detail {
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "convolution/kernels/split_frf_kernel.hpp"
-#include "convolution/kernels/split_kernel/remainder.hpp"
+#include "convolution/kernels/split_kernel/detail/remainder.hpp"
 #include "core/grid.hpp"
 #include "core/types.hpp"
 #include "frf/frf.hpp"

@@ -9,8 +9,8 @@
 #include <cstddef>
 #include <string>
 
-#include "convolution/fft/fftw_plan.hpp"
-#include "convolution/kernels/frf_lattice.hpp"
+#include "convolution/fft/detail/fftw_plan.hpp"
+#include "convolution/kernels/detail/frf_lattice.hpp"
 #include "convolution/kernels/g0.hpp"
 #include "convolution/operators/surface_operator.hpp"
 #include "frf/frf.hpp"

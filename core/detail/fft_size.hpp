@@ -8,7 +8,7 @@
 
 #include "core/error.hpp"
 
-namespace coatfft {
+namespace coatfft::detail {
 
 /// The smallest product 2^a 3^b 5^c 7^d >= n. Throws InvalidArgument unless 1 <= n <= 2^52 (the
 /// answer then stays below 2^53 and representable everywhere a length is used).
@@ -41,4 +41,4 @@ inline std::ptrdiff_t fast_even_fft_size(std::ptrdiff_t n) {
   return 2 * fast_fft_size(n / 2 + n % 2);
 }
 
-}  // namespace coatfft
+}  // namespace coatfft::detail

@@ -5,10 +5,10 @@
 // the frf-dcfft influence kernel: a kernel and an operator both build on it, neither on the other.
 #include <cstddef>
 
-#include "../../core/grid.hpp"
-#include "../../core/types.hpp"
-#include "../../frf/frf.hpp"
-#include "g0.hpp"
+#include "../../../core/grid.hpp"
+#include "../../../core/types.hpp"
+#include "../../../frf/frf.hpp"
+#include "../g0.hpp"
 
 namespace coatfft {
 

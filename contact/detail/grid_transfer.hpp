@@ -1,8 +1,8 @@
 #pragma once
 // Fields between a grid and the grid with half the cells per side (same lx, ly), for the nested
 // start of the contact solver: the transfers of the Galerkin coarse operator R K P
-// (convolution/kernels/coarse_kernel.hpp).
-#include "../core/types.hpp"
+// (convolution/kernels/detail/coarse_kernel.hpp).
+#include "../../core/types.hpp"
 
 namespace coatfft::detail {
 

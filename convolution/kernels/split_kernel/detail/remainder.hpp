@@ -10,7 +10,7 @@
 #include <span>
 #include <vector>
 
-#include "convolution/kernels/ewald_window.hpp"
+#include "convolution/kernels/detail/ewald_window.hpp"
 #include "core/error.hpp"
 #include "frf/frf.hpp"
 
@@ -110,7 +110,7 @@ Scan scan_frf(const Remainder& rem, double A, double c_max, double l_min, double
 // The smallest k above which |R(k)| k <= tol c_max (R from the table, the analytic tail beyond).
 double remainder_cutoff(const Remainder& rem, double A, double beta, double tol_abs);
 
-// The window of the split R = R w + R (1 - w), convolution/kernels/ewald_window.hpp.
+// The window of the split R = R w + R (1 - w), convolution/kernels/detail/ewald_window.hpp.
 inline double window(double sigma, double k) {
   return detail::ewald_window(sigma, k);
 }

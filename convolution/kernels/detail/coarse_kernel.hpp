@@ -8,7 +8,7 @@
 //   K_c(D) = 1/4 sum_{a, b in {-1, 0, 1}} (2 - |a|) (2 - |b|) K(2 D + (a, b)),
 // (2 - |a|) counting the pairs of fine cells whose offset is 2 D + a along x. Exact for any even
 // kernel, half-space or coated, periodic or not; no new kernel is evaluated.
-#include "../../core/types.hpp"
+#include "../../../core/types.hpp"
 
 namespace coatfft::detail {
 

@@ -3,15 +3,15 @@
 // space-domain influence coefficients, computed exactly (to rounding) as a circular convolution on
 // a zero-padded (mx, my) grid. Spinu (2021), section 3. Any period M >= 2n - 1 is exact: the
 // offsets d in [-(n - 1), n - 1] sit at the slots d and M + d with zeros between, and never
-// overlap. The coefficient form takes the smallest even 7-smooth M (core/fft_size.hpp), since
-// 2n itself can be a slow FFT length (an application on 2 x 127 cost 4.5-5 times one on 2 x 128;
-// docs/benchmarks.md, "Fast FFT sizes"); the spectrum form keeps M = 2n, the only lattice its
+// overlap. The coefficient form takes the smallest even 7-smooth M (core/detail/fft_size.hpp),
+// since 2n itself can be a slow FFT length (an application on 2 x 127 cost 4.5-5 times one on 2 x
+// 128; docs/benchmarks.md, "Fast FFT sizes"); the spectrum form keeps M = 2n, the only lattice its
 // samples are given on.
 #include <cstddef>
 #include <string>
 #include <vector>
 
-#include "convolution/fft/fftw_plan.hpp"
+#include "convolution/fft/detail/fftw_plan.hpp"
 #include "convolution/kernels/influence_kernel.hpp"
 #include "convolution/operators/surface_operator.hpp"
 

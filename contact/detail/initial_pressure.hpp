@@ -8,7 +8,7 @@
 //   - under approach control: half the overlap, level = min h + (delta - min h)/2, Hertz's;
 //   - under load control: first the level below which kTrialContactShare of the cells lie, then
 //     corrected once from the displacement of that trial pressure (level_correction).
-#include "../core/types.hpp"
+#include "../../core/types.hpp"
 
 namespace coatfft::detail {
 

@@ -1,0 +1,135 @@
+#pragma once
+// The iteration of the contact solver (contact/contact_solver.hpp): its steps in
+// contact/polonsky_keer_iteration.cpp, its starts in contact/polonsky_keer_start.cpp, the check
+// of a stop in contact/polonsky_keer_convergence.cpp and its result in
+// contact/polonsky_keer_result.cpp.
+#include <cstddef>
+#include <limits>
+#include <optional>
+
+#include "contact/contact_solver.hpp"
+#include "contact/detail/cell_passes.hpp"
+#include "contact/detail/solver_ranks.hpp"
+#include "convolution/operators/surface_operator.hpp"
+#include "core/types.hpp"
+
+namespace coatfft::detail {
+
+// The constrained conjugate gradient of Polonsky & Keer (1999) on one problem: the iterate, its
+// work fields, and one function per step of their iteration. The steps are fused loops over the
+// cells (no temporaries): at large N the element-wise work would otherwise rival the FFT-based
+// operator application of each iteration.
+//
+// One application per iteration (docs/contact.md, "Operator applications"): the step
+// p <- p - tau t needs r = K t for its length, and by linearity the same r moves the displacement,
+// u <- u - tau r, exactly, unless the projection changed a cell (pressure cut to zero, or added
+// on an overlap); only then is u = K p recomputed, a second application. The iterates are Polonsky
+// & Keer's, who recompute u at every iteration. A stale u (the correction K d deferred) was tried
+// and steers the conjugate gradient badly: 1.8 times the iterations at 1024^2, none converging
+// once the deferred share reaches the step's size. What keeps the recomputations few is the start
+// (initial_pressure.hpp): close to the solution, the contact set settles in a few iterations.
+class PolonskyKeerIteration {
+ public:
+  // `start`, when given, is the pressure to start from (a warm or nested start:
+  // start_from_pressure).
+  // `ranks`: those the fields are distributed over (their rows), or null.
+  PolonskyKeerIteration(SurfaceOperator& op, detail::Preconditioner* preconditioner,
+                        const SolverRanks* ranks, const Field& h, ContactControl control,
+                        double value, const ContactOptions& options, std::optional<Field> start);
+
+  // One iteration; the status once the iteration has ended, nothing while it goes on.
+  std::optional<ContactStatus> iterate(double tolerance);
+  std::optional<ContactStatus> step(double tolerance);  // iterate() without its timing
+
+  // The relative pressure change of the last step (infinity before the first).
+  double residual() const { return residual_; }
+
+  // Where the iterations' time went so far (steps, recomputations, preconditioner, passes).
+  ContactTimings& timings() { return timings_; }
+
+  // The result for the current iterate (one more operator application when its displacement is
+  // not exact).
+  ContactResult result(ContactStatus status, int iterations, bool compute_approach);
+
+ private:
+  struct WorkingSet {
+    std::ptrdiff_t cells;  // I_c, widened by the overlaps after a stop that left some
+    double norm;           // sum of g^2 over it
+  };
+
+  void start(bool warm);  // warm: p_ holds the pressure to start from
+  void start_from_pressure();
+  void start_uniform();
+  void start_hertzian();
+  void scale_to_approach();
+  void recompute_displacement();
+  std::ptrdiff_t update_gap();
+  WorkingSet select_working_set();
+  bool complementary(double tolerance);
+  void update_direction(std::ptrdiff_t n_working);
+  // update_direction's sums over the working set: of z, g, g_prev and t, and z.g and z.g_prev.
+  struct DirectionSums {
+    double z = 0.0, g = 0.0, q = 0.0, t = 0.0, g_dot_z = 0.0, q_dot_z = 0.0;
+    DirectionSums& operator+=(const DirectionSums& o) {
+      z += o.z;
+      g += o.g;
+      q += o.q;
+      t += o.t;
+      g_dot_z += o.g_dot_z;
+      q_dot_z += o.q_dot_z;
+      return *this;
+    }
+  };
+  DirectionSums direction_sums();
+  void write_direction(double z_mean, double beta, double t_mean);
+  std::optional<double> step_length(std::ptrdiff_t n_working);
+  struct Projected {
+    double p_sum;   // sum of the projected pressure, before the load's scaling
+    double change;  // sum |p - p_old| of it
+  };
+  Projected project(double tau);
+  double enforce_load(Projected projected);
+
+  SurfaceOperator& op_;
+  detail::Preconditioner* preconditioner_;  // null: the classic, unpreconditioned iteration
+  const SolverRanks* ranks_;  // null: the fields are whole; otherwise every sum is over the ranks
+  const Field& h_;
+  ContactControl control_;
+  bool load_control_;
+  double value_;  // the prescribed load [N] or approach [m]
+  double delta_;  // approach control: the fixed approach; load control: 0 (g's mean is removed)
+  // Load control: the approach, mean of h + u over I_c (update_gap). g_ holds h + u - delta; the
+  // gap proper, g_ - g_mean_, is formed where it is read (a pass fewer than removing the mean).
+  double g_mean_ = 0.0;
+  double cell_area_;
+  std::ptrdiff_t n_cells_;
+  int workers_;  // threads of the element-wise passes (one below kParallelCells)
+  // p_ and u_ are held unscaled: the pressure is scale_ p_ and its displacement scale_ u_. The
+  // load's scaling (enforce_load) is applied by the next projection, which writes both anyway:
+  // a pass fewer than scaling them in place. project() writes the new pressure into p_old_'s
+  // field and swaps the two (old_scale_ is the old pressure's factor).
+  Field p_, u_, g_, t_, r_, p_old_;
+  double scale_ = 1.0, old_scale_ = 1.0;
+  // The working set, one byte a cell (the passes over its cells read it instead of p and g), and
+  // the set the direction t (and g_prev_) was last written on: outside it both are zero.
+  ByteMask working_, direction_set_;
+  // Polak-Ribiere: the previous gap on its working set (empty for Polonsky & Keer's rule). The
+  // preconditioned gap z lives in the preconditioner's own field (g itself serves without one).
+  Field g_prev_;
+  double g_dot_z_old_ = 1.0;
+  Conjugation conjugation_;
+  // Keep the previous direction: false before the first step and, under Polonsky & Keer's rule,
+  // after a step that added contact cells.
+  bool conjugate_ = false;
+  double residual_ = std::numeric_limits<double>::infinity();
+  // false: Polonsky & Keer's original (uniform start, u = K p recomputed at every iteration).
+  bool update_by_linearity_;
+  bool exact_ = false;  // u = K p (to rounding); false once the projection changed a cell
+  // The next step works on I_c and the overlapping cells {p = 0, g < 0} (a steepest-descent
+  // restart): set when the iteration stopped on I_c while cells outside it overlap.
+  bool widen_ = false;
+  int applications_ = 0;
+  ContactTimings timings_;
+};
+
+}  // namespace coatfft::detail

@@ -1,0 +1,67 @@
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <utility>
+
+#include "contact/complementarity.hpp"
+#include "contact/detail/cell_passes.hpp"
+#include "contact/detail/polonsky_keer_iteration.hpp"
+#include "contact/detail/solver_ranks.hpp"
+
+namespace coatfft::detail {
+
+namespace {
+
+// Whether a cell on the grid's border carries pressure; with ranks, p is this rank's rows, whose
+// first and last are the grid's only on the first and last rank.
+bool pressure_on_border(const Field& p, const SolverRanks* r, std::ptrdiff_t ny) {
+  const auto nx = p.rows();
+  const auto rows = p.cols();
+  const bool first = r == nullptr || r->first_row() == 0;
+  const bool last = r == nullptr || r->first_row() + r->rows() == ny;
+  const bool mine =
+      rows > 0 && ((p.row(0) > 0).any() || (p.row(nx - 1) > 0).any() ||
+                   (first && (p.col(0) > 0).any()) || (last && (p.col(rows - 1) > 0).any()));
+  return !detail::all_over(r, !mine);
+}
+
+}  // namespace
+
+ContactResult PolonskyKeerIteration::result(ContactStatus status, int iterations,
+                                            bool compute_approach) {
+  if (!exact_) recompute_displacement();
+  p_ *= scale_;
+  u_ *= scale_;
+  scale_ = 1.0;
+  const Mask contact = p_ > 0;
+  const auto n_contact = detail::count_over(ranks_, contact.count());
+  double approach = delta_;
+  if (load_control_) {
+    approach = n_contact > 0 ? masked_mean(h_ + u_, contact, n_contact, ranks_)
+                             : detail::extrema_over(ranks_, h_).min;
+  }
+  ContactResult result;
+  result.control = control_;
+  result.gap = work_field(h_);
+  result.gap = h_ + u_ - approach;
+  result.pressure = std::move(p_);
+  result.displacement = std::move(u_);
+  result.load = detail::sum_over(ranks_, result.pressure.sum()) * cell_area_;
+  if (!load_control_ || compute_approach) result.approach = approach;
+  result.contact_area = static_cast<double>(n_contact) * cell_area_;
+  if (n_contact > 0) result.contact_radius = std::sqrt(result.contact_area / std::numbers::pi);
+  result.max_pressure = detail::extrema_over(ranks_, result.pressure).max;
+  result.iterations = iterations;
+  result.operator_applications = applications_;
+  result.residual = residual_;
+  result.status = status;
+  result.converged = status == ContactStatus::converged;
+  // A periodic surface has no edge: a contact crossing the period's border is just a contact.
+  result.touches_boundary =
+      !op_.periodic() && pressure_on_border(result.pressure, ranks_, op_.grid().ny());
+  result.max_penetration = ranks_ ? std::max(0.0, -detail::extrema_over(ranks_, result.gap).min)
+                                  : max_penetration(result.gap);
+  return result;
+}
+
+}  // namespace coatfft::detail
