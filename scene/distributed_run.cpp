@@ -26,6 +26,7 @@
 #include "io/npy_slab.hpp"
 #include "loads/discretization_error.hpp"
 #include "scene/a_posteriori.hpp"
+#include "scene/contact_options.hpp"
 #include "scene/load_error_report.hpp"
 #include "scene/operator_from_scene.hpp"
 #include "scene/resources.hpp"

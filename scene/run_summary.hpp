@@ -10,7 +10,6 @@
 #include "contact/contact_solver.hpp"
 #include "convolution/operators/make_operator.hpp"
 #include "scene/automatic_method.hpp"
-#include "scene/progress_observer.hpp"
 #include "scene/scene.hpp"
 
 namespace coatfft::scene {
@@ -41,10 +40,6 @@ std::string applications_stage(int repeat);
 
 /// Refuses --repeat outside 1..max_repeat (scene/resources.hpp).
 void check_repeat(int repeat);
-
-/// The contact solver's options of a [contact] scene, its iterations reported to `progress`
-/// (which must outlive the solver).
-ContactOptions solver_options(const ContactSpec& spec, int threads, ProgressObserver& progress);
 
 /// The contact's keys of summary.json, after common_summary's: the result's numbers (the same on
 /// every rank of a distributed solve), its warning, the Hertz solution where one applies (on the

@@ -18,6 +18,7 @@
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
 #include "scene/a_posteriori.hpp"
+#include "scene/contact_options.hpp"
 #include "scene/load_error_report.hpp"
 #include "scene/operator_from_scene.hpp"
 #include "scene/resources.hpp"

@@ -29,7 +29,7 @@ namespace {
 // down to 40 um in 8 rows of 5 um.
 const double kRadius = 0.01, kLoad = 10.0, kCells = 41, kSide = 0.3e-3, kRow = 5e-6;
 
-std::string sphere_scene(const std::string& coating) {
+std::string stressed_sphere_scene(const std::string& coating) {
   return R"([grid]
 nx = 41
 ny = 41
@@ -106,7 +106,7 @@ double check_between(const std::vector<std::string>& lines, const std::string& l
 
 TEST_CASE("run highlights: a sphere on a half-space prints Hertz's radius, pressure and stress",
           "[highlights]") {
-  const auto run = run_text(sphere_scene(""), "half_space");
+  const auto run = run_text(stressed_sphere_scene(""), "half_space");
   const std::vector<std::string> lines = run_highlights(run.summary);
   INFO(run.summary.dump(1));
   REQUIRE(lines.size() == 3);  // contact radius, peak pressure, von Mises: no interface
@@ -153,7 +153,7 @@ TEST_CASE("run highlights: a stiff coating raises the peak pressure and shrinks 
           "[highlights]") {
   // TiN (E* = 427 GPa) 20 um thick on steel (231 GPa): h = 0.3 a, the contact in between.
   const double h = 20e-6;
-  const auto run = run_text(sphere_scene(R"([[coating]]
+  const auto run = run_text(stressed_sphere_scene(R"([[coating]]
 material = "titanium_nitride"
 thickness = 20e-6
 interface = "bonded")"),
