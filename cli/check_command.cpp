@@ -64,7 +64,7 @@ void check_command(const CheckOptions& options) {
   out["dy"] = grid.dy();
   out["method_requested"] =
       automatic || scene.method.auto_periodic ? "auto" : std::string(to_string(report.method));
-  out["boundary"] = scene.periodic ? "periodic" : "free";
+  out["boundary"] = to_string(scene.boundary);
   if (automatic) out["auto"] = scene::automatic_choice_json(*automatic, scene.method.tolerance);
   const MethodCandidate cost =
       automatic ? automatic->method.chosen : scene::predicted_scene_cost(scene, applications);

@@ -65,7 +65,7 @@ std::string not_distributable(const Scene& scene) {
                           " (its choice computes reference displacements of the body; name the "
                           "method: \"frf-split\")");
   const Method method = scene.method.options.method;
-  if (!scene.method.automatic && !scene.periodic && !runs_distributed(method))
+  if (!scene.method.automatic && !scene.periodic() && !runs_distributed(method))
     return detail::concat("[method] name = \"", to_string(method),
                           "\" on a free boundary (there a distributed run takes \"dcfft\" or "
                           "\"frf-split\")");

@@ -108,7 +108,7 @@ MethodSpec method_from_request(const MethodRequest& r, const KeyNames& keys) {
   COATFFT_REQUIRE(threads >= 1 && threads <= max_threads, keys.where("threads"), " = ", threads,
                   " must be in 1..", max_threads);
   o.threads = static_cast<int>(threads);
-  if (r.periodic) check_periodic_request(r, keys, spec);
+  if (r.boundary == Boundary::periodic) check_periodic_request(r, keys, spec);
   return spec;
 }
 

@@ -23,9 +23,9 @@ struct MethodRequest {
   std::optional<std::string> planning;  ///< every method but direct
   std::optional<std::int64_t> threads;  ///< any method; for auto, the most the choice may use
   bool wisdom = false;                  ///< a wisdom file is named: every method but direct
-  /// The boundary is periodic (a scene's [grid] boundary, Python's `boundary`): only the exact
-  /// periodic operator applies (dcfft, frf-split, or "auto", which takes the body's).
-  bool periodic = false;
+  /// A scene's [grid] boundary, Python's `boundary`: on a periodic one only the exact periodic
+  /// operator applies (dcfft, frf-split, or "auto", which takes the body's).
+  Boundary boundary = Boundary::free;
 };
 
 /// How a front end names a key in its messages.

@@ -19,7 +19,7 @@ namespace {
 std::string lattice_drivers(const Scene& scene, const OperatorMemory& m) {
   const Grid& grid = scene.grid;
   const std::string sizes = detail::concat("[grid] nx = ", grid.nx(), ", ny = ", grid.ny());
-  if (scene.periodic) return detail::concat(sizes, " (periodic: no padding)");
+  if (scene.periodic()) return detail::concat(sizes, " (periodic: no padding)");
   switch (scene.method.options.method) {
     case Method::direct:
       return sizes;
@@ -53,16 +53,16 @@ MemoryNeed estimate_memory(const Scene& scene) {
     need.bytes += 2 * 3.0 * 8.0 * cells * values;
     need.drivers += detail::concat(", a sweep of ", scene.contact->sweep.size(), " values");
   }
-  if (scene.method.options.method == Method::frf_dcfft && !scene.periodic)
+  if (scene.method.options.method == Method::frf_dcfft && !scene.periodic())
     need.drivers += detail::concat(", [method] alpha = ", scene.method.options.alpha);
   if (scene.stress && scene.body) {
     const std::size_t planes = stress_planes(*scene.stress, *scene.body).depths.size();
     const bool tangential = scene.shear || (scene.contact && scene.contact->friction > 0.0);
-    need.bytes += estimated_stress_bytes(grid, planes, scene.stress->alpha, tangential,
-                                         scene.periodic ? Boundary::periodic : Boundary::free);
-    need.drivers += scene.periodic ? detail::concat(", [stress] ", planes, " periodic planes")
-                                   : detail::concat(", [stress] ", planes,
-                                                    " planes at alpha = ", scene.stress->alpha);
+    need.bytes +=
+        estimated_stress_bytes(grid, planes, scene.stress->alpha, tangential, scene.boundary);
+    need.drivers += scene.periodic() ? detail::concat(", [stress] ", planes, " periodic planes")
+                                     : detail::concat(", [stress] ", planes,
+                                                      " planes at alpha = ", scene.stress->alpha);
   }
   if (scene.output.in_plane) {
     need.bytes += estimated_cerruti_bytes(grid);

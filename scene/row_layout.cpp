@@ -39,8 +39,9 @@ void add_known_load_reports(nlohmann::json& summary, const Scene& scene, const R
                             const Field& uz) {
   const double max_abs_uz = rows.max(uz.size() ? uz.abs().maxCoeff() : 0.0);
   // The a-posteriori check compares with the free surface's Hankel reference.
-  summary["a_posteriori"] =
-      scene.periodic ? nlohmann::json() : a_posteriori_check(scene, numbers.uz_center, max_abs_uz);
+  summary["a_posteriori"] = scene.periodic()
+                                ? nlohmann::json()
+                                : a_posteriori_check(scene, numbers.uz_center, max_abs_uz);
   summary["load_discretization"] = load_discretization(scene, rows, op, pressure, max_abs_uz);
   summary["refinement"] = refinement_json(scene);
   if (reports_hertz_error(scene))  // 0 from a holder without rows

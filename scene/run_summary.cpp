@@ -58,7 +58,7 @@ nlohmann::json hertz_on_half_space(const ContactSpec& spec, double R, double E_s
 // comparison; null for any other contact.
 nlohmann::json hertz_json(const Scene& scene) {
   const std::optional<double> R = hertz_radius(*scene.contact);
-  if (!R || scene.frf || !scene.body->is_homogeneous() || scene.periodic) return nullptr;
+  if (!R || scene.frf || !scene.body->is_homogeneous() || scene.periodic()) return nullptr;
   return hertz_on_half_space(*scene.contact, *R, scene.body->substrate().plane_strain_modulus());
 }
 
@@ -70,7 +70,7 @@ nlohmann::json hertz_json(const Scene& scene) {
 nlohmann::json hertz_bare_json(const Scene& scene) {
   const ContactSpec& spec = *scene.contact;
   const std::optional<double> R = hertz_radius(spec);
-  if (!R || !spec.load || !spec.sweep.empty() || scene.frf || scene.periodic) return nullptr;
+  if (!R || !spec.load || !spec.sweep.empty() || scene.frf || scene.periodic()) return nullptr;
   const LayerStack& body = *scene.body;
   nlohmann::json bare = {
       {"substrate", hertz_on_half_space(spec, *R, body.substrate().plane_strain_modulus())}};
@@ -101,7 +101,7 @@ nlohmann::json common_summary(const Scene& scene, const std::optional<AutomaticC
   const Grid& grid = scene.grid;
   nlohmann::json summary;
   summary["method"] = to_string(report.method);
-  summary["boundary"] = to_string(scene.periodic ? Boundary::periodic : Boundary::free);
+  summary["boundary"] = to_string(scene.boundary);
   summary["body"] = body_summary(scene);
   summary["nx"] = grid.nx();
   summary["ny"] = grid.ny();
@@ -180,7 +180,7 @@ void add_contact_summary(nlohmann::json& summary, const Scene& scene, const Cont
 
 bool reports_hertz_error(const Scene& scene) {
   return scene.pressure && scene.pressure->kind == PressureKind::hertz && !scene.frf &&
-         scene.body->is_homogeneous() && !scene.periodic;
+         scene.body->is_homogeneous() && !scene.periodic();
 }
 
 double hertz_error_rows(const Scene& scene, const Field& uz, std::ptrdiff_t y0) {

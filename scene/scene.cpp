@@ -46,8 +46,8 @@ void check_sweep(Scene& scene) {
 
 // The traction kernels' cost (free or periodic surface), estimated before any work.
 double traction_evaluations(const Scene& scene) {
-  return scene.periodic ? periodic_traction_kernel_evaluations(scene.grid, *scene.body)
-                        : traction_kernel_evaluations(scene.grid, *scene.body);
+  return scene.periodic() ? periodic_traction_kernel_evaluations(scene.grid, *scene.body)
+                          : traction_kernel_evaluations(scene.grid, *scene.body);
 }
 
 bool traction_kernels_affordable(const Scene& scene) {
@@ -142,11 +142,11 @@ Scene read_scene(const std::filesystem::path& path, const SceneReading& reading)
     Scene scene{grid.grid.value_or(Grid(1, 1, grid.lx, grid.ly)),
                 read_optional_body(root),
                 std::nullopt,
-                read_method(root, scene_dir, grid.periodic),
+                read_method(root, scene_dir, grid.boundary),
                 std::nullopt,
                 {},
                 {}};
-    scene.periodic = grid.periodic;
+    scene.boundary = grid.boundary;
     if (root.contains("frf")) read_frf(root, scene_dir, scene);
     resolve_periodic_method(scene.method, scene.body && !scene.frf ? &*scene.body : nullptr);
     if (grid.tolerance_total) scene.grid = refine_grid(root, grid, scene);
@@ -159,7 +159,7 @@ Scene read_scene(const std::filesystem::path& path, const SceneReading& reading)
       check_pad_memory(scene, topography->map.heights, grid.pad, reading.max_memory);
     if (root.contains("contact"))
       scene.contact = in_section("contact", [&] {
-        const SceneContext context{scene.grid, scene.periodic,
+        const SceneContext context{scene.grid, scene.periodic(),
                                    scene_dir,  topography ? &*topography : nullptr,
                                    grid.pad,   reading.height_map_values};
         return read_contact(section(root, "contact", true), context,

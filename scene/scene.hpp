@@ -150,7 +150,8 @@ struct StressSpec {
   double depth_max = 0.0;                     ///< the section's deepest row [m]
   int nz = 0;                                 ///< the section's rows, at depth_max k/nz, k = 1..nz
   int alpha = 16;  ///< period of the kernels' sampling lattice over the domain (docs/stress.md)
-  bool periodic = false;  ///< [grid] boundary = "periodic": the kernels on the period's lattice
+  Boundary boundary = Boundary::free;  ///< [grid] boundary: periodic, the kernels on the period's
+                                       ///< lattice
 };
 
 /// The most values of a [contact] sweep (a guard against runaway input: each is a solve and a
@@ -185,8 +186,9 @@ struct Scene {
   std::optional<GridRefinement> refinement = std::nullopt;  ///< set when [grid] refine = "auto"
   std::optional<StressSpec> stress = std::nullopt;          ///< [stress]
   std::optional<ShearSpec> shear = std::nullopt;            ///< [shear]
-  /// [grid] boundary = "periodic": the surface repeats over the domain (docs/scene_format.md).
-  bool periodic = false;
+  /// [grid] boundary: "periodic", the surface repeats over the domain (docs/scene_format.md).
+  Boundary boundary = Boundary::free;
+  bool periodic() const { return boundary == Boundary::periodic; }
 };
 
 /// Every plane a [stress] scene computes, with the medium of each on an interface.

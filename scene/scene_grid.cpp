@@ -52,9 +52,10 @@ GridSection read_topography_grid(SectionReader& reader, const SceneTopography& t
   const TopographyGrid keys =
       topography_grid_keys(t, integer("nx"), integer("ny"), number("lx"), number("ly"));
   const char* file_boundary = t.map.periodic.value_or(false) ? "periodic" : "free";
-  GridSection g{keys.lx, keys.ly, std::nullopt, std::nullopt, false, reader.integer("pad", 0)};
-  g.periodic = reader.choice("boundary", file_boundary, {"free", "periodic"}) == "periodic";
-  COATFFT_REQUIRE(!g.periodic || (keys.nx % 2 == 0 && keys.ny % 2 == 0),
+  GridSection g{keys.lx,      keys.ly,        std::nullopt,
+                std::nullopt, Boundary::free, reader.integer("pad", 0)};
+  g.boundary = parse_boundary(reader.choice("boundary", file_boundary, {"free", "periodic"}));
+  COATFFT_REQUIRE(g.boundary != Boundary::periodic || (keys.nx % 2 == 0 && keys.ny % 2 == 0),
                   "boundary = \"periodic\" needs even nx and ny: the topography has nx = ", keys.nx,
                   ", ny = ", keys.ny, " (boundary = \"free\" takes any)");
   // The map and `pad` cells of out-of-reach gap on each side, at the map's spacing.
@@ -78,10 +79,11 @@ GridSection read_grid(const toml::table& root, const SceneTopography* topography
   COATFFT_REQUIRE(!reader.has("pad"), reader.where("pad"),
                   " applies to a measured topography ([contact] topography = \"FILE\")");
   return in_section("grid", [&] {
-    GridSection g{reader.number("lx"), reader.number("ly"), std::nullopt, std::nullopt, false};
-    g.periodic = reader.choice("boundary", "free", {"free", "periodic"}) == "periodic";
+    GridSection g{reader.number("lx"), reader.number("ly"), std::nullopt, std::nullopt,
+                  Boundary::free};
+    g.boundary = parse_boundary(reader.choice("boundary", "free", {"free", "periodic"}));
     if (reader.choice("refine", "none", {"none", "auto"}) == "auto") {
-      COATFFT_REQUIRE(!g.periodic,
+      COATFFT_REQUIRE(g.boundary != Boundary::periodic,
                       "refine = \"auto\" chooses grids for free boundaries: give nx "
                       "and ny with boundary = \"periodic\"");
       COATFFT_REQUIRE(!reader.has("nx") && !reader.has("ny"),
@@ -100,7 +102,7 @@ GridSection read_grid(const toml::table& root, const SceneTopography* topography
       COATFFT_REQUIRE(nx <= Grid::max_cells_per_axis && ny <= Grid::max_cells_per_axis, "nx = ", nx,
                       ", ny = ", ny, ": at most ", Grid::max_cells_per_axis,
                       " cells per direction");
-      COATFFT_REQUIRE(!g.periodic || (nx % 2 == 0 && ny % 2 == 0),
+      COATFFT_REQUIRE(g.boundary != Boundary::periodic || (nx % 2 == 0 && ny % 2 == 0),
                       "boundary = \"periodic\" needs "
                       "even nx and ny (nx = ",
                       nx, ", ny = ", ny, ")");

@@ -12,10 +12,10 @@
 namespace coatfft::scene {
 
 MethodSpec read_method(const toml::table& root, const std::filesystem::path& scene_dir,
-                       bool periodic) {
+                       Boundary boundary) {
   SectionReader reader(section(root, "method", false), "method");
   MethodRequest request;
-  request.periodic = periodic;
+  request.boundary = boundary;
   request.name = reader.string("name", "auto");
   const auto number = [&](const char* key) -> std::optional<double> {
     return reader.has(key) ? std::optional(reader.number(key)) : std::nullopt;

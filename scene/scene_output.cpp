@@ -65,8 +65,9 @@ void check_stress_kernel_cost(const Scene& scene, const StressSpec& spec,
   kernel.alpha = spec.alpha;
   if (!planes.empty()) {
     const double z = *std::min_element(planes.begin(), planes.end());
-    const double n = spec.periodic ? periodic_stress_evaluations(scene.grid, planes, kernel)
-                                   : stress_kernel_evaluations(scene.grid, planes, kernel);
+    const double n = spec.boundary == Boundary::periodic
+                         ? periodic_stress_evaluations(scene.grid, planes, kernel)
+                         : stress_kernel_evaluations(scene.grid, planes, kernel);
     COATFFT_REQUIRE(n <= kernel.max_evaluations, "[stress] the plane at z = ", z,
                     " m is too shallow for a ", scene.grid.lx(), " x ", scene.grid.ly(),
                     " m domain: its kernel needs about ", n, " FRF evaluations (limit ",
@@ -154,14 +155,14 @@ StressSpec read_stress(const toml::table& root, const Scene& scene) {
   }
   // A periodic surface's kernels lie on the period's own lattice: alpha, the free surface's
   // sampling period, would be ignored there, so it is refused.
-  spec.periodic = scene.periodic;
-  COATFFT_REQUIRE(!spec.periodic || !reader.has("alpha"), reader.where("alpha"),
+  spec.boundary = scene.boundary;
+  COATFFT_REQUIRE(!scene.periodic() || !reader.has("alpha"), reader.where("alpha"),
                   " sets the sampling lattice of a free surface's kernels; with [grid] boundary = "
                   "\"periodic\" they lie on the period's own lattice: remove it");
   const std::int64_t alpha = reader.integer("alpha", 16);
   COATFFT_REQUIRE(alpha >= 2 && alpha <= 32, reader.where("alpha"), " = ", alpha,
                   " must be an integer in [2, 32]");
-  COATFFT_REQUIRE(spec.periodic || alpha * std::max(scene.grid.nx(), scene.grid.ny()) <= 16384,
+  COATFFT_REQUIRE(scene.periodic() || alpha * std::max(scene.grid.nx(), scene.grid.ny()) <= 16384,
                   reader.where("alpha"), " = ", alpha, " times ",
                   std::max(scene.grid.nx(), scene.grid.ny()),
                   " cells exceeds the 16384-point sampling lattice; lower alpha");

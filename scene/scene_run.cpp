@@ -318,7 +318,7 @@ SceneRun compute_scene(PreparedScene prepared, const SceneRunOptions& options) {
   std::shared_ptr<CerrutiOperator> surface;
   if (scene_copy.output.in_plane) {
     progress.stage("setting up the surface response to tractions");
-    surface = traction_operator(scene_copy.grid, *body, threads, scene_copy.periodic);
+    surface = traction_operator(scene_copy.grid, *body, threads, scene_copy.periodic());
   }
   SceneRun run =
       prepared.scene.contact

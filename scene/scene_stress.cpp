@@ -187,7 +187,7 @@ StressRun compute_stress(const StressSpec& spec, const LayerStack& body, const G
   StressOperatorOptions options;
   options.kernel.alpha = spec.alpha;
   options.kernel.threads = threads;
-  options.boundary = spec.periodic ? Boundary::periodic : Boundary::free;
+  options.boundary = spec.boundary;
   options.sides = planes.sides;
   options.tangential = q.qx || q.qy;
   options.on_planes = [&progress](std::size_t first, std::size_t count, std::size_t n) {
@@ -208,8 +208,9 @@ StressRun compute_stress(const StressSpec& spec, const LayerStack& body, const G
   run.summary = {{"warnings", alias_warnings(*op)},
                  {"depths", spec.depths},
                  {"at_interface", spec.side == InterfaceSide::below ? "below" : "above"},
-                 {"alpha", spec.periodic ? nlohmann::json() : nlohmann::json(spec.alpha)},
-                 {"periodic", spec.periodic},
+                 {"alpha", spec.boundary == Boundary::periodic ? nlohmann::json()
+                                                               : nlohmann::json(spec.alpha)},
+                 {"periodic", spec.boundary == Boundary::periodic},
                  {"interfaces", interface_shear(spec, grid, planes, stress)},
                  {"planes", planes.depths.size()},
                  {"tangential", options.tangential},

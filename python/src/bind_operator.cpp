@@ -80,7 +80,7 @@ scene::MethodSpec method_spec(const MethodKeywords& k) {
                     "takes the body's exact method (dcfft or frf-split)");
   }
   scene::MethodRequest r;
-  r.periodic = periodic;
+  r.boundary = boundary;
   r.name = k.method;
   r.tolerance = k.tolerance;
   r.alpha = k.alpha;

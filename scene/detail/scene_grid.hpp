@@ -20,7 +20,7 @@ struct GridSection {
   double ly = 0.0;
   std::optional<Grid> grid;               // nx and ny given
   std::optional<double> tolerance_total;  // refine = "auto"
-  bool periodic = false;                  // boundary = "periodic"
+  Boundary boundary = Boundary::free;     // [grid] boundary
   std::int64_t pad = 0;                   // a topography's pad [cells each side]
 };
 

@@ -10,6 +10,6 @@ namespace coatfft::scene {
 
 // [method]: its keys into a MethodRequest, checked by method_from_request as Python's keywords are.
 MethodSpec read_method(const toml::table& root, const std::filesystem::path& scene_dir,
-                       bool periodic);
+                       Boundary boundary);
 
 }  // namespace coatfft::scene
