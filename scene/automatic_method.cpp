@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "convolution/operators/make_operator.hpp"
+#include "scene/method_request.hpp"
 #include "validation/hertz_contact.hpp"
 
 namespace coatfft::scene {
@@ -65,14 +66,9 @@ double expected_applications(const Scene& scene, int repeat) {
 std::optional<AutomaticChoice> resolve_automatic_method(Scene& scene, double applications,
                                                         bool distributed) {
   MethodSpec& m = scene.method;
-  OperatorRequest request;
-  request.automatic = m.automatic || m.auto_periodic;
-  request.options = m.options;
+  OperatorRequest request = operator_request(m);
   AutoRequest& choice = request.automatic_request;
-  choice.tolerance = m.tolerance;
   choice.applications = applications;
-  choice.max_threads = m.options.threads;
-  choice.planning = m.options.planning;
   choice.first_in_process = true;  // a command-line run builds one operator
   choice.distributed = distributed;
   if (request.automatic) request.loads = reference_loads(scene);

@@ -73,6 +73,16 @@ void resolve_periodic_method(MethodSpec& spec, const LayerStack* body) {
   if (spec.auto_periodic) spec.options.method = body ? exact_method(*body) : Method::frf_split;
 }
 
+OperatorRequest operator_request(const MethodSpec& spec) {
+  OperatorRequest request;
+  request.automatic = spec.automatic || spec.auto_periodic;
+  request.options = spec.options;
+  request.automatic_request.tolerance = spec.tolerance;
+  request.automatic_request.max_threads = spec.options.threads;
+  request.automatic_request.planning = spec.options.planning;
+  return request;
+}
+
 MethodSpec method_from_request(const MethodRequest& r, const KeyNames& keys) {
   MethodSpec spec;
   OperatorOptions& o = spec.options;

@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "model/operator_plan.hpp"
 #include "scene/scene.hpp"
 
 namespace coatfft::scene {
@@ -51,5 +52,11 @@ MethodSpec method_from_request(const MethodRequest& request, const KeyNames& key
 /// (exact_method: dcfft for a homogeneous body, frf-split otherwise), or frf-split for a body
 /// given by its FRF alone (null `body`). Other specs are left as they are.
 void resolve_periodic_method(MethodSpec& spec, const LayerStack* body);
+
+/// The library's operator request (model/operator_plan.hpp) of a checked spec, the same for a
+/// scene's [method] and Python's keywords: "auto" (free or periodic) with its tolerance, and
+/// the spec's options (a named method's; for "auto" its threads cap and planning). The caller
+/// adds what it knows of the run: applications, reference loads, first_in_process, distributed.
+OperatorRequest operator_request(const MethodSpec& spec);
 
 }  // namespace coatfft::scene

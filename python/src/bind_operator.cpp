@@ -101,18 +101,12 @@ bool first_operator = true;
 // The keywords as the library's operator request (model/operator_plan.hpp), which plans a scene's
 // operator too: "auto"'s tolerance, applications and reference load, or the named method.
 OperatorRequest operator_request(const Grid& grid, const MethodKeywords& k) {
-  const scene::MethodSpec spec = method_spec(k);
-  OperatorRequest request;
-  request.automatic = spec.automatic || spec.auto_periodic;
-  request.options = spec.options;
+  OperatorRequest request = scene::operator_request(method_spec(k));
   AutoRequest& choice = request.automatic_request;
-  choice.tolerance = spec.tolerance;
   choice.applications = k.applications.value_or(1.0);
   COATFFT_REQUIRE(choice.applications >= 1 && std::isfinite(choice.applications),
                   "make_operator: applications = ", choice.applications,
                   " must be finite and >= 1");
-  choice.max_threads = spec.options.threads;
-  choice.planning = spec.options.planning;
   choice.first_in_process = first_operator;
   if (k.load_radius) {
     require_load_radius(grid, *k.load_radius, "make_operator: load_radius");
