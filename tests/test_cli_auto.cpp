@@ -35,7 +35,7 @@ std::string write_scene_text(std::string text, const std::string& from, const st
   return text;
 }
 
-const std::string coating = "[[coating]]\nE = 21e9\nnu = 0.3\nthickness = 1e-4\n";
+const std::string soft_coating = "[[coating]]\nE = 21e9\nnu = 0.3\nthickness = 1e-4\n";
 
 }  // namespace
 
@@ -61,15 +61,15 @@ TEST_CASE("a scene without [method] runs auto: Love's coefficients on a homogene
 }
 
 TEST_CASE("a coated scene without [method] runs frf-split within the tolerance", "[cli][auto]") {
-  const nlohmann::json s =
-      run_summary("auto_coated", scene_without_method(coating + "[method]\ntolerance = 1e-3\n"));
+  const nlohmann::json s = run_summary(
+      "auto_coated", scene_without_method(soft_coating + "[method]\ntolerance = 1e-3\n"));
   CHECK(s["method"] == "frf-split");
   CHECK(s["auto"]["split_tolerance"] == 1e-3);
   CHECK(s["auto"]["predicted_error"].get<double>() <= 1e-3);
   // The same scene by frf-split at its default kernel tolerance: the results agree within the
   // tolerance (max |u| ~ uz_max).
   const nlohmann::json named = run_summary(
-      "auto_coated_named", scene_without_method(coating + "[method]\nname = \"frf-split\"\n"));
+      "auto_coated_named", scene_without_method(soft_coating + "[method]\nname = \"frf-split\"\n"));
   CHECK(named["method_requested"] == "frf-split");
   CHECK_FALSE(named.contains("auto"));
   CHECK(std::abs(s["uz_max"].get<double>() - named["uz_max"].get<double>()) <=
@@ -101,7 +101,7 @@ TEST_CASE("auto's keys are refused where they do not apply", "[cli][auto]") {
 }
 
 TEST_CASE("coatfft check prints auto's choice, sizes, memory and time", "[cli][auto]") {
-  const fs::path scene = write_scene(scene_without_method(coating), "auto_check", "", "");
+  const fs::path scene = write_scene(scene_without_method(soft_coating), "auto_check", "", "");
   const fs::path json = scratch("auto_check.json");
   const std::string command = std::string(COATFFT_EXE) + " check " + scene.string() + " > " +
                               json.string() + " 2>/dev/null";

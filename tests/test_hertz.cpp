@@ -20,20 +20,20 @@ using coatfft::uniform_disk_displacement;
 namespace {
 constexpr double p0 = 1e9;        // Pa
 constexpr double kRadius = 1e-3;  // m
-const double e_star = coatfft::material_by_name("steel").plane_strain_modulus();
+const double steel_e_star = coatfft::material_by_name("steel").plane_strain_modulus();
 using std::numbers::pi;
 }  // namespace
 
 TEST_CASE("hertz_displacement matches its known values", "[hertz]") {
   // Centre and edge values of docs/theory.md 1.4; both branches are a few roundings from them.
-  CHECK(hertz_displacement(0.0, p0, kRadius, e_star) ==
-        Approx(pi * p0 * kRadius / (2 * e_star)).epsilon(1e-15));
-  CHECK(hertz_displacement(kRadius, p0, kRadius, e_star) ==
-        Approx(pi * p0 * kRadius / (4 * e_star)).epsilon(1e-15));
+  CHECK(hertz_displacement(0.0, p0, kRadius, steel_e_star) ==
+        Approx(pi * p0 * kRadius / (2 * steel_e_star)).epsilon(1e-15));
+  CHECK(hertz_displacement(kRadius, p0, kRadius, steel_e_star) ==
+        Approx(pi * p0 * kRadius / (4 * steel_e_star)).epsilon(1e-15));
   // Continuity at r = a between (1.6) and (1.7), and at r = 2a between (1.7) and its series.
   for (double edge : {kRadius, 2 * kRadius}) {
-    const double below = hertz_displacement(edge * (1 - 1e-12), p0, kRadius, e_star);
-    const double above = hertz_displacement(edge * (1 + 1e-12), p0, kRadius, e_star);
+    const double below = hertz_displacement(edge * (1 - 1e-12), p0, kRadius, steel_e_star);
+    const double above = hertz_displacement(edge * (1 + 1e-12), p0, kRadius, steel_e_star);
     // The slope is O(u/a), so a 1e-12 step moves u by ~1e-12 relative.
     CHECK(above == Approx(below).epsilon(1e-11));
   }
@@ -42,45 +42,45 @@ TEST_CASE("hertz_displacement matches its known values", "[hertz]") {
   const double load = 2.0 / 3.0 * pi * kRadius * kRadius * p0;
   for (double rho : {3.0, 10.0, 1e3, 1e6}) {
     const double r = rho * kRadius;
-    const double u = hertz_displacement(r, p0, kRadius, e_star);
-    const double point = load / (pi * e_star * r);
+    const double u = hertz_displacement(r, p0, kRadius, steel_e_star);
+    const double point = load / (pi * steel_e_star * r);
     // Next series term: (3/70) t^7 / ((4/3) t^3) = 0.032 t^4; roundoff ~1e-15.
     CHECK(std::abs(u / point - 1.0 - 0.1 / (rho * rho)) < 0.04 / std::pow(rho, 4) + 1e-15);
   }
   // (1.7) evaluated directly at r = 1.5 a (no series there) against its algebraic value.
   const double r = 1.5 * kRadius;
-  const double direct = p0 / (2 * kRadius * e_star) *
+  const double direct = p0 / (2 * kRadius * steel_e_star) *
                         ((2 * kRadius * kRadius - r * r) * std::asin(kRadius / r) +
                          kRadius * std::sqrt(r * r - kRadius * kRadius));
-  CHECK(hertz_displacement(r, p0, kRadius, e_star) == Approx(direct).epsilon(1e-15));
+  CHECK(hertz_displacement(r, p0, kRadius, steel_e_star) == Approx(direct).epsilon(1e-15));
   // Series branch against (1.7) in long double at r = 3a, where (1.7) in double would lose a digit.
   const long double rl = 3.0L * kRadius;
   const long double al = kRadius;
   const long double exact =
-      (long double)p0 / (2 * al * e_star) *
+      (long double)p0 / (2 * al * steel_e_star) *
       ((2 * al * al - rl * rl) * std::asin(al / rl) + al * std::sqrt(rl * rl - al * al));
-  CHECK(hertz_displacement(3 * kRadius, p0, kRadius, e_star) ==
+  CHECK(hertz_displacement(3 * kRadius, p0, kRadius, steel_e_star) ==
         Approx(double(exact)).epsilon(1e-14));
-  CHECK_THROWS_AS(hertz_displacement(-1.0, p0, kRadius, e_star), coatfft::InvalidArgument);
-  CHECK_THROWS_AS(hertz_displacement(0.0, p0, 0.0, e_star), coatfft::InvalidArgument);
+  CHECK_THROWS_AS(hertz_displacement(-1.0, p0, kRadius, steel_e_star), coatfft::InvalidArgument);
+  CHECK_THROWS_AS(hertz_displacement(0.0, p0, 0.0, steel_e_star), coatfft::InvalidArgument);
 }
 
 TEST_CASE("uniform_disk_displacement matches its known values", "[hertz]") {
   const double p = 2e8;
-  CHECK(uniform_disk_displacement(0.0, p, kRadius, e_star) ==
-        Approx(2 * p * kRadius / e_star).epsilon(1e-15));
-  CHECK(uniform_disk_displacement(kRadius, p, kRadius, e_star) ==
-        Approx(4 * p * kRadius / (pi * e_star)).epsilon(1e-15));
+  CHECK(uniform_disk_displacement(0.0, p, kRadius, steel_e_star) ==
+        Approx(2 * p * kRadius / steel_e_star).epsilon(1e-15));
+  CHECK(uniform_disk_displacement(kRadius, p, kRadius, steel_e_star) ==
+        Approx(4 * p * kRadius / (pi * steel_e_star)).epsilon(1e-15));
   // Continuity across r = a: the outside form's (1 - k^2) K(k) -> 0 only logarithmically slowly,
   // u is continuous with an infinite slope ~ log, so a 1e-12 step moves it by ~1e-11.
-  CHECK(
-      uniform_disk_displacement(kRadius * (1 + 1e-12), p, kRadius, e_star) ==
-      Approx(uniform_disk_displacement(kRadius * (1 - 1e-12), p, kRadius, e_star)).epsilon(1e-10));
+  CHECK(uniform_disk_displacement(kRadius * (1 + 1e-12), p, kRadius, steel_e_star) ==
+        Approx(uniform_disk_displacement(kRadius * (1 - 1e-12), p, kRadius, steel_e_star))
+            .epsilon(1e-10));
   // Far field P/(pi E* r) with P = pi a^2 p; first correction (a/r)^2/8 (E, K series).
   for (double rho : {5.0, 100.0, 1e5}) {
     const double r = rho * kRadius;
-    const double point = p * kRadius * kRadius / (e_star * r);
-    const double u = uniform_disk_displacement(r, p, kRadius, e_star);
+    const double point = p * kRadius * kRadius / (steel_e_star * r);
+    const double u = uniform_disk_displacement(r, p, kRadius, steel_e_star);
     // Next term of the series is O(k^4) with a coefficient below 0.1; roundoff ~1e-15.
     CHECK(std::abs(u / point - 1.0 - 0.125 / (rho * rho)) < 0.1 / std::pow(rho, 4) + 1e-15);
   }
@@ -118,7 +118,7 @@ double ring_superposition(double r, const std::function<double(double)>& pressur
     total += result;
   }
   gsl_integration_workspace_free(ws);
-  return total / (pi * e_star);
+  return total / (pi * steel_e_star);
 }
 }  // namespace
 
@@ -133,8 +133,9 @@ TEST_CASE("Hertz and uniform-disk closed forms equal a superposition of ring loa
     const double hertz_rings = ring_superposition(
         r, [](double s) { return p0 * std::sqrt(1 - s * s / (kRadius * kRadius)); });
     const double disk_rings = ring_superposition(r, [p](double) { return p; });
-    CHECK(hertz_displacement(r, p0, kRadius, e_star) == Approx(hertz_rings).epsilon(1e-12));
-    CHECK(uniform_disk_displacement(r, p, kRadius, e_star) == Approx(disk_rings).epsilon(1e-12));
+    CHECK(hertz_displacement(r, p0, kRadius, steel_e_star) == Approx(hertz_rings).epsilon(1e-12));
+    CHECK(uniform_disk_displacement(r, p, kRadius, steel_e_star) ==
+          Approx(disk_rings).epsilon(1e-12));
   }
 }
 

@@ -24,21 +24,21 @@ std::string scene_text(int n, const std::string& load, const std::string& method
          "[method]\nname = \"dcfft\"\n" + method;
 }
 
-const std::string contact = "[contact]\nindenter = \"sphere\"\nradius = 0.01\nload = 1.0\n";
-const std::string pressure = "[pressure]\nkind = \"hertz\"\np0 = 1e9\na = 1e-4\n";
+const std::string contact_section = "[contact]\nindenter = \"sphere\"\nradius = 0.01\nload = 1.0\n";
+const std::string pressure_section = "[pressure]\nkind = \"hertz\"\np0 = 1e9\na = 1e-4\n";
 
 }  // namespace
 
 TEST_CASE("Contact scenes of 2048^2 cells or more measure their FFTW plans by default",
           "[scene][planning]") {
   CHECK(scene::contact_measure_cells == 2048 * 2048);
-  CHECK(read(scene_text(2048, contact, "")).method.options.planning == Planning::measure);
-  CHECK(read(scene_text(2046, contact, "")).method.options.planning == Planning::estimate);
-  CHECK(read(scene_text(2048, pressure, "")).method.options.planning == Planning::estimate);
+  CHECK(read(scene_text(2048, contact_section, "")).method.options.planning == Planning::measure);
+  CHECK(read(scene_text(2046, contact_section, "")).method.options.planning == Planning::estimate);
+  CHECK(read(scene_text(2048, pressure_section, "")).method.options.planning == Planning::estimate);
   // What the scene says is kept.
-  const auto given = read(scene_text(2048, contact, "planning = \"estimate\"\n"));
+  const auto given = read(scene_text(2048, contact_section, "planning = \"estimate\"\n"));
   CHECK(given.method.planning_given);
   CHECK(given.method.options.planning == Planning::estimate);
-  CHECK(read(scene_text(64, contact, "planning = \"measure\"\n")).method.options.planning ==
+  CHECK(read(scene_text(64, contact_section, "planning = \"measure\"\n")).method.options.planning ==
         Planning::measure);
 }

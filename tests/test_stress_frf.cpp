@@ -19,7 +19,7 @@ namespace {
 
 constexpr C I{0.0, 1.0};
 
-const Material soft(2e9, 0.45);
+const Material polymer(2e9, 0.45);
 
 StressFrf frf_at(const LayerStack& s, double kx, double ky, double z,
                  InterfaceSide side = InterfaceSide::below) {
@@ -60,7 +60,7 @@ TEST_CASE("stress_frf equals table T4 entry by entry", "[stress_frf]") {
 }
 
 TEST_CASE("stress_frf meets the surface traction conditions", "[stress_frf]") {
-  const LayerStack stack({{soft, 1e-6, Interface::bonded}}, steel);
+  const LayerStack stack({{polymer, 1e-6, Interface::bonded}}, steel);
   const StressFrf f = frf_at(stack, 2e5, -7e5, 0.0);
   // sigma_iz(0) = -t_i: -1 for the matching load, 0 otherwise.
   const int rows[3] = {s_zz, s_xz, s_yz};
@@ -71,14 +71,14 @@ TEST_CASE("stress_frf meets the surface traction conditions", "[stress_frf]") {
 
 TEST_CASE("stress_frf satisfies equilibrium and Hooke's law inside each medium", "[stress_frf]") {
   // Inverse transform exp(+i k.x): d/dx -> i kx. z-derivatives by 4th-order central differences.
-  const LayerStack stack({{tin, 1e-6, Interface::bonded}, {soft, 2e-6, Interface::frictionless}},
+  const LayerStack stack({{tin, 1e-6, Interface::bonded}, {polymer, 2e-6, Interface::frictionless}},
                          steel);
   const double kx = 4e5, ky = 9e5;
   struct Point {
     double z;
     Material m;
   };
-  for (const Point& pt : {Point{0.4e-6, tin}, Point{1.9e-6, soft}, Point{5e-6, steel}}) {
+  for (const Point& pt : {Point{0.4e-6, tin}, Point{1.9e-6, polymer}, Point{5e-6, steel}}) {
     const double h = 2e-9;
     const auto d_dz = [&](auto get) {
       return (-get(frf_at(stack, kx, ky, pt.z + 2 * h)) +

@@ -5,12 +5,11 @@
 
 #include "core/detail/sinc.hpp"
 #include "core/error.hpp"
+#include "core/types.hpp"
 
 namespace coatfft {
 
 namespace {
-
-using Complex = std::complex<double>;
 
 // The FRFs of the six kernels at (kx, ky), k = |k| > 0 (frf/traction_response.hpp).
 std::array<Complex, 6> frfs(const TractionResponse& r, double kx, double ky) {
