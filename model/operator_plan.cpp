@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <utility>
 
+#include "convolution/operators/operator_memory.hpp"
 #include "core/error.hpp"
+#include "core/memory.hpp"
 
 namespace coatfft {
 
@@ -66,11 +68,31 @@ OperatorOptions chosen_options(const AutomaticChoice& choice, const OperatorRequ
   return o;
 }
 
+// The default method on the request's boundary takes the least memory any choice of "auto" needs:
+// a grid too large for it is refused before the choice spends time on it.
+void require_least_memory(const Grid& grid, const OperatorRequest& request) {
+  OperatorOptions least;
+  least.boundary = request.options.boundary;
+  require_operator_memory(grid, least, request.other_bytes, request.memory_who);
+}
+
 }  // namespace
+
+void require_operator_memory(const Grid& grid, const OperatorOptions& options, double other_bytes,
+                             std::string_view who) {
+  const OperatorMemory m = estimated_memory(grid, options);
+  std::string drivers = detail::concat("grid ", grid.nx(), " x ", grid.ny());
+  if (m.lattice_nx > 0)
+    drivers += detail::concat(" (", m.lattice_nx, " x ", m.lattice_ny, " transform lattice)");
+  require_memory({m.bytes + other_bytes, drivers}, std::nullopt, who, "",
+                 options.method == Method::frf_spectral ? "use fewer cells or a smaller alpha"
+                                                        : "use fewer cells");
+}
 
 OperatorPlan plan_operator(const Grid& grid, const LayerStack& body,
                            const OperatorRequest& request) {
   OperatorPlan plan{request.options, std::nullopt, {}, std::nullopt};
+  if (request.automatic) require_least_memory(grid, request);
   if (request.automatic && request.options.boundary == Boundary::periodic) {
     plan_periodic(grid, body, request, plan);
   } else if (request.automatic) {
@@ -84,11 +106,13 @@ OperatorPlan plan_operator(const Grid& grid, const LayerStack& body,
     check_love_body(body, request.options.method);
   }
   check_operator_options(grid, plan.options);
+  require_operator_memory(grid, plan.options, request.other_bytes, request.memory_who);
   return plan;
 }
 
 OperatorPlan plan_operator(const Grid& grid, const Frf& frf, const OperatorRequest& request) {
   OperatorPlan plan{request.options, std::nullopt, {}, std::nullopt};
+  if (request.automatic) require_least_memory(grid, request);
   if (request.automatic && request.options.boundary == Boundary::periodic) {
     plan.options.method = Method::frf_split;
   } else if (request.automatic) {
@@ -98,6 +122,7 @@ OperatorPlan plan_operator(const Grid& grid, const Frf& frf, const OperatorReque
     plan.choice = std::move(choice);
   }
   check_operator_options(grid, plan.options);
+  require_operator_memory(grid, plan.options, request.other_bytes, request.memory_who);
   return plan;
 }
 

@@ -65,6 +65,10 @@ struct OperatorRequest {
   AutoRequest automatic_request;
   /// "auto"'s reference loads; empty: unknown_load_references(grid).
   std::vector<ReferenceLoad> loads;
+  /// The memory check before any work (require_operator_memory): the bytes the caller holds
+  /// beside the operator (its own fields), and the name a refusal starts with.
+  double other_bytes = 0.0;
+  std::string memory_who = "operator";
 };
 
 /// A request resolved: what make_operator is given.
@@ -76,9 +80,17 @@ struct OperatorPlan {
   std::optional<AutomaticChoice> choice;  ///< "auto" on a free boundary
 };
 
+/// Refuses (InvalidArgument starting with `who`, naming the grid and any transform lattice) an
+/// operator of `options` on `grid` whose estimated memory (operator_memory.hpp), with
+/// `other_bytes` beside it, exceeds the memory available (core/memory.hpp).
+void require_operator_memory(const Grid& grid, const OperatorOptions& options, double other_bytes,
+                             std::string_view who);
+
 /// Checks `request` for `body` on `grid` (check_operator_options, Love's methods on a homogeneous
-/// body only, direct summation's cell limit) and resolves "auto". InvalidArgument for a bad
-/// request, or when no method meets the tolerance.
+/// body only, direct summation's cell limit), resolves "auto" and checks the memory of the
+/// operator planned (require_operator_memory; for "auto" first that of the least any choice needs,
+/// before the choice spends time on a grid too large). InvalidArgument for a bad request, when no
+/// method meets the tolerance, or when the operator does not fit.
 OperatorPlan plan_operator(const Grid& grid, const LayerStack& body,
                            const OperatorRequest& request);
 /// The same for a body given by its FRF alone (periodic "auto" takes frf-split; never reduced).

@@ -118,9 +118,10 @@ TEST_CASE("CerrutiOperator refuses bad loads", "[cerruti_operator]") {
 TEST_CASE("make_tangential_operator builds the operator a coated body's constructor builds",
           "[cerruti_operator][make_operator]") {
   // The factory adds threads and timing, nothing to the numbers: its displacements equal the
-  // constructor's bitwise, on any thread count (the lattice sums do not depend on it).
+  // constructor's bitwise, on any thread count (the lattice sums do not depend on it). A coating
+  // about a cell thick: the lattice's work grows like (L/h)^2 and the property holds at any h.
   const Grid g(9, 7, 1e-3, 0.8e-3);
-  const LayerStack body({Coating{tin, 50e-6, Interface::bonded}}, steel);
+  const LayerStack body({Coating{tin, 125e-6, Interface::bonded}}, steel);
   const Field p = random_load(9, 7, 4), qx = random_load(9, 7, 5), qy = random_load(9, 7, 6);
   CerrutiOperator direct(g, body, TractionKernelOptions{});
   std::array<Field, 3> expected, u;
@@ -131,7 +132,7 @@ TEST_CASE("make_tangential_operator builds the operator a coated body's construc
     const BuiltTangentialOperator built = make_tangential_operator(g, body, options);
     built.op->apply(p, &qx, &qy, u);
     for (int d = 0; d < 3; ++d) CHECK((u[d] == expected[d]).all());
-    CHECK(built.report.beta == 50e-6);  // the top coating's thickness
+    CHECK(built.report.beta == 125e-6);  // the top coating's thickness
     CHECK(built.setup_seconds > 0.0);
   }
   TangentialOptions bad;

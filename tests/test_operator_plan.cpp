@@ -4,6 +4,8 @@
 
 #include "convolution/operators/make_operator.hpp"
 #include "core/error.hpp"
+#include "core/memory.hpp"
+#include "frf/coated_frf.hpp"
 #include "model/operator_plan.hpp"
 #include "tests/test_materials.hpp"
 
@@ -89,4 +91,26 @@ TEST_CASE("a periodic auto takes the exact method, a film far thinner than a cel
   CHECK(thick.options.method == Method::frf_split);
   // Built for the reduced body: the operator is Love's, as on the bare substrate.
   CHECK(build_operator(grid, film, thin).report.method == Method::dcfft);
+}
+
+TEST_CASE("a plan is refused when its operator and the caller's fields exceed the memory",
+          "[plan][memory]") {
+  const std::optional<double> available = available_memory();
+  REQUIRE(available);  // Linux: MemAvailable, the cgroup's limit or ulimit -v
+  const Grid grid(64, 64, 1e-3, 1e-3);
+  OperatorRequest request = named(Method::dcfft);
+  request.memory_who = "make_operator";
+  CHECK(plan_operator(grid, LayerStack(steel), request).options.method == Method::dcfft);
+  // The caller's fields count beside the operator's own estimate (operator_memory.hpp).
+  request.other_bytes = 2.0 * *available;
+  CHECK_THROWS_WITH(plan_operator(grid, LayerStack(steel), request),
+                    Contains("make_operator needs about") && Contains("driven by grid 64 x 64"));
+  // "auto" on a grid no method fits is refused before the choice spends time on it; the FRF
+  // form of the body alike.
+  const Grid huge(65536, 65536, 1.0, 1.0);  // dcfft: over 100 GiB
+  CHECK_THROWS_WITH(plan_operator(huge, LayerStack(steel), automatic()),
+                    Contains("operator needs about") && Contains("use fewer cells"));
+  const CoatedFrf frf(tin, 20e-6, steel, Interface::bonded);
+  CHECK_THROWS_WITH(plan_operator(huge, frf, automatic(Boundary::periodic)),
+                    Contains("operator needs about"));
 }

@@ -173,18 +173,19 @@ TEST_CASE("coated bodies under a Hertz traction and pressure converge to the Han
   // Grids of cell a/m over [-2a, 2a]^2 + a cell (N = 4m + 1, the origin a cell centre), the
   // cell-averaged Hertz-type load q0 sqrt(1 - r^2/a^2) as q_x and as p. Largest error of the
   // three displacements at eight points on and off the axes, over |u_x(0)| (traction) and
-  // u_z(0) (pressure): measured 4.4e-4 and 2.1e-4 (E1/E2 = 10, h = a), 1.2e-3 and 3.2e-4
-  // (E1/E2 = 0.1, h = a/10) at a/16 and a/32 -- the piecewise-constant load's error, which the
-  // half-space's closed-form kernels show as well (1.4e-3 and 5.6e-4 over a whole grid of
-  // points). The bounds are about twice the a/16 values, and the error must fall with the grid.
+  // u_z(0) (pressure): measured 1.7e-3 and 4.4e-4 (E1/E2 = 10, h = a), 4.4e-3 and 1.2e-3
+  // (E1/E2 = 0.1, h = a/10) at a/8 and a/16 (4.4e-4 and 2.1e-4, 1.2e-3 and 3.2e-4 at a/16 and
+  // a/32) -- the piecewise-constant load's error, which the half-space's closed-form kernels show
+  // as well (1.4e-3 and 5.6e-4 over a whole grid of points at a/16 and a/32). The bounds are
+  // about twice the a/8 values, and the error must fall with the grid.
   const double a = 1e-3;
   const double points[][2] = {{0.0, 0.0},         {0.5e-3, 0.0},      {1.25e-3, 0.0},
                               {0.0, 0.75e-3},     {0.5e-3, 0.5e-3},   {-1e-3, 0.75e-3},
                               {0.25e-3, -1.5e-3}, {1.75e-3, 1.125e-3}};
   struct Case {
-    double e_ratio, h, tol16;
+    double e_ratio, h, tol8;
   };
-  for (const Case c : {Case{10.0, 1.0 * a, 1e-3}, Case{0.1, 0.1 * a, 2.5e-3}}) {
+  for (const Case c : {Case{10.0, 1.0 * a, 3.5e-3}, Case{0.1, 0.1 * a, 9e-3}}) {
     const LayerStack body = coated(c.e_ratio, c.h);
     std::vector<SurfaceDisplacement> ref_q, ref_p;
     for (const auto& p : points) {
@@ -194,7 +195,7 @@ TEST_CASE("coated bodies under a Hertz traction and pressure converge to the Han
           body, AxisymmetricLoad::hertz, LoadDirection::pressure, 1.0, a, p[0], p[1], 1e-9));
     }
     std::vector<double> errors;
-    for (int m : {16, 32}) {
+    for (int m : {8, 16}) {
       const int n = 4 * m + 1;
       const Grid g(n, n, n * a / m, n * a / m);
       const Field load = hertz_pressure(g, 1.0, a, Sampling::cell_average);
@@ -218,7 +219,7 @@ TEST_CASE("coated bodies under a Hertz traction and pressure converge to the Han
       errors.push_back(e);
     }
     INFO("E1/E2 = " << c.e_ratio << ", h = " << c.h << ": " << errors[0] << ", " << errors[1]);
-    CHECK(errors[0] < c.tol16);
+    CHECK(errors[0] < c.tol8);
     CHECK(errors[1] < errors[0] / 2.0);  // the load's discretisation error, not a floor
   }
 }

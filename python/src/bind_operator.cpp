@@ -12,9 +12,7 @@
 
 #include "bindings.hpp"
 #include "bodies.hpp"
-#include "convolution/operators/operator_memory.hpp"
 #include "core/error.hpp"
-#include "core/memory.hpp"
 #include "core/threads.hpp"
 #include "model/operator_plan.hpp"
 #include "operator.hpp"
@@ -112,6 +110,10 @@ OperatorRequest operator_request(const Grid& grid, const MethodKeywords& k) {
     require_load_radius(grid, *k.load_radius, "make_operator: load_radius");
     request.loads = {{AxisymmetricLoad::hertz, std::max(*k.load_radius, 0.5 * grid.dx())}};
   }
+  // The memory check counts the fields the module holds beside the operator: the pressure and the
+  // displacement of apply.
+  request.other_bytes = 2.0 * 8.0 * static_cast<double>(grid.nb_cells());
+  request.memory_who = "make_operator";
   return request;
 }
 
@@ -132,31 +134,14 @@ py::dict report_dict(const Grid& grid, const BuiltOperator& built, const MethodK
   return dict_from_json_text(json.dump());
 }
 
-// The program's memory refusal (core/memory.hpp) for the operator of `options` and the fields the
-// module holds beside it (the pressure and the displacement of apply).
-void require_operator_memory(const Grid& grid, const OperatorOptions& options) {
-  const OperatorMemory m = estimated_memory(grid, options);
-  const double fields = 2.0 * 8.0 * static_cast<double>(grid.nb_cells());
-  std::string drivers = detail::concat("grid ", grid.nx(), " x ", grid.ny());
-  if (m.lattice_nx > 0)
-    drivers += detail::concat(" (", m.lattice_nx, " x ", m.lattice_ny, " transform lattice)");
-  require_memory({m.bytes + fields, drivers}, std::nullopt, "make_operator", "",
-                 options.method == Method::frf_spectral ? "use fewer cells or a smaller alpha"
-                                                        : "use fewer cells");
-}
-
 std::unique_ptr<Operator> make_operator_py(const Grid& grid, py::handle body_object,
                                            const MethodKeywords& k) {
   const Body body = body_from_object(body_object);
   const OperatorRequest request = operator_request(grid, k);
-  // The default method is the least any choice needs: a grid too large for it is refused before
-  // the automatic choice spends time on it.
-  if (request.automatic) require_operator_memory(grid, OperatorOptions{});
   const OperatorPlan plan = without_gil([&] {
     return body.stack ? plan_operator(grid, *body.stack, request)
                       : plan_operator(grid, *body.frf, request);
   });
-  require_operator_memory(grid, plan.options);
   BuiltOperator built = without_gil([&] {
     return body.stack ? build_operator(grid, *body.stack, plan, "make_operator: method")
                       : build_operator(grid, *body.frf, plan, "make_operator: method");
