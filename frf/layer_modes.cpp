@@ -19,18 +19,31 @@ using Medium = detail::ModeMedium;
 using Matrix64 = Eigen::Matrix<double, 6, 4>;
 using Matrix32 = Eigen::Matrix<double, 3, 2>;
 
-// The global systems' matrices and amplitudes (columns: unit q~, unit p for P-SV). A stack of up
-// to kSmallCoatings coatings takes them with fixed maximum sizes, on the stack: one solve per
-// wavenumber allocated a dozen small heap blocks, which dominated stress kernels of a few coatings.
-template <int MaxN>
+// The global systems' matrices and amplitudes (columns: unit q~, unit p for P-SV) of a stack of
+// `Coatings` coatings: 4 unknowns per coating and 2 for the substrate (P-SV), 2 and 1 (SH). Up to
+// three coatings they have fixed sizes: on the stack, and factorized by Eigen's fixed-size code.
+// One solve per wavenumber dominates the stress and traction kernels of coated bodies; with
+// dynamic sizes it allocated a dozen small heap blocks, and with dynamic sizes of a fixed maximum
+// it went through LU's blocked path and general triangular solves (a third of a coated traction
+// kernel's set-up, three quarters of it under AddressSanitizer).
+template <int Coatings>
 struct System {
-  using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, MaxN, MaxN>;
-  using Psv = Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::ColMajor, MaxN, 2>;
-  using Sh = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, MaxN, 1>;
+  static constexpr int kPsv = Coatings == Eigen::Dynamic ? Eigen::Dynamic : 4 * Coatings + 2;
+  static constexpr int kSh = Coatings == Eigen::Dynamic ? Eigen::Dynamic : 2 * Coatings + 1;
+  using PsvMatrix = Eigen::Matrix<double, kPsv, kPsv>;
+  using ShMatrix = Eigen::Matrix<double, kSh, kSh>;
+  using Psv = Eigen::Matrix<double, kPsv, 2>;
+  using Sh = Eigen::Matrix<double, kSh, 1>;
 };
-constexpr std::size_t kSmallCoatings = 3;
-using SmallSystem = System<int(4 * kSmallCoatings + 2)>;
-using AnySystem = System<Eigen::Dynamic>;
+// A half-space alone (2 P-SV unknowns, 1 SH): its amplitudes in arrays as wide as a coating's,
+// since fields_at reads a width chosen at run time, which the compiler cannot bound.
+template <>
+struct System<0> {
+  using PsvMatrix = Eigen::Matrix2d;
+  using ShMatrix = Eigen::Matrix<double, 1, 1>;
+  using Psv = Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::ColMajor, 4, 2>;
+  using Sh = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 2, 1>;
+};
 
 // exp(-s) underflows beyond ~745; there exp(-s) and s exp(-s) are set to 0 explicitly, so that
 // s exp(-s) is never inf * 0 (s = +inf stands for "no bottom pair": the substrate).
@@ -218,16 +231,22 @@ Matrix sh_matrix(const std::vector<Medium>& media, double k) {
 // rows (docs/theory.md §2.7 lists the measured accuracy).
 template <typename S>
 typename S::Psv solve_psv(const std::vector<Medium>& media, double k) {
-  const auto M = psv_matrix<typename S::Matrix>(media, k);
-  typename S::Psv rhs = S::Psv::Zero(M.rows(), 2);
-  rhs(1, 0) = -1.0;
-  rhs(0, 1) = -1.0;
-  return M.partialPivLu().solve(rhs);
+  using Matrix = typename S::PsvMatrix;
+  const Eigen::PartialPivLU<Matrix> lu(psv_matrix<Matrix>(media, k));
+  // One column at a time: Eigen solves a vector of a small fixed size unrolled, where two
+  // columns take its general blocked triangular solve.
+  using Column = Eigen::Matrix<double, Matrix::RowsAtCompileTime, 1, Eigen::ColMajor,
+                               Matrix::MaxRowsAtCompileTime, 1>;
+  const Eigen::Index n = lu.rows();
+  typename S::Psv amplitudes(n, 2);
+  amplitudes.col(0) = lu.solve(-Column::Unit(n, 1));
+  amplitudes.col(1) = lu.solve(-Column::Unit(n, 0));
+  return amplitudes;
 }
 
 template <typename S>
 typename S::Sh solve_sh(const std::vector<Medium>& media, double k) {
-  const auto M = sh_matrix<typename S::Matrix>(media, k);
+  const auto M = sh_matrix<typename S::ShMatrix>(media, k);
   typename S::Sh rhs = S::Sh::Zero(M.rows());
   rhs(0) = -1.0;
   return M.partialPivLu().solve(rhs);
@@ -275,8 +294,18 @@ std::vector<ModeFields> LayerModes::at(double k, std::span<const double> depths,
     COATFFT_REQUIRE(std::isfinite(depths[i]) && depths[i] >= 0, "LayerModes: depth ", i, " = ",
                     depths[i], " m, but depths must be finite and >= 0");
   }
-  return media_.size() - 1 <= kSmallCoatings ? solve_at<SmallSystem>(k, depths, side)
-                                             : solve_at<AnySystem>(k, depths, side);
+  switch (media_.size() - 1) {
+    case 0:
+      return solve_at<System<0>>(k, depths, side);
+    case 1:
+      return solve_at<System<1>>(k, depths, side);
+    case 2:
+      return solve_at<System<2>>(k, depths, side);
+    case 3:
+      return solve_at<System<3>>(k, depths, side);
+    default:
+      return solve_at<System<Eigen::Dynamic>>(k, depths, side);
+  }
 }
 
 template <typename S>
