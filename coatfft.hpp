@@ -78,6 +78,7 @@
 #include "validation/aliased_traction.hpp"
 #include "validation/axisymmetric_stress.hpp"
 #include "validation/axisymmetric_traction.hpp"
+#include "validation/cattaneo_mindlin.hpp"
 #include "validation/hankel_displacement.hpp"
 #include "validation/hertz.hpp"
 #include "validation/hertz_contact.hpp"
