@@ -79,7 +79,7 @@ TEST_CASE("Mindlin-Deresiewicz: the loop energy is the area of Masing's loop",
     CHECK(quadrature.integrate(width, -q_star, q_star) ==
           Approx(cm.loop_energy(q_star)).epsilon(1e-9));
   }
-  // Small amplitudes: W -> mu^2 P^2 (2 - nu) x^3/(36 G a) (docs/theory.md 5.1), to O(x).
+  // Small amplitudes: W -> mu^2 P^2 (2 - nu) x^3/(36 G a) (docs/theory.md 6.5), to O(x).
   const double x = 1e-3;
   CHECK(cm.loop_energy(x * mu_p) / (mu_p * mu_p * cm.compliance * x * x * x / (36.0 * a)) ==
         Approx(1.0).epsilon(2e-3));

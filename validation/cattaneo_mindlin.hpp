@@ -3,7 +3,7 @@
 // Contact Mechanics (1985), section 7.2) and its unloading and reloading (Mindlin & Deresiewicz
 // 1953, Masing's rule): the references of frictional contacts, valid where the tangential
 // tractions leave the pressure as it is (identical bodies, or an incompressible one). The closed
-// forms are docs/theory.md 5.1's.
+// forms are docs/theory.md 6.5's.
 #include "hertz_contact.hpp"
 
 namespace coatfft {
