@@ -68,12 +68,19 @@ OperatorOptions chosen_options(const AutomaticChoice& choice, const OperatorRequ
   return o;
 }
 
+// The memory check of `request`, when it asks for one, for the operator of `options`.
+void require_request_memory(const Grid& grid, const OperatorOptions& options,
+                            const OperatorRequest& request) {
+  if (request.other_bytes)
+    require_operator_memory(grid, options, *request.other_bytes, request.memory_who);
+}
+
 // The default method on the request's boundary takes the least memory any choice of "auto" needs:
 // a grid too large for it is refused before the choice spends time on it.
 void require_least_memory(const Grid& grid, const OperatorRequest& request) {
   OperatorOptions least;
   least.boundary = request.options.boundary;
-  require_operator_memory(grid, least, request.other_bytes, request.memory_who);
+  require_request_memory(grid, least, request);
 }
 
 }  // namespace
@@ -106,7 +113,7 @@ OperatorPlan plan_operator(const Grid& grid, const LayerStack& body,
     check_love_body(body, request.options.method);
   }
   check_operator_options(grid, plan.options);
-  require_operator_memory(grid, plan.options, request.other_bytes, request.memory_who);
+  require_request_memory(grid, plan.options, request);
   return plan;
 }
 
@@ -122,7 +129,7 @@ OperatorPlan plan_operator(const Grid& grid, const Frf& frf, const OperatorReque
     plan.choice = std::move(choice);
   }
   check_operator_options(grid, plan.options);
-  require_operator_memory(grid, plan.options, request.other_bytes, request.memory_who);
+  require_request_memory(grid, plan.options, request);
   return plan;
 }
 

@@ -66,8 +66,10 @@ struct OperatorRequest {
   /// "auto"'s reference loads; empty: unknown_load_references(grid).
   std::vector<ReferenceLoad> loads;
   /// The memory check before any work (require_operator_memory): the bytes the caller holds
-  /// beside the operator (its own fields), and the name a refusal starts with.
-  double other_bytes = 0.0;
+  /// beside the operator (its own fields), and the name a refusal starts with. Unset: the caller
+  /// checks its memory itself, against its own limit (the scene layer: the whole run's estimate
+  /// against --max-memory, or a rank's share of it under mpirun).
+  std::optional<double> other_bytes;
   std::string memory_who = "operator";
 };
 
@@ -87,10 +89,11 @@ void require_operator_memory(const Grid& grid, const OperatorOptions& options, d
                              std::string_view who);
 
 /// Checks `request` for `body` on `grid` (check_operator_options, Love's methods on a homogeneous
-/// body only, direct summation's cell limit), resolves "auto" and checks the memory of the
-/// operator planned (require_operator_memory; for "auto" first that of the least any choice needs,
-/// before the choice spends time on a grid too large). InvalidArgument for a bad request, when no
-/// method meets the tolerance, or when the operator does not fit.
+/// body only, direct summation's cell limit), resolves "auto" and, when the request asks
+/// (other_bytes), checks the memory of the operator planned (require_operator_memory; for "auto"
+/// first that of the least any choice needs, before the choice spends time on a grid too large).
+/// InvalidArgument for a bad request, when no method meets the tolerance, or when the operator
+/// does not fit.
 OperatorPlan plan_operator(const Grid& grid, const LayerStack& body,
                            const OperatorRequest& request);
 /// The same for a body given by its FRF alone (periodic "auto" takes frf-split; never reduced).
