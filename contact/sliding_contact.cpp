@@ -4,23 +4,19 @@
 #include <cmath>
 #include <utility>
 
+#include "contact/surface_response.hpp"
 #include "core/error.hpp"
 
 namespace coatfft {
 
 TangentialCoupling traction_coupling(std::shared_ptr<CerrutiOperator> on_body,
                                      std::shared_ptr<CerrutiOperator> on_indenter) {
-  COATFFT_REQUIRE(on_body != nullptr, "traction_coupling: no surface response of the body");
-  return [on_body = std::move(on_body), on_indenter = std::move(on_indenter)](const Field& qx) {
-    const Field zero = Field::Zero(qx.rows(), qx.cols());
+  auto response =
+      std::make_shared<RelativeSurfaceResponse>(std::move(on_body), std::move(on_indenter));
+  return [response](const Field& qx) {
     std::array<Field, 3> u;
-    on_body->apply(zero, &qx, nullptr, u);
-    Field uz = std::move(u[2]);
-    if (on_indenter) {
-      on_indenter->apply(zero, &qx, nullptr, u);
-      uz -= u[2];
-    }
-    return uz;
+    response->apply(Field::Zero(qx.rows(), qx.cols()), &qx, nullptr, u);
+    return std::move(u[2]);
   };
 }
 

@@ -1,0 +1,36 @@
+#include "contact/surface_response.hpp"
+
+#include <utility>
+
+#include "core/error.hpp"
+
+namespace coatfft {
+
+RelativeSurfaceResponse::RelativeSurfaceResponse(std::shared_ptr<CerrutiOperator> on_body,
+                                                 std::shared_ptr<CerrutiOperator> on_indenter)
+    : body_(std::move(on_body)), indenter_(std::move(on_indenter)) {
+  COATFFT_REQUIRE(body_ != nullptr, "RelativeSurfaceResponse: no surface response of the body");
+  if (!indenter_) return;
+  const Grid& b = body_->grid();
+  const Grid& i = indenter_->grid();
+  COATFFT_REQUIRE(
+      b.nx() == i.nx() && b.ny() == i.ny() && b.lx() == i.lx() && b.ly() == i.ly() &&
+          body_->periodic() == indenter_->periodic(),
+      "RelativeSurfaceResponse: the indenter's response is on another grid or boundary");
+}
+
+void RelativeSurfaceResponse::apply(const Field& pressure, const Field* qx, const Field* qy,
+                                    std::array<Field, 3>& u) {
+  body_->apply(pressure, qx, qy, u);
+  if (!indenter_) return;
+  // The indenter receives -q.
+  const Field mqx = qx ? Field(-*qx) : Field();
+  const Field mqy = qy ? Field(-*qy) : Field();
+  std::array<Field, 3> i;
+  indenter_->apply(pressure, qx ? &mqx : nullptr, qy ? &mqy : nullptr, i);
+  u[0] -= i[0];
+  u[1] -= i[1];
+  u[2] += i[2];
+}
+
+}  // namespace coatfft

@@ -1,0 +1,245 @@
+// The tangential problem of a partial-slip step (contact/detail/tangential_iteration.hpp): under a
+// shift, a conjugate gradient whose slipping cells turn on their circles; under a load, the shift
+// that carries it, found by a bracketing secant over those solves.
+#include "contact/detail/tangential_iteration.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <utility>
+
+#include "core/error.hpp"
+#include "core/interrupt.hpp"
+
+namespace coatfft::detail {
+
+void project_tractions(const Field& bound, Field& qx, Field& qy) {
+  for (Eigen::Index k = 0; k < bound.size(); ++k) {
+    const double n = std::hypot(qx(k), qy(k));
+    const double scale = bound(k) <= 0.0 ? 0.0 : n <= bound(k) ? 1.0 : bound(k) / n;
+    qx(k) *= scale;
+    qy(k) *= scale;
+  }
+}
+
+namespace {
+
+using Mask = Eigen::Array<bool, Eigen::Dynamic, Eigen::Dynamic>;
+
+// The cells that stick: in contact, inside their disk (the projection leaves a saturated cell on
+// its circle to rounding).
+Mask sticking(const Field& bound, const Field& qx, const Field& qy) {
+  Mask m(bound.rows(), bound.cols());
+  for (Eigen::Index k = 0; k < bound.size(); ++k)
+    m(k) = bound(k) > 0.0 && std::hypot(qx(k), qy(k)) < bound(k) * (1.0 - 1e-12);
+  return m;
+}
+
+// The iterate: q, the relative in-plane displacement u under p and q, and the slip
+// s = u - target - d e_x (d the shift's increment), zero off the contact.
+struct Iterate {
+  const TangentialProblem& problem;
+  RelativeSurfaceResponse& response;
+  Field qx, qy, ux, uy, sx, sy;
+  int applications = 0;
+
+  void displace() {
+    std::array<Field, 3> u;
+    response.apply(*problem.pressure, &qx, &qy, u);
+    applications += response.applications_per_apply();
+    ux = std::move(u[0]);
+    uy = std::move(u[1]);
+    const auto in = *problem.bound > 0.0;
+    sx = in.select(ux - *problem.target_x - problem.value, 0.0);
+    sy = in.select(uy - *problem.target_y, 0.0);
+  }
+};
+
+// The search's gradient g and its scaled form z, and the constraint's curvature c, per cell. A
+// sticking cell moves freely: z = g = s. A slipping cell moves along its circle only (the radial
+// move is blocked while it slips against its traction): g is the part of s along the circle and
+// z = g K_ii/(K_ii + c), the inverse of its rotational stiffness -- the circle's curvature adds
+// c = |s|/(mu p) to the cell's own compliance K_ii, so a cell that slips far (or has a small disk,
+// at the rim) turns by about what Coulomb's law asks, q against s, and no further. A cell that
+// slips along its traction sticks again (z = g = s), as Polonsky & Keer (1999) return an
+// overlapping cell to the contact.
+void search_gradient(const Iterate& it, const Mask& stick, double self_compliance, Field& gx,
+                     Field& gy, Field& zx, Field& zy, Field& curvature) {
+  const Field& bound = *it.problem.bound;
+  gx = Field::Zero(bound.rows(), bound.cols());
+  gy = gx, zx = gx, zy = gx, curvature = gx;
+  for (Eigen::Index k = 0; k < bound.size(); ++k) {
+    if (bound(k) <= 0.0) continue;
+    double ax = it.sx(k), ay = it.sy(k), w = 1.0;
+    if (!stick(k)) {
+      const double n = std::hypot(it.qx(k), it.qy(k));
+      const double hx = it.qx(k) / n, hy = it.qy(k) / n;
+      const double along = ax * hx + ay * hy;
+      if (along <= 0.0) {
+        ax -= along * hx, ay -= along * hy;
+        curvature(k) = -along / bound(k);
+        w = self_compliance / (self_compliance + curvature(k));
+      }
+    }
+    gx(k) = ax, gy(k) = ay, zx(k) = w * ax, zy(k) = w * ay;
+  }
+}
+
+// K_ii: u_x of a cell under a unit q_x on itself [m/Pa] (one application).
+double cell_self_compliance(RelativeSurfaceResponse& response, int& applications) {
+  const Grid& g = response.grid();
+  Field unit = Field::Zero(g.nx(), g.ny());
+  unit(g.centre_i(), g.centre_j()) = 1.0;
+  std::array<Field, 3> u;
+  response.apply(Field::Zero(g.nx(), g.ny()), &unit, nullptr, u);
+  applications += response.applications_per_apply();
+  return u[0](g.centre_i(), g.centre_j());
+}
+
+// The largest in-plane move of the step [m]: the scale of the slip's accuracy.
+double move_scale(const Iterate& it) {
+  return std::sqrt((it.ux - *it.problem.target_x).square().maxCoeff() +
+                   (it.uy - *it.problem.target_y).square().maxCoeff()) +
+         std::abs(it.problem.value);
+}
+
+}  // namespace
+
+TangentialSolution solve_tangential(RelativeSurfaceResponse& response,
+                                    const TangentialProblem& problem, Field qx, Field qy,
+                                    const TangentialSettings& settings) {
+  COATFFT_REQUIRE(problem.control == TangentialControl::shift,
+                  "solve_tangential: a shift, not a load");
+  const Field& bound = *problem.bound;
+  project_tractions(bound, qx, qy);
+  Iterate s{problem, response, std::move(qx), std::move(qy), {}, {}, {}, {}};
+  s.displace();
+  Mask stick = sticking(bound, s.qx, s.qy);
+  TangentialSolution out;
+  const auto accept = [&] {
+    out.check = check_coulomb(response.grid(), bound, s.qx, s.qy, s.sx, s.sy, std::nullopt,
+                              move_scale(s), settings.tolerance);
+    return out.check.holds;
+  };
+  if (!accept()) {
+    const double self_compliance = cell_self_compliance(response, s.applications);
+    const Field zero = Field::Zero(bound.rows(), bound.cols());
+    Field gx, gy, zx, zy, circle, tx = zero, ty = zero;
+    double gz_old = 0.0;
+    bool restart = true;
+    for (int it = 1; it <= settings.max_iterations; ++it) {
+      check_interrupt();
+      search_gradient(s, stick, self_compliance, gx, gy, zx, zy, circle);
+      const double gz = (gx * zx + gy * zy).sum();
+      const double beta = restart || gz_old == 0.0 ? 0.0 : gz / gz_old;
+      tx = zx + beta * tx;
+      ty = zy + beta * ty;
+      gz_old = gz;
+      std::array<Field, 3> kt;
+      response.apply(zero, &tx, &ty, kt);
+      s.applications += response.applications_per_apply();
+      // The step's curvature: the body's, and the circles' for the slipping cells.
+      const double curvature =
+          (tx * kt[0] + ty * kt[1]).sum() + (circle * (tx.square() + ty.square())).sum();
+      const double descent = (gx * tx + gy * ty).sum();
+      out.iterations = it;
+      if (!(curvature > 0.0) || !(descent > 0.0)) break;  // nothing left to descend
+      const double alpha = descent / curvature;
+      Field nx = s.qx - alpha * tx, ny = s.qy - alpha * ty;
+      project_tractions(bound, nx, ny);
+      const double size = (nx.square() + ny.square()).sqrt().sum();
+      out.residual =
+          size > 0.0 ? ((nx - s.qx).square() + (ny - s.qy).square()).sqrt().sum() / size : 0.0;
+      s.qx = std::move(nx);
+      s.qy = std::move(ny);
+      const Mask next = sticking(bound, s.qx, s.qy);
+      restart = (next != stick).any();
+      stick = next;
+      s.displace();
+      if (settings.on_iteration) settings.on_iteration(it, out.residual);
+      if (out.residual <= settings.tolerance && accept()) break;
+    }
+    accept();  // the check of the iterate returned
+  }
+  out.qx = std::move(s.qx);
+  out.qy = std::move(s.qy);
+  out.ux = std::move(s.ux);
+  out.uy = std::move(s.uy);
+  out.sx = std::move(s.sx);
+  out.sy = std::move(s.sy);
+  out.shift_increment = problem.value;
+  out.applications = s.applications;
+  return out;
+}
+
+namespace {
+
+// The tangential compliance of the contact sticking everywhere [m/N]: u_x averaged over the
+// contact under a uniform q_x there, per newton (one application). A sticking contact is the
+// stiffest, so it underestimates the shift a load needs.
+double stick_compliance(RelativeSurfaceResponse& response, const Field& bound, int& applications) {
+  const Grid& g = response.grid();
+  const Field unit = (bound > 0.0).select(Field::Ones(bound.rows(), bound.cols()), 0.0);
+  std::array<Field, 3> u;
+  response.apply(Field::Zero(g.nx(), g.ny()), &unit, nullptr, u);
+  applications += response.applications_per_apply();
+  const double cells = unit.sum();
+  return (unit * u[0]).sum() / cells / (cells * g.dx() * g.dy());
+}
+
+}  // namespace
+
+TangentialSolution solve_tangential_load(RelativeSurfaceResponse& response,
+                                         const TangentialProblem& problem, Field qx, Field qy,
+                                         const TangentialSettings& settings) {
+  const Grid& g = response.grid();
+  const double area = g.dx() * g.dy(), target = problem.value;
+  const double limit = problem.bound->sum() * area;  // mu P
+  TangentialProblem shifted = problem;
+  shifted.control = TangentialControl::shift;
+  TangentialSolution best;
+  int iterations = 0, applications = 0;
+  // Q(d) - Q for the shift's increment d, each solve started from the last one's tractions.
+  const auto excess = [&](double d) {
+    shifted.value = d;
+    best = solve_tangential(response, shifted, std::move(qx), std::move(qy), settings);
+    iterations += best.iterations;
+    applications += best.applications;
+    qx = best.qx;
+    qy = best.qy;
+    return best.qx.sum() * area - target;
+  };
+  double a = 0.0, fa = excess(a);
+  const double stop = settings.tolerance * limit;
+  if (std::abs(fa) > stop) {
+    // First the stiffest guess, then outwards until the load is bracketed, then Illinois'
+    // regula falsi (Q(d) is monotone and continuous).
+    double b = -fa * stick_compliance(response, *problem.bound, applications), fb = excess(b);
+    for (int k = 0; k < 60 && std::abs(fb) > stop && (fa < 0) == (fb < 0); ++k) {
+      // Past the secant's root by half again, to bracket it.
+      const double grow = fb == fa ? 2.0 : std::clamp(-1.5 * fb / (fb - fa), 0.05, 4.0);
+      const double c = b + (b - a) * grow;
+      a = b, fa = fb, b = c, fb = excess(b);
+    }
+    int side = 0;
+    for (int k = 0; k < 100 && std::abs(fb) > stop && (fa < 0) != (fb < 0); ++k) {
+      const double c = b - fb * (b - a) / (fb - fa);
+      const double fc = excess(c);
+      if ((fc < 0) == (fb < 0)) {
+        fa *= side == -1 ? 0.5 : 1.0;  // Illinois: halve the end that stays
+        side = -1;
+      } else {
+        a = b, fa = fb;
+        side = 1;
+      }
+      b = c, fb = fc;
+    }
+  }
+  best.iterations = iterations;
+  best.applications = applications;
+  best.check.load_error = std::abs(best.qx.sum() * area - target) / limit;
+  best.check.holds = best.check.holds && best.check.load_error <= settings.tolerance;
+  return best;
+}
+
+}  // namespace coatfft::detail
