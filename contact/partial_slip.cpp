@@ -105,8 +105,9 @@ PartialSlipResult solve_partial_slip(ContactSolver& solver, RelativeSurfaceRespo
     const detail::TangentialSettings settings{options.tolerance, options.max_iterations,
                                               options.on_iteration};
     t = tangential == TangentialControl::load
+            // From the last round's shift (0 at first: the previous step's).
             ? detail::solve_tangential_load(response, problem, std::move(qx), std::move(qy),
-                                            settings)
+                                            t.shift_increment, settings)
             : detail::solve_tangential(response, problem, std::move(qx), std::move(qy), settings);
     r.iterations += t.iterations;
     applications += t.applications;

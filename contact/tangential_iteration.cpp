@@ -191,7 +191,7 @@ double stick_compliance(RelativeSurfaceResponse& response, const Field& bound, i
 
 TangentialSolution solve_tangential_load(RelativeSurfaceResponse& response,
                                          const TangentialProblem& problem, Field qx, Field qy,
-                                         const TangentialSettings& settings) {
+                                         double guess, const TangentialSettings& settings) {
   const Grid& g = response.grid();
   const double area = g.dx() * g.dy(), target = problem.value;
   const double limit = problem.bound->sum() * area;  // mu P
@@ -209,12 +209,12 @@ TangentialSolution solve_tangential_load(RelativeSurfaceResponse& response,
     qy = best.qy;
     return best.qx.sum() * area - target;
   };
-  double a = 0.0, fa = excess(a);
+  double a = guess, fa = excess(a);
   const double stop = settings.tolerance * limit;
   if (std::abs(fa) > stop) {
     // First the stiffest guess, then outwards until the load is bracketed, then Illinois'
     // regula falsi (Q(d) is monotone and continuous).
-    double b = -fa * stick_compliance(response, *problem.bound, applications), fb = excess(b);
+    double b = a - fa * stick_compliance(response, *problem.bound, applications), fb = excess(b);
     for (int k = 0; k < 60 && std::abs(fb) > stop && (fa < 0) == (fb < 0); ++k) {
       // Past the secant's root by half again, to bracket it.
       const double grow = fb == fa ? 2.0 : std::clamp(-1.5 * fb / (fb - fa), 0.05, 4.0);

@@ -43,11 +43,12 @@ TangentialSolution solve_tangential(RelativeSurfaceResponse& response,
                                     const TangentialSettings& settings);
 
 /// Solves the load-controlled `problem` (|Q| < mu P): shift-controlled solves, each from the
-/// last one's tractions, at the shifts of a bracketing secant until the load is carried to the
-/// tolerance times mu P. Iterations and applications are the sums over the solves.
+/// last one's tractions, at the shifts of a bracketing secant, the first at the shift increment
+/// `guess`, until the load is carried to the tolerance times mu P. Iterations and applications
+/// are the sums over the solves.
 TangentialSolution solve_tangential_load(RelativeSurfaceResponse& response,
                                          const TangentialProblem& problem, Field qx, Field qy,
-                                         const TangentialSettings& settings);
+                                         double guess, const TangentialSettings& settings);
 
 /// Projects (qx, qy) cell by cell on the disks |q| <= bound (q = 0 where bound = 0).
 void project_tractions(const Field& bound, Field& qx, Field& qy);
