@@ -75,6 +75,41 @@ void write_stacked(const std::filesystem::path& path, const std::vector<Field>& 
   io::write_npy_array(path, shape, values);
 }
 
+// A field per step: one step's as it is (ny, nx), a path's stacked (n_steps, ny, nx).
+void write_steps(const std::filesystem::path& path, const std::vector<Field>& fields,
+                 bool path_run) {
+  if (path_run)
+    write_stacked(path, fields);
+  else
+    io::write_npy(path, fields.back());
+}
+
+// stick.npy: uint8, (ny, nx) or stacked (n_steps, ny, nx).
+void write_stick(const std::filesystem::path& path, const std::vector<StickMask>& masks,
+                 bool path_run) {
+  std::vector<std::uint8_t> bytes;
+  for (const StickMask& m : masks)
+    if (path_run || &m == &masks.back()) bytes.insert(bytes.end(), m.data(), m.data() + m.size());
+  std::vector<std::size_t> shape = {static_cast<std::size_t>(masks.back().cols()),
+                                    static_cast<std::size_t>(masks.back().rows())};
+  if (path_run) shape.insert(shape.begin(), masks.size());
+  io::write_npy_bytes(path, shape, bytes);
+}
+
+// A partial slip's files (scene/scene.hpp, OutputSpec::shear, stick, slip).
+void write_partial_slip(StagedOutput& out, const scene::OutputSpec& spec,
+                        const scene::PartialSlipFields& f, bool path_run) {
+  if (spec.shear) {
+    write_steps(out.path("shear_x.npy"), f.shear_x, path_run);
+    write_steps(out.path("shear_y.npy"), f.shear_y, path_run);
+  }
+  if (spec.stick) write_stick(out.path("stick.npy"), f.stick, path_run);
+  if (spec.slip) {
+    write_steps(out.path("slip_x.npy"), f.slip_x, path_run);
+    write_steps(out.path("slip_y.npy"), f.slip_y, path_run);
+  }
+}
+
 // The .npy files: a sweep's uz, pressure and gap stacked, else one field each; stresses; ux, uy.
 void write_npy_outputs(StagedOutput& out, const scene::OutputSpec& spec,
                        const scene::SceneRun& run) {
@@ -92,6 +127,7 @@ void write_npy_outputs(StagedOutput& out, const scene::OutputSpec& spec,
     io::write_npy(out.path("ux.npy"), *run.ux);
     io::write_npy(out.path("uy.npy"), *run.uy);
   }
+  if (run.partial_slip) write_partial_slip(out, spec, *run.partial_slip, spec.fretting);
 }
 
 // Writes the requested outputs only: the CSV text, the costliest of them (a 2048^2 grid makes
@@ -108,6 +144,11 @@ void write_outputs(StagedOutput& out, const scene::OutputSpec& spec, const scene
     std::ofstream csv(out.path("sweep.csv"));
     csv << scene::sweep_csv(run.summary["sweep"]);
     detail::close_written(csv, "sweep.csv");
+  }
+  if (spec.fretting) {
+    std::ofstream csv(out.path("fretting.csv"));
+    csv << scene::fretting_csv(run.summary["fretting"]["steps"]);
+    detail::close_written(csv, "fretting.csv");
   }
   if (spec.displacement_csv)
     write_displacement_csv(out.path("displacement.csv"), run.grid, run.pressure, run.uz);

@@ -30,6 +30,10 @@ std::vector<std::string> output_names(const scene::OutputSpec& spec) {
   if (spec.gap) names.push_back("gap.npy");
   if (spec.sweep) names.push_back("sweep.csv");
   if (spec.in_plane) names.insert(names.end(), {"ux.npy", "uy.npy"});
+  if (spec.shear) names.insert(names.end(), {"shear_x.npy", "shear_y.npy"});
+  if (spec.stick) names.push_back("stick.npy");
+  if (spec.slip) names.insert(names.end(), {"slip_x.npy", "slip_y.npy"});
+  if (spec.fretting) names.push_back("fretting.csv");
   if (spec.stress) names.push_back("stress.npy");
   if (spec.von_mises) names.push_back("von_mises.npy");
   if (spec.stress_section) names.push_back("stress_section.npy");

@@ -14,7 +14,9 @@ namespace coatfft::cli {
 namespace {
 
 constexpr int kSlots = 4;
-constexpr int kPathsPerSlot = 32;
+// A run stages up to about 25 outputs (a partial slip with [stress] on a coated body), each with
+// its temporary name.
+constexpr int kPathsPerSlot = 64;
 constexpr std::size_t kPathBytes = 4096;
 constexpr std::array<int, 3> kSignals{SIGINT, SIGTERM, SIGHUP};
 

@@ -31,6 +31,9 @@
 
 namespace coatfft {
 
+/// A mask of cells: 1 where the contact sticks, 0 elsewhere.
+using StickMask = Eigen::Array<std::uint8_t, Eigen::Dynamic, Eigen::Dynamic>;
+
 /// What the tangential problem prescribes: the load Q [N] along x, or the shift delta [m].
 enum class TangentialControl { load, shift };
 
@@ -67,7 +70,7 @@ struct PartialSlipResult {
   ContactResult normal;  ///< the normal contact (its displacement includes q's share)
   Field qx, qy;          ///< [Pa]
   Field slip_x, slip_y;  ///< the slip of this step [m]
-  Eigen::Array<std::uint8_t, Eigen::Dynamic, Eigen::Dynamic> stick;  ///< 1 where it sticks
+  StickMask stick;               ///< 1 where it sticks
   double tangential_load = 0;                                        ///< sum q_x dx dy [N]
   double lateral_load = 0;               ///< sum q_y dx dy [N] (the indenter is held in y)
   double tangential_shift = 0;           ///< delta [m]

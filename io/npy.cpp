@@ -313,11 +313,12 @@ std::size_t npy_data_bytes(const fs::path& path, const NpyStart& npy, const NpyL
 
 }  // namespace
 
-std::string npy_preamble(std::span<const std::size_t> shape) {
+std::string npy_preamble(std::span<const std::size_t> shape, std::string_view descr) {
   std::string dims;
   for (std::size_t n : shape) dims += std::to_string(n) + ", ";
   if (shape.size() > 1) dims.resize(dims.size() - 2);  // a 1-tuple keeps its comma: (n,)
-  std::string header = "{'descr': '<f8', 'fortran_order': False, 'shape': (" + dims + "), }";
+  std::string header =
+      "{'descr': '" + std::string(descr) + "', 'fortran_order': False, 'shape': (" + dims + "), }";
   // NumPy format 1.0: magic(6) + version(2) + header length(2) + header, padded with blanks and
   // terminated by '\n' so that the data starts on a 64-byte boundary.
   const std::size_t unpadded = kMagicSize + 4 + header.size() + 1;
@@ -330,17 +331,33 @@ std::string npy_preamble(std::span<const std::size_t> shape) {
   return preamble + header;
 }
 
-void write_npy_array(const std::filesystem::path& path, std::span<const std::size_t> shape,
-                     std::span<const double> data) {
-  std::size_t count = 1;
-  for (std::size_t n : shape) count *= n;
-  COATFFT_REQUIRE(count == data.size(), "write_npy_array: the shape does not match the data");
+namespace {
+
+// The preamble of `descr` and `count` items of `item_bytes` each at `data`.
+void write_npy_items(const std::filesystem::path& path, std::span<const std::size_t> shape,
+                     std::string_view descr, const char* data, std::size_t count,
+                     std::size_t item_bytes) {
+  std::size_t cells = 1;
+  for (std::size_t n : shape) cells *= n;
+  COATFFT_REQUIRE(cells == count, "write_npy: the shape does not match the data");
   std::ofstream out(path, std::ios::binary);
   COATFFT_REQUIRE(out.good(), "cannot open ", path.string(), " for writing");
-  out << npy_preamble(shape);
-  out.write(reinterpret_cast<const char*>(data.data()),
-            static_cast<std::streamsize>(data.size() * sizeof(double)));
+  out << npy_preamble(shape, descr);
+  out.write(data, static_cast<std::streamsize>(count * item_bytes));
   detail::close_written(out, path);
+}
+
+}  // namespace
+
+void write_npy_array(const std::filesystem::path& path, std::span<const std::size_t> shape,
+                     std::span<const double> data) {
+  write_npy_items(path, shape, "<f8", reinterpret_cast<const char*>(data.data()), data.size(),
+                  sizeof(double));
+}
+
+void write_npy_bytes(const std::filesystem::path& path, std::span<const std::size_t> shape,
+                     std::span<const std::uint8_t> data) {
+  write_npy_items(path, shape, "|u1", reinterpret_cast<const char*>(data.data()), data.size(), 1);
 }
 
 void write_npy(const std::filesystem::path& path, const Field& field) {

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <span>
 #include <string>
+#include <string_view>
 
 #include "core/types.hpp"
 #include "io/input_file.hpp"
@@ -21,12 +22,16 @@ namespace coatfft::io {
 /// The bytes before the data of a C-order little-endian float64 .npy file (format 1.0) of shape
 /// `shape`: magic, version, header length and the header dict, padded so that the data starts on
 /// a 64-byte boundary.
-std::string npy_preamble(std::span<const std::size_t> shape);
+std::string npy_preamble(std::span<const std::size_t> shape, std::string_view descr = "<f8");
 
 /// Writes `data` as a C-order little-endian float64 .npy file of shape `shape` (whose product
 /// must be data.size()).
 void write_npy_array(const std::filesystem::path& path, std::span<const std::size_t> shape,
                      std::span<const double> data);
+
+/// Writes `data` as a C-order uint8 .npy file of shape `shape` (a mask: 0 or 1 per cell).
+void write_npy_bytes(const std::filesystem::path& path, std::span<const std::size_t> shape,
+                     std::span<const std::uint8_t> data);
 
 /// Writes `field` as a (ny, nx) little-endian float64 .npy file.
 void write_npy(const std::filesystem::path& path, const Field& field);

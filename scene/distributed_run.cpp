@@ -75,6 +75,8 @@ std::string not_distributable(const Scene& scene) {
       return "[contact] topography (a measured surface: `coatfft topography FILE --detrend ... "
              "--gap -o h.npy` writes its gap for indenter = \"height_map\", path = \"h.npy\")";
     if (!contact.sweep.empty()) return "[contact] a list of values (a sweep)";
+    if (contact.partial_slip())
+      return "[contact] tangential_load or tangential_shift (a partial slip)";
     if (contact.friction > 0.0) return "[contact] friction";
   }
   if (scene.shear) return "[shear]";

@@ -53,6 +53,15 @@ MemoryNeed estimate_memory(const Scene& scene) {
     need.bytes += 2 * 3.0 * 8.0 * cells * values;
     need.drivers += detail::concat(", a sweep of ", scene.contact->sweep.size(), " values");
   }
+  if (scene.contact && scene.contact->partial_slip()) {
+    // The tangential iteration's fields (about twenty: q, u, s, the direction and its image, the
+    // state before the step), and the five fields kept of every step of a path (shear, slip,
+    // stick) with the pressure, displacement and gap of the last.
+    const double steps = static_cast<double>(scene.contact->tangential.size());
+    need.bytes += (20.0 + 5.0 * steps) * 8.0 * cells + estimated_cerruti_bytes(grid);
+    need.drivers += detail::concat(", partial slip over ", scene.contact->tangential.size(),
+                                   scene.contact->tangential.size() == 1 ? " step" : " steps");
+  }
   if (scene.method.options.method == Method::frf_dcfft && !scene.periodic())
     need.drivers += detail::concat(", [method] alpha = ", scene.method.options.alpha);
   if (scene.stress && scene.body) {

@@ -77,6 +77,20 @@ void check_tangential(const Scene& scene, const char* key) {
                   "; the cost grows like (L/h)^2)");
 }
 
+// A partial slip writes its tractions, stick zone and slip (for a path one per step, stacked, with
+// fretting.csv), by default all of them; an [output] fields list names those it wants, and only a
+// partial slip has them.
+void check_partial_slip_outputs(Scene& scene) {
+  OutputSpec& output = scene.output;
+  const bool partial_slip = scene.contact && scene.contact->partial_slip();
+  if (!output.listed) output.shear = output.stick = output.slip = partial_slip;
+  for (const auto& [wanted, name] :
+       {std::pair{output.shear, "shear"}, {output.stick, "stick"}, {output.slip, "slip"}})
+    COATFFT_REQUIRE(!wanted || partial_slip, "[output] fields: \"", name,
+                    "\" needs a partial slip: [contact] tangential_load or tangential_shift");
+  output.fretting = partial_slip && scene.contact->tangential_path;
+}
+
 // [shear], with a known [pressure]; its files are inputs of the run.
 void read_shear_loads(const toml::table& root, const std::filesystem::path& scene_dir,
                       Scene& scene) {
@@ -174,7 +188,11 @@ Scene read_scene(const std::filesystem::path& path, const SceneReading& reading)
                          scene.stress && !scene.body->interface_depths().empty());
     if (root.contains("shear")) read_shear_loads(root, scene_dir, scene);
     if (scene.contact && scene.contact->friction > 0.0)
-      check_tangential(scene, "[contact] friction");
+      check_tangential(scene, !scene.contact->partial_slip() ? "[contact] friction"
+                              : scene.contact->tangential_control == TangentialControl::load
+                                  ? "[contact] tangential_load"
+                                  : "[contact] tangential_shift");
+    check_partial_slip_outputs(scene);
     if (scene.contact && !scene.contact->sweep.empty()) check_sweep(scene);
     // The in-plane surface displacements (ux.npy, uy.npy), with tangential tractions or stresses,
     // of a bonded body whose traction kernels are affordable (checked above when tractions act):

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "contact/indenter.hpp"
+#include "contact/partial_slip.hpp"
 #include "convolution/operators/make_operator.hpp"
 #include "core/grid.hpp"
 #include "frf/frf.hpp"
@@ -91,7 +92,18 @@ struct ContactSpec {
   std::optional<Material> indenter_material;
   /// Coefficient of friction of a full sliding along +x: q_x = friction p on the body's surface,
   /// for the stresses ([stress]); the normal contact is solved frictionless (docs/stress.md).
+  /// With tangential_load or tangential_shift, the friction of the partial slip.
   double friction = 0.0;
+  /// Partial slip (contact/partial_slip.hpp): tangential_load [N] or tangential_shift [m] along
+  /// +x, one value or a path (a list, solved in the order given); empty: none.
+  std::vector<double> tangential;
+  TangentialControl tangential_control = TangentialControl::load;
+  /// The tangential values were given as a list (a fretting path): fretting.csv, the partial-slip
+  /// fields stacked one per step, summary.json "fretting".
+  bool tangential_path = false;
+  bool partial_slip() const { return !tangential.empty(); }
+  /// Full sliding: friction without a tangential load or shift (q_x = friction p).
+  bool full_sliding() const { return friction > 0.0 && tangential.empty(); }
   /// A measured topography's report for summary.json (scene/scene_topography.hpp); null for
   /// an indenter.
   nlohmann::json topography;
@@ -127,6 +139,13 @@ struct OutputSpec {
   bool listed = false;
   /// sweep.csv, and uz.npy, pressure.npy, gap.npy stacked one per value: a [contact] sweep
   bool sweep = false;
+  /// A partial slip ([contact] tangential_load or tangential_shift): shear_x.npy and shear_y.npy
+  /// (the tractions), stick.npy (uint8), slip_x.npy and slip_y.npy (the last step's slip); for a
+  /// path each stacked one per step, and fretting.csv.
+  bool shear = false;
+  bool stick = false;
+  bool slip = false;
+  bool fretting = false;
 };
 
 /// [shear]: known tangential tractions that the surface receives, with a [pressure]: q = friction
@@ -157,6 +176,9 @@ struct StressSpec {
 /// The most values of a [contact] sweep (a guard against runaway input: each is a solve and a
 /// field of each output).
 inline constexpr std::size_t max_sweep_values = 256;
+/// The most steps a tangential path ([contact] tangential_load or tangential_shift as a list)
+/// takes.
+inline constexpr std::size_t max_path_steps = 10000;
 
 /// The most cells along an axis that [grid] refine = "auto" chooses.
 inline constexpr std::ptrdiff_t max_refined_cells = 1024;

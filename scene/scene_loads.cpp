@@ -157,6 +157,35 @@ void read_contact_control(SectionReader& reader, ContactSpec& spec) {
                   spec.friction, " must be in [0, 10]");
 }
 
+// [contact] tangential_load [N] or tangential_shift [m]: one value, or a path (a list) kept in
+// the order given -- friction depends on the history, so unlike a sweep it is not sorted. Under
+// load control |Q| < mu P is checked here; under approach control, where P is solved for, after
+// the normal solve.
+void read_tangential(SectionReader& reader, ContactSpec& spec) {
+  const bool by_load = reader.has("tangential_load"), by_shift = reader.has("tangential_shift");
+  if (!by_load && !by_shift) return;
+  COATFFT_REQUIRE(!(by_load && by_shift),
+                  "[contact] give one of tangential_load (N) and tangential_shift (m), not both");
+  const char* key = by_load ? "tangential_load" : "tangential_shift";
+  spec.tangential_control = by_load ? TangentialControl::load : TangentialControl::shift;
+  spec.tangential_path = reader.is_array(key);
+  spec.tangential =
+      spec.tangential_path ? reader.numbers(key) : std::vector<double>{reader.number(key)};
+  COATFFT_REQUIRE(!spec.tangential.empty() && spec.tangential.size() <= max_path_steps,
+                  reader.where(key), " lists ", spec.tangential.size(),
+                  " values: a tangential path takes 1 to ", max_path_steps);
+  COATFFT_REQUIRE(spec.friction > 0.0, reader.where(key),
+                  " needs friction: [contact] friction = mu > 0 (Coulomb's law, |q| <= mu p)");
+  COATFFT_REQUIRE(spec.sweep.empty(), reader.where(key),
+                  " takes one normal load or approach, not a sweep (a list)");
+  if (!by_load || !spec.load) return;
+  const double limit = spec.friction * *spec.load;
+  for (const double q : spec.tangential)
+    COATFFT_REQUIRE(std::abs(q) < limit, reader.where(key), " = ", q,
+                    " N reaches full sliding: |Q| must stay below friction x load = ", limit,
+                    " N (full sliding is [contact] friction without a tangential load)");
+}
+
 // [contact] indenter_material, or indenter_E and indenter_nu: an elastic indenter, through the
 // composite modulus of a homogeneous body.
 void read_elastic_indenter(SectionReader& reader, const LayerStack* stack_body, ContactSpec& spec) {
@@ -183,6 +212,7 @@ ContactSpec read_contact(const toml::table& table, const SceneContext& context,
   const Grid& grid = context.grid;
   read_indenter(reader, context, spec);
   read_contact_control(reader, spec);
+  read_tangential(reader, spec);
   read_elastic_indenter(reader, stack_body, spec);
   // Catch geometry errors (a sphere smaller than the domain) before any work is done; a height
   // map whose values were not read was checked as far as its header goes.

@@ -88,6 +88,44 @@ void add_stress(io::NetcdfDataset& d, const OutputSpec& spec, const StressRun& s
                            described("Pa", "von Mises stress on the section"),
                            false});
 }
+// A partial slip's fields: the last step's, or a path's stacked over the dimension "step" (with
+// the tangential load and shift of each step); stick as 0 or 1. `store` keeps the arrays alive.
+void add_partial_slip(io::NetcdfDataset& d, const OutputSpec& spec, const SceneRun& run,
+                      std::vector<std::vector<double>>& store) {
+  const PartialSlipFields& f = *run.partial_slip;
+  const bool path = spec.fretting;
+  std::vector<std::string> leading;
+  if (path) {
+    const auto& rows = run.summary.at("fretting").at("steps");
+    std::vector<double>& loads = store.emplace_back();
+    std::vector<double>& shifts = store.emplace_back();
+    for (const auto& row : rows) {
+      loads.push_back(row.at("tangential_load").get<double>());
+      shifts.push_back(row.at("tangential_shift").get<double>());
+    }
+    d.dimensions.push_back({"step", rows.size(), {}, {}});
+    d.variables.push_back(
+        {"tangential_load", {"step"}, loads, described("N", "tangential load"), false});
+    d.variables.push_back(
+        {"tangential_shift", {"step"}, shifts, described("m", "tangential shift"), false});
+    leading = {"step"};
+  }
+  const auto add = [&](const char* name, const std::vector<Field>& fields) {
+    std::vector<double>& data = store.emplace_back();
+    data = path ? stacked_fields(fields)
+                : std::vector<double>(fields.back().data(),
+                                      fields.back().data() + fields.back().size());
+    d.variables.push_back(field_variable(name, data, leading));
+  };
+  if (spec.shear) add("shear_x", f.shear_x), add("shear_y", f.shear_y);
+  if (spec.slip) add("slip_x", f.slip_x), add("slip_y", f.slip_y);
+  if (spec.stick) {
+    std::vector<Field> masks;
+    for (const StickMask& m : f.stick) masks.push_back(m.cast<double>());
+    add("stick", masks);
+  }
+}
+
 }  // namespace
 
 io::NetcdfDataset run_dataset(const Grid& grid, const nlohmann::json& summary) {
@@ -102,7 +140,12 @@ io::NetcdfVariable field_variable(std::string_view name, std::span<const double>
       {"pressure", described("Pa", "surface pressure")},
       {"gap", described("m", "gap after loading")},
       {"ux", described("m", "surface displacement along x")},
-      {"uy", described("m", "surface displacement along y")}};
+      {"uy", described("m", "surface displacement along y")},
+      {"shear_x", described("Pa", "tangential traction along x on the body's surface")},
+      {"shear_y", described("Pa", "tangential traction along y on the body's surface")},
+      {"slip_x", described("m", "slip along x over the step")},
+      {"slip_y", described("m", "slip along y over the step")},
+      {"stick", described("1", "1 where the contact sticks, 0 elsewhere")}};
   return {std::string(name), std::move(leading), values, attributes.at(name)};
 }
 
@@ -142,6 +185,9 @@ void write_run_netcdf(const std::filesystem::path& path, const OutputSpec& spec,
     d.variables.push_back(field_variable("uy", *run.uy));
   }
   if (run.stress) add_stress(d, spec, *run.stress);
+  std::vector<std::vector<double>> store;
+  store.reserve(16);  // the spans point into its arrays: no reallocation
+  if (run.partial_slip) add_partial_slip(d, spec, run, store);
   io::write_netcdf(path, d);
 }
 

@@ -27,7 +27,7 @@ struct OutputField {
   std::string_view name;
   bool OutputSpec::*flag;
 };
-constexpr std::array<OutputField, 11> output_fields{
+constexpr std::array<OutputField, 14> output_fields{
     {{"uz", &OutputSpec::uz},
      {"pressure", &OutputSpec::pressure},
      {"gap", &OutputSpec::gap},
@@ -38,7 +38,10 @@ constexpr std::array<OutputField, 11> output_fields{
      {"stress_section", &OutputSpec::stress_section},
      {"von_mises_section", &OutputSpec::von_mises_section},
      {"stress_interfaces", &OutputSpec::stress_interfaces},
-     {"von_mises_interfaces", &OutputSpec::von_mises_interfaces}}};
+     {"von_mises_interfaces", &OutputSpec::von_mises_interfaces},
+     {"shear", &OutputSpec::shear},
+     {"stick", &OutputSpec::stick},
+     {"slip", &OutputSpec::slip}}};
 
 // Sets the flag of one name of [output] fields, refusing an unknown name and "gap" for a scene
 // that has none.

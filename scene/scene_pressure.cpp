@@ -46,7 +46,7 @@ Field scene_pressure(const Scene& scene) {
 
 Tractions scene_tractions(const Scene& scene, const Field& pressure) {
   Tractions t;
-  if (scene.contact && scene.contact->friction > 0.0) t.qx = scene.contact->friction * pressure;
+  if (scene.contact && scene.contact->full_sliding()) t.qx = scene.contact->friction * pressure;
   if (!scene.shear) return t;
   const ShearSpec& spec = *scene.shear;
   if (spec.proportional) {

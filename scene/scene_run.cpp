@@ -21,6 +21,7 @@
 #include "scene/contact_options.hpp"
 #include "scene/load_error_report.hpp"
 #include "scene/operator_from_scene.hpp"
+#include "scene/partial_slip_run.hpp"
 #include "scene/resources.hpp"
 #include "scene/row_layout.hpp"
 #include "scene/run_summary.hpp"
@@ -97,15 +98,21 @@ void add_in_plane(CerrutiOperator& op, const Tractions& q, SceneRun& run) {
   run.summary["uz_center"] = run.uz(run.grid.centre_i(), run.grid.centre_j());
 }
 
+// An elastic indenter's surface response on the body's grid and boundary (none: rigid), for the
+// relative response of contact/surface_response.hpp.
+std::shared_ptr<CerrutiOperator> indenter_response(const CerrutiOperator& on_body,
+                                                   const std::optional<Material>& indenter,
+                                                   int threads) {
+  if (!indenter) return nullptr;
+  return traction_operator(on_body.grid(), LayerStack(*indenter), threads, on_body.periodic());
+}
+
 // The normal displacement of q_x relative to the indenter: the body's (any bonded stack,
 // convolution/kernels/traction_kernels.hpp) less an elastic indenter's
 // (contact/sliding_contact.hpp).
 TangentialCoupling tangential_coupling(std::shared_ptr<CerrutiOperator> on_body,
                                        const std::optional<Material>& indenter, int threads) {
-  std::shared_ptr<CerrutiOperator> on_indenter;
-  if (indenter)
-    on_indenter =
-        traction_operator(on_body->grid(), LayerStack(*indenter), threads, on_body->periodic());
+  auto on_indenter = indenter_response(*on_body, indenter, threads);
   return traction_coupling(std::move(on_body), std::move(on_indenter));
 }
 
@@ -241,8 +248,18 @@ SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat,
                                 " control", spec.sweep.empty() ? "" : ", a sweep", ")"));
   const auto start = Clock::now();
   nlohmann::json coupling;
-  std::vector<ContactResult> results =
-      solve_contacts(solver, scene, surface, height_field, coupling, progress);
+  std::vector<PartialSlipResult> slip_steps;
+  std::vector<ContactResult> results;
+  if (spec.partial_slip()) {
+    // A scene with a partial slip writes ux.npy and uy.npy (scene/scene.cpp): its surface
+    // response is built.
+    RelativeSurfaceResponse response(
+        surface, indenter_response(*surface, spec.indenter_material, scene.method.options.threads));
+    slip_steps = solve_scene_partial_slip(solver, response, spec, height_field, progress);
+    results.push_back(slip_steps.back().normal);
+  } else {
+    results = solve_contacts(solver, scene, surface, height_field, coupling, progress);
+  }
   const double solve_seconds = seconds_since(start);
   // touches_boundary is false on a periodic surface (no edge: contact/contact_solver.hpp).
   const bool touches = std::any_of(results.begin(), results.end(),
@@ -272,6 +289,7 @@ SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat,
                std::move(summary),
                result.converged ? RunStatus::ok : RunStatus::not_converged};
   if (!spec.sweep.empty()) add_sweep(run, results);
+  if (!slip_steps.empty()) add_partial_slip(run, slip_steps, spec);
   return run;
 }
 
@@ -325,7 +343,11 @@ SceneRun compute_scene(PreparedScene prepared, const SceneRunOptions& options) {
           ? compute_contact(std::move(prepared.scene), prepared.automatic, options.repeat, progress,
                             surface)
           : compute_pressure(prepared.scene, prepared.automatic, options.repeat, progress);
-  const Tractions q = scene_tractions(scene_copy, run.pressure);
+  Tractions q = scene_tractions(scene_copy, run.pressure);
+  if (run.partial_slip) {  // the last step's tractions
+    q.qx = run.partial_slip->shear_x.back();
+    q.qy = run.partial_slip->shear_y.back();
+  }
   if (stress) {
     progress.stage("stresses on " + std::to_string(stress_planes(*stress, *body).depths.size()) +
                    " planes");

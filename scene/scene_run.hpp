@@ -31,6 +31,13 @@ struct SweepFields {
   std::vector<Field> pressure, uz, gap;
 };
 
+/// The fields of a partial slip, one per step of its path in the order given (one for a single
+/// value), each (nx, ny): the tractions the body's surface receives, the stick zone and the slip.
+struct PartialSlipFields {
+  std::vector<Field> shear_x, shear_y, slip_x, slip_y;
+  std::vector<StickMask> stick;
+};
+
 struct SceneRun {
   Grid grid;
   Field pressure;            ///< [Pa], shape (nx, ny): the scene's load or the contact pressure
@@ -47,6 +54,10 @@ struct SceneRun {
   /// A [contact] sweep: every value's fields (pressure, uz and gap above are the largest
   /// value's), and summary["sweep"] its rows (sweep_csv).
   std::optional<SweepFields> sweep = std::nullopt;
+  /// A partial slip ([contact] tangential_load or tangential_shift): every step's fields
+  /// (pressure, uz and gap above are the last step's), summary["partial_slip"] the last step's
+  /// numbers and, for a path, summary["fretting"] its rows (fretting_csv) and loops.
+  std::optional<PartialSlipFields> partial_slip = std::nullopt;
 };
 
 /// sweep.csv of a sweep's rows (summary.json's "sweep"): a header line, then per value load,
@@ -54,6 +65,10 @@ struct SceneRun {
 /// operator_applications, converged (1 or 0), max_penetration, at full precision.
 std::string sweep_csv(const nlohmann::json& rows);
 
+/// fretting.csv of a path's rows (summary.json's "fretting" "steps"): a header line, then per step
+/// step, tangential_load, tangential_shift, stick_area, slip_area, max_shear, dissipated_energy,
+/// iterations, converged (1 or 0), at full precision.
+std::string fretting_csv(const nlohmann::json& rows);
 /// A sweep's fields (each (nx, ny)) as one C-order array (n_values, ny, nx): the layout of the
 /// stacked .npy files and of fields.nc's (sweep, ...) variables.
 std::vector<double> stacked_fields(const std::vector<Field>& fields);

@@ -145,6 +145,14 @@ inline std::vector<double> npy_values(const fs::path& file) {
   return v;
 }
 
+// The lines of a text file.
+inline std::vector<std::string> lines_of(const fs::path& file) {
+  std::ifstream in(file);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
 inline nlohmann::json read_summary(const fs::path& out) {
   nlohmann::json summary;
   std::ifstream(out / "summary.json") >> summary;

@@ -28,14 +28,6 @@ radius = 0.01
 load = [40.0, 10.0, 20.0]
 )";
 
-// The lines of a text file.
-std::vector<std::string> lines_of(const fs::path& file) {
-  std::ifstream in(file);
-  std::vector<std::string> lines;
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
-
 }  // namespace
 
 TEST_CASE("[contact] load = [...] solves a sweep: every value as its own run", "[cli_sweep]") {

@@ -8,65 +8,19 @@
 #include <memory>
 #include <numbers>
 
-#include "contact/indenter.hpp"
 #include "contact/partial_slip.hpp"
-#include "convolution/kernels/influence_kernel.hpp"
 #include "convolution/operators/cerruti_operator.hpp"
-#include "convolution/operators/detail/dcfft_operator.hpp"
 #include "core/error.hpp"
+#include "tests/partial_slip_sphere.hpp"
 #include "tests/test_materials.hpp"
-#include "validation/cattaneo_mindlin.hpp"
 
 using namespace coatfft;
 
-namespace {
-
-// nu = 0.4999: the coupling beta = (1 - 2 nu)/(2 (1 - nu)) is 2e-4.
-const Material incompressible(2e9, Material::max_poisson_ratio);
-constexpr double kBallRadius = 0.01, kPressLoad = 20.0, kFriction = 0.3;
-
-// A rigid sphere on a half-space of `m`, the grid 4a + 1 cell wide with `cells` cells per a.
-struct HalfSpace {
-  CattaneoMindlin cm;
-  Grid grid;
-  DcfftOperator op;
-  ContactSolver solver;
-  RelativeSurfaceResponse response;
-  Field h;
-  HalfSpace(const Material& m, int cells)
-      : cm(cattaneo_mindlin(kPressLoad, kBallRadius, m, kFriction)),
-        grid(4 * cells + 1, 4 * cells + 1, (4 * cells + 1) * cm.hertz.contact_radius / cells,
-             (4 * cells + 1) * cm.hertz.contact_radius / cells),
-        op(love_kernel(grid, m.plane_strain_modulus())),
-        solver(op),
-        response(std::make_shared<CerrutiOperator>(grid, m)),
-        h(height(grid, Sphere{kBallRadius})) {}
-
-  PartialSlipState rest() {
-    return rest_state(response, solver.solve(h, ContactControl::load, kPressLoad));
-  }
-  PartialSlipResult step(TangentialControl control, double target, const PartialSlipState& from) {
-    PartialSlipOptions o;
-    o.friction = kFriction;
-    return solve_partial_slip(solver, response, h, ContactControl::load, kPressLoad, control,
-                              target, o, from);
-  }
-  // The root-mean-square error of q_x against Cattaneo's traction over the contact, over mu p0.
-  double traction_error(const PartialSlipResult& r, double q_load) const {
-    double sum = 0.0;
-    int n = 0;
-    for (std::ptrdiff_t j = 0; j < grid.ny(); ++j)
-      for (std::ptrdiff_t i = 0; i < grid.nx(); ++i) {
-        const double rr = std::hypot(grid.x(i), grid.y(j));
-        if (rr >= cm.hertz.contact_radius) continue;
-        sum += std::pow(r.qx(i, j) - cm.traction(rr, q_load), 2);
-        ++n;
-      }
-    return std::sqrt(sum / n) / (kFriction * cm.hertz.max_pressure);
-  }
-};
-
-}  // namespace
+using coatfft_test::kBallRadius;
+using coatfft_test::kFriction;
+using coatfft_test::kPressLoad;
+using HalfSpace = coatfft_test::SphereOnHalfSpace;
+const Material& incompressible = coatfft_test::kIncompressible;
 
 TEST_CASE(
     "partial slip: Cattaneo-Mindlin's stick zone, shift and traction, converging with the grid",

@@ -5,7 +5,9 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <algorithm>
 #include <string_view>
+#include <vector>
 
 #include "core/grid.hpp"
 #include "core/types.hpp"
@@ -37,5 +39,21 @@ pybind11::array_t<double> array_from_field(Field&& field);
 
 /// A 1-D or n-D array of doubles with the shape of `like`, values from `values` (no copy).
 pybind11::array_t<double> array_like(const DoubleArray& like, std::vector<double>&& values);
+
+/// Fields of one kind (each (nx, ny)), stacked as (n, ny, nx) when `stacked`, else the last one
+/// as (ny, nx): the layout of the program's stacked .npy files.
+template <typename Array>
+pybind11::array stacked_array(const std::vector<Array>& fields, bool stacked) {
+  using T = typename Array::Scalar;
+  const auto nx = static_cast<pybind11::ssize_t>(fields.back().rows());
+  const auto ny = static_cast<pybind11::ssize_t>(fields.back().cols());
+  std::vector<pybind11::ssize_t> shape = {ny, nx};
+  if (stacked) shape.insert(shape.begin(), static_cast<pybind11::ssize_t>(fields.size()));
+  pybind11::array_t<T> out(shape);
+  T* data = out.mutable_data();
+  for (std::size_t k = stacked ? 0 : fields.size() - 1; k < fields.size(); ++k)
+    data = std::copy(fields[k].data(), fields[k].data() + fields[k].size(), data);
+  return out;
+}
 
 }  // namespace coatfft::python

@@ -103,27 +103,6 @@ PyContactResult solve_contact(Operator& op, const DoubleArray& height, std::opti
   return to_python(std::move(result));
 }
 
-// Refuses a sliding solve whose body is not the operator's: the normal displacement of one body
-// and the tractions' of another would be added into one gap, a result of no body. The two FRFs
-// are compared on the wavenumbers of the operator's grid (its longest period to its Nyquist),
-// where both are evaluated by the same code for the same body, and to 1e-6 where one is a table.
-void require_operator_body(const Operator& op, const LayerStack& body) {
-  const Grid& g = op.grid();
-  const double k_min = 2.0 * std::numbers::pi / std::max(g.lx(), g.ly());
-  const double k_max = std::numbers::pi / std::min(g.dx(), g.dy());
-  const std::shared_ptr<const Frf> given = Body{body, nullptr}.response();
-  constexpr int samples = 16;
-  for (int n = 0; n < samples; ++n) {
-    const double k = k_min * std::pow(k_max / k_min, n / (samples - 1.0));
-    const double own = op.body_response()(k), other = (*given)(k);
-    COATFFT_REQUIRE(std::abs(own - other) <= 1e-6 * std::abs(own),
-                    "solve_sliding: body is not "
-                    "the body the operator was made for (their FRFs differ by ",
-                    std::abs(own - other) / std::abs(own), " at k = ", k,
-                    " 1/m): pass the operator's body");
-  }
-}
-
 // Full sliding (contact/sliding_contact.hpp): the normal contact with q_x = mu p, the tractions'
 // normal displacement of the bonded body `body_object` iterated into the gap, as a scene's
 // [contact] friction (each solve to `tolerance`, the coupling to ten times it).
@@ -137,7 +116,7 @@ PyContactResult solve_sliding(Operator& op, const DoubleArray& height, py::handl
                   "solve_sliding: friction = ", friction, " must be in [0, 10]");
   const LayerStack body =
       layers_of(body_object, "solve_sliding", "the tractions' response needs the layers");
-  require_operator_body(op, body);
+  require_operator_body(op, body, "solve_sliding");
   const Field h = field_from_array(height, op.grid(), "solve_sliding: height");
   const ContactOptions options = contact_options(op, approach.has_value(), tolerance,
                                                  max_iterations, preconditioned, "solve_sliding");

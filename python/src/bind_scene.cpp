@@ -50,24 +50,14 @@ void add_stress_arrays(const Grid& grid, const scene::StressRun& s, py::dict& ou
   }
 }
 
-// A sweep's fields, one per value: (n_values, ny, nx), as the program's stacked .npy files.
-py::array_t<double> stacked(const std::vector<Field>& fields) {
-  const auto nx = static_cast<py::ssize_t>(fields.front().rows());
-  const auto ny = static_cast<py::ssize_t>(fields.front().cols());
-  py::array_t<double> a(std::vector<py::ssize_t>{static_cast<py::ssize_t>(fields.size()), ny, nx});
-  double* data = a.mutable_data();
-  for (const Field& f : fields) data = std::copy(f.data(), f.data() + f.size(), data);
-  return a;
-}
-
 // The path as a str or any os.PathLike (pathlib.Path), as Python's own file functions take it.
 py::dict run_scene(const std::filesystem::path& path) {
   scene::SceneRun run = without_gil([&] { return scene::run_scene(path); });
   py::dict out;
   if (run.sweep) {
-    out["uz"] = stacked(run.sweep->uz);
-    out["pressure"] = stacked(run.sweep->pressure);
-    out["gap"] = stacked(run.sweep->gap);
+    out["uz"] = stacked_array(run.sweep->uz, true);
+    out["pressure"] = stacked_array(run.sweep->pressure, true);
+    out["gap"] = stacked_array(run.sweep->gap, true);
   } else {
     out["uz"] = array_from_field(std::move(run.uz));
     out["pressure"] = array_from_field(std::move(run.pressure));
@@ -76,6 +66,15 @@ py::dict run_scene(const std::filesystem::path& path) {
   if (run.stress) add_stress_arrays(run.grid, *run.stress, out);
   if (run.ux) out["ux"] = array_from_field(std::move(*run.ux));
   if (run.uy) out["uy"] = array_from_field(std::move(*run.uy));
+  if (run.partial_slip) {  // a path's stacked, as its .npy files
+    const bool stacked = run.summary.contains("fretting");
+    const scene::PartialSlipFields& f = *run.partial_slip;
+    out["shear_x"] = stacked_array(f.shear_x, stacked);
+    out["shear_y"] = stacked_array(f.shear_y, stacked);
+    out["slip_x"] = stacked_array(f.slip_x, stacked);
+    out["slip_y"] = stacked_array(f.slip_y, stacked);
+    out["stick"] = stacked_array(f.stick, stacked);
+  }
   out["summary"] = dict_from_json_text(run.summary.dump());
   return out;
 }

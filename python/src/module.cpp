@@ -44,6 +44,7 @@ PYBIND11_MODULE(_coatfft, m) {
   coatfft::python::bind_loads(m);
   coatfft::python::bind_operator(m);
   coatfft::python::bind_contact(m);
+  coatfft::python::bind_partial_slip(m);
   coatfft::python::bind_scene(m);
   coatfft::python::bind_stress(m);
   coatfft::python::bind_timing(m);
