@@ -48,10 +48,13 @@ void fill_result(const Grid& grid, const detail::TangentialSolution& t, const Fi
   r.slip_y = t.sy;
   r.stick.resize(bound.rows(), bound.cols());
   const Field size = (t.qx.square() + t.qy.square()).sqrt();
+  const Field slip = (t.sx.square() + t.sy.square()).sqrt();
   Eigen::Index stick = 0, contact = 0;
   for (Eigen::Index k = 0; k < bound.size(); ++k) {
     const bool in = bound(k) > 0.0;
-    r.stick(k) = in && size(k) < bound(k) * (1.0 - 1e-12) ? 1 : 0;
+    // A cell sticks when it does not slip (to the slip's accuracy): a cell on the stick zone's
+    // edge can carry the limit to the tolerance without slipping.
+    r.stick(k) = in && slip(k) <= t.check.slip_bound ? 1 : 0;
     stick += r.stick(k);
     contact += in ? 1 : 0;
   }

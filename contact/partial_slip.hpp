@@ -67,13 +67,13 @@ struct CoulombCheck {
 };
 
 struct PartialSlipResult {
-  ContactResult normal;  ///< the normal contact (its displacement includes q's share)
-  Field qx, qy;          ///< [Pa]
-  Field slip_x, slip_y;  ///< the slip of this step [m]
-  StickMask stick;               ///< 1 where it sticks
-  double tangential_load = 0;                                        ///< sum q_x dx dy [N]
-  double lateral_load = 0;               ///< sum q_y dx dy [N] (the indenter is held in y)
-  double tangential_shift = 0;           ///< delta [m]
+  ContactResult normal;         ///< the normal contact (its displacement includes q's share)
+  Field qx, qy;                 ///< [Pa]
+  Field slip_x, slip_y;         ///< the slip of this step [m]
+  StickMask stick;              ///< 1 where a contact cell does not slip (CoulombCheck)
+  double tangential_load = 0;   ///< sum q_x dx dy [N]
+  double lateral_load = 0;      ///< sum q_y dx dy [N] (the indenter is held in y)
+  double tangential_shift = 0;  ///< delta [m]
   double stick_area = 0, slip_area = 0;  ///< [m^2]
   double max_shear = 0;                  ///< max |q| [Pa]
   double step_energy = 0;                ///< friction work of this step, sum |q| |s| dx dy [J]

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <utility>
 
+#include "contact/detail/fourier_preconditioner.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 
@@ -55,45 +56,66 @@ struct Iterate {
   }
 };
 
-// The search's gradient g and its scaled form z, and the constraint's curvature c, per cell. A
-// sticking cell moves freely: z = g = s. A slipping cell moves along its circle only (the radial
-// move is blocked while it slips against its traction): g is the part of s along the circle and
-// z = g K_ii/(K_ii + c), the inverse of its rotational stiffness -- the circle's curvature adds
-// c = |s|/(mu p) to the cell's own compliance K_ii, so a cell that slips far (or has a small disk,
-// at the rim) turns by about what Coulomb's law asks, q against s, and no further. A cell that
-// slips along its traction sticks again (z = g = s), as Polonsky & Keer (1999) return an
-// overlapping cell to the contact.
-void search_gradient(const Iterate& it, const Mask& stick, double self_compliance, Field& gx,
-                     Field& gy, Field& zx, Field& zy, Field& curvature) {
-  const Field& bound = *it.problem.bound;
-  gx = Field::Zero(bound.rows(), bound.cols());
-  gy = gx, zx = gx, zy = gx, curvature = gx;
-  for (Eigen::Index k = 0; k < bound.size(); ++k) {
-    if (bound(k) <= 0.0) continue;
-    double ax = it.sx(k), ay = it.sy(k), w = 1.0;
-    if (!stick(k)) {
-      const double n = std::hypot(it.qx(k), it.qy(k));
-      const double hx = it.qx(k) / n, hy = it.qy(k) / n;
-      const double along = ax * hx + ay * hy;
-      if (along <= 0.0) {
-        ax -= along * hx, ay -= along * hy;
-        curvature(k) = -along / bound(k);
-        w = self_compliance / (self_compliance + curvature(k));
-      }
-    }
-    gx(k) = ax, gy(k) = ay, zx(k) = w * ax, zy(k) = w * ay;
-  }
-}
+// A cell's own compliance K_ii [m/Pa] (u_x of a cell under a unit q_x on itself), and the
+// factor that makes the Fourier preconditioner P an approximate inverse of the response: P K ~
+// `inverse_scale` times the identity, read from P (K e) at the loaded cell e (one application).
+struct CellScales {
+  double self_compliance;
+  double inverse_scale;
+};
 
-// K_ii: u_x of a cell under a unit q_x on itself [m/Pa] (one application).
-double cell_self_compliance(RelativeSurfaceResponse& response, int& applications) {
+CellScales cell_scales(RelativeSurfaceResponse& response, FourierPreconditioner& preconditioner,
+                       int& applications) {
   const Grid& g = response.grid();
   Field unit = Field::Zero(g.nx(), g.ny());
   unit(g.centre_i(), g.centre_j()) = 1.0;
   std::array<Field, 3> u;
   response.apply(Field::Zero(g.nx(), g.ny()), &unit, nullptr, u);
   applications += response.applications_per_apply();
-  return u[0](g.centre_i(), g.centre_j());
+  const double self = u[0](g.centre_i(), g.centre_j());
+  preconditioner.apply(u[0]);
+  return {self, u[0](g.centre_i(), g.centre_j())};
+}
+
+// The search's gradient g and its preconditioned form z, and the constraint's curvature c, per
+// cell. A free cell -- one that sticks, or slips along its traction and so sticks again, as
+// Polonsky & Keer (1999) return an overlapping cell to the contact -- moves freely: g = s, and z
+// is the Fourier preconditioner's approximate inverse K^-1 g over the free cells (the normal
+// iteration's, contact/detail/fourier_preconditioner.hpp: the in-plane compliance falls as 1/r at
+// every scale too). A slipping cell moves along its circle only (the radial move is blocked while
+// it slips against its traction): g is the part of s along the circle and z = g/(K_ii + c), the
+// inverse of its rotational stiffness -- the circle's curvature adds c = |s|/(mu p) to the cell's
+// own compliance K_ii, so a cell that slips far (or has a small disk, at the rim) turns by about
+// what Coulomb's law asks, q against s, and no further.
+void search_gradient(const Iterate& it, const Mask& stick, const CellScales& scales,
+                     FourierPreconditioner& preconditioner, Field& gx, Field& gy, Field& zx,
+                     Field& zy, Field& curvature) {
+  const Field& bound = *it.problem.bound;
+  gx = Field::Zero(bound.rows(), bound.cols());
+  gy = gx, zx = gx, zy = gx, curvature = gx;
+  Mask free = stick;
+  for (Eigen::Index k = 0; k < bound.size(); ++k) {
+    if (bound(k) <= 0.0) continue;
+    double ax = it.sx(k), ay = it.sy(k);
+    if (!stick(k)) {
+      const double n = std::hypot(it.qx(k), it.qy(k));
+      const double hx = it.qx(k) / n, hy = it.qy(k) / n;
+      const double along = ax * hx + ay * hy;
+      free(k) = along > 0.0;
+      if (!free(k)) {
+        ax -= along * hx, ay -= along * hy;
+        curvature(k) = -along / bound(k);
+        const double w = 1.0 / (scales.self_compliance + curvature(k));
+        zx(k) = w * ax, zy(k) = w * ay;
+      }
+    }
+    gx(k) = ax, gy(k) = ay;
+  }
+  Field px = free.select(gx, 0.0), py = free.select(gy, 0.0);
+  preconditioner.apply(px);
+  preconditioner.apply(py);
+  zx = free.select(px / scales.inverse_scale, zx);
+  zy = free.select(py / scales.inverse_scale, zy);
 }
 
 // The largest in-plane move of the step [m]: the scale of the slip's accuracy.
@@ -122,14 +144,15 @@ TangentialSolution solve_tangential(RelativeSurfaceResponse& response,
     return out.check.holds;
   };
   if (!accept()) {
-    const double self_compliance = cell_self_compliance(response, s.applications);
+    FourierPreconditioner preconditioner(response.grid());
+    const CellScales scales = cell_scales(response, preconditioner, s.applications);
     const Field zero = Field::Zero(bound.rows(), bound.cols());
     Field gx, gy, zx, zy, circle, tx = zero, ty = zero;
     double gz_old = 0.0;
     bool restart = true;
     for (int it = 1; it <= settings.max_iterations; ++it) {
       check_interrupt();
-      search_gradient(s, stick, self_compliance, gx, gy, zx, zy, circle);
+      search_gradient(s, stick, scales, preconditioner, gx, gy, zx, zy, circle);
       const double gz = (gx * zx + gy * zy).sum();
       const double beta = restart || gz_old == 0.0 ? 0.0 : gz / gz_old;
       tx = zx + beta * tx;
@@ -200,6 +223,8 @@ TangentialSolution solve_tangential_load(RelativeSurfaceResponse& response,
   TangentialSolution best;
   int iterations = 0, applications = 0;
   // Q(d) - Q for the shift's increment d, each solve started from the last one's tractions.
+  // (Stopping the solves far from the load early, an inexact secant, was measured: as many
+  // iterations in all, and more solves.)
   const auto excess = [&](double d) {
     shifted.value = d;
     best = solve_tangential(response, shifted, std::move(qx), std::move(qy), settings);

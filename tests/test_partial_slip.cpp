@@ -110,7 +110,12 @@ TEST_CASE("partial slip: a shift control gives the load control's state",
   REQUIRE(by_shift.converged);
   CHECK(by_shift.tangential_load == Approx(by_load.tangential_load).epsilon(1e-6));
   CHECK((by_shift.qx - by_load.qx).abs().maxCoeff() < 1e-5 * kFriction * s.cm.hertz.max_pressure);
-  CHECK((by_shift.stick == by_load.stick).all());
+  // The same stick zone, but for cells on its edge, at the limit to the tolerance in both.
+  const Field limit = kFriction * by_load.normal.pressure;
+  const Field size = (by_load.qx.square() + by_load.qy.square()).sqrt();
+  for (Eigen::Index k = 0; k < limit.size(); ++k)
+    if (by_shift.stick(k) != by_load.stick(k)) CHECK(size(k) >= limit(k) * (1.0 - 1e-5));
+  CHECK(std::abs(by_shift.stick_area - by_load.stick_area) <= 2.0 * s.grid.dx() * s.grid.dy());
 }
 
 TEST_CASE("partial slip: on steel the tractions move the pressure, and the step still converges",
