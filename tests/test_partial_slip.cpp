@@ -10,9 +10,11 @@
 
 #include "contact/partial_slip.hpp"
 #include "convolution/operators/cerruti_operator.hpp"
+#include "convolution/operators/make_operator.hpp"
 #include "core/error.hpp"
 #include "tests/partial_slip_sphere.hpp"
 #include "tests/test_materials.hpp"
+#include "validation/hertz_contact.hpp"
 
 using namespace coatfft;
 
@@ -192,4 +194,76 @@ TEST_CASE("partial slip: the Coulomb check fails a state that breaks the law",
   // The load: 2.5 Pa on 1e-6 m^2 cells is 2.5e-6 N.
   CHECK(check_coulomb(g, bound, qx, qy, sx, sy, 2.5e-6, 1e-6, 1e-8).holds);
   CHECK_FALSE(check_coulomb(g, bound, qx, qy, sx, sy, 2.6e-6, 1e-6, 1e-8).holds);
+}
+
+TEST_CASE(
+    "partial slip: a steel ball on steel, the two compliances added, against Cattaneo-Mindlin",
+    "[contact][partial_slip]") {
+  // Identical materials: the couplings cancel (Johnson 1985, 5.4), so the pressure is Hertz's of
+  // the composite modulus and the tangential compliance (2 - nu)/G is summed over both bodies
+  // (eq. 7.43): Cattaneo-Mindlin of the pair.
+  const double e_star = 0.5 * steel.plane_strain_modulus();
+  const HertzSphere hertz = hertz_sphere_for_load(kPressLoad, kBallRadius, e_star);
+  const double g = steel.youngs_modulus() / (2.0 * (1.0 + steel.poisson_ratio()));
+  const CattaneoMindlin cm{hertz, kFriction, 2.0 * (2.0 - steel.poisson_ratio()) / g};
+  const int cells = 16;
+  const double l = (4 * cells + 1) * hertz.contact_radius / cells;
+  const Grid grid(4 * cells + 1, 4 * cells + 1, l, l);
+  DcfftOperator op(love_kernel(grid, e_star));
+  ContactSolver solver(op);
+  RelativeSurfaceResponse pair(std::make_shared<CerrutiOperator>(grid, steel),
+                               std::make_shared<CerrutiOperator>(grid, steel));
+  const Field h = height(grid, Sphere{kBallRadius});
+  PartialSlipOptions o;
+  o.friction = kFriction;
+  const double q = 0.6 * kFriction * kPressLoad;
+  const PartialSlipResult r =
+      solve_partial_slip(solver, pair, h, ContactControl::load, kPressLoad, TangentialControl::load,
+                         q, o, rest_state(pair, solver.solve(h, ContactControl::load, kPressLoad)));
+  REQUIRE(r.converged);
+  CHECK(r.coupling_solves == 1);  // no coupling: the pressure stays
+  CHECK(r.tangential_shift == Approx(cm.shift(q)).epsilon(0.01));
+  CHECK(std::sqrt(r.stick_area / std::numbers::pi) == Approx(cm.stick_radius(q)).epsilon(0.03));
+}
+
+TEST_CASE("partial slip on a periodic surface: a sphere on a wide period is the free contact's",
+          "[contact][partial_slip]") {
+  // A period eight contact radii wide (the images a period away change the traction little).
+  const CattaneoMindlin cm = cattaneo_mindlin(kPressLoad, kBallRadius, incompressible, kFriction);
+  const double a = cm.hertz.contact_radius;
+  const Grid grid(64, 64, 8 * a, 8 * a);
+  OperatorOptions periodic;
+  periodic.boundary = Boundary::periodic;
+  BuiltOperator built = make_operator(grid, LayerStack(incompressible), periodic);
+  ContactSolver solver(*built.op);
+  TangentialOptions t;
+  t.boundary = Boundary::periodic;
+  RelativeSurfaceResponse response(
+      make_tangential_operator(grid, LayerStack(incompressible), t).op);
+  const Field h = height(grid, Sphere{kBallRadius});
+  PartialSlipOptions o;
+  o.friction = kFriction;
+  const double q = 0.6 * kFriction * kPressLoad;
+  const PartialSlipResult r = solve_partial_slip(
+      solver, response, h, ContactControl::load, kPressLoad, TangentialControl::load, q, o,
+      rest_state(response, solver.solve(h, ContactControl::load, kPressLoad)));
+  REQUIRE(r.converged);
+  CHECK(r.tangential_load == Approx(q).epsilon(1e-7));
+  CHECK(std::sqrt(r.stick_area / std::numbers::pi) == Approx(cm.stick_radius(q)).epsilon(0.05));
+  double sum = 0.0;
+  int n = 0;
+  for (std::ptrdiff_t j = 0; j < grid.ny(); ++j)
+    for (std::ptrdiff_t i = 0; i < grid.nx(); ++i) {
+      const double rr = std::hypot(grid.x(i), grid.y(j));
+      if (rr >= a) continue;
+      sum += std::pow(r.qx(i, j) - cm.traction(rr, q), 2);
+      ++n;
+    }
+  const double rms = std::sqrt(sum / n) / (kFriction * cm.hertz.max_pressure);
+  // Measured 0.022 (the free surface's 0.015 at the same a/dx = 8: the images add the rest). The
+  // shift is measured against the period's mean in-plane displacement, not a far field: 0.73 of
+  // Cattaneo-Mindlin's here, and not compared.
+  INFO("rms traction error " << rms << ", shift " << r.tangential_shift / cm.shift(q)
+                             << " of the free surface's");
+  CHECK(rms < 0.03);
 }
