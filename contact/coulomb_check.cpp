@@ -31,6 +31,7 @@ CoulombCheck check_coulomb(const Grid& grid, const Field& bound, const Field& qx
         std::abs(carried - *load) / (limit > 0.0 ? bound.sum() * grid.dx() * grid.dy() : 1.0);
   }
   // The slip is known to the accuracy of the displacement (as the gap of the normal problem).
+  c.slip_scale = slip_scale;
   c.slip_bound = detail::gap_tolerance(tolerance, slip_scale, slip_scale);
   c.holds = c.excess <= tolerance && c.outside == 0.0 && c.slip_error <= c.slip_bound &&
             c.load_error <= tolerance;

@@ -40,7 +40,7 @@ void check_reach(TangentialControl tangential, double target, double friction,
 
 // The step's numbers from its converged (or last) tangential solution.
 void fill_result(const Grid& grid, const detail::TangentialSolution& t, const Field& bound,
-                 double tolerance, PartialSlipResult& r) {
+                 PartialSlipResult& r) {
   const double area = grid.dx() * grid.dy();
   r.qx = t.qx;
   r.qy = t.qy;
@@ -52,12 +52,9 @@ void fill_result(const Grid& grid, const detail::TangentialSolution& t, const Fi
   Eigen::Index stick = 0, contact = 0;
   for (Eigen::Index k = 0; k < bound.size(); ++k) {
     const bool in = bound(k) > 0.0;
-    // A cell sticks when it is inside its disk by more than the tolerance (where Coulomb's law
-    // forbids a slip, and the iterate's is at the rounding of the displacement), or at the
-    // limit without slipping (to the slip's accuracy), as a ring of cells on the stick zone's
-    // edge can be. A slipping cell is at the limit to the tolerance, not always to rounding.
-    const bool inside = size(k) < bound(k) * (1.0 - tolerance);
-    r.stick(k) = in && (inside || slip(k) <= t.check.slip_bound) ? 1 : 0;
+    const bool slips = size(k) >= bound(k) * (1.0 - stick_threshold) &&
+                       slip(k) > stick_threshold * t.check.slip_scale;
+    r.stick(k) = in && !slips ? 1 : 0;
     stick += r.stick(k);
     contact += in ? 1 : 0;
   }
@@ -143,7 +140,7 @@ PartialSlipResult solve_partial_slip(ContactSolver& solver, RelativeSurfaceRespo
     r.normal = std::move(next);
   }
   r.normal.displacement += uz;
-  fill_result(response.grid(), t, bound, options.tolerance, r);
+  fill_result(response.grid(), t, bound, r);
   r.tangential_shift = previous.shift + t.shift_increment;
   r.dissipated_energy = previous.dissipated_energy + r.step_energy;
   r.operator_applications = applications;

@@ -61,6 +61,7 @@ struct CoulombCheck {
   double excess = 0;      ///< max (|q| - mu p) / max(mu p), > 0 where the disk is left
   double slip_error = 0;  ///< max |s + |s| q/(mu p)| over contact cells [m]
   double slip_bound = 0;  ///< the bound of slip_error [m]
+  double slip_scale = 0;  ///< the step's largest in-plane move [m], the scale of the bound
   double outside = 0;     ///< max |q| off the contact [Pa]
   double load_error = 0;  ///< |sum q_x dA - Q| / (mu P) under load control, else 0
   bool holds = false;     ///< every condition within its bound
@@ -110,6 +111,13 @@ std::vector<PartialSlipResult> solve_partial_slip_path(
     ContactControl control, double value, TangentialControl tangential,
     const std::vector<double>& targets, const PartialSlipOptions& options,
     const std::function<void(std::size_t step)>& on_step = {});
+
+/// A contact cell sticks unless it is at the friction limit and slips, both measurably: |q| >=
+/// mu p (1 - stick_threshold) and |s| > stick_threshold times the step's largest move. Cells at
+/// the verge -- at the limit to the tolerance, not slipping beyond the displacement's accuracy --
+/// count as sticking: on a coupled body they can form a band where the tolerance's last digits
+/// would otherwise decide (docs/contact.md, "Partial slip").
+inline constexpr double stick_threshold = 1e-6;
 
 /// The conditions of a partial-slip solution (CoulombCheck) with `tolerance` as the relative
 /// bound: `bound` = mu p, s the slip, `load` the prescribed Q under load control.

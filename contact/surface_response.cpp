@@ -33,4 +33,16 @@ void RelativeSurfaceResponse::apply(const Field& pressure, const Field* qx, cons
   u[2] += i[2];
 }
 
+void RelativeSurfaceResponse::apply_in_plane(const Field* pressure, const Field* qx,
+                                             const Field* qy, std::array<Field, 3>& u) {
+  body_->apply_in_plane(pressure, qx, qy, u);
+  if (!indenter_) return;
+  const Field mqx = qx ? Field(-*qx) : Field();
+  const Field mqy = qy ? Field(-*qy) : Field();
+  std::array<Field, 3> i;
+  indenter_->apply_in_plane(pressure, qx ? &mqx : nullptr, qy ? &mqy : nullptr, i);
+  u[0] -= i[0];
+  u[1] -= i[1];
+}
+
 }  // namespace coatfft

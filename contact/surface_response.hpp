@@ -30,6 +30,10 @@ class RelativeSurfaceResponse {
   /// u = (u_x, u_y, u_z) [m] of the body's surface relative to the indenter's (u_z: their
   /// approach) under `pressure` and the tractions `qx`, `qy` (null: zero) the body receives [Pa].
   void apply(const Field& pressure, const Field* qx, const Field* qy, std::array<Field, 3>& u);
+  /// u_x and u_y alone (u[2] left as it was), `pressure` null for zero: two thirds of apply's
+  /// transforms, or less (CerrutiOperator::apply_in_plane).
+  void apply_in_plane(const Field* pressure, const Field* qx, const Field* qy,
+                      std::array<Field, 3>& u);
 
  private:
   std::shared_ptr<CerrutiOperator> body_, indenter_;

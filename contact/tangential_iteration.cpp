@@ -14,9 +14,19 @@
 
 namespace coatfft::detail {
 
+namespace {
+
+// |(x, y)| without std::hypot's care for overflow, which tractions [Pa] and slips [m] are far
+// from, and which cost a quarter of an iteration's element-wise passes (measured).
+inline double length(double x, double y) {
+  return std::sqrt(x * x + y * y);
+}
+
+}  // namespace
+
 void project_tractions(const Field& bound, Field& qx, Field& qy) {
   for (Eigen::Index k = 0; k < bound.size(); ++k) {
-    const double n = std::hypot(qx(k), qy(k));
+    const double n = length(qx(k), qy(k));
     const double scale = bound(k) <= 0.0 ? 0.0 : n <= bound(k) ? 1.0 : bound(k) / n;
     qx(k) *= scale;
     qy(k) *= scale;
@@ -32,7 +42,7 @@ using Mask = Eigen::Array<bool, Eigen::Dynamic, Eigen::Dynamic>;
 Mask sticking(const Field& bound, const Field& qx, const Field& qy) {
   Mask m(bound.rows(), bound.cols());
   for (Eigen::Index k = 0; k < bound.size(); ++k)
-    m(k) = bound(k) > 0.0 && std::hypot(qx(k), qy(k)) < bound(k) * (1.0 - 1e-12);
+    m(k) = bound(k) > 0.0 && length(qx(k), qy(k)) < bound(k) * (1.0 - 1e-12);
   return m;
 }
 
@@ -46,7 +56,7 @@ struct Iterate {
 
   void displace() {
     std::array<Field, 3> u;
-    response.apply(*problem.pressure, &qx, &qy, u);
+    response.apply_in_plane(problem.pressure, &qx, &qy, u);
     applications += response.applications_per_apply();
     ux = std::move(u[0]);
     uy = std::move(u[1]);
@@ -70,7 +80,7 @@ CellScales cell_scales(RelativeSurfaceResponse& response, FourierPreconditioner&
   Field unit = Field::Zero(g.nx(), g.ny());
   unit(g.centre_i(), g.centre_j()) = 1.0;
   std::array<Field, 3> u;
-  response.apply(Field::Zero(g.nx(), g.ny()), &unit, nullptr, u);
+  response.apply_in_plane(nullptr, &unit, nullptr, u);
   applications += response.applications_per_apply();
   const double self = u[0](g.centre_i(), g.centre_j());
   preconditioner.apply(u[0]);
@@ -98,7 +108,7 @@ void search_gradient(const Iterate& it, const Mask& stick, const CellScales& sca
     if (bound(k) <= 0.0) continue;
     double ax = it.sx(k), ay = it.sy(k);
     if (!stick(k)) {
-      const double n = std::hypot(it.qx(k), it.qy(k));
+      const double n = length(it.qx(k), it.qy(k));
       const double hx = it.qx(k) / n, hy = it.qy(k) / n;
       const double along = ax * hx + ay * hy;
       free(k) = along > 0.0;
@@ -159,7 +169,7 @@ TangentialSolution solve_tangential(RelativeSurfaceResponse& response,
       ty = zy + beta * ty;
       gz_old = gz;
       std::array<Field, 3> kt;
-      response.apply(zero, &tx, &ty, kt);
+      response.apply_in_plane(nullptr, &tx, &ty, kt);
       s.applications += response.applications_per_apply();
       // The step's curvature: the body's, and the circles' for the slipping cells.
       const double curvature =
@@ -204,7 +214,7 @@ double stick_compliance(RelativeSurfaceResponse& response, const Field& bound, i
   const Grid& g = response.grid();
   const Field unit = (bound > 0.0).select(Field::Ones(bound.rows(), bound.cols()), 0.0);
   std::array<Field, 3> u;
-  response.apply(Field::Zero(g.nx(), g.ny()), &unit, nullptr, u);
+  response.apply_in_plane(nullptr, &unit, nullptr, u);
   applications += response.applications_per_apply();
   const double cells = unit.sum();
   return (unit * u[0]).sum() / cells / (cells * g.dx() * g.dy());

@@ -47,16 +47,7 @@ struct SphereOnHalfSpace {
   }
   /// The root-mean-square error of q_x against Cattaneo's traction over the contact, over mu p0.
   double traction_error(const coatfft::PartialSlipResult& r, double q_load) const {
-    double sum = 0.0;
-    int n = 0;
-    for (std::ptrdiff_t j = 0; j < grid.ny(); ++j)
-      for (std::ptrdiff_t i = 0; i < grid.nx(); ++i) {
-        const double rr = std::hypot(grid.x(i), grid.y(j));
-        if (rr >= cm.hertz.contact_radius) continue;
-        sum += std::pow(r.qx(i, j) - cm.traction(rr, q_load), 2);
-        ++n;
-      }
-    return std::sqrt(sum / n) / (kFriction * cm.hertz.max_pressure);
+    return coatfft::rms_traction_error(grid, r.qx, cm, q_load);
   }
 };
 

@@ -94,3 +94,20 @@ TEST_CASE("Cattaneo-Mindlin refuses loads out of range", "[cattaneo_mindlin]") {
   CHECK_THROWS_AS(cm.unloading_shift(0.5 * mu_p, 0.6 * mu_p), InvalidArgument);
   CHECK_THROWS_AS(cattaneo_mindlin(100.0, 10e-3, steel, 0.0), InvalidArgument);
 }
+
+TEST_CASE("rms_traction_error: zero on the reference's own traction, the offset of a shifted one",
+          "[cattaneo_mindlin]") {
+  const CattaneoMindlin cm = steel_ball();
+  const double a = cm.hertz.contact_radius, q = 0.5 * cm.friction * cm.hertz.load;
+  const Grid g(33, 33, 4.125 * a, 4.125 * a);
+  Field qx(g.nx(), g.ny());
+  for (std::ptrdiff_t j = 0; j < g.ny(); ++j)
+    for (std::ptrdiff_t i = 0; i < g.nx(); ++i)
+      qx(i, j) = cm.traction(std::hypot(g.x(i), g.y(j)), q);
+  CHECK(rms_traction_error(g, qx, cm, q) == 0.0);
+  // A constant offset inside the contact is its own rms; cells outside are not counted.
+  const double offset = 0.01 * cm.friction * cm.hertz.max_pressure;
+  Field shifted = qx + offset;
+  CHECK(rms_traction_error(g, shifted, cm, q) == Approx(0.01).epsilon(1e-12));
+  CHECK_THROWS_AS(rms_traction_error(g, Field::Zero(3, 3), cm, q), InvalidArgument);
+}

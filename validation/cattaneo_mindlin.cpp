@@ -60,4 +60,21 @@ CattaneoMindlin cattaneo_mindlin(double load, double radius, const Material& mat
           (2.0 - nu) / material.shear_modulus()};
 }
 
+double rms_traction_error(const Grid& grid, const Field& qx, const CattaneoMindlin& reference,
+                          double tangential_load) {
+  COATFFT_REQUIRE(qx.rows() == grid.nx() && qx.cols() == grid.ny(),
+                  "rms_traction_error: the traction is not on the grid");
+  double sum = 0.0;
+  int n = 0;
+  for (std::ptrdiff_t j = 0; j < grid.ny(); ++j)
+    for (std::ptrdiff_t i = 0; i < grid.nx(); ++i) {
+      const double r = std::hypot(grid.x(i), grid.y(j));
+      if (r >= reference.hertz.contact_radius) continue;
+      sum += std::pow(qx(i, j) - reference.traction(r, tangential_load), 2);
+      ++n;
+    }
+  COATFFT_REQUIRE(n > 0, "rms_traction_error: no cell inside the contact");
+  return std::sqrt(sum / n) / (reference.friction * reference.hertz.max_pressure);
+}
+
 }  // namespace coatfft

@@ -4,6 +4,8 @@
 // 1953, Masing's rule): the references of frictional contacts, valid where the tangential
 // tractions leave the pressure as it is (identical bodies, or an incompressible one). The closed
 // forms are docs/theory.md 6.5's.
+#include "../core/grid.hpp"
+#include "../core/types.hpp"
 #include "hertz_contact.hpp"
 
 namespace coatfft {
@@ -30,6 +32,13 @@ struct CattaneoMindlin {
   /// x = Q*/(mu P) < 1.
   double loop_energy(double reversal_load) const;
 };
+
+/// The root-mean-square difference between a traction field q_x [Pa] on `grid` (cell values,
+/// the sphere on the grid's centre) and `reference`'s traction under Q [N], over the cells whose
+/// centre lies inside the Hertz contact, divided by mu p0: the error measure of the partial-slip
+/// tables and tests.
+double rms_traction_error(const Grid& grid, const Field& qx, const CattaneoMindlin& reference,
+                          double tangential_load);
 
 /// The partial slip of a rigid sphere of radius R [m] pressed with P [N] on a half-space of
 /// `material` (E*, and (2 - nu)/G), friction mu > 0. InvalidArgument for a value out of range.

@@ -245,13 +245,14 @@ void ParityConvolution::inverse_into(std::size_t output, Field& out) {
     for (std::ptrdiff_t i = 0; i < nx; ++i) out(i, j) = real[j * 2 * hx_ + i];
 }
 
-void ParityConvolution::apply(std::span<const Field* const> loads, std::vector<Field>& out) {
+void ParityConvolution::apply(std::span<const Field* const> loads, std::vector<Field>& out,
+                              std::size_t first) {
   if (static_cast<int>(loads.size()) != nb_loads_)
     throw InvalidArgument("parity convolution: one field (or null) per load");
   for (int l = 0; l < nb_loads_; ++l) transform_load(l, loads[l]);
   out.resize(spectra_.size());
   // Many planes make many outputs. Stopping between two is safe: every apply starts afresh.
-  for (std::size_t o = 0; o < spectra_.size(); ++o) {
+  for (std::size_t o = 0; o < std::min(first, spectra_.size()); ++o) {
     check_interrupt();
     inverse_into(o, out[o]);
   }

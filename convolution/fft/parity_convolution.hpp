@@ -67,9 +67,12 @@ class ParityConvolution {
   int nb_loads() const { return nb_loads_; }
   std::size_t nb_outputs() const { return spectra_.size(); }
 
-  /// Every output under the loads (nb_loads pointers; null: a zero load), each (nx, ny) and
-  /// finite (InvalidArgument otherwise). `out` is resized to nb_outputs() fields (nx, ny).
-  void apply(std::span<const Field* const> loads, std::vector<Field>& out);
+  /// Every output under the loads (nb_loads pointers; null: a zero load, which costs nothing),
+  /// each (nx, ny) and finite (InvalidArgument otherwise). `out` is resized to nb_outputs()
+  /// fields (nx, ny). With `first` < nb_outputs(), only the outputs 0 .. first - 1 are computed
+  /// (each one pruned inverse transform less); the others are left as they were.
+  void apply(std::span<const Field* const> loads, std::vector<Field>& out,
+             std::size_t first = static_cast<std::size_t>(-1));
 
   /// Bytes held: the kernels' spectrum quarters and the buffers.
   std::size_t memory_bytes() const;

@@ -42,4 +42,11 @@ void CerrutiOperator::apply(const Field& pressure, const Field* qx, const Field*
   for (int d = 0; d < 3; ++d) std::swap(u[d], fields_[d]);
 }
 
+void CerrutiOperator::apply_in_plane(const Field* pressure, const Field* qx, const Field* qy,
+                                     std::array<Field, 3>& u) {
+  const Field* loads[3] = {pressure, qx, qy};
+  convolution_.apply(loads, fields_, 2);  // the outputs u_x, u_y (add_outputs' order)
+  for (int d = 0; d < 2; ++d) std::swap(u[d], fields_[d]);
+}
+
 }  // namespace coatfft

@@ -41,6 +41,10 @@ class CerrutiOperator {
   /// as cell values. Throws InvalidArgument for a shape that is not the grid's or a value that is
   /// not finite.
   void apply(const Field& pressure, const Field* qx, const Field* qy, std::array<Field, 3>& u);
+  /// u_x and u_y alone (u[2] is left as it was), under `pressure` (null: zero) and the tractions:
+  /// one transform of each given load and two inverse ones, against apply's three and three.
+  void apply_in_plane(const Field* pressure, const Field* qx, const Field* qy,
+                      std::array<Field, 3>& u);
 
   /// Bytes held: the kernels' spectra and the transform buffers.
   std::size_t memory_bytes() const { return convolution_.memory_bytes(); }
