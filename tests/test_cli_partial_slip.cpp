@@ -176,3 +176,54 @@ TEST_CASE("tangential_load with an [frf] table is refused", "[cli_partial_slip]"
       std::string(kSlip).replace(kSlip.find("[substrate]"), 0, "[frf]\npath = \"" + table + "\"\n");
   check_refused(scene, {"slip_frf", "", "", "[frf] table"});
 }
+
+TEST_CASE("a fretting step that does not converge is named, its output written, exit 3",
+          "[cli_partial_slip]") {
+  const fs::path out = scratch("slip_nc_out");
+  fs::remove_all(out);
+  const auto result = run_coatfft("run " +
+                                  write_scene(kSlip, "slip_nc", "tangential_load = 3.0",
+                                              "tangential_load = [1.5, 3.0]\nmax_iterations = 2")
+                                      .string() +
+                                  " -o " + out.string());
+  INFO(result.stderr_text);
+  CHECK(result.status == 3);
+  CHECK(result.stderr_text.find("partial slip: step 1 of 2 (tangential_load = 1.5) did not "
+                                "converge") != std::string::npos);
+  const nlohmann::json s = read_summary(out);
+  CHECK(s["converged"] == false);
+  CHECK(s["partial_slip"]["converged"] == false);
+  CHECK(s["fretting"]["steps"][0]["converged"] == false);
+  CHECK(npy_shape(out / "shear_x.npy") == "(2, 41, 41)");
+  CHECK(lines_of(out / "fretting.csv").size() == 3);
+}
+
+TEST_CASE("tangential_shift under approach control with an elastic ball, and its stresses",
+          "[cli_partial_slip]") {
+  // A steel ball on steel pressed by an approach: the couplings cancel (one normal solve), the
+  // shift path back and forth. [stress] takes the last step's tractions.
+  std::string scene = kSlip;
+  scene.replace(scene.find("E = 2e9\nnu = 0.4999"), std::string("E = 2e9\nnu = 0.4999").size(),
+                "material = \"steel\"");
+  scene.replace(scene.find("load = 20.0"), std::string("load = 20.0").size(),
+                "approach = 1.5e-6\nindenter_material = \"steel\"");
+  scene.replace(scene.find("tangential_load = 3.0"), std::string("tangential_load = 3.0").size(),
+                "tangential_shift = [2e-8, 4e-8, 0.0]");
+  const fs::path out = run_scene_ok(scene + "[stress]\ndepths = [5e-5]\n", "slip_shift_stress");
+  const nlohmann::json s = read_summary(out);
+  CHECK(s["converged"] == true);
+  const nlohmann::json& steps = s["fretting"]["steps"];
+  REQUIRE(steps.size() == 3);
+  CHECK(steps[1]["tangential_shift"].get<double>() == 4e-8);
+  CHECK(steps[1]["tangential_load"].get<double>() > steps[0]["tangential_load"].get<double>());
+  // Back at zero shift the hysteresis leaves a load against the motion.
+  CHECK(steps[2]["tangential_load"].get<double>() < 0.0);
+  CHECK(s["partial_slip"]["coupling_solves"] == 1);
+  CHECK(s["stress"]["tangential"] == true);
+  CHECK(npy_shape(out / "von_mises.npy") == "(1, 41, 41)");
+  double total = 0.0;
+  const double cell = std::pow(1.9902e-3 / 41, 2);
+  const std::vector<double> shear = npy_values(out / "shear_x.npy");
+  for (std::size_t k = 2 * 41 * 41; k < shear.size(); ++k) total += shear[k] * cell;
+  CHECK(total == Approx(steps[2]["tangential_load"].get<double>()).epsilon(1e-9));
+}
