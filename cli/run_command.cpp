@@ -88,8 +88,8 @@ void write_steps(const std::filesystem::path& path, const std::vector<Field>& fi
 void write_stick(const std::filesystem::path& path, const std::vector<StickMask>& masks,
                  bool path_run) {
   std::vector<std::uint8_t> bytes;
-  for (const StickMask& m : masks)
-    if (path_run || &m == &masks.back()) bytes.insert(bytes.end(), m.data(), m.data() + m.size());
+  for (std::size_t k = path_run ? 0 : masks.size() - 1; k < masks.size(); ++k)
+    bytes.insert(bytes.end(), masks[k].data(), masks[k].data() + masks[k].size());
   std::vector<std::size_t> shape = {static_cast<std::size_t>(masks.back().cols()),
                                     static_cast<std::size_t>(masks.back().rows())};
   if (path_run) shape.insert(shape.begin(), masks.size());

@@ -63,7 +63,7 @@ void fill_result(const Grid& grid, const detail::TangentialSolution& t, const Fi
   r.tangential_load = t.qx.sum() * area;
   r.lateral_load = t.qy.sum() * area;
   r.max_shear = size.maxCoeff();
-  r.step_energy = (size * (t.sx.square() + t.sy.square()).sqrt()).sum() * area;
+  r.step_energy = (size * slip).sum() * area;
   r.check = t.check;
 }
 
@@ -75,7 +75,7 @@ PartialSlipState rest_state(RelativeSurfaceResponse& response, const ContactResu
   s.qx = Field::Zero(normal.pressure.rows(), normal.pressure.cols());
   s.qy = s.qx;
   std::array<Field, 3> u;
-  response.apply(s.pressure, nullptr, nullptr, u);
+  response.apply_in_plane(&s.pressure, nullptr, nullptr, u);
   s.ux = std::move(u[0]);
   s.uy = std::move(u[1]);
   return s;

@@ -6,6 +6,22 @@
 
 namespace coatfft {
 
+namespace {
+
+// The tractions the indenter's surface receives, -q: the fields, and pointers that are null where
+// q is (a zero load).
+struct IndenterTractions {
+  Field x, y;
+  const Field *px, *py;
+  IndenterTractions(const Field* qx, const Field* qy)
+      : x(qx ? Field(-*qx) : Field()),
+        y(qy ? Field(-*qy) : Field()),
+        px(qx ? &x : nullptr),
+        py(qy ? &y : nullptr) {}
+};
+
+}  // namespace
+
 RelativeSurfaceResponse::RelativeSurfaceResponse(std::shared_ptr<CerrutiOperator> on_body,
                                                  std::shared_ptr<CerrutiOperator> on_indenter)
     : body_(std::move(on_body)), indenter_(std::move(on_indenter)) {
@@ -23,11 +39,9 @@ void RelativeSurfaceResponse::apply(const Field& pressure, const Field* qx, cons
                                     std::array<Field, 3>& u) {
   body_->apply(pressure, qx, qy, u);
   if (!indenter_) return;
-  // The indenter receives -q.
-  const Field mqx = qx ? Field(-*qx) : Field();
-  const Field mqy = qy ? Field(-*qy) : Field();
+  const IndenterTractions minus(qx, qy);
   std::array<Field, 3> i;
-  indenter_->apply(pressure, qx ? &mqx : nullptr, qy ? &mqy : nullptr, i);
+  indenter_->apply(pressure, minus.px, minus.py, i);
   u[0] -= i[0];
   u[1] -= i[1];
   u[2] += i[2];
@@ -37,10 +51,9 @@ void RelativeSurfaceResponse::apply_in_plane(const Field* pressure, const Field*
                                              const Field* qy, std::array<Field, 3>& u) {
   body_->apply_in_plane(pressure, qx, qy, u);
   if (!indenter_) return;
-  const Field mqx = qx ? Field(-*qx) : Field();
-  const Field mqy = qy ? Field(-*qy) : Field();
+  const IndenterTractions minus(qx, qy);
   std::array<Field, 3> i;
-  indenter_->apply_in_plane(pressure, qx ? &mqx : nullptr, qy ? &mqy : nullptr, i);
+  indenter_->apply_in_plane(pressure, minus.px, minus.py, i);
   u[0] -= i[0];
   u[1] -= i[1];
 }

@@ -22,8 +22,7 @@ inline double length(double x, double y) {
   return std::sqrt(x * x + y * y);
 }
 
-}  // namespace
-
+// Projects (qx, qy) cell by cell on the disks |q| <= bound (q = 0 where bound = 0).
 void project_tractions(const Field& bound, Field& qx, Field& qy) {
   for (Eigen::Index k = 0; k < bound.size(); ++k) {
     const double n = length(qx(k), qy(k));
@@ -32,8 +31,6 @@ void project_tractions(const Field& bound, Field& qx, Field& qy) {
     qy(k) *= scale;
   }
 }
-
-namespace {
 
 using Mask = Eigen::Array<bool, Eigen::Dynamic, Eigen::Dynamic>;
 

@@ -65,8 +65,7 @@ nlohmann::json last_step(const PartialSlipResult& r, int applications) {
           {"dissipated_energy", r.dissipated_energy},
           {"iterations", r.iterations},
           {"operator_applications", applications},
-          {"coupling_solves", r.coupling_solves},
-          {"converged", r.converged}};
+          {"coupling_solves", r.coupling_solves}};
 }
 
 }  // namespace

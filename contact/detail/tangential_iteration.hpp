@@ -50,7 +50,4 @@ TangentialSolution solve_tangential_load(RelativeSurfaceResponse& response,
                                          const TangentialProblem& problem, Field qx, Field qy,
                                          double guess, const TangentialSettings& settings);
 
-/// Projects (qx, qy) cell by cell on the disks |q| <= bound (q = 0 where bound = 0).
-void project_tractions(const Field& bound, Field& qx, Field& qy);
-
 }  // namespace coatfft::detail

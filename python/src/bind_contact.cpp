@@ -1,10 +1,8 @@
 // solve_contact and ContactResult: the Polonsky & Keer (1999) solver of contact/ on an Operator.
 #include <pybind11/stl.h>
 
-#include <algorithm>
 #include <cmath>
 #include <memory>
-#include <numbers>
 #include <optional>
 #include <vector>
 
@@ -16,6 +14,7 @@
 #include "convolution/operators/make_operator.hpp"
 #include "core/error.hpp"
 #include "operator.hpp"
+#include "solve_setup.hpp"
 #include "without_gil.hpp"
 
 namespace py = pybind11;
@@ -67,26 +66,6 @@ PyContactResult to_python(ContactResult&& r) {
   return out;
 }
 
-// The solver's options for a solve on `op` (`what` names the function in messages).
-ContactOptions contact_options(const Operator& op, bool approach_control, double tolerance,
-                               int max_iterations, bool preconditioned, const char* what) {
-  ContactOptions options;
-  options.tolerance = tolerance;
-  options.max_iterations = max_iterations;
-  options.preconditioned = preconditioned;
-  options.threads = op.threads();
-  // The approach is part of the result, unless the operator was built without g(0) (a named
-  // pipeline with g0 = "omitted"), which leaves the displacement's level unknown. Under approach
-  // control that level is what the approach is measured against: the solve would converge to a
-  // wrong load, so it is refused.
-  options.compute_approach = op.has_g0();
-  COATFFT_REQUIRE(options.compute_approach || !approach_control, what,
-                  ": approach control needs the displacement's level, but the "
-                  "operator was built with g0 = \"omitted\"; build it with g0 = \"regularized\" "
-                  "or \"quadrature\", or give a load");
-  return options;
-}
-
 PyContactResult solve_contact(Operator& op, const DoubleArray& height, std::optional<double> load,
                               std::optional<double> approach, double tolerance, int max_iterations,
                               bool preconditioned) {
@@ -126,13 +105,8 @@ PyContactResult solve_sliding(Operator& op, const DoubleArray& height, py::handl
   SlidingReport report;
   ContactResult result = without_gil([&] {
     const auto guard = op.lock();
-    TangentialOptions tangential;
-    tangential.threads = threads;
-    tangential.boundary = op.op().periodic() ? Boundary::periodic : Boundary::free;
-    std::shared_ptr<CerrutiOperator> surface =
-        make_tangential_operator(op.grid(), body, tangential).op;
     ContactSolver solver(op.op(), options);
-    return coatfft::solve_sliding(solver, traction_coupling(std::move(surface)), h,
+    return coatfft::solve_sliding(solver, traction_coupling(surface_response(op, body, threads)), h,
                                   load ? ContactControl::load : ContactControl::approach,
                                   load ? *load : *approach, sliding, &report);
   });

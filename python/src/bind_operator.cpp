@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <numbers>
 #include <optional>
 #include <string>
 #include <thread>
@@ -193,26 +192,6 @@ void bind_operator(py::module_& m) {
       "The operator of `body` (LayerStack, Material or Frf) on `grid`; keywords as the scene's "
       "[method] keys, and boundary = \"free\" or \"periodic\" as [grid] boundary "
       "(docs/python.md).");
-}
-
-// The normal displacement of one body and the tractions' of another would be added into one
-// gap, a result of no body. The two FRFs
-// are compared on the wavenumbers of the operator's grid (its longest period to its Nyquist),
-// where both are evaluated by the same code for the same body, and to 1e-6 where one is a table.
-void require_operator_body(const Operator& op, const LayerStack& body, const char* what) {
-  const Grid& g = op.grid();
-  const double k_min = 2.0 * std::numbers::pi / std::max(g.lx(), g.ly());
-  const double k_max = std::numbers::pi / std::min(g.dx(), g.dy());
-  const std::shared_ptr<const Frf> given = Body{body, nullptr}.response();
-  constexpr int samples = 16;
-  for (int n = 0; n < samples; ++n) {
-    const double k = k_min * std::pow(k_max / k_min, n / (samples - 1.0));
-    const double own = op.body_response()(k), other = (*given)(k);
-    COATFFT_REQUIRE(std::abs(own - other) <= 1e-6 * std::abs(own), what,
-                    ": body is not the body the operator was made for (their FRFs differ by ",
-                    std::abs(own - other) / std::abs(own), " at k = ", k,
-                    " 1/m): pass the operator's body");
-  }
 }
 
 }  // namespace coatfft::python

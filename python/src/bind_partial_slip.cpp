@@ -17,6 +17,7 @@
 #include "operator.hpp"
 #include "scene/partial_slip_run.hpp"
 #include "scene/scene_run.hpp"
+#include "solve_setup.hpp"
 #include "without_gil.hpp"
 
 namespace py = pybind11;
@@ -75,20 +76,11 @@ PyPartialSlip solve_partial_slip(Operator& op, const DoubleArray& height, py::ha
   const scene::ContactSpec spec =
       partial_slip_spec(friction, tangential_load ? *tangential_load : *tangential_shift,
                         tangential_load.has_value(), load, approach, tolerance);
-  ContactOptions options;
-  options.tolerance = tolerance;
-  options.max_iterations = max_iterations;
-  options.threads = op.threads();
-  options.compute_approach = op.has_g0();
-  COATFFT_REQUIRE(op.has_g0() || load,
-                  "solve_partial_slip: approach control needs the "
-                  "displacement's level: build the operator with g(0)");
+  const ContactOptions options = contact_options(op, approach.has_value(), tolerance,
+                                                 max_iterations, true, "solve_partial_slip");
   std::vector<PartialSlipResult> steps = without_gil([&] {
     const auto guard = op.lock();
-    TangentialOptions tangential;
-    tangential.threads = threads;
-    tangential.boundary = op.op().periodic() ? Boundary::periodic : Boundary::free;
-    RelativeSurfaceResponse response(make_tangential_operator(op.grid(), body, tangential).op);
+    RelativeSurfaceResponse response(surface_response(op, body, threads));
     ContactSolver solver(op.op(), options);
     scene::ProgressObserver silent;
     return scene::solve_scene_partial_slip(solver, response, spec, h, silent);

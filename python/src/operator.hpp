@@ -54,8 +54,4 @@ class Operator {
   Field displacement_;  // and its output, before it is copied out
 };
 
-/// Refuses (InvalidArgument, naming `what`) a body that is not the one `op` was made for: the
-/// tractions' response of one body must not be added to the normal displacement of another.
-void require_operator_body(const Operator& op, const LayerStack& body, const char* what);
-
 }  // namespace coatfft::python
