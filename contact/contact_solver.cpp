@@ -70,6 +70,10 @@ ContactSolver::ContactSolver(SurfaceOperator& op, ContactOptions options,
   COATFFT_REQUIRE(options_.max_iterations >= 1,
                   "ContactSolver: max_iterations = ", options_.max_iterations,
                   ", but it must be >= 1");
+  COATFFT_REQUIRE(
+      !options_.hardness || (std::isfinite(*options_.hardness) && *options_.hardness > 0),
+      "ContactSolver: hardness = ", options_.hardness.value_or(0.0),
+      " Pa, but it must be finite and > 0");
   if (options_.preconditioned) {
     // Applied once per iteration: FFTW_MEASURE pays for its planning from 2048^2 cells
     // (docs/contact.md, "Preconditioning").
@@ -118,19 +122,29 @@ ContactResult ContactSolver::solve(const Field& height, ContactControl control, 
 }
 
 std::vector<ContactResult> ContactSolver::solve_sweep(const Field& height, ContactControl control,
-                                                      std::vector<double> values) {
+                                                      std::vector<double> values, bool unload) {
   COATFFT_REQUIRE(!values.empty(), "ContactSolver: a sweep needs at least one value");
   for (const double value : values) {  // all before any work
     check_value(control, value);
     check_problem(height, control, value);
   }
   std::sort(values.begin(), values.end());
+  if (unload) {  // the unloading branch: the values below the largest, descending
+    const std::size_t n = values.size();
+    for (std::size_t k = n - 1; k-- > 0;)
+      if (values[k] < values[n - 1]) values.push_back(values[k]);
+  }
+  // Under a hardness the surface keeps the plastic depth of the steps before (a loading
+  // history): the heights of each step are the heights plus that depth.
+  Field depth;
+  Field carried;
+  if (options_.hardness) depth = Field::Zero(height.rows(), height.cols());
   std::vector<ContactResult> results;
   for (const double value : values) {
     Field start;
     const std::size_t k = results.size();
     if (options_.on_value) options_.on_value(k, values.size(), value);
-    if (k >= 2 && values[k - 1] > values[k - 2]) {
+    if (k >= 2 && values[k - 1] != values[k - 2]) {
       // The secant through the last two solutions: exact while the contact set holds (p is then
       // linear in the load and in the approach). A repeated value starts from its twin.
       const double t = (value - values[k - 1]) / (values[k - 1] - values[k - 2]);
@@ -138,8 +152,14 @@ std::vector<ContactResult> ContactSolver::solve_sweep(const Field& height, Conta
     } else if (k >= 1) {
       start = results[k - 1].pressure;
     }
-    results.push_back(run(height, control, value,
-                          k == 0 ? std::nullopt : std::optional<Field>(std::move(start))));
+    if (options_.hardness && k > 0) carried = height + depth;
+    const Field& h = options_.hardness && k > 0 ? carried : height;
+    results.push_back(
+        run(h, control, value, k == 0 ? std::nullopt : std::optional<Field>(std::move(start))));
+    if (options_.hardness) {
+      depth += results.back().plastic_depth;
+      results.back().plastic_depth = depth;
+    }
   }
   return results;
 }
@@ -155,6 +175,14 @@ void ContactSolver::check_problem(const Field& h, ContactControl control, double
                   ranks ? " (distributed: a rank's rows)" : "");
   COATFFT_REQUIRE(detail::all_over(ranks, h.allFinite()),
                   "ContactSolver: the height field has a non-finite entry");
+  if (control == ContactControl::load && options_.hardness) {
+    // No pressure within the cap carries more than the hardness times the domain's area.
+    const double capacity = *options_.hardness * grid.lx() * grid.ly();
+    COATFFT_REQUIRE(value < capacity, "ContactSolver: load = ", value,
+                    " N, but under hardness = ", *options_.hardness,
+                    " Pa it must stay below the hardness times the domain's area, ", capacity,
+                    " N (the whole surface at the hardness)");
+  }
   if (control == ContactControl::approach) {
     const double h_min = detail::extrema_over(ranks, h).min;
     COATFFT_REQUIRE(value > h_min, "ContactSolver: approach = ", value,
@@ -165,7 +193,9 @@ void ContactSolver::check_problem(const Field& h, ContactControl control, double
     // (the pressure would grow without bound). Full contact is reached as delta -> mean(h).
     const double h_mean =
         ranks ? detail::sum_over(ranks, h.sum()) / static_cast<double>(grid.nb_cells()) : h.mean();
-    COATFFT_REQUIRE(!op_.periodic() || value < h_mean, "ContactSolver: approach = ", value,
+    // Under a hardness the pressure is bounded: every approach has a solution.
+    COATFFT_REQUIRE(options_.hardness || !op_.periodic() || value < h_mean,
+                    "ContactSolver: approach = ", value,
                     " m, but on a periodic surface it must stay below mean(height) = ", h_mean,
                     " m (the displacement has zero mean: no contact solves a larger approach)");
   }
@@ -194,8 +224,10 @@ ContactResult ContactSolver::run(const Field& h, ContactControl control, double 
       "ContactSolver: load = ", value, " N and heights spanning ",
       detail::extrema_over(ranks_.get(), h).max - detail::extrema_over(ranks_.get(), h).min,
       " m are too far apart for double precision; rescale their units");
+  ContactOptions options = options_;  // the hardness in the scaled problem's units
+  if (options.hardness) *options.hardness /= s;
   detail::PolonskyKeerIteration iteration(op_, preconditioner_.get(), ranks_.get(),
-                                          s == 1.0 ? h : h_scaled, control, value / s, options_,
+                                          s == 1.0 ? h : h_scaled, control, value / s, options,
                                           std::move(start));
   const double start_seconds = detail::seconds_since(solve_start);
   iteration.timings() = ContactTimings{};  // the start's recomputations are the start's

@@ -98,6 +98,11 @@ struct ContactOptions {
   /// (0, 1, ...) in the sweep's ascending order, the number of values and the value, so that a
   /// caller's progress can say which value the iterations are of.
   std::function<void(std::size_t index, std::size_t count, double value)> on_value{};
+  /// The hardness H [Pa] of the softer surface, when set: the pressure is capped, 0 <= p <= H on
+  /// every cell, and the overlap of the cells at H is plastic depth (the elastic-perfectly-plastic
+  /// surface of Tian & Bhushan 1996 and Almqvist et al. 2007; docs/contact.md, "Hardness"). The
+  /// body below stays elastic. Unset: the elastic contact.
+  std::optional<double> hardness{};
 };
 
 /// Which quantity the solve prescribes.
@@ -173,6 +178,11 @@ struct ContactResult {
   /// The largest overlap max(0, -min g) [m] of the returned gap: 0 when no cell interpenetrates.
   /// A converged result has at most the gap's accuracy here (contact/complementarity.hpp).
   double max_penetration = 0;
+  /// With ContactOptions::hardness: the plastic depth [m] of every cell, the overlap -g of the
+  /// cells at the hardness (0 elsewhere), positive into the body; in a sweep with a hardness
+  /// (ContactSolver::solve_sweep) the depth accumulated over its steps, the permanent change of
+  /// the surface. Empty without a hardness.
+  Field plastic_depth;
   /// Human-readable notes, describe(*this, tolerance): empty when all is well. For display only;
   /// programs read status and touches_boundary.
   std::string warning;
@@ -230,8 +240,15 @@ class ContactSolver {
   /// value, in ascending order of value, each as solve would return it (its operator_applications
   /// its own). A neighbouring solution's contact set is close to the next one's, so a sweep costs
   /// fewer applications than the same solves started cold (bench/bench_load_sweep.cpp).
+  ///
+  /// `unload`: after the ascending values, the values below the largest in descending order
+  /// (the unloading branch; the results follow that order). With ContactOptions::hardness the
+  /// sweep is a loading history: each step's plastic depth is carried to the next as a
+  /// permanent change of the surface (the heights plus the depth so far), so the depth never
+  /// decreases (docs/contact.md, "Hardness"). Without a hardness the unloading branch repeats
+  /// the elastic solutions.
   std::vector<ContactResult> solve_sweep(const Field& height, ContactControl control,
-                                         std::vector<double> values);
+                                         std::vector<double> values, bool unload = false);
 
   const ContactOptions& options() const { return options_; }
   /// The grid of the operator the solver is bound to.

@@ -62,6 +62,7 @@ void unscale(ContactResult& result, double s, double value, const SolverRanks* r
     if (result.approach) *result.approach *= s;
     result.max_pressure *= s;
     result.max_penetration *= s;
+    result.plastic_depth *= s;
   }
   COATFFT_REQUIRE(
       std::isfinite(result.load) && std::isfinite(result.max_pressure) &&

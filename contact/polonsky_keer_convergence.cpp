@@ -9,13 +9,17 @@
 namespace coatfft::detail {
 
 // The discrete complementarity conditions on every cell, for the gap update_gap left (u exact):
-// p >= 0 holds by the projection; g >= -eps where p = 0 and |g| <= eps where p > 0 (p g = 0).
+// p >= 0 (and p <= cap) hold by the projection; g >= -eps where p = 0, |g| <= eps where
+// 0 < p < cap (p g = 0), and under a cap g <= eps where p = cap (the overlap there is plastic).
 // eps is detail::gap_tolerance (docs/contact.md, "Convergence").
 bool PolonskyKeerIteration::complementary(double tolerance) {
   const double* hd = h_.data();
   const double* pd = p_.data();
   const double* ud = u_.data();
   const double* gd = g_.data();
+  const double* vd = v_.size() > 0 ? v_.data() : nullptr;
+  const double s = scale_;
+  const double cap = cap_;
   struct Maxima {
     double u = 0.0, h = 0.0, violation = 0.0;
     Maxima& operator+=(const Maxima& o) {
@@ -25,18 +29,18 @@ bool PolonskyKeerIteration::complementary(double tolerance) {
       return *this;
     }
   };
-  const Maxima m = detail::over_ranks(
-      ranks_, over_cells<Maxima>(n_cells_, workers_, [&](auto first, auto last, Maxima& s) {
+  const Maxima maxima = detail::over_ranks(
+      ranks_, over_cells<Maxima>(n_cells_, workers_, [&](auto first, auto last, Maxima& m) {
         for (std::ptrdiff_t k = first; k < last; ++k) {
           const double g = gd[k] - g_mean_;
-          s.u = std::max(s.u, std::abs(ud[k]));
-          s.h = std::max(s.h, std::abs(hd[k]));
-          s.violation = std::max(s.violation, pd[k] > 0 ? std::abs(g) : -g);
+          m.u = std::max(m.u, std::abs(s * ud[k] + (vd ? vd[k] : 0.0)));
+          m.h = std::max(m.h, std::abs(hd[k]));
+          m.violation = std::max(m.violation, pd[k] >= cap ? g : pd[k] > 0 ? std::abs(g) : -g);
         }
       }));
-  const double u_max = scale_ * m.u;
-  const double largest_term = m.h + u_max + std::abs(delta_ + g_mean_);
-  return m.violation <= detail::gap_tolerance(tolerance, u_max, largest_term);
+  const double u_max = maxima.u;
+  const double largest_term = maxima.h + u_max + std::abs(delta_ + g_mean_);
+  return maxima.violation <= detail::gap_tolerance(tolerance, u_max, largest_term);
 }
 
 }  // namespace coatfft::detail

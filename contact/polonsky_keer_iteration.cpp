@@ -54,15 +54,32 @@ PolonskyKeerIteration::PolonskyKeerIteration(SurfaceOperator& op,
       working_(clear_mask(h)),
       direction_set_(clear_mask(h)),
       conjugation_(options.conjugation),
-      update_by_linearity_(options.update_by_linearity) {
+      update_by_linearity_(options.update_by_linearity),
+      cap_(options.hardness.value_or(std::numeric_limits<double>::infinity())),
+      capped_(options.hardness.has_value()) {
   if (conjugation_ == Conjugation::polak_ribiere) g_prev_ = zero_field(h);
   start(start_pressure.has_value());
+  if (capped_) start_under_cap();
 }
 
 void PolonskyKeerIteration::recompute_displacement() {
   const ScopedTimer timer(timings_.recomputations);
-  op_.apply(p_, u_);
+  if (v_.size() == 0) {
+    op_.apply(p_, u_);
+    ++applications_;
+    exact_ = true;
+    return;
+  }
+  // Under a cap the two parts (v_'s comment); r_ is free between steps.
+  r_ = (p_ < cap_).select(p_, 0.0);
+  op_.apply(r_, u_);
   ++applications_;
+  if (!plastic_exact_) {
+    r_ = (p_ >= cap_).select(p_, 0.0);
+    op_.apply(r_, v_);
+    ++applications_;
+    plastic_exact_ = true;
+  }
   exact_ = true;
 }
 
@@ -95,16 +112,23 @@ std::optional<ContactStatus> PolonskyKeerIteration::step(double tolerance) {
   // a steepest descent until the gaps meet eps (measured at a contrast of 1000: 880 such steps,
   // the residual below the tolerance all along, the gap error falling 10 % per 100 steps).
   if (widen_ && working.cells == n_contact) widen_ = false;
+  const bool widened = widen_;
   update_direction(working.cells);
   const std::optional<double> tau = step_length(working.cells);
   widen_ = false;
   if (!tau) {
     // No curvature along t: t vanished to rounding because the gap is uniform on I_c to
     // rounding (on a small working set Polak-Ribiere's beta cancels what is left of z), which
-    // is a solution if nothing overlaps; otherwise a true breakdown.
+    // is a solution if nothing overlaps; otherwise a true breakdown. Under a cap, I_c may be a
+    // cell or none (the others at the cap) while cells at the cap or outside violate their
+    // conditions: the next step takes those in.
     if (complementary(tolerance)) {
       residual_ = 0.0;
       return ContactStatus::converged;
+    }
+    if (capped_ && !widened) {
+      widen_ = true;
+      return std::nullopt;
     }
     return ContactStatus::non_positive_curvature;
   }
@@ -127,43 +151,70 @@ std::optional<ContactStatus> PolonskyKeerIteration::step(double tolerance) {
   return std::nullopt;
 }
 
-// Step 1: gap of the current pressure, g = h + u - delta; on the contact set I_c it should be
-// constant (load control: its mean is the unknown approach, g_mean_) or zero (approach control).
-// Returns the number of cells of I_c.
+// Step 1: gap of the current pressure, g = h + u - delta; on the contact set I_c (the cells
+// with 0 < p < cap) it should be constant (load control: its mean is the unknown approach,
+// g_mean_) or zero (approach control). Returns the number of cells with p > 0.
 std::ptrdiff_t PolonskyKeerIteration::update_gap() {
   const double* hd = h_.data();
   const double* pd = p_.data();
   const double* ud = u_.data();
+  const double* vd = v_.size() > 0 ? v_.data() : nullptr;
   double* gd = g_.data();
   const double s = scale_;
-  const CountSum contact = detail::over_ranks(
-      ranks_, over_cells<CountSum>(n_cells_, workers_, [&](auto first, auto last, CountSum& sums) {
+  const double cap = cap_;
+  struct Sums {
+    std::ptrdiff_t carrying = 0;
+    CountSum free;
+    double g_max = -std::numeric_limits<double>::infinity();  // over the carrying cells
+    Sums& operator+=(const Sums& o) {
+      carrying += o.carrying;
+      free += o.free;
+      g_max = std::max(g_max, o.g_max);
+      return *this;
+    }
+  };
+  const Sums sums = detail::over_ranks(
+      ranks_, over_cells<Sums>(n_cells_, workers_, [&](auto first, auto last, Sums& sum) {
         for (std::ptrdiff_t k = first; k < last; ++k) {
           gd[k] = hd[k] + s * ud[k] - delta_;
+          if (vd) gd[k] += vd[k];
           if (pd[k] > 0) {
-            ++sums.count;
-            sums.sum += gd[k];
+            ++sum.carrying;
+            sum.g_max = std::max(sum.g_max, gd[k]);
+            if (pd[k] < cap) {
+              ++sum.free.count;
+              sum.free.sum += gd[k];
+            }
           }
         }
       }));
-  if (contact.count > 0)
-    g_mean_ = load_control_ ? contact.sum / static_cast<double>(contact.count) : 0.0;
-  return contact.count;
+  if (!load_control_) {
+    g_mean_ = 0.0;
+  } else if (sums.free.count > 0) {
+    g_mean_ = sums.free.sum / static_cast<double>(sums.free.count);
+  } else if (sums.carrying > 0) {
+    // Every carrying cell at the cap: the approach is bounded, not fixed, by the cells; the
+    // least that leaves no cell at the cap with an open gap.
+    g_mean_ = sums.g_max;
+  }
+  return sums.carrying;
 }
 
 // The cells a step moves, marked in working_: I_c, and after a stop with overlaps also the
-// overlapping cells {p = 0, g < 0}. The preconditioner's input, P g, is written in the same pass
+// overlapping cells {p = 0, g < 0} and the cells at the cap that would carry less, {p = cap,
+// g > 0}. The preconditioner's input, P g, is written in the same pass
 // (update_direction).
 PolonskyKeerIteration::WorkingSet PolonskyKeerIteration::select_working_set() {
   const double* pd = p_.data();
   const double* gd = g_.data();
   unsigned char* wd = working_.data();
   double* zd = preconditioner_ ? preconditioner_->data() : nullptr;
+  const double cap = cap_;
   const CountSum working = detail::over_ranks(
       ranks_, over_cells<CountSum>(n_cells_, workers_, [&](auto first, auto last, CountSum& sums) {
         for (std::ptrdiff_t k = first; k < last; ++k) {
           const double g = gd[k] - g_mean_;
-          const bool in = pd[k] > 0 || (widen_ && g < 0.0);
+          const bool in = pd[k] >= cap ? widen_ && g > 0.0 : pd[k] > 0 || (widen_ && g < 0.0);
           wd[k] = in;
           if (in) {
             ++sums.count;
@@ -303,10 +354,12 @@ std::optional<double> PolonskyKeerIteration::step_length(std::ptrdiff_t n_workin
 }
 
 // Step 4: p <- max(p - tau t, 0) (t is zero off the working set); cells that overlap (p = 0,
-// g < 0) get pressure -tau g (and under Polonsky & Keer's rule restart the conjugation). The
-// displacement follows by linearity, u <- u - tau r, which stays exact unless the projection
-// changed a cell. The pending scale_ of p and u is applied here; the new pressure goes into
-// p_old_'s field, and the two are swapped.
+// g < 0) get pressure -tau g (and under Polonsky & Keer's rule restart the conjugation). Under a
+// cap, p <- min(p, cap), and cells at the cap whose gap opens (g > 0) get cap - tau g: the mirror
+// of the overlapping cells. The displacement follows by linearity, u <- u - tau r, which stays
+// exact unless the projection changed a cell (plastic_exact_ too, unless one reached or left
+// the cap). The pending scale_ of p and u is applied here; the new pressure goes into p_old_'s
+// field, and the two are swapped.
 PolonskyKeerIteration::Projected PolonskyKeerIteration::project(double tau) {
   const double* gd = g_.data();
   const double* td = t_.data();
@@ -317,14 +370,20 @@ PolonskyKeerIteration::Projected PolonskyKeerIteration::project(double tau) {
   double* ud = u_.data();
   const double s = scale_;
   const double g_mean = g_mean_;
+  const double cap = cap_;
   struct Sums {
-    double p = 0.0, change = 0.0;
-    bool projected = false, added = false;
+    double p = 0.0, change = 0.0, free = 0.0, free_max = 0.0;
+    std::ptrdiff_t at_cap = 0;
+    bool projected = false, added = false, plastic = false;
     Sums& operator+=(const Sums& o) {
       p += o.p;
       change += o.change;
+      free += o.free;
+      free_max = std::max(free_max, o.free_max);
+      at_cap += o.at_cap;
       projected = projected || o.projected;
       added = added || o.added;
+      plastic = plastic || o.plastic;
       return *this;
     }
   };
@@ -342,18 +401,33 @@ PolonskyKeerIteration::Projected PolonskyKeerIteration::project(double tau) {
             sum.added = true;
             sum.projected = true;
           }
+          if (pk >= cap) {  // never without a cap (infinity)
+            if (!wd[k] && gd[k] > g_mean) pk = std::max(0.0, cap - tau * (gd[k] - g_mean));
+            pk = std::min(pk, cap);
+          }
+          if ((pk >= cap || p_old >= cap) && pk != p_old) {
+            sum.plastic = true;
+            sum.projected = true;
+          }
           nd[k] = pk;
           ud[k] = s * ud[k] - tau * rd[k];
           sum.p += pk;
           sum.change += std::abs(pk - p_old);
+          if (pk >= cap) {
+            ++sum.at_cap;
+          } else {
+            sum.free += pk;
+            sum.free_max = std::max(sum.free_max, pk);
+          }
         }
       }));
   p_.swap(p_old_);
   old_scale_ = s;
   scale_ = 1.0;
   exact_ = exact_ && !sums.projected;
+  plastic_exact_ = plastic_exact_ && !sums.plastic;
   conjugate_ = conjugation_ == Conjugation::polak_ribiere || !sums.added;
-  return {sums.p, sums.change};
+  return {sums.p, sums.change, sums.free, sums.free_max, sums.at_cap};
 }
 
 // Step 5: under load control the pressure (and with it u) is scaled to the total load exactly,
@@ -362,6 +436,7 @@ PolonskyKeerIteration::Projected PolonskyKeerIteration::project(double tau) {
 // above without another pass: |s p - p_old| <= |p - p_old| + |s - 1| p. The bound is what the
 // tolerance is held to (a stop it allows, the measure allows too).
 double PolonskyKeerIteration::enforce_load(Projected projected) {
+  if (capped_ && load_control_) return restore_load_under_cap(projected);
   const double s = load_control_ ? value_ / (projected.p_sum * cell_area_) : 1.0;
   scale_ = s;
   return (projected.change + std::abs(s - 1.0) * projected.p_sum) / (s * projected.p_sum);

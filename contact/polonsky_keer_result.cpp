@@ -33,12 +33,18 @@ ContactResult PolonskyKeerIteration::result(ContactStatus status, int iterations
   p_ *= scale_;
   u_ *= scale_;
   scale_ = 1.0;
+  if (v_.size() > 0) u_ += v_;  // under a cap: the two parts
   const Mask contact = p_ > 0;
   const auto n_contact = detail::count_over(ranks_, contact.count());
+  // The approach is the mean of h + u over the cells below the cap (at it, h + u exceeds the
+  // approach by the plastic depth); over the carrying cells when all are at the cap.
+  const Mask free = contact && p_ < cap_;
+  const auto n_free = detail::count_over(ranks_, free.count());
   double approach = delta_;
   if (load_control_) {
-    approach = n_contact > 0 ? masked_mean(h_ + u_, contact, n_contact, ranks_)
-                             : detail::extrema_over(ranks_, h_).min;
+    approach = n_free > 0      ? masked_mean(h_ + u_, free, n_free, ranks_)
+               : n_contact > 0 ? masked_mean(h_ + u_, contact, n_contact, ranks_)
+                               : detail::extrema_over(ranks_, h_).min;
   }
   ContactResult result;
   result.control = control_;
@@ -59,8 +65,16 @@ ContactResult PolonskyKeerIteration::result(ContactStatus status, int iterations
   // A periodic surface has no edge: a contact crossing the period's border is just a contact.
   result.touches_boundary =
       !op_.periodic() && pressure_on_border(result.pressure, ranks_, op_.grid().ny());
-  result.max_penetration = ranks_ ? std::max(0.0, -detail::extrema_over(ranks_, result.gap).min)
-                                  : max_penetration(result.gap);
+  if (!capped_) {
+    result.max_penetration = ranks_ ? std::max(0.0, -detail::extrema_over(ranks_, result.gap).min)
+                                    : max_penetration(result.gap);
+    return result;
+  }
+  // Under a cap the overlap of the cells at it is plastic depth, not a penetration.
+  const Mask plastic = result.pressure >= cap_;
+  result.max_penetration =
+      std::max(0.0, -detail::extrema_over(ranks_, plastic.select(0.0, result.gap).eval()).min);
+  result.plastic_depth = plastic.select((-result.gap).max(0.0), 0.0);
   return result;
 }
 

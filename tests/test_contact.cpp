@@ -234,8 +234,10 @@ TEST_CASE("Load control does not depend on g(0); the approach shifts by c W", "[
                            << ", c W / delta = " << c * kLoad / hp.reference.approach);
   REQUIRE(res.converged);
   // In exact arithmetic the iterates are identical (the constant is removed with the mean over the
-  // contact set, of both g and K t); what remains is rounding (measured 3.4e-13 and 5e-14).
-  CHECK(rel_linf(res.pressure, ref.pressure) <= 2e-12);
+  // contact set, of both g and K t); what remains is rounding (measured 3.4e-13 and 5e-14 on one
+  // machine; the classic iteration, which amplifies rounding to its tolerance of 1e-12, 2.9e-12
+  // on another whose FFTW takes other codelets): a few times the tolerance.
+  CHECK(rel_linf(res.pressure, ref.pressure) <= (opts.preconditioned ? 2e-12 : 5e-12));
   CHECK(res.contact_area == ref.contact_area);
   CHECK(rel_linf(res.gap, ref.gap) <= 1e-10);
   // The approach carries the error: delta -> delta + c W (measured to 2e-14 relative to c W).

@@ -58,6 +58,7 @@ class PolonskyKeerIteration {
   };
 
   void start(bool warm);  // warm: p_ holds the pressure to start from
+  void start_under_cap();
   void start_from_pressure();
   void start_uniform();
   void start_hertzian();
@@ -86,9 +87,28 @@ class PolonskyKeerIteration {
   struct Projected {
     double p_sum;   // sum of the projected pressure, before the load's scaling
     double change;  // sum |p - p_old| of it
+    // Under a cap: the sum and the largest of the cells below it, and the cells at it.
+    double free_sum = 0.0, free_max = 0.0;
+    std::ptrdiff_t at_cap = 0;
   };
   Projected project(double tau);
   double enforce_load(Projected projected);
+  // The hardness's part of a load-controlled step (contact/polonsky_keer_cap.cpp).
+  struct CapLoad {
+    double load = 0.0;   // sum of min(cap, s p) over the cells, in pressure units
+    double slope = 0.0;  // its derivative in s: the sum of p over the cells below the cap
+    CapLoad& operator+=(const CapLoad& o) {
+      load += o.load;
+      slope += o.slope;
+      return *this;
+    }
+  };
+  CapLoad capped_load(double s);
+  Projected cap_sums();
+  std::optional<double> cap_scale(const Projected& sums);
+  double restore_load_under_cap(Projected projected);
+  double rescale_under_cap(double s, const double* previous);
+  void scale_all_below_cap(double s);
 
   SurfaceOperator& op_;
   detail::Preconditioner* preconditioner_;  // null: the classic, unpreconditioned iteration
@@ -130,6 +150,15 @@ class PolonskyKeerIteration {
   bool widen_ = false;
   int applications_ = 0;
   ContactTimings timings_;
+  // The hardness (ContactOptions::hardness; infinity without one): p <= cap_ on every cell. The
+  // displacement is then held in two parts, u_ = K p on the cells below the cap and v_ = K p on
+  // the cells at it (empty without a cap, and during the start): a step moves only the first, by
+  // linearity, and the load is restored by scaling only the first, so u_ stays exact until a
+  // cell reaches or leaves the cap (plastic_exact_: v_ is exact).
+  double cap_;
+  bool capped_;
+  Field v_;
+  bool plastic_exact_ = true;
 };
 
 }  // namespace coatfft::detail
