@@ -5,6 +5,7 @@
 #include "contact/contact_solver.hpp"
 #include "contact/indenter.hpp"
 #include "contact/partial_slip.hpp"
+#include "contact/plastic_report.hpp"
 #include "contact/sliding_contact.hpp"
 #include "contact/surface_response.hpp"
 #include "convolution/fft/fftw_wisdom.hpp"

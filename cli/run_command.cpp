@@ -110,18 +110,23 @@ void write_partial_slip(StagedOutput& out, const scene::OutputSpec& spec,
   }
 }
 
-// The .npy files: a sweep's uz, pressure and gap stacked, else one field each; stresses; ux, uy.
+// The .npy files: a sweep's uz, pressure, gap and plastic depth stacked, else one field each;
+// the residual gap; stresses; ux, uy.
 void write_npy_outputs(StagedOutput& out, const scene::OutputSpec& spec,
                        const scene::SceneRun& run) {
   if (run.sweep) {
     if (spec.uz) write_stacked(out.path("uz.npy"), run.sweep->uz);
     if (spec.pressure) write_stacked(out.path("pressure.npy"), run.sweep->pressure);
     if (spec.gap) write_stacked(out.path("gap.npy"), run.sweep->gap);
+    if (spec.plastic) write_stacked(out.path("plastic.npy"), run.sweep->plastic);
   } else {
     if (spec.uz) io::write_npy(out.path("uz.npy"), run.uz);
     if (spec.pressure) io::write_npy(out.path("pressure.npy"), run.pressure);
     if (spec.gap && run.gap) io::write_npy(out.path("gap.npy"), *run.gap);
+    if (spec.plastic && run.plastic) io::write_npy(out.path("plastic.npy"), *run.plastic);
   }
+  if (spec.residual_gap && run.residual_gap)
+    io::write_npy(out.path("residual_gap.npy"), *run.residual_gap);
   if (run.stress) write_stress_outputs(out, spec, run.grid, *run.stress);
   if (spec.in_plane && run.ux && run.uy) {
     io::write_npy(out.path("ux.npy"), *run.ux);

@@ -56,6 +56,15 @@ IterationEnd iterate_to_end(detail::PolonskyKeerIteration& iteration, const Cont
 
 }  // namespace
 
+std::vector<double> sweep_order(std::vector<double> values, bool unload) {
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  if (unload && n > 0)
+    for (std::size_t k = n - 1; k-- > 0;)
+      if (values[k] < values[n - 1]) values.push_back(values[k]);
+  return values;
+}
+
 ContactSolver::ContactSolver(SurfaceOperator& op, ContactOptions options)
     : ContactSolver(op, std::move(options), nullptr) {}
 
@@ -128,12 +137,7 @@ std::vector<ContactResult> ContactSolver::solve_sweep(const Field& height, Conta
     check_value(control, value);
     check_problem(height, control, value);
   }
-  std::sort(values.begin(), values.end());
-  if (unload) {  // the unloading branch: the values below the largest, descending
-    const std::size_t n = values.size();
-    for (std::size_t k = n - 1; k-- > 0;)
-      if (values[k] < values[n - 1]) values.push_back(values[k]);
-  }
+  values = sweep_order(std::move(values), unload);
   // Under a hardness the surface keeps the plastic depth of the steps before (a loading
   // history): the heights of each step are the heights plus that depth.
   Field depth;

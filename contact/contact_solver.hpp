@@ -194,6 +194,10 @@ struct ContactResult {
 /// iteration limit, joined by "; ". Empty for a converged solve inside the domain.
 std::string describe(const ContactResult& result, double tolerance);
 
+/// The order a sweep (ContactSolver::solve_sweep) solves `values` in: ascending, then with
+/// `unload` the values below the largest, descending (the unloading branch).
+std::vector<double> sweep_order(std::vector<double> values, bool unload);
+
 /// Polonsky-Keer solver bound to one operator (the operator must outlive the solver). Each
 /// iteration costs one operator application (plus one periodic FFT pair of the grid's size when
 /// preconditioned) and, now and then, one more to recompute the displacement exactly

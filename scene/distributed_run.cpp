@@ -78,6 +78,7 @@ std::string not_distributable(const Scene& scene) {
     if (contact.partial_slip())
       return "[contact] tangential_load or tangential_shift (a partial slip)";
     if (contact.friction > 0.0) return "[contact] friction";
+    if (contact.hardness) return "[contact] hardness";
   }
   if (scene.shear) return "[shear]";
   if (scene.stress) return "[stress]";

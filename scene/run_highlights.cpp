@@ -64,9 +64,13 @@ std::string hertz_note(const nlohmann::json& summary, const char* key, Format fo
 // The contact's lines: its radius (of the disk of equal area when the contact is not round) and
 // its peak pressure, each with Hertz's values where the summary has them.
 void add_contact_lines(const nlohmann::json& summary, std::vector<std::string>& lines) {
-  if (summary.contains("sweep") && number(summary, "load"))
-    lines.push_back("at the sweep's largest load, " + detail::brief(*number(summary, "load")) +
-                    " N:");
+  if (summary.contains("sweep") && number(summary, "load")) {
+    const nlohmann::json& rows = summary["sweep"];
+    const bool unloaded = !rows.empty() && rows.back().value("phase", "load") == "unload";
+    lines.push_back(
+        std::string(unloaded ? "at the end of the unloading, " : "at the sweep's largest load, ") +
+        detail::brief(*number(summary, "load")) + " N:");
+  }
   const auto radius = number(summary, "contact_radius"),
              equivalent = number(summary, "equivalent_radius");
   if (radius)
@@ -77,6 +81,14 @@ void add_contact_lines(const nlohmann::json& summary, std::vector<std::string>& 
                     " (of the disk of the contact's area; the contact is not round)");
   if (const auto peak = number(summary, "max_pressure"))
     lines.push_back("peak pressure " + stress(*peak) + hertz_note(summary, "max_pressure", stress));
+  if (summary.contains("plastic")) {
+    const nlohmann::json& plastic = summary["plastic"];
+    if (const auto fraction = number(plastic, "plastic_area_fraction"))
+      lines.push_back("plastic (at the hardness) on " + detail::brief(100 * *fraction) +
+                      " % of the contact area");
+    if (const auto depth = number(plastic, "max_plastic_depth"))
+      lines.push_back("largest plastic depth " + length(*depth));
+  }
 }
 
 // " (in the top coating, at the interface)": the medium a stress summary names ("coating 1" ...

@@ -6,6 +6,7 @@
 #include <string>
 #include <variant>
 
+#include "contact/plastic_report.hpp"
 #include "core/error.hpp"
 #include "scene/a_posteriori.hpp"
 #include "scene/frf_table_file.hpp"
@@ -169,6 +170,14 @@ void add_contact_summary(nlohmann::json& summary, const Scene& scene, const Cont
   summary["converged"] = result.converged;
   summary["status"] = to_string(result.status);
   summary["max_penetration"] = result.max_penetration;
+  if (spec.hardness) {
+    const PlasticReport plastic = plastic_report(result, *spec.hardness, scene.grid);
+    summary["plastic"] = {{"hardness", *spec.hardness},
+                          {"plastic_area", plastic.plastic_area},
+                          {"plastic_area_fraction", plastic.plastic_area_fraction},
+                          {"max_plastic_depth", plastic.max_plastic_depth},
+                          {"plastic_volume", plastic.plastic_volume}};
+  }
   if (!result.warning.empty()) {
     summary["warning"] = result.warning;
     summary["warnings"].push_back(result.warning);

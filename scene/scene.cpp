@@ -91,6 +91,23 @@ void check_partial_slip_outputs(Scene& scene) {
   output.fretting = partial_slip && scene.contact->tangential_path;
 }
 
+// A capped contact writes its plastic depth, and an unloading sweep its residual gap, by
+// default; an [output] fields list names those it wants, and only such a contact has them.
+void check_plastic_outputs(Scene& scene) {
+  OutputSpec& output = scene.output;
+  const bool capped = scene.contact && scene.contact->hardness;
+  const bool unloads = capped && scene.contact->unload;
+  if (!output.listed) {
+    output.plastic = capped;
+    output.residual_gap = unloads;
+  }
+  COATFFT_REQUIRE(!output.plastic || capped,
+                  "[output] fields: \"plastic\" needs a capped contact: [contact] hardness");
+  COATFFT_REQUIRE(!output.residual_gap || unloads,
+                  "[output] fields: \"residual_gap\" needs an unloading sweep: [contact] "
+                  "hardness, a list of loads or approaches and unload = true");
+}
+
 // [shear], with a known [pressure]; its files are inputs of the run.
 void read_shear_loads(const toml::table& root, const std::filesystem::path& scene_dir,
                       Scene& scene) {
@@ -194,6 +211,7 @@ Scene read_scene(const std::filesystem::path& path, const SceneReading& reading)
                                   : "[contact] tangential_shift");
     check_partial_slip_outputs(scene);
     if (scene.contact && !scene.contact->sweep.empty()) check_sweep(scene);
+    check_plastic_outputs(scene);
     // The in-plane surface displacements (ux.npy, uy.npy), with tangential tractions or stresses,
     // of a bonded body whose traction kernels are affordable (checked above when tractions act):
     // on a periodic surface its periodic kernels.

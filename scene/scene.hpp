@@ -104,6 +104,17 @@ struct ContactSpec {
   bool partial_slip() const { return !tangential.empty(); }
   /// Full sliding: friction without a tangential load or shift (q_x = friction p).
   bool full_sliding() const { return friction > 0.0 && tangential.empty(); }
+  /// [contact] hardness [Pa]: the pressure capped at H, the overlap of the cells at H plastic
+  /// depth (ContactOptions::hardness; docs/contact.md, "Hardness"). Unset: elastic.
+  std::optional<double> hardness;
+  /// [contact] unload = true (a sweep only): after the ascending values the values below the
+  /// largest, descending, each from the previous state (ContactSolver::solve_sweep).
+  bool unload = false;
+  /// The values of a sweep in the order they are solved: ascending, then with unload the
+  /// unloading branch. Empty for one value.
+  std::vector<double> solved_values() const;
+  /// The number of a sweep's values on its loading branch (the rest unload).
+  std::size_t loading_steps() const { return sweep.size(); }
   /// A measured topography's report for summary.json (scene/scene_topography.hpp); null for
   /// an indenter.
   nlohmann::json topography;
@@ -146,6 +157,10 @@ struct OutputSpec {
   bool stick = false;
   bool slip = false;
   bool fretting = false;
+  /// Under [contact] hardness: plastic.npy, the plastic depth [m] (stacked one per value for a
+  /// sweep), and with unload residual_gap.npy, the gap the permanent surface leaves at zero load.
+  bool plastic = false;
+  bool residual_gap = false;
 };
 
 /// [shear]: known tangential tractions that the surface receives, with a [pressure]: q = friction

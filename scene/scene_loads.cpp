@@ -3,11 +3,13 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <utility>
 #include <variant>
 #include <vector>
 
+#include "contact/contact_solver.hpp"
 #include "contact/indenter.hpp"
 #include "core/error.hpp"
 #include "io/grid_file.hpp"
@@ -186,6 +188,35 @@ void read_tangential(SectionReader& reader, ContactSpec& spec) {
                     " N (full sliding is [contact] friction without a tangential load)");
 }
 
+// [contact] hardness [Pa] and unload: the capped pressure (docs/scene_format.md). The load the
+// whole domain carries at the hardness bounds every load; unload runs a sweep's values back.
+void read_hardness(SectionReader& reader, const Grid& grid, ContactSpec& spec) {
+  if (reader.has("hardness")) {
+    const double hardness = reader.number("hardness");
+    COATFFT_REQUIRE(std::isfinite(hardness) && hardness > 0, reader.where("hardness"), " = ",
+                    hardness, " Pa must be finite and > 0");
+    spec.hardness = hardness;
+    COATFFT_REQUIRE(spec.friction == 0.0, reader.where("hardness"),
+                    " is not combined with friction yet: the capped contact is frictionless "
+                    "(no tangential_load, tangential_shift or friction)");
+    const double capacity = hardness * grid.lx() * grid.ly();
+    if (spec.load) {
+      const double largest = spec.sweep.empty() ? *spec.load : spec.sweep.back();
+      COATFFT_REQUIRE(largest < capacity, reader.where("load"), " = ", largest,
+                      " N: under hardness = ", hardness,
+                      " Pa no load reaches the whole domain at the hardness, ", capacity, " N");
+    }
+  }
+  spec.unload = reader.boolean("unload", false);
+  if (!spec.unload) return;
+  COATFFT_REQUIRE(!spec.sweep.empty(), reader.where("unload"),
+                  " = true needs a list of loads or approaches (the values to load through "
+                  "and unload back)");
+  COATFFT_REQUIRE(spec.hardness.has_value(), reader.where("unload"),
+                  " = true needs hardness: the unloading of an elastic contact repeats its "
+                  "loading");
+}
+
 // [contact] indenter_material, or indenter_E and indenter_nu: an elastic indenter, through the
 // composite modulus of a homogeneous body.
 void read_elastic_indenter(SectionReader& reader, const LayerStack* stack_body, ContactSpec& spec) {
@@ -213,6 +244,7 @@ ContactSpec read_contact(const toml::table& table, const SceneContext& context,
   read_indenter(reader, context, spec);
   read_contact_control(reader, spec);
   read_tangential(reader, spec);
+  read_hardness(reader, grid, spec);
   read_elastic_indenter(reader, stack_body, spec);
   // Catch geometry errors (a sphere smaller than the domain) before any work is done; a height
   // map whose values were not read was checked as far as its header goes.
@@ -220,6 +252,10 @@ ContactSpec read_contact(const toml::table& table, const SceneContext& context,
     in_section("contact", [&] { check_indenter(grid, spec.indenter); });
   reader.finish();
   return spec;
+}
+
+std::vector<double> ContactSpec::solved_values() const {
+  return sweep_order(sweep, unload);
 }
 
 ShearSpec read_shear(const toml::table& root, const std::filesystem::path& scene_dir) {

@@ -145,7 +145,9 @@ io::NetcdfVariable field_variable(std::string_view name, std::span<const double>
       {"shear_y", described("Pa", "tangential traction along y on the body's surface")},
       {"slip_x", described("m", "slip along x over the step")},
       {"slip_y", described("m", "slip along y over the step")},
-      {"stick", described("1", "1 where the contact sticks, 0 elsewhere")}};
+      {"stick", described("1", "1 where the contact sticks, 0 elsewhere")},
+      {"plastic", described("m", "plastic depth: permanent, into the body")},
+      {"residual_gap", described("m", "gap the permanent surface leaves at zero load")}};
   return {std::string(name), std::move(leading), values, attributes.at(name)};
 }
 
@@ -180,6 +182,12 @@ void write_run_netcdf(const std::filesystem::path& path, const OutputSpec& spec,
   if (spec.gap && (run.gap || run.sweep))
     d.variables.push_back(
         field_variable("gap", run.sweep ? stacked(run.sweep->gap, gap) : values(*run.gap), sweep));
+  std::vector<double> plastic;
+  if (spec.plastic && run.plastic)
+    d.variables.push_back(field_variable(
+        "plastic", run.sweep ? stacked(run.sweep->plastic, plastic) : values(*run.plastic), sweep));
+  if (spec.residual_gap && run.residual_gap)
+    d.variables.push_back(field_variable("residual_gap", *run.residual_gap));
   if (spec.in_plane && run.ux && run.uy) {
     d.variables.push_back(field_variable("ux", *run.ux));
     d.variables.push_back(field_variable("uy", *run.uy));

@@ -27,7 +27,7 @@ struct OutputField {
   std::string_view name;
   bool OutputSpec::*flag;
 };
-constexpr std::array<OutputField, 14> output_fields{
+constexpr std::array<OutputField, 16> output_fields{
     {{"uz", &OutputSpec::uz},
      {"pressure", &OutputSpec::pressure},
      {"gap", &OutputSpec::gap},
@@ -41,7 +41,9 @@ constexpr std::array<OutputField, 14> output_fields{
      {"von_mises_interfaces", &OutputSpec::von_mises_interfaces},
      {"shear", &OutputSpec::shear},
      {"stick", &OutputSpec::stick},
-     {"slip", &OutputSpec::slip}}};
+     {"slip", &OutputSpec::slip},
+     {"plastic", &OutputSpec::plastic},
+     {"residual_gap", &OutputSpec::residual_gap}}};
 
 // Sets the flag of one name of [output] fields, refusing an unknown name and "gap" for a scene
 // that has none.

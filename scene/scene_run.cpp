@@ -11,6 +11,7 @@
 
 #include "contact/contact_solver.hpp"
 #include "contact/indenter.hpp"
+#include "contact/plastic_report.hpp"
 #include "contact/sliding_contact.hpp"
 #include "convolution/fft/fftw_wisdom.hpp"
 #include "convolution/operators/cerruti_operator.hpp"
@@ -148,8 +149,10 @@ ContactResult solve_scene_contact(ContactSolver& solver, const Scene& scene,
   return result;
 }
 
-// One value of a sweep: a row of sweep.csv and of summary.json's "sweep".
-nlohmann::json sweep_row(const Grid& grid, const ContactResult& r) {
+// One value of a sweep: a row of sweep.csv and of summary.json's "sweep"; plastic_area is 0
+// without a hardness.
+nlohmann::json sweep_row(const Grid& grid, const ContactResult& r,
+                         const std::optional<double>& hardness, bool unloading) {
   return {{"load", r.load},
           {"approach", r.approach ? nlohmann::json(*r.approach) : nlohmann::json()},
           {"area_fraction", r.contact_area / (grid.lx() * grid.ly())},
@@ -159,7 +162,9 @@ nlohmann::json sweep_row(const Grid& grid, const ContactResult& r) {
           {"operator_applications", r.operator_applications},
           {"coarse_applications", r.coarse_applications},
           {"converged", r.converged},
-          {"max_penetration", r.max_penetration}};
+          {"max_penetration", r.max_penetration},
+          {"plastic_area", hardness ? plastic_report(r, *hardness, grid).plastic_area : 0.0},
+          {"phase", unloading ? "unload" : "load"}};
 }
 
 // Whether the contact of any solve reaches the border cells of a measured topography's map;
@@ -185,7 +190,8 @@ std::vector<ContactResult> solve_contacts(ContactSolver& solver, const Scene& sc
   const ContactSpec& spec = *scene.contact;
   const ContactControl control = spec.load ? ContactControl::load : ContactControl::approach;
   try {
-    if (!spec.sweep.empty()) return solver.solve_sweep(height_field, control, spec.sweep);
+    if (!spec.sweep.empty())
+      return solver.solve_sweep(height_field, control, spec.sweep, spec.unload);
     std::vector<ContactResult> one;
     one.push_back(solve_scene_contact(solver, scene, surface, height_field, coupling, progress));
     return one;
@@ -200,30 +206,33 @@ std::vector<ContactResult> solve_contacts(ContactSolver& solver, const Scene& sc
 }
 
 // The refusal of a contact that reaches the domain edge, naming the first value of a sweep whose
-// contact does (the others' are larger: a sweep is solved in ascending order).
+// contact does (the loading branch's later values are larger: solved in ascending order).
 std::string domain_edge_message(const ContactSpec& spec,
                                 const std::vector<ContactResult>& results) {
   if (spec.sweep.empty()) return domain_edge_refusal;
+  const std::vector<double> values = spec.solved_values();
   std::size_t k = 0;
   while (k + 1 < results.size() && !results[k].touches_boundary) ++k;
   const char* key = spec.load ? "load" : "approach";
-  return detail::concat(domain_edge_refusal, " (first at [contact] ", key, " = ", spec.sweep[k],
+  return detail::concat(domain_edge_refusal, " (first at [contact] ", key, " = ", values[k],
                         spec.load ? " N" : " m", ", value ", k + 1, " of the sweep's ",
-                        spec.sweep.size(), ")");
+                        values.size(), ")");
 }
 
 // A sweep's outputs: every value's fields, stacked by the writer, and its rows; the summary's
-// other contact keys are the largest value's, and it converged when every value did.
-void add_sweep(SceneRun& run, std::vector<ContactResult>& results) {
+// other contact keys are the last solve's, and it converged when every value did.
+void add_sweep(SceneRun& run, std::vector<ContactResult>& results, const ContactSpec& spec) {
   nlohmann::json rows = nlohmann::json::array();
   SweepFields fields;
   bool converged = true;
-  for (ContactResult& r : results) {
-    rows.push_back(sweep_row(run.grid, r));
+  for (std::size_t k = 0; k < results.size(); ++k) {
+    ContactResult& r = results[k];
+    rows.push_back(sweep_row(run.grid, r, spec.hardness, k >= spec.loading_steps()));
     converged = converged && r.converged;
     fields.pressure.push_back(std::move(r.pressure));
     fields.uz.push_back(std::move(r.displacement));
     fields.gap.push_back(std::move(r.gap));
+    if (spec.hardness) fields.plastic.push_back(std::move(r.plastic_depth));
   }
   run.summary["sweep"] = rows;
   run.summary["converged"] = converged;
@@ -269,7 +278,8 @@ SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat,
   const bool topography = !spec.topography.is_null();
   const bool map_edge = topography && topography_edge_contact(results, spec.topography_pad);
   COATFFT_REQUIRE(!touches || topography, domain_edge_message(spec, results));
-  // The largest value's: the summary's contact keys (a sweep keeps every value's fields too).
+  // The last solve's (the largest value's, or the last unloading step's): the summary's contact
+  // keys (a sweep keeps every value's fields too).
   ContactResult result = spec.sweep.empty() ? std::move(results.back()) : results.back();
 
   progress.stage(applications_stage(repeat));
@@ -288,7 +298,11 @@ SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat,
                std::move(result.gap),
                std::move(summary),
                result.converged ? RunStatus::ok : RunStatus::not_converged};
-  if (!spec.sweep.empty()) add_sweep(run, results);
+  if (spec.hardness) {
+    if (spec.unload) run.residual_gap = residual_gap(height_field, result.plastic_depth);
+    run.plastic = std::move(result.plastic_depth);
+  }
+  if (!spec.sweep.empty()) add_sweep(run, results, spec);
   if (!slip_steps.empty()) add_partial_slip(run, slip_steps, spec);
   return run;
 }
@@ -380,14 +394,15 @@ std::string sweep_csv(const nlohmann::json& rows) {
   std::ostringstream csv;
   csv.precision(std::numeric_limits<double>::max_digits10);
   csv << "load,approach,area_fraction,max_pressure,mean_gap,iterations,operator_applications,"
-         "converged,max_penetration\n";
+         "converged,max_penetration,plastic_area,phase\n";
   for (const nlohmann::json& r : rows) {
     csv << r["load"].get<double>() << ',';
     if (!r["approach"].is_null()) csv << r["approach"].get<double>();
     csv << ',' << r["area_fraction"].get<double>() << ',' << r["max_pressure"].get<double>() << ','
         << r["mean_gap"].get<double>() << ',' << r["iterations"].get<int>() << ','
         << r["operator_applications"].get<int>() << ',' << (r["converged"].get<bool>() ? 1 : 0)
-        << ',' << r["max_penetration"].get<double>() << '\n';
+        << ',' << r["max_penetration"].get<double>() << ',' << r["plastic_area"].get<double>()
+        << ',' << r["phase"].get<std::string>() << '\n';
   }
   return csv.str();
 }

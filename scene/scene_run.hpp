@@ -26,9 +26,10 @@ namespace coatfft::scene {
 enum class RunStatus { ok, not_converged };
 
 /// What a run of a scene computes: the fields and summary.json's object.
-/// The fields of a [contact] sweep, one per value in ascending order, each (nx, ny).
+/// The fields of a [contact] sweep, one per value in the order solved (ascending, then with
+/// [contact] unload the unloading branch), each (nx, ny); plastic under [contact] hardness.
 struct SweepFields {
-  std::vector<Field> pressure, uz, gap;
+  std::vector<Field> pressure, uz, gap, plastic;
 };
 
 /// The fields of a partial slip, one per step of its path in the order given (one for a single
@@ -51,8 +52,13 @@ struct SceneRun {
   std::optional<StressRun> stress = std::nullopt;  ///< [stress] scenes only
   /// The in-plane surface displacements [m] of a [stress] scene on a homogeneous body.
   std::optional<Field> ux = std::nullopt, uy = std::nullopt;
-  /// A [contact] sweep: every value's fields (pressure, uz and gap above are the largest
-  /// value's), and summary["sweep"] its rows (sweep_csv).
+  /// Under [contact] hardness: the plastic depth [m] of the summary's solve (the cells at H
+  /// have it; a sweep's accumulated), and after an unloading sweep the residual gap [m]: the
+  /// heights plus the permanent depth, less their minimum (the surface at zero load).
+  std::optional<Field> plastic = std::nullopt, residual_gap = std::nullopt;
+  /// A [contact] sweep: every value's fields (pressure, uz and gap above are the last solve's:
+  /// the largest value's, or with unload the last unloading step's), and summary["sweep"] its
+  /// rows (sweep_csv).
   std::optional<SweepFields> sweep = std::nullopt;
   /// A partial slip ([contact] tangential_load or tangential_shift): every step's fields
   /// (pressure, uz and gap above are the last step's), summary["partial_slip"] the last step's
@@ -62,7 +68,8 @@ struct SceneRun {
 
 /// sweep.csv of a sweep's rows (summary.json's "sweep"): a header line, then per value load,
 /// approach (empty when not reported), area_fraction, max_pressure, mean_gap, iterations,
-/// operator_applications, converged (1 or 0), max_penetration, at full precision.
+/// operator_applications, converged (1 or 0), max_penetration, plastic_area (0 without a
+/// hardness), phase ("load", or "unload" on an unloading branch), at full precision.
 std::string sweep_csv(const nlohmann::json& rows);
 
 /// fretting.csv of a path's rows (summary.json's "fretting" "steps"): a header line, then per step

@@ -8,7 +8,6 @@
 // box (and the load's hyperplane) made exactly, by bisection on its shift.
 #include <algorithm>
 #include <cmath>
-#include <optional>
 
 #include "contact/contact_solver.hpp"
 #include "convolution/operators/surface_operator.hpp"
@@ -16,16 +15,14 @@
 
 namespace coatfft::test {
 
-// The Euclidean projection of y onto {0 <= p <= cap}, and with a load onto its intersection with
-// {sum p = load_sum}: p = clip(y - c, 0, cap), the shift c found by bisection (sum p is
-// monotone in c).
-inline Field project_onto_box(const Field& y, double cap, std::optional<double> load_sum) {
-  if (!load_sum) return y.max(0.0).min(cap);
+// The Euclidean projection of y onto {0 <= p <= cap} and {sum p = load_sum}: p = clip(y - c, 0,
+// cap), the shift c found by bisection (sum p is monotone in c).
+inline Field project_onto_loaded_box(const Field& y, double cap, double load_sum) {
   const auto sum_at = [&](double c) { return (y - c).max(0.0).min(cap).sum(); };
   double lo = y.minCoeff() - cap, hi = y.maxCoeff();  // sum_at(lo) = n cap, sum_at(hi) = 0
   for (int k = 0; k < 200 && hi - lo > 1e-16 * (std::abs(lo) + std::abs(hi)); ++k) {
     const double mid = 0.5 * (lo + hi);
-    (sum_at(mid) > *load_sum ? lo : hi) = mid;
+    (sum_at(mid) > load_sum ? lo : hi) = mid;
   }
   return (y - 0.5 * (lo + hi)).max(0.0).min(cap);
 }
@@ -56,16 +53,18 @@ inline BoxQpSolution solve_box_qp(SurfaceOperator& op, const Field& h, double ca
                                   int max_iterations = 200000) {
   const double step = 1.0 / largest_eigenvalue(op);
   const double cell_area = op.grid().dx() * op.grid().dy();
-  const std::optional<double> load_sum =
-      control == ContactControl::load ? std::optional<double>(value / cell_area) : std::nullopt;
-  const Field linear = control == ContactControl::load ? h : Field(h - value);
-  Field p = project_onto_box(Field::Zero(h.rows(), h.cols()), cap, load_sum);
+  const bool loaded = control == ContactControl::load;
+  const auto project = [&](const Field& y) {
+    return loaded ? project_onto_loaded_box(y, cap, value / cell_area) : Field(y.max(0.0).min(cap));
+  };
+  const Field linear = loaded ? h : Field(h - value);
+  Field p = project(Field::Zero(h.rows(), h.cols()));
   Field y = p;
   double t = 1.0;
   BoxQpSolution s;
   for (s.iterations = 1; s.iterations <= max_iterations; ++s.iterations) {
     const Field gradient = op.apply(y) + linear;
-    const Field next = project_onto_box(y - step * gradient, cap, load_sum);
+    const Field next = project(y - step * gradient);
     s.step_change = (next - p).abs().maxCoeff() / cap;
     // Restart when the momentum points uphill (gradient-based test).
     const bool restart = (gradient * (next - p)).sum() > 0;

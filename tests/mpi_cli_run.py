@@ -275,6 +275,7 @@ def main():
         refused(tmp, "[shear] does not run distributed yet",
                 (SCENES / "coated_hertz_shear.toml").read_text())
         refused(tmp, "[contact] friction", rough + "friction = 0.3\n")
+        refused(tmp, "[contact] hardness", rough + "hardness = 1e9\n")
         bad = heights.max() - heights
         bad[37, 5] = np.nan
         np.save(tmp / "gap.npy", bad)

@@ -40,9 +40,11 @@ TEST_CASE("[contact] load = [...] solves a sweep: every value as its own run", "
   CHECK(s["converged"] == true);
   const std::vector<std::string> csv = lines_of(out / "sweep.csv");
   REQUIRE(csv.size() == 4);
+  // The columns scripts read by position stay first; later ones are appended.
   CHECK(csv[0] ==
         "load,approach,area_fraction,max_pressure,mean_gap,iterations,operator_applications,"
-        "converged,max_penetration");
+        "converged,max_penetration,plastic_area,phase");
+  for (int k = 1; k <= 3; ++k) CHECK(csv[k].ends_with(",0,load"));  // elastic, loading
   const std::vector<double> sweep_p = npy_values(out / "pressure.npy");
   const double loads[3] = {10.0, 20.0, 40.0};  // ascending
   for (int k = 0; k < 3; ++k) {

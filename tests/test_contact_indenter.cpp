@@ -124,9 +124,9 @@ TEST_CASE("A slab's rows of any indenter are those rows of its whole height fiel
   // Rows sampled alone (a distributed solve's slab) against the whole field's, bit for bit.
   const Grid grid(9, 7, 2.0e-3, 1.5e-3);
   Field m = Field::Random(9, 7);
-  for (const Indenter& ind : {Indenter{Sphere{5e-3}}, Indenter{Paraboloid{4e-3}},
-                              Indenter{Cylinder{3e-3, 0.5e-3, 1e-3}},
-                              Indenter{FlatPunch{0.4e-3, 1e-3}}, Indenter{HeightMap{m}}}) {
+  for (const Indenter& ind :
+       {Indenter{Sphere{5e-3}}, Indenter{Paraboloid{4e-3}}, Indenter{Cylinder{3e-3, 0.5e-3, 1e-3}},
+        Indenter{FlatPunch{0.4e-3, 1e-3}}, Indenter{HeightMap{m}}}) {
     const Field whole = height(grid, ind);
     for (auto [y0, rows] : {std::pair{0, 7}, {2, 3}, {6, 1}, {7, 0}})
       CHECK((height_rows(grid, ind, y0, rows) == whole.middleCols(y0, rows)).all());

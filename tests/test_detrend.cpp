@@ -17,7 +17,8 @@ TEST_CASE("detrend: a plane and a mean are removed, a surface without them is ke
     Field s(g.nx(), g.ny());
     for (Eigen::Index j = 0; j < g.ny(); ++j)
       for (Eigen::Index i = 0; i < g.nx(); ++i)
-        s(i, j) = 1e-6 * std::cos(2 * M_PI * g.x(i) / g.lx()) * std::cos(2 * M_PI * g.y(j) / g.ly());
+        s(i, j) =
+            1e-6 * std::cos(2 * M_PI * g.x(i) / g.lx()) * std::cos(2 * M_PI * g.y(j) / g.ly());
     Field tilted(g.nx(), g.ny());
     for (Eigen::Index j = 0; j < g.ny(); ++j)
       for (Eigen::Index i = 0; i < g.nx(); ++i)
