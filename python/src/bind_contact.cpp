@@ -4,12 +4,14 @@
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "bodies.hpp"
 #include "contact/contact_solver.hpp"
+#include "contact/plastic_report.hpp"
 #include "contact/sliding_contact.hpp"
 #include "convolution/operators/make_operator.hpp"
 #include "core/error.hpp"
@@ -42,10 +44,30 @@ struct PyContactResult {
   double max_penetration = 0.0;
   std::string warning;
   py::object friction_coupling = py::none();  // solve_sliding's report, as summary.json's
+  // Under a hardness: the plastic depth and summary.json's "plastic" (plastic_report); a
+  // sweep's "load" or "unload" branch.
+  py::object plastic_depth = py::none(), plastic = py::none(), phase = py::none();
 };
 
-PyContactResult to_python(ContactResult&& r) {
+// summary.json's "plastic" of a result solved under `hardness`.
+py::dict plastic_dict(const ContactResult& r, double hardness, const Grid& grid) {
+  const PlasticReport report = plastic_report(r, hardness, grid);
+  py::dict d;
+  d["hardness"] = hardness;
+  d["plastic_area"] = report.plastic_area;
+  d["plastic_area_fraction"] = report.plastic_area_fraction;
+  d["max_plastic_depth"] = report.max_plastic_depth;
+  d["plastic_volume"] = report.plastic_volume;
+  return d;
+}
+
+PyContactResult to_python(ContactResult&& r, const std::optional<double>& hardness = std::nullopt,
+                          const Grid* grid = nullptr) {
   PyContactResult out;
+  if (hardness && grid) {
+    out.plastic = plastic_dict(r, *hardness, *grid);
+    out.plastic_depth = array_from_field(std::move(r.plastic_depth));
+  }
   out.pressure = array_from_field(std::move(r.pressure));
   out.displacement = array_from_field(std::move(r.displacement));
   out.gap = array_from_field(std::move(r.gap));
@@ -68,18 +90,19 @@ PyContactResult to_python(ContactResult&& r) {
 
 PyContactResult solve_contact(Operator& op, const DoubleArray& height, std::optional<double> load,
                               std::optional<double> approach, double tolerance, int max_iterations,
-                              bool preconditioned) {
+                              bool preconditioned, std::optional<double> hardness) {
   COATFFT_REQUIRE(load.has_value() != approach.has_value(),
                   "solve_contact: give exactly one of load [N] and approach [m]");
   const Field h = field_from_array(height, op.grid(), "solve_contact: height");
-  const ContactOptions options = contact_options(op, approach.has_value(), tolerance,
-                                                 max_iterations, preconditioned, "solve_contact");
+  ContactOptions options = contact_options(op, approach.has_value(), tolerance, max_iterations,
+                                           preconditioned, "solve_contact");
+  options.hardness = hardness;
   ContactResult result = without_gil([&] {
     const auto guard = op.lock();
     ContactSolver solver(op.op(), options);
     return load ? solver.solve_load(h, *load) : solver.solve_approach(h, *approach);
   });
-  return to_python(std::move(result));
+  return to_python(std::move(result), hardness, &op.grid());
 }
 
 // Full sliding (contact/sliding_contact.hpp): the normal contact with q_x = mu p, the tractions'
@@ -121,26 +144,45 @@ PyContactResult solve_sliding(Operator& op, const DoubleArray& height, py::handl
   return out;
 }
 
-// ContactSolver::solve_sweep: the results in ascending order of the values.
+// ContactSolver::solve_sweep: the results in ascending order of the values, then with `unload`
+// the unloading branch.
 std::vector<PyContactResult> solve_sweep(Operator& op, const DoubleArray& height,
                                          std::optional<std::vector<double>> loads,
                                          std::optional<std::vector<double>> approaches,
-                                         double tolerance, int max_iterations,
-                                         bool preconditioned) {
+                                         double tolerance, int max_iterations, bool preconditioned,
+                                         std::optional<double> hardness, bool unload) {
   COATFFT_REQUIRE(loads.has_value() != approaches.has_value(),
                   "solve_sweep: give exactly one of loads [N] and approaches [m]");
+  COATFFT_REQUIRE(!unload || hardness.has_value(),
+                  "solve_sweep: unload=True needs hardness: the unloading of an elastic contact "
+                  "repeats its loading");
   const Field h = field_from_array(height, op.grid(), "solve_sweep: height");
-  const ContactOptions options = contact_options(op, approaches.has_value(), tolerance,
-                                                 max_iterations, preconditioned, "solve_sweep");
+  ContactOptions options = contact_options(op, approaches.has_value(), tolerance, max_iterations,
+                                           preconditioned, "solve_sweep");
+  options.hardness = hardness;
+  const std::vector<double>& values = loads ? *loads : *approaches;
   std::vector<ContactResult> results = without_gil([&] {
     const auto guard = op.lock();
     ContactSolver solver(op.op(), options);
-    return loads ? solver.solve_sweep(h, ContactControl::load, *loads)
-                 : solver.solve_sweep(h, ContactControl::approach, *approaches);
+    return solver.solve_sweep(h, loads ? ContactControl::load : ContactControl::approach, values,
+                              unload);
   });
   std::vector<PyContactResult> out;
-  for (ContactResult& r : results) out.push_back(to_python(std::move(r)));
+  for (std::size_t k = 0; k < results.size(); ++k) {
+    out.push_back(to_python(std::move(results[k]), hardness, &op.grid()));
+    out.back().phase = py::str(k < values.size() ? "load" : "unload");
+  }
   return out;
+}
+
+// coatfft::residual_gap on two (ny, nx) arrays.
+py::array_t<double> residual_gap_of(const DoubleArray& height, const DoubleArray& depth) {
+  for (const auto& [array, what] : {std::pair{&height, "height"}, {&depth, "plastic_depth"}})
+    COATFFT_REQUIRE(array->ndim() == 2, "residual_gap: ", what, " must be a 2-D array (ny, nx)");
+  Field h, d;
+  copy_into_field(height, h, "residual_gap: height");
+  copy_into_field(depth, d, "residual_gap: plastic_depth");
+  return array_from_field(residual_gap(h, d));
 }
 
 }  // namespace
@@ -174,6 +216,14 @@ void bind_contact(py::module_& m) {
                     "solve_sliding's coupling, as summary.json's friction_coupling: solves, "
                     "pressure_change, pressure_shift, centroid_shift [m], converged; None "
                     "otherwise")
+      .def_readonly("plastic_depth", &PyContactResult::plastic_depth,
+                    "with hardness: the plastic depth [m] (ny, nx), the overlap of the cells at "
+                    "the hardness (in a sweep accumulated over its steps); None otherwise")
+      .def_readonly("plastic", &PyContactResult::plastic,
+                    "with hardness: summary.json's plastic (hardness, plastic_area, "
+                    "plastic_area_fraction, max_plastic_depth, plastic_volume); None otherwise")
+      .def_readonly("phase", &PyContactResult::phase,
+                    "in a sweep: \"load\" or \"unload\" (sweep.csv's phase); None otherwise")
       .def("__repr__", [](const PyContactResult& r) {
         return py::str(
                    "ContactResult(status={!r}, iterations={}, load={!r}, contact_area={!r}, "
@@ -182,9 +232,11 @@ void bind_contact(py::module_& m) {
       });
   m.def("solve_contact", &solve_contact, "op"_a, "height"_a, py::kw_only(), "load"_a = py::none(),
         "approach"_a = py::none(), "tolerance"_a = 1e-10, "max_iterations"_a = 1000,
-        "preconditioned"_a = true,
+        "preconditioned"_a = true, "hardness"_a = py::none(),
         "Frictionless normal contact of a rigid indenter of initial separation `height` [m] "
-        "(ny, nx) on the operator's body, under a total load [N] or an approach [m].");
+        "(ny, nx) on the operator's body, under a total load [N] or an approach [m]; with "
+        "`hardness` [Pa] the pressure capped at it, the overlap there plastic (docs/contact.md, "
+        "'Hardness').");
   m.def("solve_sliding", &solve_sliding, "op"_a, "height"_a, "body"_a, py::kw_only(), "friction"_a,
         "load"_a = py::none(), "approach"_a = py::none(), "tolerance"_a = 1e-10,
         "max_iterations"_a = 1000, "preconditioned"_a = true, "threads"_a = 1,
@@ -195,11 +247,15 @@ void bind_contact(py::module_& m) {
         "friction; docs/contact.md). The result's friction_coupling reports it.");
   m.def("solve_sweep", &solve_sweep, "op"_a, "height"_a, py::kw_only(), "loads"_a = py::none(),
         "approaches"_a = py::none(), "tolerance"_a = 1e-10, "max_iterations"_a = 1000,
-        "preconditioned"_a = true,
+        "preconditioned"_a = true, "hardness"_a = py::none(), "unload"_a = false,
         "solve_contact at every load [N] (or approach [m]) of a list, on one operator: a list "
         "of ContactResult in ascending order of the values, each solve started from the ones "
         "before it (fewer operator applications than separate solves; docs/contact.md, "
-        "'Sweeps').");
+        "'Sweeps'). With `hardness` the sweep is a loading history (the plastic depth kept); "
+        "`unload=True` then adds the values below the largest, descending.");
+  m.def("residual_gap", &residual_gap_of, "height"_a, "plastic_depth"_a,
+        "The gap the permanent surface leaves at zero load: height + plastic_depth less its "
+        "minimum [m] (a scene's residual_gap.npy).");
 }
 
 }  // namespace coatfft::python

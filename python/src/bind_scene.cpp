@@ -58,11 +58,14 @@ py::dict run_scene(const std::filesystem::path& path) {
     out["uz"] = stacked_array(run.sweep->uz, true);
     out["pressure"] = stacked_array(run.sweep->pressure, true);
     out["gap"] = stacked_array(run.sweep->gap, true);
+    if (!run.sweep->plastic.empty()) out["plastic"] = stacked_array(run.sweep->plastic, true);
   } else {
     out["uz"] = array_from_field(std::move(run.uz));
     out["pressure"] = array_from_field(std::move(run.pressure));
     if (run.gap) out["gap"] = array_from_field(std::move(*run.gap));
+    if (run.plastic) out["plastic"] = array_from_field(std::move(*run.plastic));
   }
+  if (run.residual_gap) out["residual_gap"] = array_from_field(std::move(*run.residual_gap));
   if (run.stress) add_stress_arrays(run.grid, *run.stress, out);
   if (run.ux) out["ux"] = array_from_field(std::move(*run.ux));
   if (run.uy) out["uy"] = array_from_field(std::move(*run.uy));
