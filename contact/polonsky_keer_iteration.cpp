@@ -350,6 +350,10 @@ std::optional<double> PolonskyKeerIteration::step_length(std::ptrdiff_t n_workin
   const double r_mean = load_control_ ? sums.r / static_cast<double>(n_working) : 0.0;
   const double denominator = sums.r_dot_t - r_mean * sums.t;
   if (!(denominator > 0) || !std::isfinite(sums.g_dot_t)) return std::nullopt;
+  // Under a cap the working set can shrink to a few cells of one gap (the others at the cap),
+  // where t is rounding and may point uphill: no step along it (step() then checks for a
+  // solution, or widens the set).
+  if (capped_ && !(sums.g_dot_t > 0)) return std::nullopt;
   return sums.g_dot_t / denominator;
 }
 
