@@ -139,3 +139,47 @@ TEST_CASE("hardness and unload: refusals", "[cli_hardness]") {
                 "\"residual_gap\" needs an unloading sweep"}})
     check_refused(kCapped, c);
 }
+
+TEST_CASE("hardness on a body given by its [frf] table: the body given by its layers",
+          "[cli_hardness]") {
+  // tabulated_frf.csv tabulates TiN 100 um on steel (examples/scenes/tabulated_frf.toml): the
+  // capped sphere on the table and on the layers agree to the table's interpolation.
+  const std::string table = std::string(COATFFT_SOURCE_DIR) + "/examples/scenes/tabulated_frf.csv";
+  const std::string layered = R"([grid]
+nx = 32
+ny = 32
+lx = 4.0e-3
+ly = 4.0e-3
+[substrate]
+material = "steel"
+[[coating]]
+material = "titanium_nitride"
+thickness = 1.0e-4
+interface = "bonded"
+[contact]
+indenter = "sphere"
+radius = 0.05
+load = 100.0
+hardness = 0.3e9
+[method]
+name = "frf-split"
+)";
+  const std::string tabulated = std::string(layered).replace(
+      layered.find("[substrate]"), layered.find("[contact]") - layered.find("[substrate]"),
+      "[frf]\npath = \"" + table + "\"\n");
+  const fs::path a = run_scene_ok(layered, "capped_layers");
+  const fs::path b = run_scene_ok(tabulated, "capped_table");
+  const std::vector<double> pa = npy_values(a / "pressure.npy"),
+                            pb = npy_values(b / "pressure.npy");
+  const std::vector<double> da = npy_values(a / "plastic.npy"), db = npy_values(b / "plastic.npy");
+  double p_diff = 0, d_diff = 0, deepest = 0;
+  for (std::size_t k = 0; k < pa.size(); ++k) {
+    p_diff = std::max(p_diff, std::abs(pa[k] - pb[k]));
+    d_diff = std::max(d_diff, std::abs(da[k] - db[k]));
+    deepest = std::max(deepest, da[k]);
+  }
+  CHECK(deepest > 0);
+  // Measured 8e-10 of H and 4e-10 of the depth at 64^2 (the table's spline against the FRF).
+  CHECK(p_diff < 1e-7 * 0.3e9);
+  CHECK(d_diff < 1e-7 * deepest);
+}
