@@ -1,6 +1,7 @@
 #pragma once
 // Every public header of coatfft: #include <coatfft/coatfft.hpp>. The build checks that it
 // includes each one (cmake/coatfft_package.cmake, coatfft_check_public_headers).
+#include "contact/adhesive_contact.hpp"
 #include "contact/complementarity.hpp"
 #include "contact/contact_solver.hpp"
 #include "contact/indenter.hpp"
@@ -82,6 +83,7 @@
 #include "validation/axisymmetric_stress.hpp"
 #include "validation/axisymmetric_traction.hpp"
 #include "validation/cattaneo_mindlin.hpp"
+#include "validation/maugis_dugdale.hpp"
 #include "validation/hankel_displacement.hpp"
 #include "validation/hertz.hpp"
 #include "validation/hertz_contact.hpp"

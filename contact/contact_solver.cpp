@@ -130,6 +130,14 @@ ContactResult ContactSolver::solve(const Field& height, ContactControl control, 
                                          : solve_approach(height, value);
 }
 
+ContactResult ContactSolver::solve_from(const Field& height, ContactControl control, double value,
+                                        Field start) {
+  check_value(control, value);
+  COATFFT_REQUIRE(start.rows() == height.rows() && start.cols() == height.cols(),
+                  "ContactSolver: the start pressure's shape differs from the heights'");
+  return run(height, control, value, std::optional<Field>(std::move(start)));
+}
+
 std::vector<ContactResult> ContactSolver::solve_sweep(const Field& height, ContactControl control,
                                                       std::vector<double> values, bool unload) {
   COATFFT_REQUIRE(!values.empty(), "ContactSolver: a sweep needs at least one value");

@@ -254,7 +254,15 @@ class ContactSolver {
   std::vector<ContactResult> solve_sweep(const Field& height, ContactControl control,
                                          std::vector<double> values, bool unload = false);
 
+  /// solve() from the pressure `start` (of the grid's shape, clipped at zero and scaled to the
+  /// value: one application) instead of the usual start: for a solve whose neighbour is known (a
+  /// path of solves, the rounds of an outer iteration). A start without pressure is the usual one.
+  ContactResult solve_from(const Field& height, ContactControl control, double value,
+                           Field start);
+
   const ContactOptions& options() const { return options_; }
+  /// The operator the solver is bound to.
+  SurfaceOperator& surface_operator() const { return op_; }
   /// The grid of the operator the solver is bound to.
   const Grid& grid() const { return op_.grid(); }
 

@@ -29,7 +29,9 @@ void PolonskyKeerIteration::start(bool warm) {
 // to this one's, which is what the iteration spends its recomputations on.
 void PolonskyKeerIteration::start_from_pressure() {
   if (!load_control_) {
-    scale_to_approach();
+    // A neighbour's contact may lie wholly out of this approach's reach (a path of falling
+    // approaches): then the usual start.
+    if (!scale_to_approach()) update_by_linearity_ ? start_hertzian() : start_uniform();
     return;
   }
   p_ *= value_ / (detail::sum_over(ranks_, p_.sum()) * cell_area_);
@@ -46,7 +48,7 @@ void PolonskyKeerIteration::start_uniform() {
     return;
   }
   p_ = (h_ < delta_).cast<double>();
-  scale_to_approach();
+  scale_to_approach();  // delta > h on the support: it scales
 }
 
 // A Hertzian start (initial_pressure.hpp): sqrt(level - h) on {h < level}. Under approach control
@@ -56,7 +58,7 @@ void PolonskyKeerIteration::start_hertzian() {
   const double h_min = h_range.min;
   if (!load_control_) {
     p_ = detail::hertzian_profile(h_, h_min + 0.5 * (delta_ - h_min));
-    scale_to_approach();
+    scale_to_approach();  // delta > h on the profile's support: it scales
     return;
   }
   double level = detail::level_below(h_, detail::kTrialContactShare, ranks_) - h_min;
@@ -79,16 +81,20 @@ void PolonskyKeerIteration::start_hertzian() {
 }
 
 // Approach control: p scaled so that the mean gap over its support vanishes (one application).
-void PolonskyKeerIteration::scale_to_approach() {
+// false, p left as it is, when the support lies beyond the approach's reach on average (the
+// mean of delta - h not positive): no positive scale closes it.
+bool PolonskyKeerIteration::scale_to_approach() {
   const Mask support = p_ > 0;
   const auto n_support = detail::count_over(ranks_, support.count());
   recompute_displacement();
-  const double scale = masked_mean(delta_ - h_, support, n_support, ranks_) /
-                       masked_mean(u_, support, n_support, ranks_);
+  const double reach = masked_mean(delta_ - h_, support, n_support, ranks_);
+  if (!(reach > 0)) return false;
+  const double scale = reach / masked_mean(u_, support, n_support, ranks_);
   COATFFT_REQUIRE(std::isfinite(scale) && scale > 0, "ContactSolver: operator '", op_.name(),
                   "' returned a non-positive mean displacement under a positive pressure");
   p_ *= scale;
   u_ *= scale;
+  return true;
 }
 
 }  // namespace coatfft::detail

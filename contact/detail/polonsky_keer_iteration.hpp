@@ -62,7 +62,7 @@ class PolonskyKeerIteration {
   void start_from_pressure();
   void start_uniform();
   void start_hertzian();
-  void scale_to_approach();
+  bool scale_to_approach();
   void recompute_displacement();
   std::ptrdiff_t update_gap();
   WorkingSet select_working_set();
