@@ -67,6 +67,14 @@ Field first_interaction(const Field& h, ContactControl control, double value, do
   return (h - level < range).cast<double>();
 }
 
+// Whether a border cell carries pressure or tension: the contact or its cohesive zone reaches the
+// domain's edge (on a free surface; a periodic one has none).
+bool on_border(const Field& p) {
+  const auto nx = p.rows(), ny = p.cols();
+  return (p.row(0) != 0).any() || (p.row(nx - 1) != 0).any() || (p.col(0) != 0).any() ||
+         (p.col(ny - 1) != 0).any();
+}
+
 // The result of the last round: p = q - sigma0 chi_I, u = u_q - sigma0 K chi_I.
 AdhesiveResult assemble(Round&& r, const Field& interaction, const Field& tension_u, double sigma0,
                         const Grid& grid) {
@@ -156,6 +164,7 @@ AdhesiveResult solve_adhesive(ContactSolver& solver, const Field& height, Contac
   const bool feasible = round.feasible;
   AdhesiveResult out = assemble(std::move(round), interaction, tension_u, sigma0, grid);
   out.rounds = rounds;
+  out.contact.touches_boundary = !op.periodic() && on_border(out.contact.pressure);
   out.contact.iterations = iterations;
   out.contact.operator_applications = applications;
   const double u_max = out.contact.displacement.abs().maxCoeff();

@@ -257,8 +257,7 @@ class ContactSolver {
   /// solve() from the pressure `start` (of the grid's shape, clipped at zero and scaled to the
   /// value: one application) instead of the usual start: for a solve whose neighbour is known (a
   /// path of solves, the rounds of an outer iteration). A start without pressure is the usual one.
-  ContactResult solve_from(const Field& height, ContactControl control, double value,
-                           Field start);
+  ContactResult solve_from(const Field& height, ContactControl control, double value, Field start);
 
   const ContactOptions& options() const { return options_; }
   /// The operator the solver is bound to.

@@ -79,6 +79,7 @@ std::string not_distributable(const Scene& scene) {
       return "[contact] tangential_load or tangential_shift (a partial slip)";
     if (contact.friction > 0.0) return "[contact] friction";
     if (contact.hardness) return "[contact] hardness";
+    if (contact.adhesion) return "[contact] adhesion";
   }
   if (scene.shear) return "[shear]";
   if (scene.stress) return "[stress]";

@@ -81,6 +81,13 @@ void add_contact_lines(const nlohmann::json& summary, std::vector<std::string>& 
                     " (of the disk of the contact's area; the contact is not round)");
   if (const auto peak = number(summary, "max_pressure"))
     lines.push_back("peak pressure " + stress(*peak) + hertz_note(summary, "max_pressure", stress));
+  if (summary.contains("adhesion")) {
+    const nlohmann::json& adhesion = summary["adhesion"];
+    if (const auto pull_off = number(adhesion, "pull_off_load"))
+      lines.push_back("pull-off (the most tensile load) " + detail::brief(*pull_off) + " N");
+    if (const auto jumped = number(adhesion, "jumped_off_at"))
+      lines.push_back("the contact jumped off at the approach " + length(*jumped));
+  }
   if (summary.contains("plastic")) {
     const nlohmann::json& plastic = summary["plastic"];
     if (const auto fraction = number(plastic, "plastic_area_fraction"))

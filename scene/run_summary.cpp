@@ -59,7 +59,9 @@ nlohmann::json hertz_on_half_space(const ContactSpec& spec, double R, double E_s
 // comparison; null for any other contact.
 nlohmann::json hertz_json(const Scene& scene) {
   const std::optional<double> R = hertz_radius(*scene.contact);
-  if (!R || scene.frf || !scene.body->is_homogeneous() || scene.periodic()) return nullptr;
+  if (!R || scene.frf || !scene.body->is_homogeneous() || scene.periodic() ||
+      scene.contact->adhesion)
+    return nullptr;
   return hertz_on_half_space(*scene.contact, *R, scene.body->substrate().plane_strain_modulus());
 }
 
@@ -71,7 +73,8 @@ nlohmann::json hertz_json(const Scene& scene) {
 nlohmann::json hertz_bare_json(const Scene& scene) {
   const ContactSpec& spec = *scene.contact;
   const std::optional<double> R = hertz_radius(spec);
-  if (!R || !spec.load || !spec.sweep.empty() || scene.frf || scene.periodic()) return nullptr;
+  if (!R || !spec.load || !spec.sweep.empty() || scene.frf || scene.periodic() || spec.adhesion)
+    return nullptr;
   const LayerStack& body = *scene.body;
   nlohmann::json bare = {
       {"substrate", hertz_on_half_space(spec, *R, body.substrate().plane_strain_modulus())}};

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/adhesive_contact.hpp"
 #include "contact/indenter.hpp"
 #include "contact/partial_slip.hpp"
 #include "convolution/operators/make_operator.hpp"
@@ -107,8 +108,13 @@ struct ContactSpec {
   /// [contact] hardness [Pa]: the pressure capped at H, the overlap of the cells at H plastic
   /// depth (ContactOptions::hardness; docs/contact.md, "Hardness"). Unset: elastic.
   std::optional<double> hardness;
-  /// [contact] unload = true (a sweep only): after the ascending values the values below the
-  /// largest, descending, each from the previous state (ContactSolver::solve_sweep).
+  /// [contact] adhesion = "dugdale" with work_of_adhesion [J/m^2] and adhesion_range [m]
+  /// (contact/adhesive_contact.hpp; docs/contact.md, "Adhesion"): approaches may then be zero or
+  /// negative and loads negative. Unset: no attraction.
+  std::optional<AdhesionOptions> adhesion;
+  /// [contact] unload = true (a sweep with hardness or adhesion): after the ascending values the
+  /// values below the largest, descending, each from the previous state
+  /// (ContactSolver::solve_sweep, solve_adhesive_path).
   bool unload = false;
   /// The values of a sweep in the order they are solved: ascending, then with unload the
   /// unloading branch. Empty for one value.

@@ -123,14 +123,16 @@ void read_indenter(SectionReader& reader, const SceneContext& context, ContactSp
 }
 
 // [contact] load or approach: one value, or a list (a sweep, its values solved in ascending
-// order on one operator: ContactSolver::solve_sweep); the smallest value for a list.
-double control_value(SectionReader& reader, const char* key, ContactSpec& spec) {
-  if (!reader.is_array(key)) return positive(reader, key);
+// order on one operator: ContactSolver::solve_sweep); the smallest value for a list. With
+// adhesion a value may be zero or negative (the bodies apart, or a tensile load).
+double control_value(SectionReader& reader, const char* key, ContactSpec& spec, bool adhesive) {
+  if (!reader.is_array(key)) return adhesive ? reader.number(key) : positive(reader, key);
   std::vector<double> values = reader.numbers(key);
   COATFFT_REQUIRE(!values.empty() && values.size() <= max_sweep_values, reader.where(key),
                   " lists ", values.size(), " values: a sweep takes 1 to ", max_sweep_values);
   for (const double v : values)
-    COATFFT_REQUIRE(v > 0, reader.where(key), " holds ", v, ": every value must be > 0");
+    COATFFT_REQUIRE(adhesive || v > 0, reader.where(key), " holds ", v,
+                    ": every value must be > 0 (zero or negative only with adhesion)");
   std::sort(values.begin(), values.end());
   spec.sweep = values;
   return values.front();
@@ -141,8 +143,9 @@ void read_contact_control(SectionReader& reader, ContactSpec& spec) {
   COATFFT_REQUIRE(reader.has("load") != reader.has("approach"),
                   "[contact] give exactly one of load (N) and approach (m)",
                   reader.misspelling({"load", "approach"}));
-  if (reader.has("load")) spec.load = control_value(reader, "load", spec);
-  if (reader.has("approach")) spec.approach = control_value(reader, "approach", spec);
+  const bool adhesive = reader.has("adhesion");
+  if (reader.has("load")) spec.load = control_value(reader, "load", spec, adhesive);
+  if (reader.has("approach")) spec.approach = control_value(reader, "approach", spec, adhesive);
   spec.report_approach = reader.boolean("report_approach", spec.report_approach);
   COATFFT_REQUIRE(spec.report_approach || spec.load, reader.where("report_approach"),
                   " = false: under approach control the approach is the input and is always "
@@ -207,14 +210,40 @@ void read_hardness(SectionReader& reader, const Grid& grid, ContactSpec& spec) {
                       " Pa no load reaches the whole domain at the hardness, ", capacity, " N");
     }
   }
+}
+
+// [contact] adhesion = "dugdale", work_of_adhesion [J/m^2], adhesion_range [m].
+void read_adhesion(SectionReader& reader, ContactSpec& spec) {
+  if (!reader.has("adhesion")) {
+    for (const char* key : {"work_of_adhesion", "adhesion_range"})
+      COATFFT_REQUIRE(!reader.has(key), reader.where(key), " needs adhesion = \"dugdale\"");
+    return;
+  }
+  reader.choice("adhesion", "dugdale", {"dugdale"});
+  AdhesionOptions law;
+  for (auto [key, value] :
+       {std::pair{"work_of_adhesion", &law.work_of_adhesion}, {"adhesion_range", &law.range}}) {
+    *value = reader.number(key);
+    COATFFT_REQUIRE(std::isfinite(*value) && *value > 0, reader.where(key), " = ", *value,
+                    " must be finite and > 0");
+  }
+  COATFFT_REQUIRE(!spec.hardness, reader.where("adhesion"),
+                  " is not combined with hardness yet: give one of the two");
+  COATFFT_REQUIRE(spec.friction == 0.0, reader.where("adhesion"),
+                  " is not combined with friction yet: the adhesive contact is frictionless");
+  spec.adhesion = law;
+}
+
+// [contact] unload: a sweep of a hysteretic contact (hardness or adhesion) runs back down.
+void read_unload(SectionReader& reader, ContactSpec& spec) {
   spec.unload = reader.boolean("unload", false);
   if (!spec.unload) return;
   COATFFT_REQUIRE(!spec.sweep.empty(), reader.where("unload"),
                   " = true needs a list of loads or approaches (the values to load through "
                   "and unload back)");
-  COATFFT_REQUIRE(spec.hardness.has_value(), reader.where("unload"),
-                  " = true needs hardness: the unloading of an elastic contact repeats its "
-                  "loading");
+  COATFFT_REQUIRE(spec.hardness || spec.adhesion, reader.where("unload"),
+                  " = true needs hardness or adhesion: the unloading of an elastic contact "
+                  "repeats its loading");
 }
 
 // [contact] indenter_material, or indenter_E and indenter_nu: an elastic indenter, through the
@@ -245,6 +274,8 @@ ContactSpec read_contact(const toml::table& table, const SceneContext& context,
   read_contact_control(reader, spec);
   read_tangential(reader, spec);
   read_hardness(reader, grid, spec);
+  read_adhesion(reader, spec);
+  read_unload(reader, spec);
   read_elastic_indenter(reader, stack_body, spec);
   // Catch geometry errors (a sphere smaller than the domain) before any work is done; a height
   // map whose values were not read was checked as far as its header goes.

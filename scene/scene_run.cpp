@@ -19,6 +19,7 @@
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
 #include "scene/a_posteriori.hpp"
+#include "scene/adhesion_run.hpp"
 #include "scene/contact_options.hpp"
 #include "scene/load_error_report.hpp"
 #include "scene/operator_from_scene.hpp"
@@ -150,9 +151,10 @@ ContactResult solve_scene_contact(ContactSolver& solver, const Scene& scene,
 }
 
 // One value of a sweep: a row of sweep.csv and of summary.json's "sweep"; plastic_area is 0
-// without a hardness.
+// without a hardness, cohesive_area [m^2] without adhesion.
 nlohmann::json sweep_row(const Grid& grid, const ContactResult& r,
-                         const std::optional<double>& hardness, bool unloading) {
+                         const std::optional<double>& hardness, bool unloading,
+                         double cohesive_area) {
   return {{"load", r.load},
           {"approach", r.approach ? nlohmann::json(*r.approach) : nlohmann::json()},
           {"area_fraction", r.contact_area / (grid.lx() * grid.ly())},
@@ -164,7 +166,8 @@ nlohmann::json sweep_row(const Grid& grid, const ContactResult& r,
           {"converged", r.converged},
           {"max_penetration", r.max_penetration},
           {"plastic_area", hardness ? plastic_report(r, *hardness, grid).plastic_area : 0.0},
-          {"phase", unloading ? "unload" : "load"}};
+          {"phase", unloading ? "unload" : "load"},
+          {"cohesive_area", cohesive_area}};
 }
 
 // Whether the contact of any solve reaches the border cells of a measured topography's map;
@@ -221,13 +224,15 @@ std::string domain_edge_message(const ContactSpec& spec,
 
 // A sweep's outputs: every value's fields, stacked by the writer, and its rows; the summary's
 // other contact keys are the last solve's, and it converged when every value did.
-void add_sweep(SceneRun& run, std::vector<ContactResult>& results, const ContactSpec& spec) {
+void add_sweep(SceneRun& run, std::vector<ContactResult>& results, const ContactSpec& spec,
+               const std::vector<double>& cohesive_areas) {
   nlohmann::json rows = nlohmann::json::array();
   SweepFields fields;
   bool converged = true;
   for (std::size_t k = 0; k < results.size(); ++k) {
     ContactResult& r = results[k];
-    rows.push_back(sweep_row(run.grid, r, spec.hardness, k >= spec.loading_steps()));
+    rows.push_back(sweep_row(run.grid, r, spec.hardness, k >= spec.loading_steps(),
+                             cohesive_areas.empty() ? 0.0 : cohesive_areas[k]));
     converged = converged && r.converged;
     fields.pressure.push_back(std::move(r.pressure));
     fields.uz.push_back(std::move(r.displacement));
@@ -259,6 +264,8 @@ SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat,
   nlohmann::json coupling;
   std::vector<PartialSlipResult> slip_steps;
   std::vector<ContactResult> results;
+  nlohmann::json adhesion;
+  std::vector<double> cohesive_areas;
   if (spec.partial_slip()) {
     // A scene with a partial slip writes ux.npy and uy.npy (scene/scene.cpp): its surface
     // response is built.
@@ -266,6 +273,14 @@ SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat,
         surface, indenter_response(*surface, spec.indenter_material, scene.method.options.threads));
     slip_steps = solve_scene_partial_slip(solver, response, spec, height_field, progress);
     results.push_back(slip_steps.back().normal);
+  } else if (spec.adhesion) {
+    std::vector<AdhesiveResult> adhesive =
+        solve_scene_adhesion(solver, scene, height_field, progress);
+    adhesion = report_adhesion(adhesive, scene);
+    for (AdhesiveResult& a : adhesive) {
+      cohesive_areas.push_back(a.cohesive_area);
+      results.push_back(std::move(a.contact));
+    }
   } else {
     results = solve_contacts(solver, scene, surface, height_field, coupling, progress);
   }
@@ -290,6 +305,7 @@ SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat,
                      field_numbers(scene.grid, RowLayout{}, result.pressure, result.displacement));
   add_contact_summary(summary, scene, result, solve_seconds);
   if (!coupling.is_null()) summary["friction_coupling"] = coupling;
+  if (!adhesion.is_null()) summary["adhesion"] = adhesion;
   if (topography) summary["topography"]["contact_at_edge"] = map_edge;
   // The solver computes the gap in any case; the CLI saves it only when [output] asks for it.
   SceneRun run{scene.grid,
@@ -302,7 +318,7 @@ SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat,
     if (spec.unload) run.residual_gap = residual_gap(height_field, result.plastic_depth);
     run.plastic = std::move(result.plastic_depth);
   }
-  if (!spec.sweep.empty()) add_sweep(run, results, spec);
+  if (!spec.sweep.empty()) add_sweep(run, results, spec, cohesive_areas);
   if (!slip_steps.empty()) add_partial_slip(run, slip_steps, spec);
   return run;
 }
@@ -394,7 +410,7 @@ std::string sweep_csv(const nlohmann::json& rows) {
   std::ostringstream csv;
   csv.precision(std::numeric_limits<double>::max_digits10);
   csv << "load,approach,area_fraction,max_pressure,mean_gap,iterations,operator_applications,"
-         "converged,max_penetration,plastic_area,phase\n";
+         "converged,max_penetration,plastic_area,phase,cohesive_area\n";
   for (const nlohmann::json& r : rows) {
     csv << r["load"].get<double>() << ',';
     if (!r["approach"].is_null()) csv << r["approach"].get<double>();
@@ -402,7 +418,7 @@ std::string sweep_csv(const nlohmann::json& rows) {
         << r["mean_gap"].get<double>() << ',' << r["iterations"].get<int>() << ','
         << r["operator_applications"].get<int>() << ',' << (r["converged"].get<bool>() ? 1 : 0)
         << ',' << r["max_penetration"].get<double>() << ',' << r["plastic_area"].get<double>()
-        << ',' << r["phase"].get<std::string>() << '\n';
+        << ',' << r["phase"].get<std::string>() << ',' << r["cohesive_area"].get<double>() << '\n';
   }
   return csv.str();
 }

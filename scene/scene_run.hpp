@@ -69,7 +69,8 @@ struct SceneRun {
 /// sweep.csv of a sweep's rows (summary.json's "sweep"): a header line, then per value load,
 /// approach (empty when not reported), area_fraction, max_pressure, mean_gap, iterations,
 /// operator_applications, converged (1 or 0), max_penetration, plastic_area (0 without a
-/// hardness), phase ("load", or "unload" on an unloading branch), at full precision.
+/// hardness), phase ("load", or "unload" on an unloading branch), cohesive_area (0 without
+/// adhesion), at full precision.
 std::string sweep_csv(const nlohmann::json& rows);
 
 /// fretting.csv of a path's rows (summary.json's "fretting" "steps"): a header line, then per step

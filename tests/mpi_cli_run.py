@@ -276,6 +276,8 @@ def main():
                 (SCENES / "coated_hertz_shear.toml").read_text())
         refused(tmp, "[contact] friction", rough + "friction = 0.3\n")
         refused(tmp, "[contact] hardness", rough + "hardness = 1e9\n")
+        refused(tmp, "[contact] adhesion", rough + 'adhesion = "dugdale"\nwork_of_adhesion = 0.05\n'
+                'adhesion_range = 1e-8\n')
         bad = heights.max() - heights
         bad[37, 5] = np.nan
         np.save(tmp / "gap.npy", bad)

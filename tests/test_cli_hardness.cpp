@@ -87,9 +87,10 @@ TEST_CASE("hardness and unload: a sweep loaded and unloaded keeps its plastic de
   CHECK(npy_shape(out / "residual_gap.npy") == "(32, 32)");
   const std::vector<std::string> rows = lines_of(out / "sweep.csv");
   REQUIRE(rows.size() == 6);
-  CHECK(rows[0].ends_with(",max_penetration,plastic_area,phase"));
+  CHECK(rows[0].ends_with(",max_penetration,plastic_area,phase,cohesive_area"));
   const std::vector<std::string> phases{"load", "load", "load", "unload", "unload"};
-  for (std::size_t k = 0; k < phases.size(); ++k) CHECK(rows[k + 1].ends_with("," + phases[k]));
+  for (std::size_t k = 0; k < phases.size(); ++k)
+    CHECK(rows[k + 1].ends_with("," + phases[k] + ",0"));
   const nlohmann::json s = read_summary(out);
   REQUIRE(s["converged"] == true);
   const nlohmann::json& sweep = s["sweep"];

@@ -43,8 +43,8 @@ TEST_CASE("[contact] load = [...] solves a sweep: every value as its own run", "
   // The columns scripts read by position stay first; later ones are appended.
   CHECK(csv[0] ==
         "load,approach,area_fraction,max_pressure,mean_gap,iterations,operator_applications,"
-        "converged,max_penetration,plastic_area,phase");
-  for (int k = 1; k <= 3; ++k) CHECK(csv[k].ends_with(",0,load"));  // elastic, loading
+        "converged,max_penetration,plastic_area,phase,cohesive_area");
+  for (int k = 1; k <= 3; ++k) CHECK(csv[k].ends_with(",0,load,0"));  // elastic, loading
   const std::vector<double> sweep_p = npy_values(out / "pressure.npy");
   const double loads[3] = {10.0, 20.0, 40.0};  // ascending
   for (int k = 0; k < 3; ++k) {

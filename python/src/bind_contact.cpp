@@ -4,12 +4,14 @@
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "bodies.hpp"
+#include "contact/adhesive_contact.hpp"
 #include "contact/contact_solver.hpp"
 #include "contact/plastic_report.hpp"
 #include "contact/sliding_contact.hpp"
@@ -47,7 +49,27 @@ struct PyContactResult {
   // Under a hardness: the plastic depth and summary.json's "plastic" (plastic_report); a
   // sweep's "load" or "unload" branch.
   py::object plastic_depth = py::none(), plastic = py::none(), phase = py::none();
+  // With adhesion: the cohesive zone's area [m^2] and whether the contact jumped off.
+  py::object cohesive_area = py::none(), jumped_off = py::none();
 };
+
+// The Dugdale law of the keywords adhesion=, work_of_adhesion=, adhesion_range= (none without
+// adhesion); `what` names the function in the messages.
+std::optional<AdhesionOptions> adhesion_law(const std::optional<std::string>& adhesion,
+                                            std::optional<double> work, std::optional<double> range,
+                                            const char* what) {
+  if (!adhesion) {
+    COATFFT_REQUIRE(!work && !range, what,
+                    ": work_of_adhesion and adhesion_range need adhesion=\"dugdale\"");
+    return std::nullopt;
+  }
+  COATFFT_REQUIRE(*adhesion == "dugdale", what, ": adhesion = '", *adhesion,
+                  "', but the cohesive law is \"dugdale\"");
+  COATFFT_REQUIRE(work && range, what,
+                  ": adhesion=\"dugdale\" needs work_of_adhesion [J/m^2] and "
+                  "adhesion_range [m]");
+  return AdhesionOptions{*work, *range};
+}
 
 // summary.json's "plastic" of a result solved under `hardness`.
 py::dict plastic_dict(const ContactResult& r, double hardness, const Grid& grid) {
@@ -88,15 +110,39 @@ PyContactResult to_python(ContactResult&& r, const std::optional<double>& hardne
   return out;
 }
 
+PyContactResult to_python(AdhesiveResult&& r) {
+  const double cohesive = r.cohesive_area;
+  const bool jumped = r.jumped_off;
+  PyContactResult out = to_python(std::move(r.contact));
+  out.cohesive_area = py::float_(cohesive);
+  out.jumped_off = py::bool_(jumped);
+  return out;
+}
+
 PyContactResult solve_contact(Operator& op, const DoubleArray& height, std::optional<double> load,
                               std::optional<double> approach, double tolerance, int max_iterations,
-                              bool preconditioned, std::optional<double> hardness) {
+                              bool preconditioned, std::optional<double> hardness,
+                              const std::optional<std::string>& adhesion,
+                              std::optional<double> work_of_adhesion,
+                              std::optional<double> adhesion_range) {
   COATFFT_REQUIRE(load.has_value() != approach.has_value(),
                   "solve_contact: give exactly one of load [N] and approach [m]");
   const Field h = field_from_array(height, op.grid(), "solve_contact: height");
   ContactOptions options = contact_options(op, approach.has_value(), tolerance, max_iterations,
                                            preconditioned, "solve_contact");
   options.hardness = hardness;
+  const std::optional<AdhesionOptions> law =
+      adhesion_law(adhesion, work_of_adhesion, adhesion_range, "solve_contact");
+  COATFFT_REQUIRE(!law || !hardness, "solve_contact: adhesion is not combined with hardness yet");
+  if (law) {
+    AdhesiveResult r = without_gil([&] {
+      const auto guard = op.lock();
+      ContactSolver solver(op.op(), options);
+      return solve_adhesive(solver, h, load ? ContactControl::load : ContactControl::approach,
+                            load ? *load : *approach, *law);
+    });
+    return to_python(std::move(r));
+  }
   ContactResult result = without_gil([&] {
     const auto guard = op.lock();
     ContactSolver solver(op.op(), options);
@@ -144,23 +190,52 @@ PyContactResult solve_sliding(Operator& op, const DoubleArray& height, py::handl
   return out;
 }
 
+// solve_adhesive_path over the values in a sweep's order (ascending, then with `unload` back
+// down), each result with its phase.
+std::vector<PyContactResult> adhesive_sweep(Operator& op, const Field& h, ContactControl control,
+                                            const std::vector<double>& values, bool unload,
+                                            const ContactOptions& options,
+                                            const AdhesionOptions& law) {
+  const std::vector<double> order = sweep_order(values, unload);
+  std::vector<AdhesiveResult> results = without_gil([&] {
+    const auto guard = op.lock();
+    ContactSolver solver(op.op(), options);
+    return solve_adhesive_path(solver, h, control, order, law);
+  });
+  std::vector<PyContactResult> out;
+  for (std::size_t k = 0; k < results.size(); ++k) {
+    out.push_back(to_python(std::move(results[k])));
+    out.back().phase = py::str(k < values.size() ? "load" : "unload");
+  }
+  return out;
+}
+
 // ContactSolver::solve_sweep: the results in ascending order of the values, then with `unload`
 // the unloading branch.
 std::vector<PyContactResult> solve_sweep(Operator& op, const DoubleArray& height,
                                          std::optional<std::vector<double>> loads,
                                          std::optional<std::vector<double>> approaches,
                                          double tolerance, int max_iterations, bool preconditioned,
-                                         std::optional<double> hardness, bool unload) {
+                                         std::optional<double> hardness, bool unload,
+                                         const std::optional<std::string>& adhesion,
+                                         std::optional<double> work_of_adhesion,
+                                         std::optional<double> adhesion_range) {
   COATFFT_REQUIRE(loads.has_value() != approaches.has_value(),
                   "solve_sweep: give exactly one of loads [N] and approaches [m]");
-  COATFFT_REQUIRE(!unload || hardness.has_value(),
-                  "solve_sweep: unload=True needs hardness: the unloading of an elastic contact "
-                  "repeats its loading");
+  const std::optional<AdhesionOptions> law =
+      adhesion_law(adhesion, work_of_adhesion, adhesion_range, "solve_sweep");
+  COATFFT_REQUIRE(!law || !hardness, "solve_sweep: adhesion is not combined with hardness yet");
+  COATFFT_REQUIRE(!unload || hardness.has_value() || law.has_value(),
+                  "solve_sweep: unload=True needs hardness or adhesion: the unloading of an "
+                  "elastic contact repeats its loading");
   const Field h = field_from_array(height, op.grid(), "solve_sweep: height");
   ContactOptions options = contact_options(op, approaches.has_value(), tolerance, max_iterations,
                                            preconditioned, "solve_sweep");
   options.hardness = hardness;
   const std::vector<double>& values = loads ? *loads : *approaches;
+  if (law)
+    return adhesive_sweep(op, h, loads ? ContactControl::load : ContactControl::approach, values,
+                          unload, options, *law);
   std::vector<ContactResult> results = without_gil([&] {
     const auto guard = op.lock();
     ContactSolver solver(op.op(), options);
@@ -222,6 +297,12 @@ void bind_contact(py::module_& m) {
       .def_readonly("plastic", &PyContactResult::plastic,
                     "with hardness: summary.json's plastic (hardness, plastic_area, "
                     "plastic_area_fraction, max_plastic_depth, plastic_volume); None otherwise")
+      .def_readonly("cohesive_area", &PyContactResult::cohesive_area,
+                    "with adhesion: the cells under the cohesive stress off contact [m^2]; None "
+                    "otherwise")
+      .def_readonly("jumped_off", &PyContactResult::jumped_off,
+                    "with adhesion, in a sweep: the contact of the step before ended here; None "
+                    "otherwise")
       .def_readonly("phase", &PyContactResult::phase,
                     "in a sweep: \"load\" or \"unload\" (sweep.csv's phase); None otherwise")
       .def("__repr__", [](const PyContactResult& r) {
@@ -232,11 +313,14 @@ void bind_contact(py::module_& m) {
       });
   m.def("solve_contact", &solve_contact, "op"_a, "height"_a, py::kw_only(), "load"_a = py::none(),
         "approach"_a = py::none(), "tolerance"_a = 1e-10, "max_iterations"_a = 1000,
-        "preconditioned"_a = true, "hardness"_a = py::none(),
+        "preconditioned"_a = true, "hardness"_a = py::none(), "adhesion"_a = py::none(),
+        "work_of_adhesion"_a = py::none(), "adhesion_range"_a = py::none(),
         "Frictionless normal contact of a rigid indenter of initial separation `height` [m] "
         "(ny, nx) on the operator's body, under a total load [N] or an approach [m]; with "
         "`hardness` [Pa] the pressure capped at it, the overlap there plastic (docs/contact.md, "
-        "'Hardness').");
+        "'Hardness'); with adhesion=\"dugdale\", work_of_adhesion [J/m^2] and adhesion_range [m] "
+        "a Dugdale cohesive zone (docs/contact.md, 'Adhesion': loads may be tensile, "
+        "approaches zero or negative).");
   m.def("solve_sliding", &solve_sliding, "op"_a, "height"_a, "body"_a, py::kw_only(), "friction"_a,
         "load"_a = py::none(), "approach"_a = py::none(), "tolerance"_a = 1e-10,
         "max_iterations"_a = 1000, "preconditioned"_a = true, "threads"_a = 1,
@@ -248,11 +332,14 @@ void bind_contact(py::module_& m) {
   m.def("solve_sweep", &solve_sweep, "op"_a, "height"_a, py::kw_only(), "loads"_a = py::none(),
         "approaches"_a = py::none(), "tolerance"_a = 1e-10, "max_iterations"_a = 1000,
         "preconditioned"_a = true, "hardness"_a = py::none(), "unload"_a = false,
+        "adhesion"_a = py::none(), "work_of_adhesion"_a = py::none(),
+        "adhesion_range"_a = py::none(),
         "solve_contact at every load [N] (or approach [m]) of a list, on one operator: a list "
         "of ContactResult in ascending order of the values, each solve started from the ones "
         "before it (fewer operator applications than separate solves; docs/contact.md, "
         "'Sweeps'). With `hardness` the sweep is a loading history (the plastic depth kept); "
-        "`unload=True` then adds the values below the largest, descending.");
+        "`unload=True` then adds the values below the largest, descending. With adhesion each "
+        "value starts from the state before it (the branch through pull-off).");
   m.def("residual_gap", &residual_gap_of, "height"_a, "plastic_depth"_a,
         "The gap the permanent surface leaves at zero load: height + plastic_depth less its "
         "minimum [m] (a scene's residual_gap.npy).");
