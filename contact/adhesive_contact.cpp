@@ -164,6 +164,7 @@ AdhesiveResult solve_adhesive(ContactSolver& solver, const Field& height, Contac
   const bool feasible = round.feasible;
   AdhesiveResult out = assemble(std::move(round), interaction, tension_u, sigma0, grid);
   out.rounds = rounds;
+  out.jumped_off = previous && previous->contact_area > 0 && out.contact_area == 0;
   out.contact.touches_boundary = !op.periodic() && on_border(out.contact.pressure);
   out.contact.iterations = iterations;
   out.contact.operator_applications = applications;
@@ -197,9 +198,7 @@ std::vector<AdhesiveResult> solve_adhesive_path(ContactSolver& solver, const Fie
   std::vector<AdhesiveResult> path;
   for (const double value : values) {
     const AdhesiveResult* previous = path.empty() ? nullptr : &path.back();
-    AdhesiveResult r = solve_adhesive(solver, height, control, value, options, previous);
-    r.jumped_off = previous && previous->contact_area > 0 && r.contact_area == 0;
-    path.push_back(std::move(r));
+    path.push_back(solve_adhesive(solver, height, control, value, options, previous));
   }
   return path;
 }

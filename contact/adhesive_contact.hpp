@@ -38,7 +38,7 @@ struct AdhesiveResult {
   int rounds = 0;  ///< outer rounds
   /// Every inner solve converged, the cohesive set held, and check_dugdale passed on every cell.
   bool converged = false;
-  /// In a path (solve_adhesive_path): the step before was in contact and this one is not (the
+  /// From a previous state (a path's step): that state was in contact and this one is not (the
   /// contact jumped off: the branch it followed ended).
   bool jumped_off = false;
   /// The largest violation of the Dugdale conditions [m] (check_dugdale) and its bound.

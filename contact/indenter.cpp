@@ -147,6 +147,12 @@ Field height_rows(const Grid& grid, const Indenter& indenter, std::ptrdiff_t y0,
   return std::visit([&](const auto& shape) { return sampled(grid, shape, y0, rows); }, indenter);
 }
 
+std::optional<double> ball_radius(const Indenter& indenter) {
+  if (const auto* s = std::get_if<Sphere>(&indenter)) return s->radius;
+  if (const auto* p = std::get_if<Paraboloid>(&indenter)) return p->radius;
+  return std::nullopt;
+}
+
 bool is_axisymmetric(const Indenter& indenter) {
   if (const auto* cylinder = std::get_if<Cylinder>(&indenter)) {
     return cylinder->flat_length == 0 && cylinder->end_radius == cylinder->radius;

@@ -5,6 +5,7 @@
 // [m] of a contact solve is measured from first touch. The body's elasticity enters through the
 // SurfaceOperator only; for two elastic bodies use the composite modulus (validation/
 // hertz_contact.hpp) in the operator and the composite curvature in the shape.
+#include <optional>
 #include <variant>
 
 #include "../core/grid.hpp"
@@ -81,5 +82,9 @@ void check_indenter(const Grid& grid, const Indenter& indenter);
 /// paraboloid). False for any other Cylinder and for a HeightMap, whose contact has only the
 /// equivalent radius sqrt(A / pi).
 bool is_axisymmetric(const Indenter& indenter);
+
+/// The radius of a sphere or paraboloid (the shapes Hertz's and Maugis' solutions describe);
+/// none for the other indenters.
+std::optional<double> ball_radius(const Indenter& indenter);
 
 }  // namespace coatfft

@@ -11,13 +11,6 @@ namespace coatfft::scene {
 
 namespace {
 
-// The radius of a sphere or paraboloid indenter; none for the others.
-std::optional<double> ball_radius(const Indenter& indenter) {
-  if (const auto* s = std::get_if<Sphere>(&indenter)) return s->radius;
-  if (const auto* p = std::get_if<Paraboloid>(&indenter)) return p->radius;
-  return std::nullopt;
-}
-
 // Maugis' lambda = 2 sigma0 (R / (pi w K^2))^(1/3), K = 4 E*/3 of the surface's material.
 double maugis_lambda(const AdhesionOptions& law, double radius, double modulus) {
   const double k = 4.0 * modulus / 3.0;
@@ -42,7 +35,6 @@ std::vector<AdhesiveResult> solve_scene_adhesion(ContactSolver& solver, const Sc
                                    spec.load ? " N" : " m"));
     const AdhesiveResult* previous = results.empty() ? nullptr : &results.back();
     AdhesiveResult r = solve_adhesive(solver, height, control, values[k], *spec.adhesion, previous);
-    r.jumped_off = previous && previous->contact_area > 0 && r.contact_area == 0;
     COATFFT_REQUIRE(
         control == ContactControl::approach || r.warning.find("past pull-off") == std::string::npos,
         "[contact] load = ", values[k],

@@ -29,11 +29,9 @@ std::vector<ReferenceLoad> contact_loads(const Scene& scene, const ContactSpec& 
   const Grid& grid = scene.grid;
   if (const auto* punch = std::get_if<FlatPunch>(&spec.indenter))
     return {{AxisymmetricLoad::uniform_disk, punch->radius}};
-  const double* radius = nullptr;
-  if (const auto* s = std::get_if<Sphere>(&spec.indenter)) radius = &s->radius;
-  if (const auto* p = std::get_if<Paraboloid>(&spec.indenter)) radius = &p->radius;
+  const std::optional<double> radius = ball_radius(spec.indenter);
   // An adhesive contact's size is not Hertz's (its load may be tensile, its approach negative).
-  if (radius == nullptr || spec.adhesion) return unknown_load_references(grid);
+  if (!radius || spec.adhesion) return unknown_load_references(grid);
   std::vector<ReferenceLoad> loads;
   for (const double E_star : bounding_moduli(scene)) {
     const HertzSphere h = spec.load ? hertz_sphere_for_load(*spec.load, *radius, E_star)

@@ -36,14 +36,6 @@ nlohmann::json body_summary(const Scene& scene) {
   return {{"substrate", medium(scene.body->substrate())}, {"coatings", coatings}};
 }
 
-// The radius of a sphere or paraboloid indenter (the shapes Hertz's solution describes); none
-// for the other shapes.
-std::optional<double> hertz_radius(const ContactSpec& spec) {
-  if (const auto* sphere = std::get_if<Sphere>(&spec.indenter)) return sphere->radius;
-  if (const auto* paraboloid = std::get_if<Paraboloid>(&spec.indenter)) return paraboloid->radius;
-  return std::nullopt;
-}
-
 // Hertz's solution (Johnson 1985, section 4.2.1) of an indenter of radius R at the scene's load or
 // approach on a half-space of plane-strain modulus E*.
 nlohmann::json hertz_on_half_space(const ContactSpec& spec, double R, double E_star) {
@@ -58,7 +50,7 @@ nlohmann::json hertz_on_half_space(const ContactSpec& spec, double R, double E_s
 // summary.json's "hertz": the Hertz solution of a sphere or paraboloid on a homogeneous body, for
 // comparison; null for any other contact.
 nlohmann::json hertz_json(const Scene& scene) {
-  const std::optional<double> R = hertz_radius(*scene.contact);
+  const std::optional<double> R = ball_radius(scene.contact->indenter);
   if (!R || scene.frf || !scene.body->is_homogeneous() || scene.periodic() ||
       scene.contact->adhesion)
     return nullptr;
@@ -72,7 +64,7 @@ nlohmann::json hertz_json(const Scene& scene) {
 // (docs/frf.md). Null for any other contact, an approach or a sweep.
 nlohmann::json hertz_bare_json(const Scene& scene) {
   const ContactSpec& spec = *scene.contact;
-  const std::optional<double> R = hertz_radius(spec);
+  const std::optional<double> R = ball_radius(spec.indenter);
   if (!R || !spec.load || !spec.sweep.empty() || scene.frf || scene.periodic() || spec.adhesion)
     return nullptr;
   const LayerStack& body = *scene.body;
@@ -146,6 +138,15 @@ nlohmann::json common_summary(const Scene& scene, const std::optional<AutomaticC
 }
 
 // The contact's keys of summary.json, after common_summary's.
+nlohmann::json plastic_summary(const ContactResult& result, double hardness, const Grid& grid) {
+  const PlasticReport plastic = plastic_report(result, hardness, grid);
+  return {{"hardness", hardness},
+          {"plastic_area", plastic.plastic_area},
+          {"plastic_area_fraction", plastic.plastic_area_fraction},
+          {"max_plastic_depth", plastic.max_plastic_depth},
+          {"plastic_volume", plastic.plastic_volume}};
+}
+
 void add_contact_summary(nlohmann::json& summary, const Scene& scene, const ContactResult& result,
                          double solve_seconds) {
   const ContactSpec& spec = *scene.contact;
@@ -173,14 +174,7 @@ void add_contact_summary(nlohmann::json& summary, const Scene& scene, const Cont
   summary["converged"] = result.converged;
   summary["status"] = to_string(result.status);
   summary["max_penetration"] = result.max_penetration;
-  if (spec.hardness) {
-    const PlasticReport plastic = plastic_report(result, *spec.hardness, scene.grid);
-    summary["plastic"] = {{"hardness", *spec.hardness},
-                          {"plastic_area", plastic.plastic_area},
-                          {"plastic_area_fraction", plastic.plastic_area_fraction},
-                          {"max_plastic_depth", plastic.max_plastic_depth},
-                          {"plastic_volume", plastic.plastic_volume}};
-  }
+  if (spec.hardness) summary["plastic"] = plastic_summary(result, *spec.hardness, scene.grid);
   if (!result.warning.empty()) {
     summary["warning"] = result.warning;
     summary["warnings"].push_back(result.warning);

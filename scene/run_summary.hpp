@@ -44,6 +44,11 @@ void check_repeat(int repeat);
 /// The contact's keys of summary.json, after common_summary's: the result's numbers (the same on
 /// every rank of a distributed solve), its warning, the Hertz solution where one applies (on the
 /// homogeneous body, and on the bare substrate and top coating under one load: "hertz_bare").
+/// summary.json's "plastic" of `result`, solved under [contact] hardness = `hardness` on `grid`
+/// (contact/plastic_report.hpp): hardness, plastic_area, plastic_area_fraction,
+/// max_plastic_depth, plastic_volume. Python's ContactResult.plastic is the same object.
+nlohmann::json plastic_summary(const ContactResult& result, double hardness, const Grid& grid);
+
 void add_contact_summary(nlohmann::json& summary, const Scene& scene, const ContactResult& result,
                          double solve_seconds);
 

@@ -18,6 +18,7 @@
 #include "convolution/operators/make_operator.hpp"
 #include "core/error.hpp"
 #include "operator.hpp"
+#include "scene/run_summary.hpp"
 #include "solve_setup.hpp"
 #include "without_gil.hpp"
 
@@ -71,23 +72,11 @@ std::optional<AdhesionOptions> adhesion_law(const std::optional<std::string>& ad
   return AdhesionOptions{*work, *range};
 }
 
-// summary.json's "plastic" of a result solved under `hardness`.
-py::dict plastic_dict(const ContactResult& r, double hardness, const Grid& grid) {
-  const PlasticReport report = plastic_report(r, hardness, grid);
-  py::dict d;
-  d["hardness"] = hardness;
-  d["plastic_area"] = report.plastic_area;
-  d["plastic_area_fraction"] = report.plastic_area_fraction;
-  d["max_plastic_depth"] = report.max_plastic_depth;
-  d["plastic_volume"] = report.plastic_volume;
-  return d;
-}
-
 PyContactResult to_python(ContactResult&& r, const std::optional<double>& hardness = std::nullopt,
                           const Grid* grid = nullptr) {
   PyContactResult out;
   if (hardness && grid) {
-    out.plastic = plastic_dict(r, *hardness, *grid);
+    out.plastic = dict_from_json_text(scene::plastic_summary(r, *hardness, *grid).dump());
     out.plastic_depth = array_from_field(std::move(r.plastic_depth));
   }
   out.pressure = array_from_field(std::move(r.pressure));
