@@ -84,6 +84,7 @@
 #include "validation/axisymmetric_traction.hpp"
 #include "validation/cattaneo_mindlin.hpp"
 #include "validation/maugis_dugdale.hpp"
+#include "validation/winkler_dugdale.hpp"
 #include "validation/hankel_displacement.hpp"
 #include "validation/hertz.hpp"
 #include "validation/hertz_contact.hpp"

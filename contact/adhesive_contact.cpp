@@ -162,15 +162,19 @@ AdhesiveResult solve_adhesive(ContactSolver& solver, const Field& height, Contac
   }
   const bool inner_converged = round.converged;
   const bool feasible = round.feasible;
+  // The gap is h - sigma0 K chi_I + K q - delta, accurate to the inner solve's own bound (relative
+  // to K q) plus the rounding of every term.
+  const double uq_max = round.uq.abs().maxCoeff();
+  const double largest =
+      height.abs().maxCoeff() + uq_max + sigma0 * tension_u.abs().maxCoeff() + std::abs(value);
+  const double bound = detail::gap_tolerance(solver.options().tolerance, uq_max, largest);
   AdhesiveResult out = assemble(std::move(round), interaction, tension_u, sigma0, grid);
   out.rounds = rounds;
   out.jumped_off = previous && previous->contact_area > 0 && out.contact_area == 0;
   out.contact.touches_boundary = !op.periodic() && on_border(out.contact.pressure);
   out.contact.iterations = iterations;
   out.contact.operator_applications = applications;
-  const double u_max = out.contact.displacement.abs().maxCoeff();
-  const double largest = height.abs().maxCoeff() + u_max + std::abs(value);
-  out.violation_bound = detail::gap_tolerance(solver.options().tolerance, u_max, largest);
+  out.violation_bound = bound;
   out.violation = dugdale_violation(out, options);
   out.converged = feasible && inner_converged && held && out.violation <= out.violation_bound;
   out.contact.converged = out.converged;

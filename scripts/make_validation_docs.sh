@@ -12,6 +12,7 @@
 #   traction        docs/validation/traction.md         traction_table       (surface displacements under tangential tractions; sliding)
 #   partial_slip    docs/validation/partial_slip.md     partial_slip_table   (partial slip vs Cattaneo-Mindlin; fretting; coated steel)
 #   hardness        docs/validation/hardness.md         hardness_table       (the hardness cap: sphere limits; rough plastic area)
+#   adhesion        docs/validation/adhesion.md         adhesion_table       (adhesion vs Maugis-Dugdale; thick and thin films; rough pull-off)
 #   rough_contact   docs/validation/rough_contact.md    rough_contact_table  (rough periodic contact: area against load, kappa;
 #                   and its plot docs/figures/rough_contact_area.png, scripts/plot_rough_contact.py)
 #   coated          docs/validation.md's generated block coated_convergence, from the existing
@@ -25,13 +26,13 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build=${BUILD_DIR:-$root/build-release}
 python=/usr/bin/python3
 tables=("$@")
-[ ${#tables[@]} -eq 0 ] && tables=(hertz_dcfft contact frf_pipelines split_kernel hard_cases pipeline_error stress traction partial_slip hardness rough_contact coated)
+[ ${#tables[@]} -eq 0 ] && tables=(hertz_dcfft contact frf_pipelines split_kernel hard_cases pipeline_error stress traction partial_slip hardness adhesion rough_contact coated)
 programs=()
 for t in "${tables[@]}"; do
   case "$t" in
-    hertz_dcfft | contact | frf_pipelines | split_kernel | hard_cases | pipeline_error | stress | traction | partial_slip | hardness | rough_contact) programs+=("${t}_table") ;;
+    hertz_dcfft | contact | frf_pipelines | split_kernel | hard_cases | pipeline_error | stress | traction | partial_slip | hardness | adhesion | rough_contact) programs+=("${t}_table") ;;
     coated) ;;
-    *) echo "usage: $0 [hertz_dcfft|contact|frf_pipelines|split_kernel|hard_cases|pipeline_error|stress|traction|partial_slip|hardness|rough_contact|coated ...]" >&2; exit 2 ;;
+    *) echo "usage: $0 [hertz_dcfft|contact|frf_pipelines|split_kernel|hard_cases|pipeline_error|stress|traction|partial_slip|hardness|adhesion|rough_contact|coated ...]" >&2; exit 2 ;;
   esac
 done
 if [ ${#programs[@]} -gt 0 ]; then

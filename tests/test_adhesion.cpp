@@ -12,6 +12,7 @@
 #include "convolution/operators/make_operator.hpp"
 #include "layers/layer_stack.hpp"
 #include "materials/material.hpp"
+#include "surfaces/self_affine_surface.hpp"
 #include "tests/adhesive_sphere.hpp"
 #include "validation/maugis_dugdale.hpp"
 
@@ -49,6 +50,32 @@ TEST_CASE("Adhesion: a sphere against Maugis-Dugdale, converging with the grid",
   }
 }
 
+namespace {
+
+// The Dugdale conditions of `r` on every cell against an independent gap (the operator applied to
+// the returned pressure); counts the pressing and the cohesive cells.
+void require_dugdale(const AdhesiveResult& r, const Field& gap, const AdhesionOptions& law,
+                     int& contact, int& cohesive) {
+  const double sigma0 = law.strength(), eps = 1e-8 * law.range;
+  contact = cohesive = 0;
+  for (Eigen::Index k = 0; k < gap.size(); ++k) {
+    const double p = r.contact.pressure(k);
+    REQUIRE(p >= -sigma0 * (1 + 1e-14));
+    if (p > -sigma0 * (1 - 1e-12) && p != 0.0) {  // pressing: touching
+      ++contact;
+      REQUIRE(std::abs(gap(k)) <= eps);
+    } else if (p != 0.0) {  // cohesive: within the range
+      ++cohesive;
+      REQUIRE(gap(k) >= -eps);
+      REQUIRE(gap(k) < law.range + eps);
+    } else {
+      REQUIRE(gap(k) >= law.range - eps);
+    }
+  }
+}
+
+}  // namespace
+
 TEST_CASE("Adhesion: the Dugdale conditions hold on every cell, against K p recomputed",
           "[contact][adhesion]") {
   AdhesiveBall ball;
@@ -59,34 +86,59 @@ TEST_CASE("Adhesion: the Dugdale conditions hold on every cell, against K p reco
   ContactSolver solver(*built.op);
   const Field h = height(g, Sphere{ball.radius});
   const AdhesionOptions law = ball.law();
-  const double sigma0 = law.strength();
   for (const double d : {1.0, 0.0, -0.5}) {
     INFO("D = " << d);
     const double delta = d * ball.d_scale();
     const AdhesiveResult r = solve_adhesive(solver, h, ContactControl::approach, delta, law);
     REQUIRE(r.converged);
-    // An independent gap: the operator applied to the returned pressure.
-    const Field gap = h + built.op->apply(r.contact.pressure) - delta;
-    const double eps = 1e-8 * law.range;
     int contact = 0, cohesive = 0;
-    for (Eigen::Index k = 0; k < gap.size(); ++k) {
-      const double p = r.contact.pressure(k);
-      REQUIRE(p >= -sigma0 * (1 + 1e-14));
-      if (p > -sigma0 * (1 - 1e-12) && p != 0.0) {  // pressing: touching
-        ++contact;
-        REQUIRE(std::abs(gap(k)) <= eps);
-      } else if (p != 0.0) {  // cohesive: within the range
-        ++cohesive;
-        REQUIRE(gap(k) >= -eps);
-        REQUIRE(gap(k) < law.range + eps);
-      } else {
-        REQUIRE(gap(k) >= law.range - eps);
-      }
-    }
+    require_dugdale(r, h + built.op->apply(r.contact.pressure) - delta, law, contact, cohesive);
     CHECK(cohesive > 0);
     if (d > 0) CHECK(contact > 0);
     CHECK(r.contact.load == Approx(r.contact.pressure.sum() * g.dx() * g.dy()).epsilon(1e-12));
   }
+}
+
+TEST_CASE("Adhesion: a rough periodic coated surface, along a path down through pull-off",
+          "[contact][adhesion]") {
+  // A polymer film (E* = 1 GPa) 2 um thick on glass against a self-affine surface of 20 nm rms
+  // over a 50 um period: many contacts and cohesive zones, which merge and let go one by one.
+  const Grid g(64, 64, 50e-6, 50e-6);
+  SelfAffineSpec spec;
+  spec.rms_height = 20e-9;
+  spec.seed = 7;
+  const Field z = self_affine_surface(g, spec);
+  const Field h = z.maxCoeff() - z;
+  OperatorOptions o;
+  o.boundary = Boundary::periodic;
+  const Material polymer(0.91e9, 0.3), glass(70e9, 0.22);
+  const BuiltOperator built =
+      make_operator(g, LayerStack({{polymer, 2e-6, Interface::bonded}}, glass), o);
+  ContactSolver solver(*built.op);
+  const AdhesionOptions law{0.05, 5e-9};
+  std::vector<double> approaches;
+  for (int k = 10; k >= -10; --k) approaches.push_back(4e-9 * k);
+  const std::vector<AdhesiveResult> path =
+      solve_adhesive_path(solver, h, ContactControl::approach, approaches, law);
+  double pull_off = 0;
+  int cohesive_somewhere = 0;
+  for (std::size_t k = 0; k < path.size(); ++k) {
+    INFO("approach " << approaches[k]);
+    const AdhesiveResult& r = path[k];
+    REQUIRE(r.converged);
+    CHECK_FALSE(r.contact.touches_boundary);  // a periodic surface has no border
+    int contact = 0, cohesive = 0;
+    require_dugdale(r, h + built.op->apply(r.contact.pressure) - approaches[k], law, contact,
+                    cohesive);
+    cohesive_somewhere += cohesive;
+    pull_off = std::min(pull_off, r.contact.load);
+  }
+  CHECK(cohesive_somewhere > 0);
+  // The path pulls (a tensile load) and ends off contact: the surface let go.
+  CHECK(pull_off < 0);
+  CHECK(path.back().contact_area == 0);
+  CHECK(
+      std::any_of(path.begin(), path.end(), [](const AdhesiveResult& r) { return r.jumped_off; }));
 }
 
 TEST_CASE("Adhesion: a coating of the substrate's material gives the half-space",

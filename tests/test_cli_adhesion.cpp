@@ -88,3 +88,32 @@ TEST_CASE("adhesion: refusals", "[cli_adhesion]") {
                 "load = [-0.01, 0.001]", "past pull-off"}})
     check_refused(kAdhesive, c);
 }
+
+TEST_CASE("adhesion: the stresses under the adhesive tractions", "[cli_adhesion]") {
+  // One approach in contact on a 32^2 grid; [stress] on a plane half a cell deep (a shallower one
+  // costs seconds of quadrature): sigma_zz there is near the surface traction, -p (Johnson 1985,
+  // the boundary condition), so tensile (> 0) under the cohesive zone's cells.
+  std::string scene = kAdhesive;
+  scene.replace(scene.find("nx = 128\nny = 128"), 17, "nx = 32\nny = 32");
+  scene.replace(scene.find("approach = [-0.1e-6, -0.05e-6, 0.0, 0.2e-6, 0.4e-6]"), 51,
+                "approach = 0.2e-6");
+  scene.replace(scene.find("unload = true"), 13, "[stress]\ndepths = [1e-6]\nalpha = 4");
+  const fs::path out = run_scene_ok(scene, "adhesive_stress");
+  const nlohmann::json s = read_summary(out);
+  REQUIRE(s["converged"] == true);
+  const std::vector<double> p = npy_values(out / "pressure.npy");
+  const std::vector<double> stress = npy_values(out / "stress.npy");
+  const std::size_t n = p.size();
+  REQUIRE(stress.size() == 6 * n);
+  const double sigma0 = s["adhesion"]["cohesive_stress"].get<double>();
+  int tensile = 0, pulled = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (p[k] != -sigma0) continue;  // the cohesive zone's cells
+    ++pulled;
+    tensile += stress[2 * n + k] > 0 ? 1 : 0;
+  }
+  INFO(pulled << " cells pulled, " << tensile << " in tension below");
+  REQUIRE(pulled > 0);
+  // Every cell of the zone pulls the plane below into tension.
+  CHECK(tensile == pulled);
+}
