@@ -45,20 +45,20 @@ void write_displacement_csv(const std::filesystem::path& path, const Grid& grid,
 void write_stress_outputs(StagedOutput& out, const scene::OutputSpec& spec, const Grid& grid,
                           const scene::StressRun& s) {
   const auto nx = static_cast<std::size_t>(grid.nx()), ny = static_cast<std::size_t>(grid.ny());
-  const std::size_t n = s.von_mises.size() / (nx * ny);
+  const std::size_t n = s.depth_planes;
   if (spec.stress)
     io::write_npy_array(out.path("stress.npy"), std::vector<std::size_t>{n, 6, ny, nx}, s.stress);
   if (spec.von_mises)
     io::write_npy_array(out.path("von_mises.npy"), std::vector<std::size_t>{n, ny, nx},
                         s.von_mises);
-  const std::size_t nz = s.section_von_mises.size() / nx;
+  const std::size_t nz = s.section_rows;
   if (spec.stress_section)
     io::write_npy_array(out.path("stress_section.npy"), std::vector<std::size_t>{nz, 6, nx},
                         s.section);
   if (spec.von_mises_section)
     io::write_npy_array(out.path("von_mises_section.npy"), std::vector<std::size_t>{nz, nx},
                         s.section_von_mises);
-  const std::size_t ni = s.interfaces_von_mises.size() / (2 * nx * ny);
+  const std::size_t ni = s.interface_count;
   if (spec.stress_interfaces)
     io::write_npy_array(out.path("stress_interfaces.npy"),
                         std::vector<std::size_t>{ni, 2, 6, ny, nx}, s.interfaces);
@@ -128,10 +128,8 @@ void write_npy_outputs(StagedOutput& out, const scene::OutputSpec& spec,
   if (spec.residual_gap && run.residual_gap)
     io::write_npy(out.path("residual_gap.npy"), *run.residual_gap);
   if (run.stress) write_stress_outputs(out, spec, run.grid, *run.stress);
-  if (spec.in_plane && run.ux && run.uy) {
-    io::write_npy(out.path("ux.npy"), *run.ux);
-    io::write_npy(out.path("uy.npy"), *run.uy);
-  }
+  if (spec.in_plane && spec.ux && run.ux) io::write_npy(out.path("ux.npy"), *run.ux);
+  if (spec.in_plane && spec.uy && run.uy) io::write_npy(out.path("uy.npy"), *run.uy);
   if (run.partial_slip) write_partial_slip(out, spec, *run.partial_slip, spec.fretting);
 }
 

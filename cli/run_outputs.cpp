@@ -31,7 +31,8 @@ std::vector<std::string> output_names(const scene::OutputSpec& spec) {
   if (spec.sweep) names.push_back("sweep.csv");
   if (spec.plastic) names.push_back("plastic.npy");
   if (spec.residual_gap) names.push_back("residual_gap.npy");
-  if (spec.in_plane) names.insert(names.end(), {"ux.npy", "uy.npy"});
+  if (spec.in_plane && spec.ux) names.push_back("ux.npy");
+  if (spec.in_plane && spec.uy) names.push_back("uy.npy");
   if (spec.shear) names.insert(names.end(), {"shear_x.npy", "shear_y.npy"});
   if (spec.stick) names.push_back("stick.npy");
   if (spec.slip) names.insert(names.end(), {"slip_x.npy", "slip_y.npy"});

@@ -108,6 +108,22 @@ void check_plastic_outputs(Scene& scene) {
                   "hardness, a list of loads or approaches and unload = true");
 }
 
+// The in-plane surface displacements (ux.npy, uy.npy), with tangential tractions or stresses, of
+// a bonded body whose traction kernels are affordable (checked before when tractions act): on a
+// periodic surface its periodic kernels. Tractions need the response (their normal displacement
+// enters uz, or the contact); stresses alone only for the files, so a list without them skips it.
+void check_in_plane_outputs(Scene& scene) {
+  OutputSpec& output = scene.output;
+  const bool tractions = scene.shear || (scene.contact && scene.contact->friction > 0.0);
+  const bool possible = (scene.stress || tractions) && !scene.frf && scene.body &&
+                        scene.body->all_bonded() && traction_kernels_affordable(scene);
+  for (const auto& [wanted, name] : {std::pair{output.ux, "ux"}, {output.uy, "uy"}})
+    COATFFT_REQUIRE(!output.listed || !wanted || possible, "[output] fields: \"", name,
+                    "\" needs the in-plane surface response: [stress], [shear] or [contact] "
+                    "friction on a bonded body (docs/scene_format.md, \"[output]\")");
+  output.in_plane = possible && (tractions || output.ux || output.uy);
+}
+
 // [shear], with a known [pressure]; its files are inputs of the run.
 void read_shear_loads(const toml::table& root, const std::filesystem::path& scene_dir,
                       Scene& scene) {
@@ -196,9 +212,7 @@ Scene read_scene(const std::filesystem::path& path, const SceneReading& reading)
         return read_contact(section(root, "contact", true), context,
                             scene.frf ? nullptr : &*scene.body);
       });
-    if (scene.contact && !scene.method.planning_given &&
-        scene.grid.nb_cells() >= contact_measure_cells)
-      scene.method.options.planning = Planning::measure;
+    if (scene.contact) plan_for_repeated_use(scene.method, scene.grid);
     scene.output = read_output(root, scene.contact.has_value());
     if (root.contains("stress")) scene.stress = read_stress(root, scene);
     check_stress_outputs(scene.output, scene.stress.value_or(StressSpec{}),
@@ -212,12 +226,7 @@ Scene read_scene(const std::filesystem::path& path, const SceneReading& reading)
     check_partial_slip_outputs(scene);
     if (scene.contact && !scene.contact->sweep.empty()) check_sweep(scene);
     check_plastic_outputs(scene);
-    // The in-plane surface displacements (ux.npy, uy.npy), with tangential tractions or stresses,
-    // of a bonded body whose traction kernels are affordable (checked above when tractions act):
-    // on a periodic surface its periodic kernels.
-    scene.output.in_plane =
-        (scene.stress || scene.shear || (scene.contact && scene.contact->friction > 0.0)) &&
-        !scene.frf && scene.body && scene.body->all_bonded() && traction_kernels_affordable(scene);
+    check_in_plane_outputs(scene);
     // g(0) only shifts every displacement by one constant, which a load-controlled contact
     // absorbs in its approach; when that approach is not reported, g(0) is not computed at all.
     if (scene.contact && !scene.contact->report_approach)

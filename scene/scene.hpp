@@ -72,6 +72,11 @@ struct MethodSpec {
 /// cells measured plans repay their planning within the solve (docs/benchmarks.md, "Planning").
 inline constexpr std::ptrdiff_t contact_measure_cells = 2048 * 2048;
 
+/// The planning rule of an operator applied many times (a contact scene's; every operator Python
+/// makes, which are for reuse): FFTW_MEASURE from contact_measure_cells cells unless `method`
+/// says its planning.
+void plan_for_repeated_use(MethodSpec& method, const Grid& grid);
+
 /// [contact]: a frictionless normal contact with an indenter (contact/).
 struct ContactSpec {
   std::string indenter_name;  ///< "sphere", "paraboloid", "cylinder", "flat_punch", "height_map"
@@ -146,9 +151,13 @@ struct OutputSpec {
   /// by default those of [stress] on a coated body
   bool stress_interfaces = false;
   bool von_mises_interfaces = false;
-  /// ux.npy and uy.npy: set by [stress], [shear] or [contact] friction on a bonded body (not an
-  /// [frf] table) whose traction kernels are affordable (convolution/kernels/traction_kernels.hpp)
+  /// The in-plane surface response is computed: [shear] or [contact] friction (they need it), or
+  /// [stress] with ux.npy or uy.npy wanted, on a bonded body (not an [frf] table) whose traction
+  /// kernels are affordable (convolution/kernels/traction_kernels.hpp)
   bool in_plane = false;
+  /// ux.npy, uy.npy, written where in_plane is computed: by default both
+  bool ux = true;
+  bool uy = true;
   /// format = "netcdf": the .npy files' arrays are written instead as the variables of one
   /// NetCDF file, fields.nc (scene/scene_netcdf.hpp); summary.json and the CSV files stay.
   bool netcdf = false;

@@ -45,4 +45,9 @@ MethodSpec read_method(const toml::table& root, const std::filesystem::path& sce
   return spec;
 }
 
+void plan_for_repeated_use(MethodSpec& method, const Grid& grid) {
+  if (!method.planning_given && grid.nb_cells() >= contact_measure_cells)
+    method.options.planning = Planning::measure;
+}
+
 }  // namespace coatfft::scene

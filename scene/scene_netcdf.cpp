@@ -188,10 +188,8 @@ void write_run_netcdf(const std::filesystem::path& path, const OutputSpec& spec,
         "plastic", run.sweep ? stacked(run.sweep->plastic, plastic) : values(*run.plastic), sweep));
   if (spec.residual_gap && run.residual_gap)
     d.variables.push_back(field_variable("residual_gap", *run.residual_gap));
-  if (spec.in_plane && run.ux && run.uy) {
-    d.variables.push_back(field_variable("ux", *run.ux));
-    d.variables.push_back(field_variable("uy", *run.uy));
-  }
+  if (spec.in_plane && spec.ux && run.ux) d.variables.push_back(field_variable("ux", *run.ux));
+  if (spec.in_plane && spec.uy && run.uy) d.variables.push_back(field_variable("uy", *run.uy));
   if (run.stress) add_stress(d, spec, *run.stress);
   std::vector<std::vector<double>> store;
   store.reserve(16);  // the spans point into its arrays: no reallocation

@@ -27,7 +27,7 @@ struct OutputField {
   std::string_view name;
   bool OutputSpec::*flag;
 };
-constexpr std::array<OutputField, 16> output_fields{
+constexpr std::array<OutputField, 18> output_fields{
     {{"uz", &OutputSpec::uz},
      {"pressure", &OutputSpec::pressure},
      {"gap", &OutputSpec::gap},
@@ -43,7 +43,9 @@ constexpr std::array<OutputField, 16> output_fields{
      {"stick", &OutputSpec::stick},
      {"slip", &OutputSpec::slip},
      {"plastic", &OutputSpec::plastic},
-     {"residual_gap", &OutputSpec::residual_gap}}};
+     {"residual_gap", &OutputSpec::residual_gap},
+     {"ux", &OutputSpec::ux},
+     {"uy", &OutputSpec::uy}}};
 
 // Sets the flag of one name of [output] fields, refusing an unknown name and "gap" for a scene
 // that has none.
@@ -93,7 +95,7 @@ OutputSpec read_output(const toml::table& root, bool contact) {
                     " = []: name at least one output (summary.json is always written: "
                     "fields = [\"summary\"] writes only it)");
     spec = OutputSpec{};
-    spec.uz = spec.pressure = spec.displacement_csv = false;
+    spec.uz = spec.pressure = spec.displacement_csv = spec.ux = spec.uy = false;
     spec.listed = true;
     std::set<std::string> seen;
     for (const std::string& name : names) {

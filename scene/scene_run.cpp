@@ -381,13 +381,21 @@ SceneRun compute_scene(PreparedScene prepared, const SceneRunOptions& options) {
   if (stress) {
     progress.stage("stresses on " + std::to_string(stress_planes(*stress, *body).depths.size()) +
                    " planes");
-    run.stress = compute_stress(*stress, *body, run.grid, run.pressure, q, threads, progress);
+    const OutputSpec& o = scene_copy.output;
+    const StressArrays arrays{o.stress,
+                              o.von_mises,
+                              o.stress_section,
+                              o.von_mises_section,
+                              o.stress_interfaces,
+                              o.von_mises_interfaces};
+    run.stress =
+        compute_stress(*stress, *body, run.grid, run.pressure, q, threads, progress, arrays);
     run.summary["stress"] = run.stress->summary;
   }
   if (scene_copy.output.in_plane) {
     progress.stage("in-plane surface displacements");
     add_in_plane(*surface, q, run);
-  } else if (stress) {
+  } else if (stress && !scene_copy.output.listed) {
     // Only [stress] asked for them (tractions would have been refused): say why they are missing.
     run.summary["warnings"].push_back(
         body->all_bonded()

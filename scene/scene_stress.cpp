@@ -1,11 +1,14 @@
 #include "scene/scene_stress.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <string>
 
+#include "core/detail/huge_pages.hpp"
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
@@ -38,19 +41,13 @@ struct Peak {
   }
 };
 
-// Appends plane s (6 components, then von Mises) in C order (ny, nx) rows, y slowest.
-void append_plane(const PlaneStress& s, std::vector<double>& stress, std::vector<double>& vm) {
-  for (const Field& c : s) stress.insert(stress.end(), c.data(), c.data() + c.size());
-  for (std::ptrdiff_t j = 0; j < s[0].cols(); ++j)
-    for (std::ptrdiff_t i = 0; i < s[0].rows(); ++i) vm.push_back(von_mises(at(s, i, j)));
-}
-
-// Appends the row j of plane s to the section arrays: (6, nx), then (nx).
-void append_row(const PlaneStress& s, std::ptrdiff_t j, std::vector<double>& section,
-                std::vector<double>& vm) {
+// Appends the rows j0 .. j1 - 1 of plane s's 6 components, each in C order (rows, nx), y
+// slowest: a whole plane (ny, nx) or the section's one row (nx).
+void append_components(const PlaneStress& s, std::ptrdiff_t j0, std::ptrdiff_t j1,
+                       std::vector<double>& out) {
   for (const Field& c : s)
-    for (std::ptrdiff_t i = 0; i < c.rows(); ++i) section.push_back(c(i, j));
-  for (std::ptrdiff_t i = 0; i < s[0].rows(); ++i) vm.push_back(von_mises(at(s, i, j)));
+    for (std::ptrdiff_t j = j0; j < j1; ++j)
+      for (std::ptrdiff_t i = 0; i < c.rows(); ++i) out.push_back(c(i, j));
 }
 
 void check_finite(const PlaneStress& s, double z) {
@@ -62,12 +59,6 @@ void check_finite(const PlaneStress& s, double z) {
 // The largest von Mises, principal tensile and Tresca stresses of a set of points.
 struct Peaks {
   Peak mises, tensile, tresca;
-  void take(const StressVector& s, double x, double y, double z, std::size_t layer) {
-    const std::array<double, 3> principal = principal_stresses(s);
-    mises.take(von_mises(s), x, y, z, layer);
-    tensile.take(principal[0], x, y, z, layer);
-    tresca.take(0.5 * (principal[0] - principal[2]), x, y, z, layer);  // coatfft::tresca
-  }
   void take(const Peaks& other) {
     mises.take(other.mises);
     tensile.take(other.tensile);
@@ -75,13 +66,77 @@ struct Peaks {
   }
 };
 
-// The maxima of the rows j0 .. j1 - 1 of plane s at depth z in medium `layer`.
+// A cell's principal stresses by the closed form (Eigen's computeDirect: the trigonometric roots
+// of the characteristic cubic), about four times cheaper than the iterative solver of
+// principal_stresses and within sqrt(eps) of the largest component near a double root, far less
+// elsewhere (docs/stress.md, "Summary maxima").
+std::array<double, 3> closed_form_principal(const StressVector& s) {
+  Eigen::Matrix3d m;
+  m << s[0], s[5], s[4], s[5], s[1], s[3], s[4], s[3], s[2];
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+  solver.computeDirect(m, Eigen::EigenvaluesOnly);
+  const Eigen::Vector3d e = solver.eigenvalues();
+  return {e[2], e[1], e[0]};
+}
+
+// The maxima of the rows j0 .. j1 - 1 of plane s at depth z in medium `layer`, in the order of
+// the cells (the first of equal values is the one reported), with principal_stresses' values;
+// their von Mises stresses appended to `von_mises_out` (C order, y slowest) when it is given.
+// The closed form screens the cells: only those within its error of the largest values need the
+// iterative solver, and a cell below a value the plane attains cannot hold its maximum.
+// `v` with room for `n` values, allocated on huge pages where the kernel agrees, before their
+// first touch (core/detail/huge_pages.hpp: 4 KiB pages' faults cost about what the values' work
+// does).
+void reserve_advised(std::vector<double>& v, std::size_t n) {
+  v.reserve(n);
+  detail::advise_huge_pages(v.data(), n * sizeof(double));
+}
+
+// Per cell of a plane: von Mises' stress and the closed form's values with their error bound.
+// Held across the planes: a fresh allocation's first touch costs about as much as the work.
+struct PlaneScratch {
+  std::vector<double> v, tensile, tresca, error;
+};
+
 Peaks plane_peaks(const PlaneStress& s, const Grid& grid, std::ptrdiff_t j0, std::ptrdiff_t j1,
-                  double z, std::size_t layer) {
+                  double z, std::size_t layer, std::vector<double>* von_mises_out,
+                  PlaneScratch& scratch) {
+  const std::ptrdiff_t nx = grid.nx();
+  const auto cells = static_cast<std::size_t>(nx * (j1 - j0));
+  for (std::vector<double>* f : {&scratch.v, &scratch.tensile, &scratch.tresca, &scratch.error}) {
+    if (f->capacity() < cells) reserve_advised(*f, cells);
+    f->resize(cells);
+  }
+  std::vector<double>&v = scratch.v, &tensile = scratch.tensile, &tresca = scratch.tresca,
+  &error = scratch.error;
+  double reach_tensile = -INFINITY, reach_tresca = -INFINITY;
+  for (std::ptrdiff_t j = j0; j < j1; ++j)
+    for (std::ptrdiff_t i = 0; i < nx; ++i) {
+      const std::size_t k = static_cast<std::size_t>((j - j0) * nx + i);
+      const StressVector t = at(s, i, j);
+      v[k] = von_mises(t);
+      const std::array<double, 3> p = closed_form_principal(t);
+      tensile[k] = p[0];
+      tresca[k] = 0.5 * (p[0] - p[2]);
+      // A generous bound on the closed form's error: 1e-6 of the largest component (its own is
+      // about 1.5e-8 at worst).
+      error[k] = 1e-6 * std::max({std::abs(t[0]), std::abs(t[1]), std::abs(t[2]), std::abs(t[3]),
+                                  std::abs(t[4]), std::abs(t[5])});
+      reach_tensile = std::max(reach_tensile, tensile[k] - error[k]);
+      reach_tresca = std::max(reach_tresca, tresca[k] - error[k]);
+    }
+  if (von_mises_out) von_mises_out->insert(von_mises_out->end(), v.begin(), v.end());
   Peaks peaks;
   for (std::ptrdiff_t j = j0; j < j1; ++j)
-    for (std::ptrdiff_t i = 0; i < grid.nx(); ++i)
-      peaks.take(at(s, i, j), grid.x(i), grid.y(j), z, layer);
+    for (std::ptrdiff_t i = 0; i < nx; ++i) {
+      const std::size_t k = static_cast<std::size_t>((j - j0) * nx + i);
+      const double x = grid.x(i), y = grid.y(j);
+      peaks.mises.take(v[k], x, y, z, layer);
+      if (tensile[k] + error[k] < reach_tensile && tresca[k] + error[k] < reach_tresca) continue;
+      const std::array<double, 3> principal = principal_stresses(at(s, i, j));
+      peaks.tensile.take(principal[0], x, y, z, layer);
+      peaks.tresca.take(0.5 * (principal[0] - principal[2]), x, y, z, layer);  // coatfft::tresca
+    }
   return peaks;
 }
 
@@ -140,14 +195,25 @@ nlohmann::json interface_shear(const StressSpec& spec, const Grid& grid, const S
   return interfaces;
 }
 
-// The planes in the arrays of `run`, each checked finite: the depths' (whole), the section's
-// (its row y = y_centre), the interfaces' (whole, above then below each); their maxima over the
-// points written, one per plane, each plane reported to `progress`.
+// The planes in the arrays of `run` that `arrays` asks for, each checked finite: the depths'
+// (whole), the section's (its row y = y_centre), the interfaces' (whole, above then below each);
+// their maxima over the points written, one per plane, each plane reported to `progress`.
 std::vector<Peaks> write_planes(const StressSpec& spec, const LayerStack& body, const Grid& grid,
                                 const StressPlanes& planes, const std::vector<PlaneStress>& stress,
-                                StressRun& run, ProgressObserver& progress) {
+                                const StressArrays& arrays, StressRun& run,
+                                ProgressObserver& progress) {
   const std::size_t n_depths = spec.depths.size(), n_requested = n_depths + std::size_t(spec.nz);
+  const auto plane = static_cast<std::size_t>(grid.nb_cells()), row_cells = std::size_t(grid.nx());
+  const std::size_t n_sides = stress.size() - n_requested, n_rows = std::size_t(spec.nz);
+  // Each array at its size at once: growing them would copy each several times.
+  reserve_advised(run.stress, arrays.stress ? 6 * n_depths * plane : 0);
+  reserve_advised(run.von_mises, arrays.von_mises ? n_depths * plane : 0);
+  reserve_advised(run.section, arrays.section ? 6 * n_rows * row_cells : 0);
+  reserve_advised(run.section_von_mises, arrays.section_von_mises ? n_rows * row_cells : 0);
+  reserve_advised(run.interfaces, arrays.interfaces ? 6 * n_sides * plane : 0);
+  reserve_advised(run.interfaces_von_mises, arrays.interfaces_von_mises ? n_sides * plane : 0);
   std::vector<Peaks> peaks;
+  PlaneScratch scratch;
   for (std::size_t p = 0; p < stress.size(); ++p) {
     progress.step(detail::concat("maxima of plane ", p + 1, " of ", stress.size()));
     check_interrupt();  // keeps the progress line going, and Ctrl-C prompt
@@ -156,14 +222,22 @@ std::vector<Peaks> write_planes(const StressSpec& spec, const LayerStack& body, 
     const std::size_t layer = body.locate(z, planes.sides[p]).layer;
     const bool row = p >= n_depths && p < n_requested;
     const std::ptrdiff_t j0 = row ? grid.centre_j() : 0, j1 = row ? j0 + 1 : grid.ny();
-    peaks.push_back(plane_peaks(stress[p], grid, j0, j1, z, layer));
-    if (p < n_depths)
-      append_plane(stress[p], run.stress, run.von_mises);
-    else if (row)
-      append_row(stress[p], grid.centre_j(), run.section, run.section_von_mises);
-    else
-      append_plane(stress[p], run.interfaces, run.interfaces_von_mises);
+    const bool depth = p < n_depths;
+    const bool keep = depth ? arrays.stress : row ? arrays.section : arrays.interfaces;
+    const bool keep_von_mises = depth ? arrays.von_mises
+                                : row ? arrays.section_von_mises
+                                      : arrays.interfaces_von_mises;
+    std::vector<double>& components = depth ? run.stress : row ? run.section : run.interfaces;
+    std::vector<double>& von_mises = depth ? run.von_mises
+                                     : row ? run.section_von_mises
+                                           : run.interfaces_von_mises;
+    if (keep) append_components(stress[p], j0, j1, components);
+    peaks.push_back(plane_peaks(stress[p], grid, j0, j1, z, layer,
+                                keep_von_mises ? &von_mises : nullptr, scratch));
   }
+  run.depth_planes = n_depths;
+  run.section_rows = std::size_t(spec.nz);
+  run.interface_count = (stress.size() - n_requested) / 2;
   return peaks;
 }
 
@@ -181,7 +255,7 @@ nlohmann::json alias_warnings(const StressOperator& op) {
 
 StressRun compute_stress(const StressSpec& spec, const LayerStack& body, const Grid& grid,
                          const Field& pressure, const Tractions& q, int threads,
-                         ProgressObserver& progress) {
+                         ProgressObserver& progress, const StressArrays& arrays) {
   const auto start = std::chrono::steady_clock::now();
   const StressPlanes planes = stress_planes(spec, body);
   StressOperatorOptions options;
@@ -204,7 +278,10 @@ StressRun compute_stress(const StressSpec& spec, const LayerStack& body, const G
   const double apply_seconds = detail::seconds_since(apply_start);
 
   StressRun run;
-  const std::vector<Peaks> peaks = write_planes(spec, body, grid, planes, stress, run, progress);
+  const auto maxima_start = std::chrono::steady_clock::now();
+  const std::vector<Peaks> peaks =
+      write_planes(spec, body, grid, planes, stress, arrays, run, progress);
+  const double maxima_seconds = detail::seconds_since(maxima_start);
   run.summary = {{"warnings", alias_warnings(*op)},
                  {"depths", spec.depths},
                  {"at_interface", spec.side == InterfaceSide::below ? "below" : "above"},
@@ -215,7 +292,8 @@ StressRun compute_stress(const StressSpec& spec, const LayerStack& body, const G
                  {"planes", planes.depths.size()},
                  {"tangential", options.tangential},
                  {"setup_seconds", op->setup_seconds()},
-                 {"apply_seconds", apply_seconds}};
+                 {"apply_seconds", apply_seconds},
+                 {"maxima_seconds", maxima_seconds}};
   add_maxima(run.summary, body, peaks);
   run.summary["seconds"] = detail::seconds_since(start);
   if (spec.section)

@@ -14,7 +14,15 @@
 
 namespace coatfft::scene {
 
-/// What [stress] computes. Arrays are C-order, ready for .npy.
+/// The arrays compute_stress assembles (the summary's maxima are computed whatever they are):
+/// those of the [output] fields a run writes; every one by default.
+struct StressArrays {
+  bool stress = true, von_mises = true;                 ///< the depths' planes
+  bool section = true, section_von_mises = true;        ///< the section's rows
+  bool interfaces = true, interfaces_von_mises = true;  ///< the interfaces' planes
+};
+
+/// What [stress] computes. Arrays are C-order, ready for .npy; one not asked for is empty.
 struct StressRun {
   std::vector<double> stress;     ///< (n_depths, 6, ny, nx) [Pa]; empty without depths
   std::vector<double> von_mises;  ///< (n_depths, ny, nx) [Pa]
@@ -24,7 +32,9 @@ struct StressRun {
   /// above it (side 0) and below it (side 1); empty for a homogeneous body
   std::vector<double> interfaces;
   std::vector<double> interfaces_von_mises;  ///< (n_interfaces, 2, ny, nx) [Pa]
-  nlohmann::json summary;                    ///< summary.json's "stress"
+  /// The arrays' leading sizes: n_depths, nz (the section's rows), n_interfaces.
+  std::size_t depth_planes = 0, section_rows = 0, interface_count = 0;
+  nlohmann::json summary;  ///< summary.json's "stress"
 };
 
 /// The stresses of `spec` in the body `body` on `grid` under `pressure` and the tractions `q`
@@ -33,6 +43,6 @@ struct StressRun {
 /// not finite.
 StressRun compute_stress(const StressSpec& spec, const LayerStack& body, const Grid& grid,
                          const Field& pressure, const Tractions& q, int threads,
-                         ProgressObserver& progress);
+                         ProgressObserver& progress, const StressArrays& arrays = {});
 
 }  // namespace coatfft::scene

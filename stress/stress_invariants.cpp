@@ -28,6 +28,9 @@ double von_mises(const StressVector& s) {
     finite = finite && std::isfinite(v);
   }
   if (!finite || scale == 0.0) return unscaled_von_mises(s);
+  // Far from both ends the scaling changes nothing (a power of two scales every rounding alike):
+  // skipped, as it is the costly part.
+  if (scale > 1e-100 && scale < 1e100) return unscaled_von_mises(s);
   int exponent = 0;
   std::frexp(scale, &exponent);
   StressVector t;

@@ -222,6 +222,8 @@ TEST_CASE("[output] fields that cannot be honoured are refused with the key and 
       BadCase{"output_number", method, with("fields = [\"uz\", 1]\n"),
               "must be a list of strings, got an entry of type integer"},
       BadCase{"output_key", method, with("field = [\"uz\"]\n"), "[output] unknown key \"field\""},
+      BadCase{"output_ux", method, with("fields = [\"uz\", \"ux\"]\n"),
+              "\"ux\" needs the in-plane surface response"},
   };
   for (const auto& c : cases) check_refused(kGoodScene, c);
   // coatfft check reads the scene as run does.

@@ -128,8 +128,23 @@ TEST_CASE("[output] fields chooses the stress files", "[cli_stress]") {
   for (const char* absent : {"stress.npy", "stress_section.npy", "von_mises_section.npy", "uz.npy",
                              "pressure.npy", "displacement.csv"})
     CHECK_FALSE(fs::exists(out / absent));
-  // The summary holds the maxima whichever files are written.
-  CHECK(read_summary(out)["stress"]["layers"].size() == 1);
+  // The summary holds the maxima whichever files are written, the same as a run that writes
+  // everything; the files written hold the same values; the in-plane displacements, not asked
+  // for, are not computed (no ux.npy, and no warning that they are missing).
+  const fs::path full = run_scene_ok(kStress, "stress_fields_full");
+  const nlohmann::json s = read_summary(out), all = read_summary(full);
+  CHECK(s["stress"]["layers"].size() == 1);
+  for (const char* key : {"max_von_mises", "max_principal_tensile", "max_tresca"})
+    CHECK(s["stress"][key] == all["stress"][key]);
+  CHECK(npy_values(out / "von_mises.npy") == npy_values(full / "von_mises.npy"));
+  CHECK(fs::exists(full / "ux.npy"));
+  CHECK_FALSE(fs::exists(out / "ux.npy"));
+  CHECK(s["warnings"].dump().find("ux.npy") == std::string::npos);
+  // "ux" alone: ux.npy, the full run's, and no uy.npy.
+  const fs::path ux = run_scene_ok(kStress + "[output]\nfields = [\"ux\"]\n", "stress_fields_ux");
+  CHECK(npy_values(ux / "ux.npy") == npy_values(full / "ux.npy"));
+  CHECK_FALSE(fs::exists(ux / "uy.npy"));
+  CHECK_FALSE(fs::exists(ux / "stress.npy"));
   const std::string no_section = kStress + "[output]\nfields = [\"stress_section\"]\n";
   check_refused(no_section, {"fields_section", "section = \"xz\"\ndepth_max = 1.0e-3\nnz = 4\n", "",
                              "give [stress] section"});

@@ -283,3 +283,21 @@ TEST_CASE("FFTW wisdom can be saved and loaded", "[convolution][fftw]") {
   std::remove(path.c_str());
   CHECK_FALSE(coatfft::load_fftw_wisdom(path));
 }
+
+TEST_CASE("FFTW wisdom can be forgotten", "[convolution][fftw]") {
+  // Wisdom's text is a header line (its checksums name the planner's set-up) and a line a plan.
+  const auto lines = [] {
+    const std::string text = coatfft::export_fftw_wisdom();
+    return std::count(text.begin(), text.end(), '\n');
+  };
+  coatfft::forget_fftw_wisdom();
+  const auto empty = lines();
+  {
+    const Grid grid(24, 24, 1e-3, 1e-3);
+    DcfftOperator op(coatfft::love_kernel(grid, 2e11), coatfft::Planning::measure);
+  }
+  // The measured plans are wisdom; forgotten, the wisdom is as empty as before them.
+  CHECK(lines() > empty);
+  coatfft::forget_fftw_wisdom();
+  CHECK(lines() == empty);
+}

@@ -42,3 +42,17 @@ TEST_CASE("Contact scenes of 2048^2 cells or more measure their FFTW plans by de
   CHECK(read(scene_text(64, contact_section, "planning = \"measure\"\n")).method.options.planning ==
         Planning::measure);
 }
+
+TEST_CASE("The planning rule of reused operators (scenes' contacts, Python's make_operator)",
+          "[scene][planning]") {
+  const Grid large(2048, 2048, 1e-3, 1e-3), small(2047, 2048, 1e-3, 1e-3);
+  scene::MethodSpec m;
+  scene::plan_for_repeated_use(m, small);
+  CHECK(m.options.planning == Planning::estimate);
+  scene::plan_for_repeated_use(m, large);
+  CHECK(m.options.planning == Planning::measure);
+  scene::MethodSpec given;
+  given.planning_given = true;
+  scene::plan_for_repeated_use(given, large);
+  CHECK(given.options.planning == Planning::estimate);
+}

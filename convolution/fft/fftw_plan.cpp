@@ -56,6 +56,11 @@ std::string export_fftw_wisdom() {
   return result;
 }
 
+void forget_fftw_wisdom() {
+  std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+  fftw_forget_wisdom();
+}
+
 bool load_fftw_wisdom(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) return false;

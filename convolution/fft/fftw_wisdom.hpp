@@ -20,4 +20,8 @@ bool import_fftw_wisdom(const std::string& text);
 /// The accumulated FFTW wisdom as text.
 std::string export_fftw_wisdom();
 
+/// Forgets the accumulated FFTW wisdom: later plans are planned anew at their own effort (FFTW
+/// answers any plan, FFTW_ESTIMATE's too, from wisdom of the same problem at a higher effort).
+void forget_fftw_wisdom();
+
 }  // namespace coatfft

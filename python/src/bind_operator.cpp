@@ -99,7 +99,10 @@ bool first_operator = true;
 // The keywords as the library's operator request (model/operator_plan.hpp), which plans a scene's
 // operator too: "auto"'s tolerance, applications and reference load, or the named method.
 OperatorRequest operator_request(const Grid& grid, const MethodKeywords& k) {
-  OperatorRequest request = scene::operator_request(method_spec(k));
+  // Python's operators are for reuse (contact solves, sweeps): the program's contact rule.
+  scene::MethodSpec spec = method_spec(k);
+  scene::plan_for_repeated_use(spec, grid);
+  OperatorRequest request = scene::operator_request(spec);
   AutoRequest& choice = request.automatic_request;
   choice.applications = k.applications.value_or(1.0);
   COATFFT_REQUIRE(choice.applications >= 1 && std::isfinite(choice.applications),

@@ -4,8 +4,10 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <algorithm>
+#include <array>
 #include <filesystem>
 #include <optional>
+#include <tuple>
 #include <vector>
 
 #include "arrays.hpp"
@@ -33,21 +35,19 @@ void add_stress_arrays(const Grid& grid, const scene::StressRun& s, py::dict& ou
     return a;
   };
   const py::ssize_t nx = grid.nx(), ny = grid.ny();
-  if (!s.von_mises.empty()) {
-    const py::ssize_t n = static_cast<py::ssize_t>(s.von_mises.size()) / (nx * ny);
-    out["stress"] = as_array(s.stress, {n, 6, ny, nx});
-    out["von_mises"] = as_array(s.von_mises, {n, ny, nx});
-  }
-  if (!s.section_von_mises.empty()) {
-    const py::ssize_t nz = static_cast<py::ssize_t>(s.section_von_mises.size()) / nx;
-    out["stress_section"] = as_array(s.section, {nz, 6, nx});
-    out["von_mises_section"] = as_array(s.section_von_mises, {nz, nx});
-  }
-  if (!s.interfaces_von_mises.empty()) {
-    const py::ssize_t ni = static_cast<py::ssize_t>(s.interfaces_von_mises.size()) / (2 * nx * ny);
-    out["stress_interfaces"] = as_array(s.interfaces, {ni, 2, 6, ny, nx});
-    out["von_mises_interfaces"] = as_array(s.interfaces_von_mises, {ni, 2, ny, nx});
-  }
+  const auto n = static_cast<py::ssize_t>(s.depth_planes);
+  const auto nz = static_cast<py::ssize_t>(s.section_rows);
+  const auto ni = static_cast<py::ssize_t>(s.interface_count);
+  // Those the scene's [output] fields keep (every one by default), as the program writes them.
+  const std::array<std::tuple<const char*, const std::vector<double>*, std::vector<py::ssize_t>>, 6>
+      arrays{{{"stress", &s.stress, {n, 6, ny, nx}},
+              {"von_mises", &s.von_mises, {n, ny, nx}},
+              {"stress_section", &s.section, {nz, 6, nx}},
+              {"von_mises_section", &s.section_von_mises, {nz, nx}},
+              {"stress_interfaces", &s.interfaces, {ni, 2, 6, ny, nx}},
+              {"von_mises_interfaces", &s.interfaces_von_mises, {ni, 2, ny, nx}}}};
+  for (const auto& [name, values, shape] : arrays)
+    if (!values->empty()) out[name] = as_array(*values, shape);
 }
 
 // The path as a str or any os.PathLike (pathlib.Path), as Python's own file functions take it.
