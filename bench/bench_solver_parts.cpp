@@ -9,8 +9,9 @@
 // FFTW_MEASURE) measured in the same run; and the solve's time split into its parts
 // (ContactTimings) in units of one application: the steps' applications, the recomputations
 // after a change of the contact set, the preconditioner's transforms, the element-wise passes
-// and the start. Ends with the exponent of iterations against N (least squares on log-log, per
-// body and solver). Writes bench/results/solver_parts.csv (or OUTPUT).
+// and the start; and the periodic influence kernel's construction (the operator's set-up, one
+// thread) against the solve. Ends with the exponent of iterations against N (least squares on
+// log-log, per body and solver). Writes bench/results/solver_parts.csv (or OUTPUT).
 //   bench_solver_parts [OUTPUT] [--sizes N ...]
 #include <chrono>
 #include <cmath>
@@ -99,7 +100,7 @@ std::vector<Solver> solvers() {
 
 // One row: the solve and its parts, in applications of `apply_ms`.
 void solve_row(std::ptrdiff_t n, const Body& body, const Solver& s, PeriodicOperator& op,
-               const Field& gap, double apply_ms, double floor_ms,
+               const Field& gap, double apply_ms, double floor_ms, double kernel_ms,
                std::map<std::string, std::vector<double>>& fit, std::ostream& out) {
   ContactSolver solver(op, s.options);
   const double load =
@@ -116,7 +117,7 @@ void solve_row(std::ptrdiff_t n, const Body& body, const Solver& s, PeriodicOper
       << "," << t.total * per_iteration / apply_s << "," << t.steps * per_iteration / apply_s << ","
       << t.recomputations * per_iteration / apply_s << ","
       << t.preconditioner * per_iteration / apply_s << "," << t.passes * per_iteration / apply_s
-      << "," << t.start / apply_s << "\n";
+      << "," << t.start / apply_s << "," << kernel_ms << "," << kernel_ms / (1e3 * t.total) << "\n";
   std::cout << row.str() << std::flush;
   out << row.str();
   const std::string key = body.label + ", " + s.label;
@@ -159,12 +160,15 @@ int main(int argc, char** argv) {
         << "#   recomputations, preconditioner, passes) likewise per iteration; "
            "start_applications\n"
         << "#   = the start's time (scaling, initial pressure) / apply_ms, once per solve\n"
+        << "# kernel_ms: the periodic influence kernel's construction (one thread), the "
+           "operator's\n"
+        << "#   set-up; kernel_over_solve: over that row's solve\n"
         << "# coarse_applications: on the coarser grids of the nested start (a quarter of the\n"
         << "#   cells or fewer each), their time in start_applications\n"
         << "N,body,solver,iterations,applications,coarse_applications,converged,area_fraction,"
            "solve_ms,apply_ms,floor_ms,apply_over_floor,per_iteration_ms,"
            "per_iteration_applications,steps,recomputations,preconditioner,passes,"
-           "start_applications\n";
+           "start_applications,kernel_ms,kernel_over_solve\n";
     std::cout << out.str() << std::flush;
     const std::vector<Body> bodies = {
         {"steel", LayerStack(kSteel)},
@@ -180,13 +184,14 @@ int main(int argc, char** argv) {
       forget_fftw_wisdom();
       for (const Body& body : bodies) {
         PeriodicKernelOptions o;
-        o.threads = 2;
+        const auto kernel_start = std::chrono::steady_clock::now();
         const Field kernel = periodic_influence_kernel(g, *make_frf(body.stack), o);
+        const double kernel_ms = 1e3 * detail::seconds_since(kernel_start);
         PeriodicOperator op(g, kernel, exact_method(body.stack), Planning::estimate);
         Field u;
         const double apply_ms = median_ms([&] { op.apply(gap, u); });
         for (const Solver& s : solvers())
-          solve_row(n, body, s, op, gap, apply_ms, floor_ms, fit, out);
+          solve_row(n, body, s, op, gap, apply_ms, floor_ms, kernel_ms, fit, out);
       }
     }
     std::ostringstream fits;

@@ -42,9 +42,15 @@ Field periodic_influence_kernel(const Grid& g, const Frf& frf, const PeriodicKer
   Field k = to_space(g, spectrum(g, parts, o.threads));
   const std::ptrdiff_t hx = g.nx() / 2, hy = g.ny() / 2;
   Field quarter(hx + 1, hy + 1);
+  // On square cells of a square period the part is symmetric in its offsets (x and y swap with
+  // the images and the cell): an octant is computed and mirrored.
+  const bool square = g.nx() == g.ny() && g.dx() == g.dy();
   detail::parallel_for(0, hy + 1, o.threads, [&](std::ptrdiff_t j) {
-    for (std::ptrdiff_t i = 0; i <= hx; ++i) quarter(i, j) = parts.real_space(i, j);
+    for (std::ptrdiff_t i = square ? j : 0; i <= hx; ++i) quarter(i, j) = parts.real_space(i, j);
   });
+  if (square)
+    for (std::ptrdiff_t j = 0; j <= hy; ++j)
+      for (std::ptrdiff_t i = 0; i < j; ++i) quarter(i, j) = quarter(j, i);
   for (std::ptrdiff_t j = 0; j < g.ny(); ++j)
     for (std::ptrdiff_t i = 0; i < g.nx(); ++i)
       k(i, j) += quarter(i <= hx ? i : g.nx() - i, j <= hy ? j : g.ny() - j);

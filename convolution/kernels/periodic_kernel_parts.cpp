@@ -70,12 +70,38 @@ EwaldLattice make_lattice(const Grid& g, const Frf& frf, double alpha,
 
 }  // namespace
 
+ErfOverR::ErfOverR(double alpha, double r_max)
+    : alpha_(alpha), step_(5e-4 / (alpha * alpha)), inverse_step_(1.0 / step_) {
+  // An elongated period (alpha from its short side) would need a table of its long side in steps
+  // of the short one: beyond a million values (8 MB) the function is evaluated directly.
+  const double count = r_max * r_max / step_ + 4;
+  if (count > 1e6) return;
+  const auto n = static_cast<std::size_t>(count);
+  values_.resize(n);
+  for (std::size_t k = 0; k < n; ++k)
+    values_[k] = erf_over_r(alpha, std::sqrt(static_cast<double>(k) * step_));
+}
+
+double ErfOverR::operator()(double s) const {
+  const double u = s * inverse_step_;
+  const auto k = static_cast<std::size_t>(u);
+  // The first interval (no point left of it) and beyond the table: directly.
+  if (k < 1 || k + 2 >= values_.size()) return erf_over_r(alpha_, std::sqrt(s));
+  const double t = u - static_cast<double>(k);
+  const double* v = values_.data() + k - 1;
+  // Lagrange's cubic through the points k - 1, k, k + 1, k + 2 at k + t.
+  return -t * (t - 1) * (t - 2) / 6 * v[0] + (t + 1) * (t - 1) * (t - 2) / 2 * v[1] -
+         (t + 1) * t * (t - 2) / 2 * v[2] + (t + 1) * t * (t - 1) / 6 * v[3];
+}
+
 PeriodicKernelParts::PeriodicKernelParts(const Grid& grid, const Frf& frf,
                                          const PeriodicKernelOptions& options)
     : grid_(grid),
       frf_(frf),
       alpha_(ewald_alpha(grid)),
-      lattice_(make_lattice(grid, frf, alpha_, options)) {}
+      lattice_(make_lattice(grid, frf, alpha_, options)),
+      // The farthest point of the 3 x 3 images' cells: 1.5 periods and a cell along each axis.
+      erf_over_r_(alpha_, std::hypot(1.5 * grid.lx() + grid.dx(), 1.5 * grid.ly() + grid.dy())) {}
 
 double PeriodicKernelParts::spectrum(std::ptrdiff_t i, std::ptrdiff_t j) const {
   const Grid& g = grid_;
@@ -87,7 +113,7 @@ double PeriodicKernelParts::spectrum(std::ptrdiff_t i, std::ptrdiff_t j) const {
     for (int q = -l.py; q <= l.py; ++q) {
       const double kx = static_cast<double>(i) * l.dkx + 2.0 * pi * p / g.dx();
       const double ky = sj * l.dky + 2.0 * pi * q / g.dy();
-      const double k = std::hypot(kx, ky);
+      const double k = std::sqrt(kx * kx + ky * ky);  // no overflow: k is of order 1 / dx
       if (k == 0.0 || k > std::max(l.k_ewald, l.k_rest)) continue;
       const double s = sinc(0.5 * kx * g.dx()) * sinc(0.5 * ky * g.dy());
       double h = 0.0;
@@ -107,8 +133,8 @@ double PeriodicKernelParts::real_space(std::ptrdiff_t i, std::ptrdiff_t j) const
   const double x = static_cast<double>(i <= g.nx() / 2 ? i : g.nx() - i) * g.dx();
   const double y = static_cast<double>(j <= g.ny() / 2 ? j : g.ny() - j) * g.dy();
   const double alpha = alpha_;
-  const auto smooth = [alpha](double u, double v) {
-    return erf_over_r(alpha, std::hypot(u, v)) / (2.0 * pi);
+  const auto smooth = [this](double u, double v) {
+    return erf_over_r_(u * u + v * v) / (2.0 * pi);
   };
   double sum = 0.0;
   for (int a = -1; a <= 1; ++a)
