@@ -1,7 +1,7 @@
 #include "scene/scene_stress.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -66,24 +66,6 @@ struct Peaks {
   }
 };
 
-// A cell's principal stresses by the closed form (Eigen's computeDirect: the trigonometric roots
-// of the characteristic cubic), about four times cheaper than the iterative solver of
-// principal_stresses and within sqrt(eps) of the largest component near a double root, far less
-// elsewhere (docs/stress.md, "Summary maxima").
-std::array<double, 3> closed_form_principal(const StressVector& s) {
-  Eigen::Matrix3d m;
-  m << s[0], s[5], s[4], s[5], s[1], s[3], s[4], s[3], s[2];
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
-  solver.computeDirect(m, Eigen::EigenvaluesOnly);
-  const Eigen::Vector3d e = solver.eigenvalues();
-  return {e[2], e[1], e[0]};
-}
-
-// The maxima of the rows j0 .. j1 - 1 of plane s at depth z in medium `layer`, in the order of
-// the cells (the first of equal values is the one reported), with principal_stresses' values;
-// their von Mises stresses appended to `von_mises_out` (C order, y slowest) when it is given.
-// The closed form screens the cells: only those within its error of the largest values need the
-// iterative solver, and a cell below a value the plane attains cannot hold its maximum.
 // `v` with room for `n` values, allocated on huge pages where the kernel agrees, before their
 // first touch (core/detail/huge_pages.hpp: 4 KiB pages' faults cost about what the values' work
 // does).
@@ -98,6 +80,12 @@ struct PlaneScratch {
   std::vector<double> v, tensile, tresca, error;
 };
 
+// The maxima of the rows j0 .. j1 - 1 of plane s at depth z in medium `layer`, in the order of
+// the cells (the first of equal values is the one reported), with principal_stresses' values;
+// their von Mises stresses appended to `von_mises_out` (C order, y slowest) when it is given.
+// The closed form screens the cells (docs/stress.md, "Summary maxima"): only those within its
+// error of the largest values need the iterative solver, and a cell below a value the plane
+// attains cannot hold its maximum.
 Peaks plane_peaks(const PlaneStress& s, const Grid& grid, std::ptrdiff_t j0, std::ptrdiff_t j1,
                   double z, std::size_t layer, std::vector<double>* von_mises_out,
                   PlaneScratch& scratch) {
@@ -115,7 +103,7 @@ Peaks plane_peaks(const PlaneStress& s, const Grid& grid, std::ptrdiff_t j0, std
       const std::size_t k = static_cast<std::size_t>((j - j0) * nx + i);
       const StressVector t = at(s, i, j);
       v[k] = von_mises(t);
-      const std::array<double, 3> p = closed_form_principal(t);
+      const std::array<double, 3> p = closed_form_principal_stresses(t);
       tensile[k] = p[0];
       tresca[k] = 0.5 * (p[0] - p[2]);
       // A generous bound on the closed form's error: 1e-6 of the largest component (its own is
@@ -203,15 +191,30 @@ std::vector<Peaks> write_planes(const StressSpec& spec, const LayerStack& body, 
                                 const StressArrays& arrays, StressRun& run,
                                 ProgressObserver& progress) {
   const std::size_t n_depths = spec.depths.size(), n_requested = n_depths + std::size_t(spec.nz);
-  const auto plane = static_cast<std::size_t>(grid.nb_cells()), row_cells = std::size_t(grid.nx());
-  const std::size_t n_sides = stress.size() - n_requested, n_rows = std::size_t(spec.nz);
-  // Each array at its size at once: growing them would copy each several times.
-  reserve_advised(run.stress, arrays.stress ? 6 * n_depths * plane : 0);
-  reserve_advised(run.von_mises, arrays.von_mises ? n_depths * plane : 0);
-  reserve_advised(run.section, arrays.section ? 6 * n_rows * row_cells : 0);
-  reserve_advised(run.section_von_mises, arrays.section_von_mises ? n_rows * row_cells : 0);
-  reserve_advised(run.interfaces, arrays.interfaces ? 6 * n_sides * plane : 0);
-  reserve_advised(run.interfaces_von_mises, arrays.interfaces_von_mises ? n_sides * plane : 0);
+  run.depth_planes = n_depths;
+  run.section_rows = std::size_t(spec.nz);
+  run.interface_count = (stress.size() - n_requested) / 2;
+  // Per kind of plane (the depths', the section's rows, the interfaces' sides): its arrays, null
+  // where not asked for, and the values each holds, reserved at once (growing them would copy
+  // each several times).
+  struct Kind {
+    std::vector<double>*components, *von_mises;
+    std::size_t values;
+  };
+  const auto plane = static_cast<std::size_t>(grid.nb_cells());
+  const std::array<Kind, 3> kinds{
+      {{arrays.stress ? &run.stress : nullptr, arrays.von_mises ? &run.von_mises : nullptr,
+        n_depths * plane},
+       {arrays.section ? &run.section : nullptr,
+        arrays.section_von_mises ? &run.section_von_mises : nullptr,
+        run.section_rows * std::size_t(grid.nx())},
+       {arrays.interfaces ? &run.interfaces : nullptr,
+        arrays.interfaces_von_mises ? &run.interfaces_von_mises : nullptr,
+        2 * run.interface_count * plane}}};
+  for (const Kind& k : kinds) {
+    if (k.components) reserve_advised(*k.components, 6 * k.values);
+    if (k.von_mises) reserve_advised(*k.von_mises, k.values);
+  }
   std::vector<Peaks> peaks;
   PlaneScratch scratch;
   for (std::size_t p = 0; p < stress.size(); ++p) {
@@ -222,22 +225,10 @@ std::vector<Peaks> write_planes(const StressSpec& spec, const LayerStack& body, 
     const std::size_t layer = body.locate(z, planes.sides[p]).layer;
     const bool row = p >= n_depths && p < n_requested;
     const std::ptrdiff_t j0 = row ? grid.centre_j() : 0, j1 = row ? j0 + 1 : grid.ny();
-    const bool depth = p < n_depths;
-    const bool keep = depth ? arrays.stress : row ? arrays.section : arrays.interfaces;
-    const bool keep_von_mises = depth ? arrays.von_mises
-                                : row ? arrays.section_von_mises
-                                      : arrays.interfaces_von_mises;
-    std::vector<double>& components = depth ? run.stress : row ? run.section : run.interfaces;
-    std::vector<double>& von_mises = depth ? run.von_mises
-                                     : row ? run.section_von_mises
-                                           : run.interfaces_von_mises;
-    if (keep) append_components(stress[p], j0, j1, components);
-    peaks.push_back(plane_peaks(stress[p], grid, j0, j1, z, layer,
-                                keep_von_mises ? &von_mises : nullptr, scratch));
+    const Kind& kind = kinds[p < n_depths ? 0 : row ? 1 : 2];
+    if (kind.components) append_components(stress[p], j0, j1, *kind.components);
+    peaks.push_back(plane_peaks(stress[p], grid, j0, j1, z, layer, kind.von_mises, scratch));
   }
-  run.depth_planes = n_depths;
-  run.section_rows = std::size_t(spec.nz);
-  run.interface_count = (stress.size() - n_requested) / 2;
   return peaks;
 }
 

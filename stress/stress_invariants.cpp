@@ -14,6 +14,18 @@ double unscaled_von_mises(const StressVector& s) {
   return std::sqrt(0.5 * (a * a + b * b + c * c) + 3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
 }
 
+// The symmetric tensor of s's six components (xx, yy, zz, yz, xz, xy).
+Eigen::Matrix3d tensor(const StressVector& s) {
+  Eigen::Matrix3d m;
+  m << s[0], s[5], s[4], s[5], s[1], s[3], s[4], s[3], s[2];
+  return m;
+}
+
+// The symmetric solvers' eigenvalues come sorted increasingly.
+std::array<double, 3> largest_first(const Eigen::Vector3d& e) {
+  return {e[2], e[1], e[0]};
+}
+
 }  // namespace
 
 double von_mises(const StressVector& s) {
@@ -39,12 +51,16 @@ double von_mises(const StressVector& s) {
 }
 
 std::array<double, 3> principal_stresses(const StressVector& s) {
-  Eigen::Matrix3d m;
-  m << s[0], s[5], s[4], s[5], s[1], s[3], s[4], s[3], s[2];
-  // The symmetric solver's eigenvalues come sorted increasingly.
   const Eigen::Vector3d e =
-      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(m, Eigen::EigenvaluesOnly).eigenvalues();
-  return {e[2], e[1], e[0]};
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(tensor(s), Eigen::EigenvaluesOnly)
+          .eigenvalues();
+  return largest_first(e);
+}
+
+std::array<double, 3> closed_form_principal_stresses(const StressVector& s) {
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+  solver.computeDirect(tensor(s), Eigen::EigenvaluesOnly);
+  return largest_first(solver.eigenvalues());
 }
 
 double tresca(const StressVector& s) {

@@ -20,6 +20,7 @@
 #include <functional>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -72,6 +73,15 @@ OperatorOptions operator_options(const LayerStack& body) {
   return o;
 }
 
+// A body's operator on a grid and the contact solver over it, built once for all their solves.
+struct BodySolver {
+  BodySolver(const Grid& g, const LayerStack& body)
+      : built(make_operator(g, body, operator_options(body))), solver(*built.op) {}
+  const Grid& grid() const { return built.op->grid(); }
+  BuiltOperator built;
+  ContactSolver solver;
+};
+
 // The approaches of a path: `steps` equal steps from `top` down to zero, then steps of 0.1
 // Maugis' approach scale d_s on down (until the contact jumps off, or -3 d_s).
 std::vector<double> approaches(double top, int steps = 20) {
@@ -91,11 +101,10 @@ struct Path {
 // Follows `path` from the top; the load error at each step in contact is |P - P_ref| over the
 // larger of |P_ref| and pi w R (relative where the load is large, to the adhesive force where it
 // is small).
-Path follow(const Grid& g, const LayerStack& body, const AdhesionOptions& a,
-            const std::vector<double>& path, const std::function<double(double)>& reference) {
-  const BuiltOperator built = make_operator(g, body, operator_options(body));
-  ContactSolver solver(*built.op);
-  const Field h = height(g, Paraboloid{kRadius});
+Path follow(BodySolver& s, const AdhesionOptions& a, const std::vector<double>& path,
+            const std::function<double(double)>& reference) {
+  ContactSolver& solver = s.solver;
+  const Field h = height(s.grid(), Paraboloid{kRadius});
   Path p;
   AdhesiveResult last;
   bool first = true;
@@ -115,11 +124,9 @@ Path follow(const Grid& g, const LayerStack& body, const AdhesionOptions& a,
 }
 
 // The contact radius at zero load (load control from a cold start: the stable branch).
-double zero_load_radius(const Grid& g, const LayerStack& body, const AdhesionOptions& a) {
-  const BuiltOperator built = make_operator(g, body, operator_options(body));
-  ContactSolver solver(*built.op);
+double zero_load_radius(BodySolver& s, const AdhesionOptions& a) {
   const AdhesiveResult r =
-      solve_adhesive(solver, height(g, Paraboloid{kRadius}), ContactControl::load, 0.0, a);
+      solve_adhesive(s.solver, height(s.grid(), Paraboloid{kRadius}), ContactControl::load, 0.0, a);
   return r.converged ? std::sqrt(r.contact_area / pi) : std::nan("");
 }
 
@@ -151,8 +158,9 @@ BallRow ball_row(double lambda, std::ptrdiff_t n, double span) {
   const MaugisDugdale md(kRadius, kModulus, kWork, a.range);
   const auto ref = [&](double d) { return md.load_at_approach(d); };
   const std::vector<double> path = approaches(2 * d_scale());
-  const Path c = follow(ball_grid(n / 2, span), LayerStack(kSoft), a, path, ref);
-  const Path f = follow(ball_grid(n, span), LayerStack(kSoft), a, path, ref);
+  BodySolver coarse(ball_grid(n / 2, span), LayerStack(kSoft));
+  BodySolver fine(ball_grid(n, span), LayerStack(kSoft));
+  const Path c = follow(coarse, a, path, ref), f = follow(fine, a, path, ref);
   return {lambda,
           md.pull_off_load() / force_scale(),
           c.pull_off / force_scale(),
@@ -215,20 +223,21 @@ struct FilmRow {
 // thin limit's values.
 FilmRow film_row(double thickness, const Grid& g, const AdhesionOptions& a, int steps = 20) {
   const bool thick = std::isinf(thickness);
-  const LayerStack body = thick ? LayerStack(kSoft) : film(thickness);
-  const WinklerDugdale thin(kRadius, thin_film_stiffness(kSoft, thick ? 1.0 : thickness), kWork,
-                            a.range);
-  const auto ref = [&](double d) { return thick ? std::nan("") : thin.load_at_approach(d); };
+  std::optional<WinklerDugdale> thin;
+  if (!thick) thin.emplace(kRadius, thin_film_stiffness(kSoft, thickness), kWork, a.range);
+  const auto ref = [&](double d) { return thin ? thin->load_at_approach(d) : std::nan(""); };
   // From the smaller of 2 d_s and 3 times the thin limit's approach at zero load.
-  const double top = std::min(2 * d_scale(), 3 * thin.approach_at_zero_load());
-  const Path p = follow(g, body, a, approaches(top, steps), ref);
+  const double top =
+      thin ? std::min(2 * d_scale(), 3 * thin->approach_at_zero_load()) : 2 * d_scale();
+  BodySolver s(g, thick ? LayerStack(kSoft) : film(thickness));
+  const Path p = follow(s, a, approaches(top, steps), ref);
   FilmRow r{};
   r.thickness = thickness;
   r.pull_off = p.pull_off / force_scale();
-  r.radius_zero = zero_load_radius(g, body, a);
-  r.thin_pull_off = thick ? std::nan("") : thin.pull_off_load() / force_scale();
-  r.thin_radius_zero = thick ? std::nan("") : thin.contact_radius(thin.approach_at_zero_load());
-  r.worst_thin = thick ? std::nan("") : p.worst_error;
+  r.radius_zero = zero_load_radius(s, a);
+  r.thin_pull_off = thin ? thin->pull_off_load() / force_scale() : std::nan("");
+  r.thin_radius_zero = thin ? thin->contact_radius(thin->approach_at_zero_load()) : std::nan("");
+  r.worst_thin = thin ? p.worst_error : std::nan("");
   r.converged = p.converged && std::isfinite(r.radius_zero);
   r.touches = p.touches;
   return r;

@@ -76,6 +76,12 @@ Scene example_scene(const std::string& name) {
   return coatfft::scene::read_scene(kScenes / (name + ".toml"));
 }
 
+// The text of the example scene `name` (to run it with a change).
+std::string example_text(const std::string& name) {
+  std::ifstream in(kScenes / (name + ".toml"));
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
 // The data of a float64 .npy file of any shape (the header ends at its first newline).
 std::vector<double> npy_data(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -223,8 +229,7 @@ TEST_CASE("example coated_hertz_stress.toml: the stresses against their Hankel r
   REQUIRE(scene.stress);
   // The example with 4 section rows for its 40, its only change: the planes checked below do not
   // depend on them, and the rows make 40 of its 45 planes' cost.
-  std::ifstream in(kScenes / "coated_hertz_stress.toml");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string text = example_text("coated_hertz_stress");
   const auto rows = text.find("nz = 40");
   REQUIRE(rows != std::string::npos);
   text.replace(rows, 7, "nz = 4");
@@ -358,8 +363,7 @@ TEST_CASE("example auto_tolerance.toml: auto within its tolerance of frf-split",
   // The same scene by frf-split at its default kernel tolerance (1e-11): a reference 1e8 times
   // tighter than the tolerance. auto's result must be within the tolerance of it, relative to
   // max |u|, at uz_max and at every cell. Measured: 1.1e-7 at both.
-  std::ifstream in(kScenes / "auto_tolerance.toml");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string text = example_text("auto_tolerance");
   const auto method = text.find("\n[method]\n");  // the section, not its mention in comments
   REQUIRE(method != std::string::npos);
   text = text.substr(0, method) + "\n[method]\nname = \"frf-split\"\n";
@@ -450,8 +454,7 @@ TEST_CASE(
   // capped contact solved at 1 N at once (measured 6e-12 of H).
   const fs::path once = scratch("coated_sphere_plastic_once.toml");
   {
-    std::ifstream in(kScenes / "coated_sphere_plastic.toml");
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::string text = example_text("coated_sphere_plastic");
     text.replace(text.find("load = [0.2, 0.5, 1.0]"), 22, "load = 1.0");
     text.replace(text.find("unload = true"), 13, "");
     std::ofstream(once) << text;
@@ -485,8 +488,7 @@ TEST_CASE("example coated_sphere_adhesive.toml: a thin film sticks harder than i
   // (measured 2.02 against 1.63 pi w R; its thin limit is 2).
   const fs::path half = scratch("coated_sphere_adhesive_half.toml");
   {
-    std::ifstream in(kScenes / "coated_sphere_adhesive.toml");
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::string text = example_text("coated_sphere_adhesive");
     text.replace(text.find("material = \"steel\""), 18, "material = \"peek\"");
     const std::size_t coating = text.find("[[coating]]");
     text.erase(coating, text.find("[contact]") - coating);
@@ -676,8 +678,7 @@ TEST_CASE("example coated_sphere.toml: README's first run, between the bare bodi
         Approx(tin.max_pressure).epsilon(1e-12));
 
   // A contact that did not converge has no answer to tell: exit 3 and nothing on stdout.
-  std::ifstream in(kScenes / "coated_sphere.toml");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string text = example_text("coated_sphere");
   // One iteration, and no [stress] (its cost has nothing to show here).
   text = text.substr(0, text.find("\n[stress]\n"));
   text.insert(text.find("\n[method]\n"), "\nmax_iterations = 1\n");

@@ -3,6 +3,7 @@
 // half-space (Love 1929), the direct double sum of the coefficients (the padded convolution must
 // equal it to rounding, for every component, load and parity), and Johnson's (1985) eq. 3.45 on
 // the axis of a Hertz pressure.
+#include <algorithm>
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -177,6 +178,29 @@ TEST_CASE("stress invariants against hand-computed states", "[stress_operator]")
   CHECK(q[0] == Approx(std::sqrt(10.0)).epsilon(1e-14));
   CHECK(q[2] == Approx(-std::sqrt(10.0)).epsilon(1e-14));
   CHECK(tresca({1, 0, -1, 0, 3, 0}) == Approx(std::sqrt(10.0)).epsilon(1e-14));
+}
+
+TEST_CASE("the closed-form principal stresses against the iterative ones", "[stress_operator]") {
+  // Random states: within 1e-12 of the largest component (measured about 2e-14). A double root
+  // (uniaxial tension plus hydrostatic pressure), where the closed form loses most: within
+  // 1e-7 (about sqrt(eps)); the hand-computed states exactly as above.
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> d(-1e9, 1e9);
+  for (int n = 0; n < 10000; ++n) {
+    StressVector s;
+    double largest = 0;
+    for (double& c : s) largest = std::max(largest, std::abs(c = d(rng)));
+    const auto exact = principal_stresses(s), closed = closed_form_principal_stresses(s);
+    for (int k = 0; k < 3; ++k) REQUIRE(std::abs(closed[k] - exact[k]) <= 1e-12 * largest);
+  }
+  const StressVector doubled{3e8, -1e8, -1e8, 0, 0, 0};
+  const auto closed = closed_form_principal_stresses(doubled);
+  CHECK(closed[0] == Approx(3e8).epsilon(1e-7));
+  CHECK(closed[1] == Approx(-1e8).epsilon(1e-7));
+  CHECK(closed[2] == Approx(-1e8).epsilon(1e-7));
+  const auto q = closed_form_principal_stresses({1, 0, -1, 0, 3, 0});
+  CHECK(q[0] == Approx(std::sqrt(10.0)).epsilon(1e-14));
+  CHECK(q[2] == Approx(-std::sqrt(10.0)).epsilon(1e-14));
 }
 
 TEST_CASE("stress operator: interface conditions and a coating of the substrate's own material",
