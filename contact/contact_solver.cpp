@@ -12,6 +12,7 @@
 #include "contact/detail/load_scaling.hpp"
 #include "contact/detail/polonsky_keer_iteration.hpp"
 #include "contact/detail/solver_ranks.hpp"
+#include "convolution/operators/periodic_operator.hpp"
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
@@ -92,8 +93,14 @@ ContactSolver::ContactSolver(SurfaceOperator& op, ContactOptions options,
     if (ranks_) {
       preconditioner_ = ranks_->preconditioner(op_.grid(), options_.threads, planning);
     } else {
+      // On a periodic operator of double precision the two share one filter: its plans and its
+      // spectrum buffer, a field's memory (docs/scale.md, "Memory per cell").
+      const auto* periodic = dynamic_cast<const PeriodicOperator*>(&op_);
       auto fourier =
-          std::make_unique<detail::FourierPreconditioner>(op_.grid(), options_.threads, planning);
+          periodic && periodic->precision() == Precision::double_precision
+              ? std::make_unique<detail::FourierPreconditioner>(periodic->spectral_filter())
+              : std::make_unique<detail::FourierPreconditioner>(op_.grid(), options_.threads,
+                                                                planning);
       if (op_.periodic() &&
           options_.preconditioner_symbol == PreconditionerSymbol::operator_adapted) {
         fourier->adapt_to_kernel(op_.unit_response());

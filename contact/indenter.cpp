@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "core/error.hpp"
 
@@ -139,6 +140,13 @@ Field height(const Grid& grid, const HeightMap& map) {
 
 Field height(const Grid& grid, const Indenter& indenter) {
   return std::visit([&grid](const auto& shape) { return height(grid, shape); }, indenter);
+}
+
+Field take_height(const Grid& grid, Indenter& indenter) {
+  auto* map = std::get_if<HeightMap>(&indenter);
+  if (map == nullptr) return height(grid, indenter);
+  check_indenter(grid, *map);
+  return std::move(map->heights);
 }
 
 Field height_rows(const Grid& grid, const Indenter& indenter, std::ptrdiff_t y0,

@@ -61,6 +61,9 @@ Field height(const Grid& grid, const Cylinder& cylinder);
 Field height(const Grid& grid, const FlatPunch& punch);
 Field height(const Grid& grid, const HeightMap& map);
 Field height(const Grid& grid, const Indenter& indenter);
+/// height(grid, indenter), but a HeightMap's heights are moved out (the map is left empty, and
+/// checked as height() checks it): a large map is not held twice.
+Field take_height(const Grid& grid, Indenter& indenter);
 /// The rows y0 <= j < y0 + rows of height(grid, indenter): a Field (nx, rows), the part of a
 /// distributed solve's slab (distributed/slab.hpp) sampled without the whole field (a HeightMap's
 /// rows are taken from the map it holds). Throws as height(), and for rows outside the grid.

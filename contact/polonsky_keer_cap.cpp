@@ -116,10 +116,10 @@ std::optional<double> PolonskyKeerIteration::cap_scale(const Projected& sums) {
 // carry pressure cannot carry the load at the cap (a step cut too many), the iterate is taken
 // halfway back to the previous one, whose cells could: their union can.
 double PolonskyKeerIteration::restore_load_under_cap(Projected projected) {
-  const double* previous = p_old_.data();  // project() swapped them; old_scale_ is 1 here
+  const double* previous = r_.data();  // project() swapped them; old_scale_ is 1 here
   std::optional<double> s = cap_scale(projected);
   if (!s) {
-    p_ = 0.5 * (p_ + p_old_);
+    p_ = 0.5 * (p_ + r_);
     exact_ = false;
     plastic_exact_ = false;
     s = cap_scale(cap_sums());

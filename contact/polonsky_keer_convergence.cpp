@@ -15,7 +15,7 @@ namespace coatfft::detail {
 bool PolonskyKeerIteration::complementary(double tolerance) {
   const double* hd = h_.data();
   const double* pd = p_.data();
-  const double* ud = u_.data();
+  const double* ud = capped_ ? u_.data() : nullptr;
   const double* gd = g_.data();
   const double* vd = v_.size() > 0 ? v_.data() : nullptr;
   const double s = scale_;
@@ -33,7 +33,9 @@ bool PolonskyKeerIteration::complementary(double tolerance) {
       ranks_, over_cells<Maxima>(n_cells_, workers_, [&](auto first, auto last, Maxima& m) {
         for (std::ptrdiff_t k = first; k < last; ++k) {
           const double g = gd[k] - g_mean_;
-          m.u = std::max(m.u, std::abs(s * ud[k] + (vd ? vd[k] : 0.0)));
+          // The displacement: without a cap g = h + u - delta holds it.
+          const double u = ud ? s * ud[k] + (vd ? vd[k] : 0.0) : gd[k] - hd[k] + delta_;
+          m.u = std::max(m.u, std::abs(u));
           m.h = std::max(m.h, std::abs(hd[k]));
           m.violation = std::max(m.violation, pd[k] >= cap ? g : pd[k] > 0 ? std::abs(g) : -g);
         }

@@ -46,13 +46,11 @@ PolonskyKeerIteration::PolonskyKeerIteration(SurfaceOperator& op,
       n_cells_(h.size()),
       workers_(n_cells_ >= kParallelCells ? options.threads : 1),
       p_(start_pressure ? std::move(*start_pressure) : work_field(h)),
-      u_(work_field(h)),
+      u_(options.hardness ? work_field(h) : Field()),
       g_(work_field(h)),
       t_(zero_field(h)),  // read (times beta = 0) by the first iteration
       r_(work_field(h)),
-      p_old_(work_field(h)),
-      working_(clear_mask(h)),
-      direction_set_(clear_mask(h)),
+      cell_sets_(clear_mask(h)),
       conjugation_(options.conjugation),
       update_by_linearity_(options.update_by_linearity),
       cap_(options.hardness.value_or(std::numeric_limits<double>::infinity())),
@@ -65,8 +63,9 @@ PolonskyKeerIteration::PolonskyKeerIteration(SurfaceOperator& op,
 void PolonskyKeerIteration::recompute_displacement() {
   const ScopedTimer timer(timings_.recomputations);
   if (v_.size() == 0) {
-    op_.apply(p_, u_);
+    op_.apply(p_, displacement());
     ++applications_;
+    g_is_displacement_ = !capped_;
     exact_ = true;
     return;
   }
@@ -134,7 +133,7 @@ std::optional<ContactStatus> PolonskyKeerIteration::step(double tolerance) {
   }
   const Projected projected = project(*tau);
   if (!(projected.p_sum > 0) || !std::isfinite(projected.p_sum)) {
-    p_.swap(p_old_);  // the last iterate that carried pressure; u is not its displacement
+    p_.swap(r_);  // the last iterate that carried pressure; u is not its displacement
     scale_ = old_scale_;
     exact_ = false;
     return ContactStatus::pressure_vanished;
@@ -153,15 +152,22 @@ std::optional<ContactStatus> PolonskyKeerIteration::step(double tolerance) {
 
 // Step 1: gap of the current pressure, g = h + u - delta; on the contact set I_c (the cells
 // with 0 < p < cap) it should be constant (load control: its mean is the unknown approach,
-// g_mean_) or zero (approach control). Returns the number of cells with p > 0.
+// g_mean_) or zero (approach control). Returns the number of cells with p > 0. Without a cap g_
+// is formed from what it holds: K p after a recomputation (g = h + s g - delta), else the gap of
+// gap_scale_ p (rescaled to s p, g = r g + (1 - r) (h - delta) with r = s / gap_scale_: nothing
+// to write when r = 1, as under approach control). Under a cap, from its two parts u_ and v_.
 std::ptrdiff_t PolonskyKeerIteration::update_gap() {
   const double* hd = h_.data();
   const double* pd = p_.data();
-  const double* ud = u_.data();
-  const double* vd = v_.size() > 0 ? v_.data() : nullptr;
   double* gd = g_.data();
+  const double* ud = capped_ ? u_.data() : gd;
+  const double* vd = v_.size() > 0 ? v_.data() : nullptr;
   const double s = scale_;
   const double cap = cap_;
+  const double delta = delta_;
+  const bool from_displacement = capped_ || g_is_displacement_;
+  const double ratio = from_displacement ? 1.0 : s / gap_scale_;
+  const bool rescale = !from_displacement && ratio != 1.0;
   struct Sums {
     std::ptrdiff_t carrying = 0;
     CountSum free;
@@ -176,8 +182,12 @@ std::ptrdiff_t PolonskyKeerIteration::update_gap() {
   const Sums sums = detail::over_ranks(
       ranks_, over_cells<Sums>(n_cells_, workers_, [&](auto first, auto last, Sums& sum) {
         for (std::ptrdiff_t k = first; k < last; ++k) {
-          gd[k] = hd[k] + s * ud[k] - delta_;
-          if (vd) gd[k] += vd[k];
+          if (from_displacement) {
+            gd[k] = hd[k] + s * ud[k] - delta;
+            if (vd) gd[k] += vd[k];
+          } else if (rescale) {
+            gd[k] = ratio * gd[k] + (1.0 - ratio) * (hd[k] - delta);
+          }
           if (pd[k] > 0) {
             ++sum.carrying;
             sum.g_max = std::max(sum.g_max, gd[k]);
@@ -188,6 +198,8 @@ std::ptrdiff_t PolonskyKeerIteration::update_gap() {
           }
         }
       }));
+  g_is_displacement_ = false;
+  gap_scale_ = s;
   if (!load_control_) {
     g_mean_ = 0.0;
   } else if (sums.free.count > 0) {
@@ -200,22 +212,21 @@ std::ptrdiff_t PolonskyKeerIteration::update_gap() {
   return sums.carrying;
 }
 
-// The cells a step moves, marked in working_: I_c, and after a stop with overlaps also the
-// overlapping cells {p = 0, g < 0} and the cells at the cap that would carry less, {p = cap,
-// g > 0}. The preconditioner's input, P g, is written in the same pass
-// (update_direction).
+// The cells a step moves, marked kWorking in cell_sets_: I_c, and after a stop with overlaps also
+// the overlapping cells {p = 0, g < 0} and the cells at the cap that would carry less, {p = cap, g
+// > 0}. The preconditioner's input, P g, is written in the same pass (update_direction).
 PolonskyKeerIteration::WorkingSet PolonskyKeerIteration::select_working_set() {
   const double* pd = p_.data();
   const double* gd = g_.data();
-  unsigned char* wd = working_.data();
-  double* zd = preconditioner_ ? preconditioner_->data() : nullptr;
+  unsigned char* wd = cell_sets_.data();
+  double* zd = preconditioner_ ? r_.data() : nullptr;
   const double cap = cap_;
   const CountSum working = detail::over_ranks(
       ranks_, over_cells<CountSum>(n_cells_, workers_, [&](auto first, auto last, CountSum& sums) {
         for (std::ptrdiff_t k = first; k < last; ++k) {
           const double g = gd[k] - g_mean_;
           const bool in = pd[k] >= cap ? widen_ && g > 0.0 : pd[k] > 0 || (widen_ && g < 0.0);
-          wd[k] = in;
+          wd[k] = static_cast<unsigned char>((wd[k] & kDirectionSet) | (in ? kWorking : 0));
           if (in) {
             ++sums.count;
             sums.sum += g * g;
@@ -238,7 +249,7 @@ PolonskyKeerIteration::WorkingSet PolonskyKeerIteration::select_working_set() {
 void PolonskyKeerIteration::update_direction(std::ptrdiff_t n_working) {
   if (preconditioner_) {  // select_working_set filled its field with P g
     const ScopedTimer timer(timings_.preconditioner);
-    preconditioner_->apply();
+    preconditioner_->apply(r_.data());
   }
   const double g_mean = g_mean_;
   const DirectionSums sums = direction_sums();
@@ -266,15 +277,15 @@ void PolonskyKeerIteration::update_direction(std::ptrdiff_t n_working) {
 PolonskyKeerIteration::DirectionSums PolonskyKeerIteration::direction_sums() {
   const double* gd = g_.data();
   const double g_mean = g_mean_;
-  const double* zd = preconditioner_ ? preconditioner_->data() : gd;
-  const unsigned char* wd = working_.data();
+  const double* zd = preconditioner_ ? r_.data() : gd;
+  const unsigned char* wd = cell_sets_.data();
   const double* td = t_.data();
   const double* qd = g_prev_.size() > 0 ? g_prev_.data() : nullptr;
   return detail::over_ranks(
       ranks_,
       over_cells<DirectionSums>(n_cells_, workers_, [&](auto first, auto last, DirectionSums& s) {
         for (std::ptrdiff_t k = first; k < last; ++k) {
-          if (!wd[k]) continue;
+          if (!(wd[k] & kWorking)) continue;
           const double g = gd[k] - g_mean;
           s.z += zd[k];
           s.g += g;
@@ -293,21 +304,21 @@ PolonskyKeerIteration::DirectionSums PolonskyKeerIteration::direction_sums() {
 void PolonskyKeerIteration::write_direction(double z_mean, double beta, double t_mean) {
   const double* gd = g_.data();
   const double g_mean = g_mean_;
-  const double* zd = preconditioner_ ? preconditioner_->data() : gd;
-  const unsigned char* wd = working_.data();
-  unsigned char* sd = direction_set_.data();
+  const double* zd = preconditioner_ ? r_.data() : gd;
+  unsigned char* wd = cell_sets_.data();
   double* td = t_.data();
   double* qd = g_prev_.size() > 0 ? g_prev_.data() : nullptr;
   over_cells<NoSums>(n_cells_, workers_, [&](auto first, auto last, NoSums&) {
     for (std::ptrdiff_t k = first; k < last; ++k) {
-      if (wd[k]) {
+      const unsigned char sets = wd[k];
+      if (sets & kWorking) {
         td[k] = zd[k] - z_mean + beta * (td[k] - t_mean);
         if (qd) qd[k] = gd[k] - g_mean;
-      } else if (sd[k]) {
+      } else if (sets & kDirectionSet) {
         td[k] = 0.0;
         if (qd) qd[k] = 0.0;
       }
-      sd[k] = wd[k];
+      wd[k] = (sets & kWorking) ? static_cast<unsigned char>(kWorking | kDirectionSet) : 0;
     }
   });
 }
@@ -325,7 +336,7 @@ std::optional<double> PolonskyKeerIteration::step_length(std::ptrdiff_t n_workin
   const double* gd = g_.data();
   const double* td = t_.data();
   const double* rd = r_.data();
-  const unsigned char* wd = working_.data();
+  const unsigned char* wd = cell_sets_.data();
   const double g_mean = g_mean_;
   struct Sums {
     double r = 0.0, t = 0.0, g_dot_t = 0.0, r_dot_t = 0.0;
@@ -340,7 +351,7 @@ std::optional<double> PolonskyKeerIteration::step_length(std::ptrdiff_t n_workin
   const Sums sums = detail::over_ranks(
       ranks_, over_cells<Sums>(n_cells_, workers_, [&](auto first, auto last, Sums& s) {
         for (std::ptrdiff_t k = first; k < last; ++k) {
-          if (!wd[k]) continue;
+          if (!(wd[k] & kWorking)) continue;
           s.r += rd[k];
           s.t += td[k];
           s.g_dot_t += (gd[k] - g_mean) * td[k];
@@ -360,19 +371,24 @@ std::optional<double> PolonskyKeerIteration::step_length(std::ptrdiff_t n_workin
 // Step 4: p <- max(p - tau t, 0) (t is zero off the working set); cells that overlap (p = 0,
 // g < 0) get pressure -tau g (and under Polonsky & Keer's rule restart the conjugation). Under a
 // cap, p <- min(p, cap), and cells at the cap whose gap opens (g > 0) get cap - tau g: the mirror
-// of the overlapping cells. The displacement follows by linearity, u <- u - tau r, which stays
-// exact unless the projection changed a cell (plastic_exact_ too, unless one reached or left
-// the cap). The pending scale_ of p and u is applied here; the new pressure goes into p_old_'s
-// field, and the two are swapped.
+// of the overlapping cells. The gap follows by linearity, g <- g - tau r (under a cap the
+// displacement of the cells below it, u <- u - tau r), which stays exact unless the projection
+// changed a cell (plastic_exact_ too, unless one reached or left the cap). The pending scale_ of
+// p (and of g, which update_gap applied) is applied here; the new pressure goes into r's field
+// (each cell's r read before), and p and r are swapped: until the next step writes r, it holds
+// the previous pressure (unscaled, old_scale_ its factor).
 PolonskyKeerIteration::Projected PolonskyKeerIteration::project(double tau) {
-  const double* gd = g_.data();
+  double* gd = g_.data();
   const double* td = t_.data();
   const double* rd = r_.data();
-  const unsigned char* wd = working_.data();
+  const unsigned char* wd = cell_sets_.data();
   const double* pd = p_.data();
-  double* nd = p_old_.data();
-  double* ud = u_.data();
+  double* nd = r_.data();  // r is read at a cell before the new pressure is written there
+  // What the step moves by linearity: the gap itself (of s p since update_gap), or under a cap
+  // the displacement of the cells below it.
+  double* ud = capped_ ? u_.data() : gd;
   const double s = scale_;
+  const double u_scale = capped_ ? s : 1.0;
   const double g_mean = g_mean_;
   const double cap = cap_;
   struct Sums {
@@ -395,7 +411,8 @@ PolonskyKeerIteration::Projected PolonskyKeerIteration::project(double tau) {
       ranks_, over_cells<Sums>(n_cells_, workers_, [&](auto first, auto last, Sums& sum) {
         for (std::ptrdiff_t k = first; k < last; ++k) {
           const double p_old = s * pd[k];
-          double pk = wd[k] ? p_old - tau * td[k] : p_old;
+          const bool working = wd[k] & kWorking;
+          double pk = working ? p_old - tau * td[k] : p_old;
           if (pk < 0.0) {
             pk = 0.0;
             sum.projected = true;
@@ -406,15 +423,15 @@ PolonskyKeerIteration::Projected PolonskyKeerIteration::project(double tau) {
             sum.projected = true;
           }
           if (pk >= cap) {  // never without a cap (infinity)
-            if (!wd[k] && gd[k] > g_mean) pk = std::max(0.0, cap - tau * (gd[k] - g_mean));
+            if (!working && gd[k] > g_mean) pk = std::max(0.0, cap - tau * (gd[k] - g_mean));
             pk = std::min(pk, cap);
           }
           if ((pk >= cap || p_old >= cap) && pk != p_old) {
             sum.plastic = true;
             sum.projected = true;
           }
+          ud[k] = u_scale * ud[k] - tau * rd[k];
           nd[k] = pk;
-          ud[k] = s * ud[k] - tau * rd[k];
           sum.p += pk;
           sum.change += std::abs(pk - p_old);
           if (pk >= cap) {
@@ -425,9 +442,10 @@ PolonskyKeerIteration::Projected PolonskyKeerIteration::project(double tau) {
           }
         }
       }));
-  p_.swap(p_old_);
+  p_.swap(r_);
   old_scale_ = s;
   scale_ = 1.0;
+  gap_scale_ = 1.0;
   exact_ = exact_ && !sums.projected;
   plastic_exact_ = plastic_exact_ && !sums.plastic;
   conjugate_ = conjugation_ == Conjugation::polak_ribiere || !sums.added;

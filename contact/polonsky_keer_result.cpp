@@ -30,28 +30,48 @@ bool pressure_on_border(const Field& p, const SolverRanks* r, std::ptrdiff_t ny)
 ContactResult PolonskyKeerIteration::result(ContactStatus status, int iterations,
                                             bool compute_approach) {
   if (!exact_) recompute_displacement();
+  // The fields the result does not need are freed, and its own take the others' (the peak of a
+  // solve's memory stays the iteration's: docs/scale.md, "Memory per cell").
+  r_ = Field();
+  g_prev_ = Field();
+  cell_sets_ = ByteMask();
+  // The displacement of s p in a field the iteration no longer needs: under a cap its two parts;
+  // otherwise from the gap (g = h + u - delta), in t's field.
+  Field u;
+  if (capped_) {
+    u_ *= scale_;
+    if (v_.size() > 0) u_ += v_;
+    u = std::move(u_);
+  } else {
+    update_gap();
+    u = std::move(t_);
+    u = g_ - h_ + delta_;
+  }
   p_ *= scale_;
-  u_ *= scale_;
   scale_ = 1.0;
-  if (v_.size() > 0) u_ += v_;  // under a cap: the two parts
   const Mask contact = p_ > 0;
   const auto n_contact = detail::count_over(ranks_, contact.count());
   // The approach is the mean of h + u over the cells below the cap (at it, h + u exceeds the
   // approach by the plastic depth); over the carrying cells when all are at the cap.
   const Mask free = contact && p_ < cap_;
   const auto n_free = detail::count_over(ranks_, free.count());
-  double approach = delta_;
-  if (load_control_) {
-    approach = n_free > 0      ? masked_mean(h_ + u_, free, n_free, ranks_)
-               : n_contact > 0 ? masked_mean(h_ + u_, contact, n_contact, ranks_)
-                               : detail::extrema_over(ranks_, h_).min;
-  }
   ContactResult result;
   result.control = control_;
-  result.gap = work_field(h_);
-  result.gap = h_ + u_ - approach;
+  result.gap = std::move(g_);  // h + u first, in g's field
+  if (capped_) {
+    result.gap = h_ + u;
+  } else {
+    result.gap += delta_;
+  }
+  double approach = delta_;
+  if (load_control_) {
+    approach = n_free > 0      ? masked_mean(result.gap, free, n_free, ranks_)
+               : n_contact > 0 ? masked_mean(result.gap, contact, n_contact, ranks_)
+                               : detail::extrema_over(ranks_, h_).min;
+  }
+  result.gap -= approach;
   result.pressure = std::move(p_);
-  result.displacement = std::move(u_);
+  result.displacement = std::move(u);
   result.load = detail::sum_over(ranks_, result.pressure.sum()) * cell_area_;
   if (!load_control_ || compute_approach) result.approach = approach;
   result.contact_area = static_cast<double>(n_contact) * cell_area_;

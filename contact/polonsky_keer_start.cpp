@@ -75,7 +75,7 @@ void PolonskyKeerIteration::start_hertzian() {
   };
   carry_load();
   recompute_displacement();
-  level *= detail::level_correction(h_, p_, u_, ranks_);
+  level *= detail::level_correction(h_, p_, displacement(), ranks_);
   carry_load();
   exact_ = false;
 }
@@ -89,11 +89,12 @@ bool PolonskyKeerIteration::scale_to_approach() {
   recompute_displacement();
   const double reach = masked_mean(delta_ - h_, support, n_support, ranks_);
   if (!(reach > 0)) return false;
-  const double scale = reach / masked_mean(u_, support, n_support, ranks_);
+  Field& u = displacement();
+  const double scale = reach / masked_mean(u, support, n_support, ranks_);
   COATFFT_REQUIRE(std::isfinite(scale) && scale > 0, "ContactSolver: operator '", op_.name(),
                   "' returned a non-positive mean displacement under a positive pressure");
   p_ *= scale;
-  u_ *= scale;
+  u *= scale;
   return true;
 }
 

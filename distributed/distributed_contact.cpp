@@ -16,7 +16,7 @@ namespace {
 class SlabPreconditioner final : public detail::Preconditioner {
  public:
   SlabPreconditioner(const Communicator& comm, const Grid& grid, int threads, Planning planning)
-      : fft_(comm, grid.nx(), grid.ny(), planning, threads), field_(fft_.slab().field()) {
+      : fft_(comm, grid.nx(), grid.ny(), planning, threads) {
     const Slab& s = fft_.slab();
     const double norm = 1.0 / static_cast<double>(grid.nb_cells());
     sigma_.resize(static_cast<std::size_t>(s.columns * s.ny));
@@ -25,17 +25,15 @@ class SlabPreconditioner final : public detail::Preconditioner {
         sigma_[static_cast<std::size_t>(c * s.ny + j)] =
             detail::preconditioner_symbol(grid, s.kx0 + c, j, norm);
   }
-  double* data() override { return field_.data(); }
-  void apply() override {
-    fft_.forward(field_.data());
+  void apply(double* z) override {
+    fft_.forward(z);
     std::complex<double>* spectrum = fft_.spectrum();
     for (std::size_t n = 0; n < sigma_.size(); ++n) spectrum[n] *= sigma_[n];
-    fft_.inverse(field_.data());
+    fft_.inverse(z);
   }
 
  private:
   detail::SlabFft fft_;
-  Field field_;
   std::vector<double> sigma_;
 };
 

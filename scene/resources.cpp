@@ -39,7 +39,9 @@ MemoryNeed operator_and_fields(const Scene& scene, bool contact) {
   const Grid& grid = scene.grid;
   const double cells = static_cast<double>(grid.nx()) * static_cast<double>(grid.ny());
   const OperatorMemory op = estimated_memory(grid, scene.method.options);
-  return {program_bytes + op.bytes + (contact ? contact_field_bytes(cells) : 4.0 * 8.0 * cells),
+  const bool hardness = contact && scene.contact->hardness.has_value();
+  return {program_bytes + op.bytes +
+              (contact ? contact_field_bytes(cells, scene.periodic(), hardness) : 4.0 * 8.0 * cells),
           lattice_drivers(scene, op)};
 }
 

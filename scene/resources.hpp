@@ -16,14 +16,17 @@ namespace coatfft::scene {
 inline constexpr int max_repeat = 100000;         ///< coatfft run --repeat
 inline constexpr long max_frf_points = 10000000;  ///< coatfft frf --points
 
-/// The memory of a contact's fields on `cells` grid cells [bytes]: 12 fields (iterates,
-/// directions, gap) and the preconditioner's (a real field, its half spectrum and the multiplier).
-inline double contact_field_bytes(double cells) {
-  return (12.0 * 8.0 + 20.0) * cells;
+/// The memory of a contact's fields on `cells` grid cells [bytes] (docs/scale.md, "Memory per
+/// cell"): the heights and five iterate fields (pressure, gap, direction, its image, the previous
+/// gap), two more under a hardness (the displacement in two parts), one byte of cell sets, and
+/// the preconditioner's quarter multiplier with, unless it shares a periodic operator's, its own
+/// half spectrum.
+inline double contact_field_bytes(double cells, bool periodic, bool hardness) {
+  return ((hardness ? 8.0 : 6.0) * 8.0 + 1.0 + 2.0 + (periodic ? 0.0 : 8.0)) * cells;
 }
 
 /// An upper estimate of the peak memory of `coatfft run` on `scene`: the grid's fields (4 for a
-/// known pressure, 12 for a contact: iterates, directions, gap), the operators' own
+/// known pressure, a contact's: contact_field_bytes), the operators' own
 /// (convolution/operators/operator_memory.hpp, estimated_stress_bytes) and the program's
 /// (docs/scene_format.md gives the formula). `drivers` names the scene keys that drive it.
 MemoryNeed estimate_memory(const Scene& scene);

@@ -248,12 +248,14 @@ void add_sweep(SceneRun& run, std::vector<ContactResult>& results, const Contact
 // `surface`: the body's surface response (traction_operator) when the scene writes ux.npy, for
 // the friction coupling; built before an elastic indenter's composite modulus replaces the body
 // for the normal compliance.
-SceneRun compute_contact(Scene scene, const Automatic& automatic, int repeat,
+// The scene's body is replaced by the normal compliance's and a height map's heights are moved
+// out (a large map is not held twice: docs/scale.md, "Memory per cell").
+SceneRun compute_contact(Scene& scene, const Automatic& automatic, int repeat,
                          ProgressObserver& progress,
                          const std::shared_ptr<CerrutiOperator>& surface) {
   const ContactSpec& spec = *scene.contact;
   use_normal_compliance_body(scene);
-  const Field height_field = height(scene.grid, spec.indenter);
+  const Field height_field = take_height(scene.grid, scene.contact->indenter);
   progress.stage(setup_stage(scene));
   BuiltOperator built = operator_from_scene(scene);
 
@@ -360,20 +362,19 @@ SceneRun compute_scene(PreparedScene prepared, const SceneRunOptions& options) {
   // The stresses need the body as the scene gives it (an elastic indenter's composite modulus
   // replaces it for the contact solve only).
   const std::optional<StressSpec> stress = prepared.scene.stress;
-  const Scene scene_copy = prepared.scene;
   const std::optional<LayerStack> body = prepared.scene.body;
+  const Scene& scene = prepared.scene;  // compute_contact changes its body and heights only
   const int threads = prepared.scene.method.options.threads;
   std::shared_ptr<CerrutiOperator> surface;
-  if (scene_copy.output.in_plane) {
+  if (scene.output.in_plane) {
     progress.stage("setting up the surface response to tractions");
-    surface = traction_operator(scene_copy.grid, *body, threads, scene_copy.periodic());
+    surface = traction_operator(scene.grid, *body, threads, scene.periodic());
   }
   SceneRun run =
       prepared.scene.contact
-          ? compute_contact(std::move(prepared.scene), prepared.automatic, options.repeat, progress,
-                            surface)
+          ? compute_contact(prepared.scene, prepared.automatic, options.repeat, progress, surface)
           : compute_pressure(prepared.scene, prepared.automatic, options.repeat, progress);
-  Tractions q = scene_tractions(scene_copy, run.pressure);
+  Tractions q = scene_tractions(scene, run.pressure);
   if (run.partial_slip) {  // the last step's tractions
     q.qx = run.partial_slip->shear_x.back();
     q.qy = run.partial_slip->shear_y.back();
@@ -381,7 +382,7 @@ SceneRun compute_scene(PreparedScene prepared, const SceneRunOptions& options) {
   if (stress) {
     progress.stage("stresses on " + std::to_string(stress_planes(*stress, *body).depths.size()) +
                    " planes");
-    const OutputSpec& o = scene_copy.output;
+    const OutputSpec& o = scene.output;
     const StressArrays arrays{o.stress,
                               o.von_mises,
                               o.stress_section,
@@ -392,10 +393,10 @@ SceneRun compute_scene(PreparedScene prepared, const SceneRunOptions& options) {
         compute_stress(*stress, *body, run.grid, run.pressure, q, threads, progress, arrays);
     run.summary["stress"] = run.stress->summary;
   }
-  if (scene_copy.output.in_plane) {
+  if (scene.output.in_plane) {
     progress.stage("in-plane surface displacements");
     add_in_plane(*surface, q, run);
-  } else if (stress && !scene_copy.output.listed) {
+  } else if (stress && !scene.output.listed) {
     // Only [stress] asked for them (tractions would have been refused): say why they are missing.
     run.summary["warnings"].push_back(
         body->all_bonded()

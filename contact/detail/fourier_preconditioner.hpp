@@ -16,8 +16,10 @@
 // much: measured before Powell's restart (polonsky_keer_iteration.cpp), it let the contact set
 // cycle (no convergence in 3000 iterations at a ratio of 1000), where the geometric mean converged
 // in 230-350.
+#include <memory>
+
 #include "contact/detail/solver_ranks.hpp"
-#include "convolution/fft/detail/fftw_plan.hpp"
+#include "convolution/fft/detail/spectral_filter.hpp"
 #include "core/grid.hpp"
 #include "core/types.hpp"
 
@@ -36,6 +38,10 @@ class FourierPreconditioner final : public Preconditioner {
   /// (docs/contact.md, "Preconditioning").
   explicit FourierPreconditioner(const Grid& grid, int threads = 1,
                                  Planning planning = Planning::estimate);
+  /// On the transforms of a periodic operator of the same grid (PeriodicOperator::
+  /// spectral_filter, double precision), which the two share: no plans and no spectrum buffer of
+  /// its own.
+  explicit FourierPreconditioner(std::shared_ptr<SpectralFilter> filter);
 
   /// sigma <- sqrt(|k| / K^) (above), K^ the DFT of `kernel`, the coefficients of a periodic
   /// operator (SurfaceOperator::unit_response: K at the offsets 0 <= i < nx, 0 <= j < ny modulo
@@ -44,28 +50,18 @@ class FourierPreconditioner final : public Preconditioner {
   /// (k != 0) is not finite and > 0 (no symmetric positive-definite operator).
   bool adapt_to_kernel(const Field& kernel);
 
-  /// The preconditioner's own field, (nx, ny) x fastest: fill it, apply(), read the result. The
-  /// contact iteration works in it, which spares a field of its own.
-  double* data() override { return real_.data(); }
-  /// data() <- F^-1 [sigma F[data()]] in place.
-  void apply() override;
-  /// field <- F^-1 [sigma F[field]] in place; `field` has the grid's shape (nx, ny).
+  /// z <- F^-1 [sigma F[z]] in place; `z` has the grid's nx ny values, x fastest.
   /// sigma(k) = |k| [rad/m]; at k = 0, where |k| vanishes, sigma is the inverse of the mean of
   /// 1/|k| over the central frequency cell (docs/theory.md eq. 3.1), the same zero-frequency rule
   /// as g(0) of the spectral operators. Only the approach-controlled iteration sees this value:
   /// under load control the preconditioned field has zero mean.
-  void apply(Field& field);
+  void apply(double* z) override;
+  void apply(Field& field) { apply(field.data()); }
 
  private:
   Grid grid_;
-  std::ptrdiff_t nx_;
-  std::ptrdiff_t ny_;
-  std::ptrdiff_t hx_;  // nx/2 + 1 complex entries per r2c row
-  FftwRealBuffer real_;
-  FftwComplexBuffer spectrum_;
-  Field sigma_;  // (hx, ny): sigma(k) / (nx ny), FFTW's normalisation folded in
-  FftwPlan forward_;
-  FftwPlan backward_;
+  std::shared_ptr<SpectralFilter> filter_;
+  EvenMultiplier sigma_;  // sigma(k) / (nx ny), FFTW's normalisation folded in
 };
 
 }  // namespace coatfft::detail

@@ -124,17 +124,27 @@ class PolonskyKeerIteration {
   double cell_area_;
   std::ptrdiff_t n_cells_;
   int workers_;  // threads of the element-wise passes (one below kParallelCells)
-  // p_ and u_ are held unscaled: the pressure is scale_ p_ and its displacement scale_ u_. The
-  // load's scaling (enforce_load) is applied by the next projection, which writes both anyway:
-  // a pass fewer than scaling them in place. project() writes the new pressure into p_old_'s
-  // field and swaps the two (old_scale_ is the old pressure's factor).
-  Field p_, u_, g_, t_, r_, p_old_;
-  double scale_ = 1.0, old_scale_ = 1.0;
-  // The working set, one byte a cell (the passes over its cells read it instead of p and g), and
-  // the set the direction t (and g_prev_) was last written on: outside it both are zero.
-  ByteMask working_, direction_set_;
+  // p_ is held unscaled: the pressure is scale_ p_. The load's scaling (enforce_load) is applied
+  // by the next projection, which writes p anyway: a pass fewer than scaling it in place. g_
+  // holds the gap h + K p - delta, moved by linearity (project); its scale follows in update_gap
+  // (gap_scale_: g_ is the gap of gap_scale_ p_), or K p alone after a recomputation
+  // (g_is_displacement_). The displacement is not held apart (a field less: docs/scale.md,
+  // "Memory per cell") but under a cap (u_ and v_ below). r_ serves three fields whose lives do not
+  // overlap (docs/scale.md, "Memory per cell"): the preconditioned gap z (from select_working_set
+  // to write_direction), r = K t (step_length to project) and, after project() wrote the new
+  // pressure into it and swapped it with p_, the previous pressure (old_scale_ its factor).
+  Field p_, u_, g_, t_, r_;
+  double scale_ = 1.0, old_scale_ = 1.0, gap_scale_ = 1.0;
+  bool g_is_displacement_ = false;
+  // Where a recomputation writes K p: g_ (then g_is_displacement_), or u_ under a cap.
+  Field& displacement() { return capped_ ? u_ : g_; }
+  // Two sets of cells in one byte a cell: the working set (kWorking; the passes over its cells
+  // read it instead of p and g) and the set the direction t (and g_prev_) was last written on
+  // (kDirectionSet; outside it both are zero).
+  static constexpr unsigned char kWorking = 1, kDirectionSet = 2;
+  ByteMask cell_sets_;
   // Polak-Ribiere: the previous gap on its working set (empty for Polonsky & Keer's rule). The
-  // preconditioned gap z lives in the preconditioner's own field (g itself serves without one).
+  // preconditioned gap z lives in r_ (g itself serves without a preconditioner).
   Field g_prev_;
   double g_dot_z_old_ = 1.0;
   Conjugation conjugation_;
@@ -151,9 +161,9 @@ class PolonskyKeerIteration {
   int applications_ = 0;
   ContactTimings timings_;
   // The hardness (ContactOptions::hardness; infinity without one): p <= cap_ on every cell. The
-  // displacement is then held in two parts, u_ = K p on the cells below the cap and v_ = K p on
-  // the cells at it (empty without a cap, and during the start): a step moves only the first, by
-  // linearity, and the load is restored by scaling only the first, so u_ stays exact until a
+  // displacement is then held, in two parts, u_ = K p on the cells below the cap and v_ = K p on
+  // the cells at it (both empty without a cap, v_ during the start): a step moves only the first,
+  // by linearity, and the load is restored by scaling only the first, so u_ stays exact until a
   // cell reaches or leaves the cap (plastic_exact_: v_ is exact).
   double cap_;
   bool capped_;

@@ -15,13 +15,12 @@
 
 namespace coatfft::detail {
 
-/// z <- P z on a field the preconditioner owns (contact/detail/fourier_preconditioner.hpp).
+/// z <- P z in place (contact/detail/fourier_preconditioner.hpp).
 class Preconditioner {
  public:
   virtual ~Preconditioner() = default;
-  /// Its field, of the solve's field shape: fill it, apply(), read the result.
-  virtual double* data() = 0;
-  virtual void apply() = 0;
+  /// `z`: a field of the solve's field shape (this rank's rows), overwritten by P z.
+  virtual void apply(double* z) = 0;
 };
 
 class SolverRanks {

@@ -31,8 +31,13 @@ OperatorMemory transform_lattice(const Grid& grid, const OperatorOptions& o) {
 }  // namespace
 
 OperatorMemory estimated_memory(const Grid& grid, const OperatorOptions& options) {
-  if (options.boundary == Boundary::periodic)  // the grid is the lattice: no padding
-    return {2.5 * 8.0 * double(grid.nx()) * double(grid.ny()), grid.nx(), grid.ny()};
+  if (options.boundary == Boundary::periodic) {
+    // The grid is the lattice (no padding): the half spectrum the transforms run through and the
+    // kernel's multiplier on a quarter of the modes (convolution/fft/detail/spectral_filter.hpp).
+    const double hx = double(grid.nx() / 2 + 1);
+    const double spectrum = 16.0 * hx * double(grid.ny());
+    return {spectrum + 8.0 * hx * double(grid.ny() / 2 + 1), grid.nx(), grid.ny()};
+  }
   OperatorMemory m = transform_lattice(grid, options);
   const double lattice = double(m.lattice_nx) * double(m.lattice_ny);
   const bool builds_on_lattice =

@@ -11,6 +11,11 @@
 
 namespace coatfft {
 
+namespace detail {
+class SpectralFilter;
+struct EvenMultiplier;
+}  // namespace detail
+
 class PeriodicOperator final : public SurfaceOperator {
  public:
   /// `kernel`: the (nx, ny) periodic coefficients of `grid` (even, zero mean); `method` what
@@ -31,15 +36,17 @@ class PeriodicOperator final : public SurfaceOperator {
   /// FFTW_ESTIMATE plans.
   std::unique_ptr<SurfaceOperator> coarsened() override;
   using SurfaceOperator::apply;
-
-  struct Transforms;  // the FFTs in one precision (FFTW stays out of the public headers)
+  /// Its transforms: a preconditioner on the same grid shares them (their spectrum buffer is
+  /// scratch of each application).
+  const std::shared_ptr<detail::SpectralFilter>& spectral_filter() const { return filter_; }
 
  private:
   Grid grid_;
   Method method_;
   Precision precision_;
   int threads_;
-  std::unique_ptr<Transforms> t_;
+  std::shared_ptr<detail::SpectralFilter> filter_;
+  std::unique_ptr<detail::EvenMultiplier> multiplier_;  // the kernel's spectrum / (nx ny)
 };
 
 }  // namespace coatfft
