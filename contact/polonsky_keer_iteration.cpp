@@ -55,7 +55,7 @@ PolonskyKeerIteration::PolonskyKeerIteration(SurfaceOperator& op,
       update_by_linearity_(options.update_by_linearity),
       cap_(options.hardness.value_or(std::numeric_limits<double>::infinity())),
       capped_(options.hardness.has_value()) {
-  if (conjugation_ == Conjugation::polak_ribiere) g_prev_ = zero_field(h);
+  if (conjugation_ == Conjugation::polak_ribiere) g_prev_ = zero_single_field(h);
   start(start_pressure.has_value());
   if (capped_) start_under_cap();
 }
@@ -280,7 +280,7 @@ PolonskyKeerIteration::DirectionSums PolonskyKeerIteration::direction_sums() {
   const double* zd = preconditioner_ ? r_.data() : gd;
   const unsigned char* wd = cell_sets_.data();
   const double* td = t_.data();
-  const double* qd = g_prev_.size() > 0 ? g_prev_.data() : nullptr;
+  const float* qd = g_prev_.size() > 0 ? g_prev_.data() : nullptr;
   return detail::over_ranks(
       ranks_,
       over_cells<DirectionSums>(n_cells_, workers_, [&](auto first, auto last, DirectionSums& s) {
@@ -292,8 +292,9 @@ PolonskyKeerIteration::DirectionSums PolonskyKeerIteration::direction_sums() {
           s.t += td[k];
           s.g_dot_z += g * zd[k];
           if (qd) {
-            s.q += qd[k];
-            s.q_dot_z += qd[k] * zd[k];
+            const double q = qd[k];
+            s.q += q;
+            s.q_dot_z += q * zd[k];
           }
         }
       }));
@@ -307,16 +308,16 @@ void PolonskyKeerIteration::write_direction(double z_mean, double beta, double t
   const double* zd = preconditioner_ ? r_.data() : gd;
   unsigned char* wd = cell_sets_.data();
   double* td = t_.data();
-  double* qd = g_prev_.size() > 0 ? g_prev_.data() : nullptr;
+  float* qd = g_prev_.size() > 0 ? g_prev_.data() : nullptr;
   over_cells<NoSums>(n_cells_, workers_, [&](auto first, auto last, NoSums&) {
     for (std::ptrdiff_t k = first; k < last; ++k) {
       const unsigned char sets = wd[k];
       if (sets & kWorking) {
         td[k] = zd[k] - z_mean + beta * (td[k] - t_mean);
-        if (qd) qd[k] = gd[k] - g_mean;
+        if (qd) qd[k] = static_cast<float>(gd[k] - g_mean);
       } else if (sets & kDirectionSet) {
         td[k] = 0.0;
-        if (qd) qd[k] = 0.0;
+        if (qd) qd[k] = 0.0f;
       }
       wd[k] = (sets & kWorking) ? static_cast<unsigned char>(kWorking | kDirectionSet) : 0;
     }

@@ -33,22 +33,24 @@ ContactResult PolonskyKeerIteration::result(ContactStatus status, int iterations
   // The fields the result does not need are freed, and its own take the others' (the peak of a
   // solve's memory stays the iteration's: docs/scale.md, "Memory per cell").
   r_ = Field();
-  g_prev_ = Field();
+  g_prev_ = SingleField();
   cell_sets_ = ByteMask();
   // The displacement of s p in a field the iteration no longer needs: under a cap its two parts;
-  // otherwise from the gap (g = h + u - delta), in t's field.
+  // otherwise K p applied once more into t's field (g - h + delta would carry the rounding of
+  // the heights, which can be many times the displacement's).
+  const double s = scale_;
+  p_ *= s;
+  scale_ = 1.0;
   Field u;
   if (capped_) {
-    u_ *= scale_;
+    u_ *= s;
     if (v_.size() > 0) u_ += v_;
     u = std::move(u_);
   } else {
-    update_gap();
     u = std::move(t_);
-    u = g_ - h_ + delta_;
+    op_.apply(p_, u);
+    ++applications_;
   }
-  p_ *= scale_;
-  scale_ = 1.0;
   const Mask contact = p_ > 0;
   const auto n_contact = detail::count_over(ranks_, contact.count());
   // The approach is the mean of h + u over the cells below the cap (at it, h + u exceeds the
@@ -58,11 +60,7 @@ ContactResult PolonskyKeerIteration::result(ContactStatus status, int iterations
   ContactResult result;
   result.control = control_;
   result.gap = std::move(g_);  // h + u first, in g's field
-  if (capped_) {
-    result.gap = h_ + u;
-  } else {
-    result.gap += delta_;
-  }
+  result.gap = h_ + u;
   double approach = delta_;
   if (load_control_) {
     approach = n_free > 0      ? masked_mean(result.gap, free, n_free, ranks_)

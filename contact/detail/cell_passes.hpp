@@ -14,9 +14,10 @@ namespace coatfft::detail {
 
 using Mask = Eigen::Array<bool, Eigen::Dynamic, Eigen::Dynamic>;
 using ByteMask = Eigen::Array<unsigned char, Eigen::Dynamic, 1>;  // one byte a cell
+using SingleField = Eigen::Array<float, Eigen::Dynamic, 1>;       // four bytes a cell
 
 // A work field of h's shape on huge pages (core/detail/huge_pages.hpp), its values unset, and
-// the same zeroed; a cell mask of h's size, cleared.
+// the same zeroed; a cell mask of h's size, cleared; a single-precision field of h's size, zeroed.
 inline Field work_field(const Field& h) {
   return untouched_array<Field>(h.rows(), h.cols());
 }
@@ -25,6 +26,9 @@ inline Field zero_field(const Field& h) {
 }
 inline ByteMask clear_mask(const Field& h) {
   return zeroed_array<ByteMask>(h.size(), 1);
+}
+inline SingleField zero_single_field(const Field& h) {
+  return zeroed_array<SingleField>(h.size(), 1);
 }
 
 // The fewest cells whose element-wise passes run on ContactOptions::threads: a pass over 512^2

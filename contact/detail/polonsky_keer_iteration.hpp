@@ -144,8 +144,11 @@ class PolonskyKeerIteration {
   static constexpr unsigned char kWorking = 1, kDirectionSet = 2;
   ByteMask cell_sets_;
   // Polak-Ribiere: the previous gap on its working set (empty for Polonsky & Keer's rule). The
-  // preconditioned gap z lives in r_ (g itself serves without a preconditioner).
-  Field g_prev_;
+  // preconditioned gap z lives in r_ (g itself serves without a preconditioner). In single
+  // precision (half a field's memory): it enters only beta's numerator z.(g - g_prev) and
+  // Powell's test |z.g_prev| >= 0.2 z.g, where its rounding, 6e-8 of the gap, moves beta by as
+  // little; the step, the projection and the stop stay in double.
+  SingleField g_prev_;
   double g_dot_z_old_ = 1.0;
   Conjugation conjugation_;
   // Keep the previous direction: false before the first step and, under Polonsky & Keer's rule,
