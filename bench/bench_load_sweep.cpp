@@ -1,12 +1,12 @@
 // Load sweeps on a periodic rough surface: the same loads solved one by one from the usual
-// (Hertzian) start, and as one sweep (ContactSolver::solve_sweep), each solve started from the
-// previous load's pressure. A self-affine surface (H = 0.8, rms slope 0.05, shortest wavelength
-// 16 cells, roll-off at a quarter of the period) pressed by a rigid flat into steel and into
-// TiN-coated steel (5 um), periodic boundaries, tolerance 1e-10, one thread; the loads spaced
-// geometrically from about 1 % to about 30 % contact area (A/A0 ~ kappa p_m/(E* g), kappa about
-// 2.2). Per load: iterations, operator applications and wall time of both, and the largest
-// pressure difference between them (both converge to the same discrete solution).
-// Prints `# key = value` headers and CSV rows, and writes the same to
+// start (nested on a rough surface), and as one sweep (ContactSolver::solve_sweep), each solve
+// started from the solutions before it (the secant through the last two). A self-affine surface (H
+// = 0.8, rms slope 0.05, shortest wavelength 16 cells, roll-off at a quarter of the period) pressed
+// by a rigid flat into steel and into TiN-coated steel (5 um), periodic boundaries, tolerance
+// 1e-10, one thread; the loads spaced geometrically from about 1 % to about 30 % contact area (A/A0
+// ~ kappa p_m/(E* g), kappa about 2.2). Per load: iterations, operator applications and wall time
+// of both, and the largest pressure difference between them (both converge to the same discrete
+// solution). Prints `# key = value` headers and CSV rows, and writes the same to
 // bench/results/load_sweep.csv (or OUTPUT).
 //   bench_load_sweep [OUTPUT] [--sizes N ...] [--loads K]
 #include <chrono>
@@ -52,6 +52,12 @@ std::vector<double> sweep_loads(int count) {
   return loads;
 }
 
+// A solve's applications in fine ones: its coarse grids' (a nested start's) at a quarter of the
+// cells or fewer counted as a quarter, an upper bound of their cost.
+double cost(const ContactResult& r) {
+  return r.operator_applications + 0.25 * r.coarse_applications;
+}
+
 // The rows of one body on one grid: the cold solves, then the sweep, side by side.
 std::string measure(std::ptrdiff_t n, const SweepBody& body, const std::vector<double>& loads) {
   const Grid g(n, n, kSweepLength, kSweepLength);
@@ -80,18 +86,24 @@ std::string measure(std::ptrdiff_t n, const SweepBody& body, const std::vector<d
          << cold[k].contact_area / (kSweepLength * kSweepLength) << "," << cold[k].iterations << ","
          << cold[k].operator_applications << "," << cold_ms[k] << "," << warm[k].iterations << ","
          << warm[k].operator_applications << "," << (cold[k].converged ? 1 : 0)
-         << (warm[k].converged ? 1 : 0) << "," << difference << "\n";
+         << (warm[k].converged ? 1 : 0) << "," << difference << "," << cold[k].coarse_applications
+         << "," << warm[k].coarse_applications << "," << cost(cold[k]) << "," << cost(warm[k])
+         << "\n";
   }
   int cold_total = 0, warm_total = 0;
-  double cold_total_ms = 0;
+  double cold_total_ms = 0, cold_cost = 0, warm_cost = 0;
   for (std::size_t k = 0; k < loads.size(); ++k) {
     cold_total += cold[k].operator_applications;
     warm_total += warm[k].operator_applications;
+    cold_cost += cost(cold[k]);
+    warm_cost += cost(warm[k]);
     cold_total_ms += cold_ms[k];
   }
   rows << "# total " << n << " " << body.label << ": applications cold " << cold_total << ", sweep "
-       << warm_total << " (" << double(warm_total) / cold_total << "); time cold " << cold_total_ms
-       << " ms, sweep " << sweep_ms << " ms (" << sweep_ms / cold_total_ms << ")\n";
+       << warm_total << " (" << double(warm_total) / cold_total << "); cost cold " << cold_cost
+       << ", sweep " << warm_cost << " (" << warm_cost / cold_cost << "); time cold "
+       << cold_total_ms << " ms, sweep " << sweep_ms << " ms (" << sweep_ms / cold_total_ms
+       << ")\n";
   return rows.str();
 }
 
@@ -116,11 +128,14 @@ int main(int argc, char** argv) {
     csv << "# surface = self-affine H 0.8, rms slope " << kSweepSlope
         << ", shortest wavelength 16 cells, roll-off L/4, L = " << kSweepLength
         << " m, periodic; rigid flat; tolerance 1e-10, one thread, estimate plans\n"
-        << "# cold = each load from the Hertzian start; sweep = solve_sweep, each load from the "
-           "previous one's pressure\n"
-        << "# p_difference = max |p_sweep - p_cold| / max p_cold\n"
+        << "# cold = each load solved alone (the usual start: nested on a rough surface); "
+           "sweep = solve_sweep, each load from the secant through the solutions before it\n"
+        << "# p_difference = max |p_sweep - p_cold| / max p_cold; *_coarse_applications: on "
+           "the nested start's coarser grids; *_cost = applications + coarse / 4 (fine "
+           "applications' worth)\n"
         << "n,body,load,area_fraction,cold_iterations,cold_applications,cold_ms,"
-           "sweep_iterations,sweep_applications,converged,p_difference\n";
+           "sweep_iterations,sweep_applications,converged,p_difference,"
+           "cold_coarse_applications,sweep_coarse_applications,cold_cost,sweep_cost\n";
     std::cout << csv.str() << std::flush;
     const std::vector<SweepBody> bodies = {
         {"steel", LayerStack(kSweepSteel)},

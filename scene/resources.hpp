@@ -20,9 +20,11 @@ inline constexpr long max_frf_points = 10000000;  ///< coatfft frf --points
 /// cell"): the heights and five iterate fields (pressure, gap, direction, its image, the previous
 /// gap), two more under a hardness (the displacement in two parts), one byte of cell sets, and
 /// the preconditioner's quarter multiplier with, unless it shares a periodic operator's, its own
-/// half spectrum.
+/// half spectrum; and two fields' worth of transients (the set-up's kernel and planner buffer,
+/// and arrays of 32 MiB or less, which the allocator keeps for reuse: a periodic 2048^2 contact
+/// peaks 12 bytes a cell above its arrays).
 inline double contact_field_bytes(double cells, bool periodic, bool hardness) {
-  return ((hardness ? 8.0 : 6.0) * 8.0 + 1.0 + 2.0 + (periodic ? 0.0 : 8.0)) * cells;
+  return ((hardness ? 10.0 : 8.0) * 8.0 + 1.0 + 2.0 + (periodic ? 0.0 : 8.0)) * cells;
 }
 
 /// An upper estimate of the peak memory of `coatfft run` on `scene`: the grid's fields (4 for a

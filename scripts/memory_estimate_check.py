@@ -44,7 +44,8 @@ def run_case(tmp, name, n, body, load, method):
     result = subprocess.run([str(BUILD / "bench" / "bench_peak_rss"), str(BUILD / "coatfft"),
                              "run", str(scene), "-o", str(out)],
                             capture_output=True, text=True, check=True)
-    values = dict(line.split(" = ") for line in result.stdout.strip().splitlines())
+    # bench_peak_rss's `key = value` lines, after what the program itself prints
+    values = dict(line.split(" = ", 1) for line in result.stdout.splitlines() if " = " in line)
     summary = json.loads((out / "summary.json").read_text())
     measured = float(values["peak_rss_mb"]) * 2**20
     estimate = summary["estimated_memory_bytes"]
