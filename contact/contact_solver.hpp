@@ -242,8 +242,9 @@ class ContactSolver {
   /// (the first from the usual start, the second from the first's pressure, the others from the
   /// secant through the last two), scaled to its own value (one application). The results, one per
   /// value, in ascending order of value, each as solve would return it (its operator_applications
-  /// its own). A neighbouring solution's contact set is close to the next one's, so a sweep costs
-  /// fewer applications than the same solves started cold (bench/bench_load_sweep.cpp).
+  /// its own). A neighbouring solution's contact set is close to the next one's; against solves
+  /// started cold (nested on a rough surface) a sweep saves their coarse grids' applications
+  /// (bench/bench_load_sweep.cpp).
   ///
   /// `unload`: after the ascending values, the values below the largest in descending order
   /// (the unloading branch; the results follow that order). With ContactOptions::hardness the
