@@ -91,7 +91,7 @@ ContactSolver::ContactSolver(SurfaceOperator& op, ContactOptions options,
     const Planning planning = options_.preconditioner_planning.value_or(
         op_.grid().nb_cells() >= measured_cells ? Planning::measure : Planning::estimate);
     if (ranks_) {
-      preconditioner_ = ranks_->preconditioner(op_.grid(), options_.threads, planning);
+      preconditioner_ = ranks_->preconditioner(op_, options_.threads, planning);
     } else {
       // On a periodic operator of double precision the two share one filter: its plans and its
       // spectrum buffer, a field's memory (docs/scale.md, "Memory per cell").

@@ -1,5 +1,6 @@
 #include "distributed/distributed_periodic_operator.hpp"
 
+#include <memory>
 #include <vector>
 
 #include "convolution/kernels/detail/periodic_kernel_parts.hpp"
@@ -10,7 +11,7 @@
 namespace coatfft {
 
 struct DistributedPeriodicOperator::Transforms {
-  detail::SlabFft fft;
+  std::shared_ptr<detail::SlabFft> fft;  // shared with a contact solver's preconditioner
   std::vector<double> multiplier;  // this rank's columns of the kernel's real spectrum, over nx ny
 };
 
@@ -61,13 +62,17 @@ DistributedPeriodicOperator::DistributedPeriodicOperator(const Communicator& com
   COATFFT_REQUIRE(grid.nx() % 2 == 0 && grid.ny() % 2 == 0,
                   "DistributedPeriodicOperator: nx = ", grid.nx(), " and ny = ", grid.ny(),
                   " must be even");
-  t_ = std::make_unique<Transforms>(
-      Transforms{detail::SlabFft(comm, grid.nx(), grid.ny(), planning, threads), {}});
-  t_->multiplier = kernel_spectrum(comm, t_->fft, grid, frf, kernel);
+  t_ = std::make_unique<Transforms>(Transforms{
+      std::make_shared<detail::SlabFft>(comm, grid.nx(), grid.ny(), planning, threads), {}});
+  t_->multiplier = kernel_spectrum(comm, *t_->fft, grid, frf, kernel);
 }
 
 const Slab& DistributedPeriodicOperator::slab() const {
-  return t_->fft.slab();
+  return t_->fft->slab();
+}
+
+const std::shared_ptr<detail::SlabFft>& DistributedPeriodicOperator::slab_fft() const {
+  return t_->fft;
 }
 
 void DistributedPeriodicOperator::apply(const Field& pressure, Field& displacement) {
@@ -75,14 +80,14 @@ void DistributedPeriodicOperator::apply(const Field& pressure, Field& displaceme
   check_pressure(pressure, displacement, "DistributedPeriodicOperator");
   const Slab& s = slab();
   displacement.resize(s.nx, s.rows);
-  t_->fft.forward(pressure.data());
-  std::complex<double>* spectrum = t_->fft.spectrum();
+  t_->fft->forward(pressure.data());
+  std::complex<double>* spectrum = t_->fft->spectrum();
   for (std::size_t n = 0; n < t_->multiplier.size(); ++n) spectrum[n] *= t_->multiplier[n];
-  t_->fft.inverse(displacement.data());
+  t_->fft->inverse(displacement.data());
 }
 
 double DistributedPeriodicOperator::communication_seconds() const {
-  return t_->fft.transpose_seconds();
+  return t_->fft->transpose_seconds();
 }
 
 }  // namespace coatfft

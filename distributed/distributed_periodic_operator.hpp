@@ -17,6 +17,10 @@
 
 namespace coatfft {
 
+namespace detail {
+class SlabFft;
+}  // namespace detail
+
 class DistributedPeriodicOperator final : public DistributedOperator {
  public:
   /// InvalidArgument as periodic_influence_kernel for the grid, the FRF and `kernel`'s options;
@@ -35,6 +39,9 @@ class DistributedPeriodicOperator final : public DistributedOperator {
   void apply(const Field& pressure, Field& displacement) override;
   using SurfaceOperator::apply;
   double communication_seconds() const override;
+  /// Its slab transform: a contact solver's preconditioner on the same fields shares it (its
+  /// half spectra are scratch of each application).
+  const std::shared_ptr<detail::SlabFft>& slab_fft() const;
 
  private:
   struct Transforms;

@@ -13,6 +13,10 @@
 #include "../../convolution/fft/planning.hpp"
 #include "../../core/grid.hpp"
 
+namespace coatfft {
+class SurfaceOperator;
+}  // namespace coatfft
+
 namespace coatfft::detail {
 
 /// z <- P z in place (contact/detail/fourier_preconditioner.hpp).
@@ -32,8 +36,9 @@ class SolverRanks {
   /// This rank's rows of the grid: y0 <= j < y0 + rows.
   virtual std::ptrdiff_t first_row() const = 0;
   virtual std::ptrdiff_t rows() const = 0;
-  /// The half-space preconditioner of the distributed fields.
-  virtual std::unique_ptr<Preconditioner> preconditioner(const Grid& grid, int threads,
+  /// The half-space preconditioner of the distributed fields of `op` (sharing its transforms
+  /// where it can).
+  virtual std::unique_ptr<Preconditioner> preconditioner(const SurfaceOperator& op, int threads,
                                                          Planning planning) const = 0;
 };
 

@@ -17,7 +17,7 @@ class CommunicatorRanks final : public SolverRanks {
   std::ptrdiff_t first_row() const override { return slab_.y0; }
   std::ptrdiff_t rows() const override { return slab_.rows; }
   /// The half-space preconditioner on the slab transform (distributed_contact.cpp).
-  std::unique_ptr<Preconditioner> preconditioner(const Grid& grid, int threads,
+  std::unique_ptr<Preconditioner> preconditioner(const SurfaceOperator& op, int threads,
                                                  Planning planning) const override;
 
  private:
