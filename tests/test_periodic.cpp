@@ -117,6 +117,25 @@ TEST_CASE("single-precision FFTs: the aliased FRF to float rounding", "[periodic
   }
 }
 
+TEST_CASE("a pressure that is not finite anywhere is refused, in both precisions", "[periodic]") {
+  // The operator checks one displacement instead of every pressure: a NaN or an Inf at any cell,
+  // of either sign, must still reach it (each displacement sums every mode, each mode every cell).
+  const Grid g(20, 12, 2e-3, 1.2e-3);
+  const Field kernel = periodic_influence_kernel(g, HalfSpaceFrf(steel));
+  for (const Precision precision : {Precision::double_precision, Precision::single}) {
+    PeriodicOperator op(g, kernel, Method::dcfft, Planning::estimate, precision);
+    for (const double bad : {double(NAN), HUGE_VAL, -HUGE_VAL})
+      for (auto [i, j] : {std::pair{0, 0}, {19, 11}, {7, 3}, {10, 6}, {0, 11}}) {
+        INFO(bad << " at (" << i << ", " << j << ")");
+        Field p = Field::Constant(g.nx(), g.ny(), 1e6);
+        p(i, j) = bad;
+        CHECK_THROWS_WITH(op.apply(p), Catch::Contains("not finite"));
+      }
+    // Finite pressures pass, whatever their sign.
+    CHECK(op.apply(Field::Random(g.nx(), g.ny()) * 1e9).allFinite());
+  }
+}
+
 TEST_CASE("the Ewald real-space part's cell rule on a fine grid (4 points a side)", "[periodic]") {
   // alpha dx = 6/384 = 0.016: the real-space cell integrals take the 4 x 4 rule (at 2 x 2 beyond
   // 60000 cells a side). Eigenvalues against the brute-force alias sum as above.
