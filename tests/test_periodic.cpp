@@ -90,6 +90,29 @@ TEST_CASE("the periodic operator's eigenvalues are the aliased FRF", "[periodic]
   CHECK(op.apply(Field::Constant(32, 24, 1e6)).abs().maxCoeff() < 1e-20);
 }
 
+TEST_CASE("a square period's eigenvalues are the aliased FRF in every quadrant", "[periodic]") {
+  // Square cells of a square period: the kernel's lattice part is evaluated on an eighth of the
+  // half lattice and mirrored (j to -j, i to j), its space part on an octant. A coating two cells
+  // thick gives the FRF a remainder to alias. Modes on both sides of the diagonal, of either
+  // sign, and on the Nyquist row must all be the brute force's.
+  const Grid g(32, 32, 4e-3, 4e-3);
+  const auto frf = make_frf(LayerStack({{tin, 2.5e-4, Interface::bonded}}, steel));
+  PeriodicOperator op(g, periodic_influence_kernel(g, *frf), Method::dcfft);
+  for (auto [mx, my] : {std::pair{1, 0},
+                        {0, 1},
+                        {3, 2},
+                        {2, 3},
+                        {7, -5},
+                        {-5, 7},
+                        {5, -7},
+                        {16, 3},
+                        {3, 16},
+                        {16, 16}}) {
+    INFO(mx << ", " << my);
+    CHECK(measured_eigenvalue(g, op, mx, my) == Approx(eigenvalue(g, *frf, mx, my)).epsilon(1e-7));
+  }
+}
+
 TEST_CASE("single-precision FFTs: the aliased FRF to float rounding", "[periodic]") {
   const Grid g(256, 192, 4e-3, 3e-3);
   const HalfSpaceFrf frf(steel);

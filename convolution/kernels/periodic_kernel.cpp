@@ -10,14 +10,26 @@ namespace coatfft {
 
 namespace {
 
-// The lattice part's spectrum M on the half lattice 0 <= i <= nx/2 (FFTW's c2r layout).
+// The lattice part's spectrum M on the half lattice 0 <= i <= nx/2 (FFTW's c2r layout). M is even
+// in j (the aliases q and -q pair up), and on square cells of a square period symmetric in i and
+// j: it is evaluated for 0 <= j <= ny/2 (and j <= i when square), a quarter or an eighth of the
+// half lattice, and mirrored.
 std::vector<double> spectrum(const Grid& g, const detail::PeriodicKernelParts& parts, int threads) {
-  const std::ptrdiff_t hx = g.nx() / 2 + 1;
+  const std::ptrdiff_t hx = g.nx() / 2 + 1, hy = g.ny() / 2;
+  const bool square = g.nx() == g.ny() && g.dx() == g.dy();
   std::vector<double> m(static_cast<std::size_t>(hx * g.ny()), 0.0);
-  detail::parallel_for(0, g.ny(), threads, [&](std::ptrdiff_t j) {
-    for (std::ptrdiff_t i = 0; i < hx; ++i)
-      m[static_cast<std::size_t>(j * hx + i)] = parts.spectrum(i, j);
+  const auto at = [&](std::ptrdiff_t i, std::ptrdiff_t j) -> double& {
+    return m[static_cast<std::size_t>(j * hx + i)];
+  };
+  detail::parallel_for(0, hy + 1, threads, [&](std::ptrdiff_t j) {
+    for (std::ptrdiff_t i = square ? j : 0; i < hx; ++i) at(i, j) = parts.spectrum(i, j);
   });
+  for (std::ptrdiff_t j = 0; j <= hy; ++j) {
+    if (square)
+      for (std::ptrdiff_t i = 0; i < j; ++i) at(i, j) = at(j, i);
+    if (j > 0 && j < hy)
+      for (std::ptrdiff_t i = 0; i < hx; ++i) at(i, g.ny() - j) = at(i, j);
+  }
   return m;
 }
 
