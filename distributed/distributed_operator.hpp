@@ -2,7 +2,8 @@
 // A surface operator on fields held in row slabs (distributed/slab.hpp) by the ranks of a
 // communicator: apply() takes this rank's rows (nx, rows) of the pressure [Pa] and resizes the
 // displacement [m] to them; it is collective, and refuses a pressure of another shape, or one with
-// a value that is not finite on any rank, with InvalidArgument on every rank (check_pressure). What
+// a value that is not finite on any rank, with InvalidArgument on every rank (check_pressure, or
+// check_shape and check_displacement). What
 // the distributed contact solver (distributed_contact.hpp) needs of an operator: its slab, its
 // communicator, and the time its transposes took.
 #include <string_view>
@@ -33,6 +34,12 @@ class DistributedOperator : public SurfaceOperator {
   /// rank's pressure that is not of its slab's shape or is its displacement, and a value that is
   /// not finite on any rank, in one reduction; `who` names the operator in the message.
   void check_pressure(const Field& pressure, const Field& displacement, std::string_view who) const;
+  /// The same refusals for an operator whose every displacement sums every pressure (a periodic
+  /// one): the shape before the transforms (check_shape), and a value that is not finite after
+  /// them from one displacement of each rank (check_displacement), instead of a pass over the
+  /// pressure. Each agrees over the ranks in one reduction.
+  void check_shape(const Field& pressure, const Field& displacement, std::string_view who) const;
+  void check_displacement(const Field& displacement, std::string_view who) const;
 
  private:
   Communicator comm_;

@@ -76,14 +76,18 @@ const std::shared_ptr<detail::SlabFft>& DistributedPeriodicOperator::slab_fft() 
 }
 
 void DistributedPeriodicOperator::apply(const Field& pressure, Field& displacement) {
-  // An application's only collective besides its transposes.
-  check_pressure(pressure, displacement, "DistributedPeriodicOperator");
+  // An application's only collectives besides its transposes. Every displacement sums every
+  // mode, each mode every cell of every rank: a value that is not finite anywhere reaches each
+  // rank's first displacement, which is checked instead of every pressure (PeriodicOperator's
+  // rule).
+  check_shape(pressure, displacement, "DistributedPeriodicOperator");
   const Slab& s = slab();
   displacement.resize(s.nx, s.rows);
   t_->fft->forward(pressure.data());
   std::complex<double>* spectrum = t_->fft->spectrum();
   for (std::size_t n = 0; n < t_->multiplier.size(); ++n) spectrum[n] *= t_->multiplier[n];
   t_->fft->inverse(displacement.data());
+  check_displacement(displacement, "DistributedPeriodicOperator");
 }
 
 double DistributedPeriodicOperator::communication_seconds() const {

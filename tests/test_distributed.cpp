@@ -6,6 +6,7 @@
 // self_affine_surface's.
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <cmath>
 #include <optional>
 #include <random>
 #include <stdexcept>
@@ -305,12 +306,19 @@ TEST_CASE("the distributed periodic operator refuses a bad pressure on every ran
   const Grid grid(16, 12, 1e-3, 1e-3);
   const auto frf = make_frf(LayerStack({}, steel));
   DistributedPeriodicOperator op(comm, grid, *frf);
-  Field p = op.slab().field();
-  // A value that is not finite in the last row only (the other ranks' pressures are fine).
-  if (op.slab().rows > 0 && op.slab().y0 + op.slab().rows == grid.ny())
-    p(0, p.cols() - 1) = std::nan("");
+  // A value that is not finite (NaN, +-Inf) in one cell of the last row or of the first (the
+  // other ranks' pressures are fine): every rank refuses it, although each checks its own
+  // displacement only.
   Field u;
-  CHECK_THROWS_AS(op.apply(p, u), InvalidArgument);
+  const Slab& s = op.slab();
+  for (const double bad : {std::nan(""), HUGE_VAL, -HUGE_VAL})
+    for (const bool last : {true, false}) {
+      Field p = Field::Constant(s.nx, s.rows, 1e6);
+      if (last && s.rows > 0 && s.y0 + s.rows == grid.ny()) p(5, s.rows - 1) = bad;
+      if (!last && s.rows > 0 && s.y0 == 0) p(11, 0) = bad;
+      CHECK_THROWS_WITH(op.apply(p, u), Catch::Contains("not finite"));
+    }
+  CHECK_NOTHROW(op.apply(Field::Constant(s.nx, s.rows, 1e6), u));
   // A pressure of the wrong shape on rank 0 only.
   Field q = op.slab().field();
   if (comm.rank() == 0) q.resize(3, 3);
