@@ -12,6 +12,7 @@
 #include "core/detail/timing.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
+#include "stress/detail/closed_form_screen.hpp"
 #include "stress/stress_invariants.hpp"
 #include "stress/stress_operator.hpp"
 
@@ -45,15 +46,9 @@ struct Peak {
 // slowest: a whole plane (ny, nx) or the section's one row (nx).
 void append_components(const PlaneStress& s, std::ptrdiff_t j0, std::ptrdiff_t j1,
                        std::vector<double>& out) {
+  // A Field is column-major (x fastest): rows j0 .. j1 - 1 are one run of values, in C order.
   for (const Field& c : s)
-    for (std::ptrdiff_t j = j0; j < j1; ++j)
-      for (std::ptrdiff_t i = 0; i < c.rows(); ++i) out.push_back(c(i, j));
-}
-
-void check_finite(const PlaneStress& s, double z) {
-  for (const Field& c : s)
-    COATFFT_REQUIRE(c.allFinite(), "[stress] the stresses at z = ", z,
-                    " m are not finite (an overflowing load?)");
+    out.insert(out.end(), c.data() + j0 * c.rows(), c.data() + j1 * c.rows());
 }
 
 // The largest von Mises, principal tensile and Tresca stresses of a set of points.
@@ -74,57 +69,41 @@ void reserve_advised(std::vector<double>& v, std::size_t n) {
   detail::advise_huge_pages(v.data(), n * sizeof(double));
 }
 
-// Per cell of a plane: von Mises' stress and the closed form's values with their error bound.
-// Held across the planes: a fresh allocation's first touch costs about as much as the work.
-struct PlaneScratch {
-  std::vector<double> v, tensile, tresca, error;
-};
-
 // The maxima of the rows j0 .. j1 - 1 of plane s at depth z in medium `layer`, in the order of
 // the cells (the first of equal values is the one reported), with principal_stresses' values;
 // their von Mises stresses appended to `von_mises_out` (C order, y slowest) when it is given.
-// The closed form screens the cells (docs/stress.md, "Summary maxima"): only those within its
-// error of the largest values need the iterative solver, and a cell below a value the plane
-// attains cannot hold its maximum.
+// The closed forms screen the cells (docs/stress.md, "Summary maxima"): only those within their
+// error of the largest values get the iterative solver. Refuses a plane with a value that is not
+// finite.
 Peaks plane_peaks(const PlaneStress& s, const Grid& grid, std::ptrdiff_t j0, std::ptrdiff_t j1,
-                  double z, std::size_t layer, std::vector<double>* von_mises_out,
-                  PlaneScratch& scratch) {
+                  double z, std::size_t layer, std::vector<double>* von_mises_out) {
   const std::ptrdiff_t nx = grid.nx();
   const auto cells = static_cast<std::size_t>(nx * (j1 - j0));
-  for (std::vector<double>* f : {&scratch.v, &scratch.tensile, &scratch.tresca, &scratch.error}) {
-    if (f->capacity() < cells) reserve_advised(*f, cells);
-    f->resize(cells);
+  double* mises_out = nullptr;
+  if (von_mises_out) {
+    von_mises_out->resize(von_mises_out->size() + cells);
+    mises_out = von_mises_out->data() + von_mises_out->size() - cells;
   }
-  std::vector<double>&v = scratch.v, &tensile = scratch.tensile, &tresca = scratch.tresca,
-  &error = scratch.error;
-  double reach_tensile = -INFINITY, reach_tresca = -INFINITY;
-  for (std::ptrdiff_t j = j0; j < j1; ++j)
-    for (std::ptrdiff_t i = 0; i < nx; ++i) {
-      const std::size_t k = static_cast<std::size_t>((j - j0) * nx + i);
-      const StressVector t = at(s, i, j);
-      v[k] = von_mises(t);
-      const std::array<double, 3> p = closed_form_principal_stresses(t);
-      tensile[k] = p[0];
-      tresca[k] = 0.5 * (p[0] - p[2]);
-      // A generous bound on the closed form's error: 1e-6 of the largest component (its own is
-      // about 1.5e-8 at worst).
-      error[k] = 1e-6 * std::max({std::abs(t[0]), std::abs(t[1]), std::abs(t[2]), std::abs(t[3]),
-                                  std::abs(t[4]), std::abs(t[5])});
-      reach_tensile = std::max(reach_tensile, tensile[k] - error[k]);
-      reach_tresca = std::max(reach_tresca, tresca[k] - error[k]);
-    }
-  if (von_mises_out) von_mises_out->insert(von_mises_out->end(), v.begin(), v.end());
+  const std::ptrdiff_t offset = j0 * nx;
+  const detail::ClosedFormScreen screen =
+      detail::screen_cells({s[0].data() + offset, s[1].data() + offset, s[2].data() + offset,
+                            s[3].data() + offset, s[4].data() + offset, s[5].data() + offset},
+                           cells, mises_out);
+  COATFFT_REQUIRE(screen.finite, "[stress] the stresses at z = ", z,
+                  " m are not finite (an overflowing load?)");
+  // Cell k of the rows: (k mod nx, j0 + k / nx).
+  const auto i_of = [nx](std::size_t k) { return static_cast<std::ptrdiff_t>(k) % nx; };
+  const auto j_of = [nx, j0](std::size_t k) { return j0 + static_cast<std::ptrdiff_t>(k) / nx; };
   Peaks peaks;
-  for (std::ptrdiff_t j = j0; j < j1; ++j)
-    for (std::ptrdiff_t i = 0; i < nx; ++i) {
-      const std::size_t k = static_cast<std::size_t>((j - j0) * nx + i);
-      const double x = grid.x(i), y = grid.y(j);
-      peaks.mises.take(v[k], x, y, z, layer);
-      if (tensile[k] + error[k] < reach_tensile && tresca[k] + error[k] < reach_tresca) continue;
-      const std::array<double, 3> principal = principal_stresses(at(s, i, j));
-      peaks.tensile.take(principal[0], x, y, z, layer);
-      peaks.tresca.take(0.5 * (principal[0] - principal[2]), x, y, z, layer);  // coatfft::tresca
-    }
+  const std::size_t m = screen.mises_cell;
+  peaks.mises = {screen.mises, grid.x(i_of(m)), grid.y(j_of(m)), z, layer};
+  for (const std::size_t k : screen.candidates) {
+    const std::ptrdiff_t i = i_of(k), j = j_of(k);
+    const std::array<double, 3> principal = principal_stresses(at(s, i, j));
+    peaks.tensile.take(principal[0], grid.x(i), grid.y(j), z, layer);
+    peaks.tresca.take(0.5 * (principal[0] - principal[2]), grid.x(i), grid.y(j), z,
+                      layer);  // coatfft::tresca
+  }
   return peaks;
 }
 
@@ -216,18 +195,16 @@ std::vector<Peaks> write_planes(const StressSpec& spec, const LayerStack& body, 
     if (k.von_mises) reserve_advised(*k.von_mises, k.values);
   }
   std::vector<Peaks> peaks;
-  PlaneScratch scratch;
   for (std::size_t p = 0; p < stress.size(); ++p) {
     progress.step(detail::concat("maxima of plane ", p + 1, " of ", stress.size()));
     check_interrupt();  // keeps the progress line going, and Ctrl-C prompt
     const double z = planes.depths[p];
-    check_finite(stress[p], z);
     const std::size_t layer = body.locate(z, planes.sides[p]).layer;
     const bool row = p >= n_depths && p < n_requested;
     const std::ptrdiff_t j0 = row ? grid.centre_j() : 0, j1 = row ? j0 + 1 : grid.ny();
     const Kind& kind = kinds[p < n_depths ? 0 : row ? 1 : 2];
+    peaks.push_back(plane_peaks(stress[p], grid, j0, j1, z, layer, kind.von_mises));
     if (kind.components) append_components(stress[p], j0, j1, *kind.components);
-    peaks.push_back(plane_peaks(stress[p], grid, j0, j1, z, layer, kind.von_mises, scratch));
   }
   return peaks;
 }

@@ -5,14 +5,11 @@
 #include <cmath>
 #include <cstddef>
 
+#include "stress/detail/principal_closed_form.hpp"
+
 namespace coatfft {
 
 namespace {
-
-double unscaled_von_mises(const StressVector& s) {
-  const double a = s[0] - s[1], b = s[1] - s[2], c = s[2] - s[0];
-  return std::sqrt(0.5 * (a * a + b * b + c * c) + 3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
-}
 
 // The symmetric tensor of s's six components (xx, yy, zz, yz, xz, xy).
 Eigen::Matrix3d tensor(const StressVector& s) {
@@ -26,28 +23,35 @@ std::array<double, 3> largest_first(const Eigen::Vector3d& e) {
   return {e[2], e[1], e[0]};
 }
 
-}  // namespace
-
-double von_mises(const StressVector& s) {
-  // Scaled by the largest component, as std::hypot is: the squares of stresses above ~1e154 Pa
-  // (and the differences of ones near 1e308 Pa) overflow though the result is representable, and
-  // those of stresses below ~1e-154 Pa underflow. The scale is a power of two, so that scaling is
-  // exact and other stresses give the unscaled formula's value. A NaN or an infinity is passed on.
+// The power of two that brings s's largest component near 1 where it lies outside [1e-90,
+// 1e90] Pa: the squares and cubes of the closed forms overflow or underflow beyond. 0 within, and
+// for a tensor of zeros or with a NaN or an infinity (passed on as they are). Scaling by a power
+// of two is exact, so the scaled tensor gives the unscaled formulas' values.
+int extreme_exponent(const StressVector& s) {
   double scale = 0.0;
   bool finite = true;
   for (const double v : s) {
     scale = std::max(scale, std::abs(v));
     finite = finite && std::isfinite(v);
   }
-  if (!finite || scale == 0.0) return unscaled_von_mises(s);
-  // Far from both ends the scaling changes nothing (a power of two scales every rounding alike):
-  // skipped, as it is the costly part.
-  if (scale > 1e-100 && scale < 1e100) return unscaled_von_mises(s);
+  if (!finite || scale == 0.0 || (scale >= 1e-90 && scale <= 1e90)) return 0;
   int exponent = 0;
   std::frexp(scale, &exponent);
+  return exponent;
+}
+
+StressVector scaled(const StressVector& s, int exponent) {
   StressVector t;
   for (std::size_t i = 0; i < s.size(); ++i) t[i] = std::ldexp(s[i], -exponent);
-  return std::ldexp(unscaled_von_mises(t), exponent);
+  return t;
+}
+
+}  // namespace
+
+double von_mises(const StressVector& s) {
+  const int exponent = extreme_exponent(s);
+  const StressVector& t = exponent == 0 ? s : scaled(s, exponent);
+  return std::ldexp(detail::von_mises_unscaled(t[0], t[1], t[2], t[3], t[4], t[5]), exponent);
 }
 
 std::array<double, 3> principal_stresses(const StressVector& s) {
@@ -58,9 +62,11 @@ std::array<double, 3> principal_stresses(const StressVector& s) {
 }
 
 std::array<double, 3> closed_form_principal_stresses(const StressVector& s) {
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
-  solver.computeDirect(tensor(s), Eigen::EigenvaluesOnly);
-  return largest_first(solver.eigenvalues());
+  const int exponent = extreme_exponent(s);
+  const StressVector& t = exponent == 0 ? s : scaled(s, exponent);
+  std::array<double, 3> p = detail::principal_closed_form(t[0], t[1], t[2], t[3], t[4], t[5]);
+  for (double& v : p) v = std::ldexp(v, exponent);
+  return p;
 }
 
 double tresca(const StressVector& s) {

@@ -15,10 +15,11 @@ double von_mises(const StressVector& s);
 /// The principal stresses, largest first [Pa] (tension positive).
 std::array<double, 3> principal_stresses(const StressVector& s);
 
-/// The principal stresses, largest first [Pa], by the closed form (the trigonometric roots of the
-/// characteristic cubic, Eigen's computeDirect): about four times cheaper than
-/// principal_stresses, within about sqrt(eps) of the largest component near a double root and
-/// far closer elsewhere. For screening many points (docs/stress.md, "Summary maxima").
+/// The principal stresses, largest first [Pa], by the closed form (the roots of the
+/// characteristic cubic, its simple root by Newton's method, no trigonometry): an order of
+/// magnitude cheaper than principal_stresses, within about sqrt(eps) of the largest component
+/// near a double root and far closer elsewhere. For screening many points (docs/stress.md,
+/// "Summary maxima").
 std::array<double, 3> closed_form_principal_stresses(const StressVector& s);
 
 /// Tresca's maximum shear stress (s1 - s3)/2 [Pa].

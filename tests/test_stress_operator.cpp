@@ -11,6 +11,7 @@
 
 #include "core/error.hpp"
 #include "loads/hertz_pressure.hpp"
+#include "stress/detail/closed_form_screen.hpp"
 #include "stress/stress_invariants.hpp"
 #include "stress/stress_kernel.hpp"
 #include "stress/stress_operator.hpp"
@@ -201,6 +202,108 @@ TEST_CASE("the closed-form principal stresses against the iterative ones", "[str
   const auto q = closed_form_principal_stresses({1, 0, -1, 0, 3, 0});
   CHECK(q[0] == Approx(std::sqrt(10.0)).epsilon(1e-14));
   CHECK(q[2] == Approx(-std::sqrt(10.0)).epsilon(1e-14));
+}
+
+namespace {
+
+// Cell k of the six component arrays c: diag(d) turned by a random rotation (a random unit
+// quaternion's matrix R, then R diag(d) R^T).
+void set_rotated(std::array<std::vector<double>, 6>& c, std::size_t k, std::array<double, 3> d,
+                 std::mt19937_64& rng) {
+  std::normal_distribution<double> normal;
+  double w = normal(rng), x = normal(rng), y = normal(rng), z = normal(rng);
+  const double norm = std::sqrt(w * w + x * x + y * y + z * z);
+  w /= norm, x /= norm, y /= norm, z /= norm;
+  const double r[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)},
+                          {2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)},
+                          {2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}};
+  const auto m = [&](int i, int j) {
+    return r[i][0] * d[0] * r[j][0] + r[i][1] * d[1] * r[j][1] + r[i][2] * d[2] * r[j][2];
+  };
+  const std::array<double, 6> t{m(0, 0), m(1, 1), m(2, 2), m(1, 2), m(0, 2), m(0, 1)};
+  for (int q = 0; q < 6; ++q) c[q][k] = t[q];
+}
+
+}  // namespace
+
+TEST_CASE("the closed forms' screening finds the iterative solver's maxima over every cell",
+          "[stress_operator]") {
+  // Planes of 700 cells (two blocks and a part) with a smooth peak, noise, a plateau of equal
+  // largest values, double roots and cells beyond [1e-90, 1e90] Pa: the candidates' iterative
+  // maxima, value and first cell, are those of principal_stresses over every cell; von Mises'
+  // stress of every cell is von_mises' value exactly.
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> noise(-1, 1);
+  const std::size_t n = 700;
+  for (int plane = 0; plane < 40; ++plane) {
+    std::array<std::vector<double>, 6> c;
+    for (std::size_t k = 0; k < n; ++k) {
+      const double bump = std::exp(-std::pow((double(k) - 300.0 - 5 * plane) / 80.0, 2));
+      for (int q = 0; q < 6; ++q) c[q].push_back(1e8 * (bump * (q + 1) + 0.3 * noise(rng)));
+    }
+    if (plane % 4 == 0) {  // rotated copies of two states with double roots, the largest of all:
+      // their closed-form values err by about 1e-8, their iterative ones by 1e-16, so the
+      // screening must keep every copy within its error bound for the iterative solver to choose
+      for (std::size_t k = 200; k < 215; ++k) set_rotated(c, k, {5e9, -1e8, -1e8}, rng);
+      for (std::size_t k = 400; k < 415; ++k) set_rotated(c, k, {6e9, 6e9, 5.9e9}, rng);
+    }
+    if (plane % 4 == 1)  // a plateau: equal tensors at cells 100..120, the largest of all
+      for (std::size_t k = 100; k < 120; ++k)
+        for (int q = 0; q < 6; ++q) c[q][k] = 1e9 * (q < 3 ? 3 - q : 0.1);
+    if (plane % 4 == 2)  // uniaxial states plus pressure: double roots, the largest among them
+      for (std::size_t k = 0; k < n; k += 7) {
+        c[0][k] = 5e8 + 1e5 * double(k);
+        c[1][k] = c[2][k] = -1e8;
+        c[3][k] = c[4][k] = c[5][k] = 0;
+      }
+    if (plane % 4 == 3) {  // far beyond the closed forms' range, both ways
+      for (int q = 0; q < 6; ++q) c[q][650] *= 1e95;
+      for (int q = 0; q < 6; ++q) c[q][10] *= 1e-105;
+    }
+    std::vector<double> mises(n);
+    const detail::ClosedFormScreen screen = detail::screen_cells(
+        {c[0].data(), c[1].data(), c[2].data(), c[3].data(), c[4].data(), c[5].data()}, n,
+        mises.data());
+    double tensile = -INFINITY, tresca = -INFINITY, vm = -INFINITY;
+    std::size_t at_tensile = 0, at_tresca = 0, at_vm = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const StressVector t{c[0][k], c[1][k], c[2][k], c[3][k], c[4][k], c[5][k]};
+      const auto p = principal_stresses(t);
+      if (p[0] > tensile) tensile = p[0], at_tensile = k;
+      if (0.5 * (p[0] - p[2]) > tresca) tresca = 0.5 * (p[0] - p[2]), at_tresca = k;
+      if (von_mises(t) > vm) vm = von_mises(t), at_vm = k;
+      REQUIRE(mises[k] == von_mises(t));
+    }
+    double screened_tensile = -INFINITY, screened_tresca = -INFINITY;
+    std::size_t screened_at_tensile = 0, screened_at_tresca = 0;
+    for (const std::size_t k : screen.candidates) {
+      const auto p = principal_stresses({c[0][k], c[1][k], c[2][k], c[3][k], c[4][k], c[5][k]});
+      if (p[0] > screened_tensile) screened_tensile = p[0], screened_at_tensile = k;
+      if (0.5 * (p[0] - p[2]) > screened_tresca)
+        screened_tresca = 0.5 * (p[0] - p[2]), screened_at_tresca = k;
+    }
+    INFO("plane " << plane << ": " << screen.candidates.size() << " candidates");
+    CHECK(screen.finite);
+    CHECK(screen.mises == vm);
+    CHECK(screen.mises_cell == at_vm);
+    CHECK(screened_tensile == tensile);
+    CHECK(screened_at_tensile == at_tensile);
+    CHECK(screened_tresca == tresca);
+    CHECK(screened_at_tresca == at_tresca);
+    // The screening is worth its name: a handful of cells, not the plane.
+    CHECK(screen.candidates.size() < n / 10);
+  }
+  // A value that is not finite anywhere is reported.
+  for (const double bad : {std::nan(""), HUGE_VAL, -HUGE_VAL})
+    for (const std::size_t k : {std::size_t(0), std::size_t(257), n - 1}) {
+      std::array<std::vector<double>, 6> c;
+      for (auto& v : c) v.assign(n, 1e6);
+      c[k % 6][k] = bad;
+      CHECK_FALSE(detail::screen_cells({c[0].data(), c[1].data(), c[2].data(), c[3].data(),
+                                        c[4].data(), c[5].data()},
+                                       n, nullptr)
+                      .finite);
+    }
 }
 
 TEST_CASE("stress operator: interface conditions and a coating of the substrate's own material",
