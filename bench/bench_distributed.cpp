@@ -11,8 +11,9 @@
 // solve time, the transposes' share of it, peak memory): the surface of scripts/rough_scale_run.sh
 // (H 0.8, rms slope 0.05, shortest wavelength 16 cells, roll-off 0.25 mm, seed 2004) made by the
 // ranks, pressed by a flat to a mean pressure of 0.045 E* times the rms slope (about 10 % contact),
-// tolerance 1e-10, no nested start in either (not distributed yet); written by
-// scripts/distributed_scale_run.sh to bench/results/distributed_contact.csv.
+// tolerance 1e-10, no nested start in either unless --nested (then both start nested; the row
+// ends with the coarse grids' applications); written by scripts/distributed_scale_run.sh to
+// bench/results/distributed_contact.csv.
 // With --free, the free surface's DC-FFT instead of the periodic operator: DistributedDcfftOperator
 // against the serial DcfftOperator with Love's coefficients, on steel (written by
 // scripts/distributed_scale_run.sh to bench/results/distributed_dcfft.csv). With --free-split, the
@@ -59,6 +60,7 @@ struct Options {
   int threads = 1;
   bool serial = false;
   bool contact = false;
+  bool nested = false;      // the contact's nested start, serial and distributed alike
   bool free = false;        // DC-FFT of the free surface on steel
   bool free_split = false;  // the free surface of the coated body by frf-split
 };
@@ -146,7 +148,7 @@ Row run_serial(const Options& o, const Frf& frf, const Grid& grid) {
 
 struct ContactRow {
   double setup_s = 0, solve_s = 0, transpose_s = 0, area = 0, rss_max_mb = 0, rss_sum_mb = 0;
-  int iterations = 0, applications = 0;
+  int iterations = 0, applications = 0, coarse_applications = 0;
   bool converged = false;
 };
 
@@ -160,10 +162,10 @@ SelfAffineSpec rough_spec(const Grid& grid) {
   return spec;
 }
 
-ContactOptions rough_options(int threads) {
+ContactOptions rough_options(const Options& o) {
   ContactOptions options;
-  options.nested_start = false;
-  options.threads = threads;
+  options.nested_start = o.nested;
+  options.threads = o.threads;
   return options;
 }
 
@@ -174,6 +176,7 @@ double rough_load(const Grid& grid) {
 void fill(ContactRow& row, const ContactResult& r, const Grid& grid) {
   row.iterations = r.iterations;
   row.applications = r.operator_applications;
+  row.coarse_applications = r.coarse_applications;
   row.converged = r.converged;
   row.area = r.contact_area / (grid.lx() * grid.ly());
 }
@@ -188,7 +191,7 @@ ContactRow contact_distributed(const Options& o, const Frf& frf, const Grid& gri
   row.setup_s = comm.max(detail::seconds_since(start));
   const Field z = self_affine_slab(comm, grid, rough_spec(grid));
   const Field h = comm.max(z.size() ? z.maxCoeff() : -1e300) - z;
-  const auto solver = distributed_contact_solver(op, rough_options(o.threads));
+  const auto solver = distributed_contact_solver(op, rough_options(o));
   const double before = op.communication_seconds();
   comm.barrier();
   start = Clock::now();
@@ -210,7 +213,7 @@ ContactRow contact_serial(const Options& o, const Frf& frf, const Grid& grid) {
   row.setup_s = detail::seconds_since(start);
   const Field z = self_affine_surface(grid, rough_spec(grid));
   const Field h = z.maxCoeff() - z;
-  ContactSolver solver(op, rough_options(o.threads));
+  ContactSolver solver(op, rough_options(o));
   start = Clock::now();
   const ContactResult r = solver.solve_load(h, rough_load(grid));
   row.solve_s = detail::seconds_since(start);
@@ -229,6 +232,7 @@ int main(int argc, char** argv) {
   app.add("--threads", o.threads, "FFTW threads per rank").show_default();
   app.flag("--serial", o.serial, "the serial PeriodicOperator, without MPI");
   app.flag("--contact", o.contact, "a periodic rough contact instead of applications");
+  app.flag("--nested", o.nested, "--contact with the nested start (serial and distributed)");
   app.flag("--free", o.free, "the free surface's DC-FFT on steel instead of the periodic operator");
   app.flag("--free-split", o.free_split,
            "the free surface of the coated body by frf-split instead of the periodic operator");
@@ -257,11 +261,14 @@ int main(int argc, char** argv) {
     if (o.contact) {
       const ContactRow c =
           o.serial ? contact_serial(o, *frf, grid) : contact_distributed(o, *frf, grid);
-      if (rank == 0)
-        std::printf("%td,%s,%d,%.3f,%d,%d,%s,%.4f,%.2f,%.2f,%.3f,%.0f,%.0f\n", o.n, who.c_str(),
+      if (rank == 0) {
+        std::printf("%td,%s,%d,%.3f,%d,%d,%s,%.4f,%.2f,%.2f,%.3f,%.0f,%.0f", o.n, who.c_str(),
                     o.threads, c.setup_s, c.iterations, c.applications,
                     c.converged ? "true" : "false", c.area, c.solve_s, c.transpose_s,
                     c.solve_s > 0 ? c.transpose_s / c.solve_s : 0.0, c.rss_max_mb, c.rss_sum_mb);
+        if (o.nested) std::printf(",%d", c.coarse_applications);
+        std::printf("\n");
+      }
       return 0;
     }
     const Row row = o.serial ? run_serial(o, *frf, grid) : run_distributed(o, *frf, grid);

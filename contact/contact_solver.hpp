@@ -214,8 +214,8 @@ class ContactSolver {
   explicit ContactSolver(SurfaceOperator& op, ContactOptions options = {});
   /// On fields distributed over `ranks` (distributed/distributed_contact.hpp builds it): the
   /// heights, pressures, displacements and gaps are this rank's rows, the result's numbers are
-  /// the whole grid's, and every solve is collective. No nested start (ContactOptions::nested_start
-  /// is ignored).
+  /// the whole grid's, and every solve is collective. The nested start is taken where the operator
+  /// coarsens (a distributed periodic one whose ranks' rows pair up: docs/scale.md).
   ContactSolver(SurfaceOperator& op, ContactOptions options,
                 std::shared_ptr<const detail::SolverRanks> ranks);
   ~ContactSolver();

@@ -54,6 +54,12 @@ std::unique_ptr<detail::Preconditioner> detail::CommunicatorRanks::preconditione
       std::make_shared<detail::SlabFft>(comm_, grid.nx(), grid.ny(), planning, threads), grid);
 }
 
+std::shared_ptr<const detail::SolverRanks> detail::CommunicatorRanks::of(
+    const SurfaceOperator& op) const {
+  const auto& distributed = dynamic_cast<const DistributedOperator&>(op);
+  return std::make_shared<CommunicatorRanks>(comm_, distributed.slab());
+}
+
 std::unique_ptr<ContactSolver> distributed_contact_solver(DistributedOperator& op,
                                                           ContactOptions options) {
   return std::make_unique<ContactSolver>(

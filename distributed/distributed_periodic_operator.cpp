@@ -1,8 +1,10 @@
 #include "distributed/distributed_periodic_operator.hpp"
 
+#include <algorithm>
 #include <memory>
 #include <vector>
 
+#include "convolution/kernels/detail/coarse_kernel.hpp"
 #include "convolution/kernels/detail/periodic_kernel_parts.hpp"
 #include "core/detail/parallel_for.hpp"
 #include "core/error.hpp"
@@ -16,6 +18,35 @@ struct DistributedPeriodicOperator::Transforms {
 };
 
 namespace {
+
+// DFT(K)/(nx ny) on this rank's columns from its rows of the kernel K (`kernel` is overwritten):
+// real, the kernel being even.
+std::vector<double> kernel_multiplier(detail::SlabFft& fft, Field& kernel) {
+  const Slab& s = fft.slab();
+  const double cells = static_cast<double>(s.nx * s.ny);
+  fft.forward(kernel.data());
+  const std::complex<double>* spectrum = fft.spectrum();
+  std::vector<double> m(static_cast<std::size_t>(s.columns * s.ny));
+  for (std::size_t n = 0; n < m.size(); ++n) m[n] = (1.0 / cells) * spectrum[n].real();
+  return m;
+}
+
+// The fine kernel's row y0 - 1 (modulo ny) for this rank's slab: the last row of the nearest
+// rank before it that holds rows (gathered from every rank's last row; a rank without rows
+// sends its row index as -1).
+std::vector<double> row_before(const Communicator& comm, const Slab& s, const Field& kernel) {
+  std::vector<double> mine(static_cast<std::size_t>(s.nx + 1), 0.0);
+  mine[0] = s.rows > 0 ? static_cast<double>(s.y0 + s.rows - 1) : -1.0;
+  if (s.rows > 0) std::copy_n(&kernel(0, s.rows - 1), s.nx, mine.begin() + 1);
+  std::vector<double> all(mine.size() * static_cast<std::size_t>(comm.size()));
+  comm.all_gather(mine.data(), mine.size() * sizeof(double), all.data());
+  const double wanted = static_cast<double>(s.y0 == 0 ? s.ny - 1 : s.y0 - 1);
+  for (std::size_t r = 0; r < static_cast<std::size_t>(comm.size()); ++r)
+    if (all[r * mine.size()] == wanted)
+      return {all.begin() + std::ptrdiff_t(r * mine.size() + 1),
+              all.begin() + std::ptrdiff_t((r + 1) * mine.size())};
+  return std::vector<double>(static_cast<std::size_t>(s.nx), 0.0);  // no rows here: not read
+}
 
 // The kernel's spectrum in the serial operator's steps (PeriodicOperator with
 // periodic_influence_kernel): K = IDFT(M)/(nx ny) + real space, less its mean; DFT(K)/(nx ny).
@@ -41,10 +72,7 @@ std::vector<double> kernel_spectrum(const Communicator& comm, detail::SlabFft& f
     }
   });
   k -= comm.sum(k.sum()) / cells;
-  fft.forward(k.data());
-  std::vector<double> m(static_cast<std::size_t>(s.columns * s.ny));
-  for (std::size_t n = 0; n < m.size(); ++n) m[n] = (1.0 / cells) * spectrum[n].real();
-  return m;
+  return kernel_multiplier(fft, k);
 }
 
 }  // namespace
@@ -56,7 +84,7 @@ DistributedPeriodicOperator::DistributedPeriodicOperator(const Communicator& com
                                                          const PeriodicKernelOptions& kernel,
                                                          Planning planning, int threads,
                                                          Method method)
-    : DistributedOperator(comm, grid), method_(method) {
+    : DistributedOperator(comm, grid), method_(method), threads_(threads) {
   COATFFT_REQUIRE(threads >= 1, "DistributedPeriodicOperator: threads = ", threads,
                   " must be >= 1");
   COATFFT_REQUIRE(grid.nx() % 2 == 0 && grid.ny() % 2 == 0,
@@ -65,6 +93,34 @@ DistributedPeriodicOperator::DistributedPeriodicOperator(const Communicator& com
   t_ = std::make_unique<Transforms>(Transforms{
       std::make_shared<detail::SlabFft>(comm, grid.nx(), grid.ny(), planning, threads), {}});
   t_->multiplier = kernel_spectrum(comm, *t_->fft, grid, frf, kernel);
+}
+
+DistributedPeriodicOperator::DistributedPeriodicOperator(const Communicator& comm, const Grid& grid,
+                                                         std::shared_ptr<detail::SlabFft> fft,
+                                                         Field kernel_rows, int threads,
+                                                         Method method)
+    : DistributedOperator(comm, grid), method_(method), threads_(threads) {
+  t_ = std::make_unique<Transforms>(Transforms{std::move(fft), {}});
+  t_->multiplier = kernel_multiplier(*t_->fft, kernel_rows);
+}
+
+std::unique_ptr<SurfaceOperator> DistributedPeriodicOperator::coarsened() {
+  const Grid& g = grid();
+  const Slab& s = slab();
+  const Communicator& comm = communicator();
+  if (!comm.all(g.nx() % 2 == 0 && g.ny() % 2 == 0 && s.y0 % 2 == 0 && s.rows % 2 == 0))
+    return nullptr;
+  const Grid coarse(g.nx() / 2, g.ny() / 2, g.lx(), g.ly());
+  auto fft = std::make_shared<detail::SlabFft>(comm, coarse.nx(), coarse.ny(), Planning::estimate,
+                                               threads_);
+  // The coarse rows of this rank's pairs must be FFTW's coarse slab for it.
+  if (!comm.all(fft->slab().y0 == s.y0 / 2 && fft->slab().rows == s.rows / 2)) return nullptr;
+  const Field kernel = unit_response();
+  const std::vector<double> before = row_before(comm, s, kernel);
+  Field rows = s.rows > 0 ? detail::coarse_periodic_kernel_rows(kernel, before.data())
+                          : Field(coarse.nx(), 0);
+  return std::unique_ptr<SurfaceOperator>(new DistributedPeriodicOperator(
+      comm, coarse, std::move(fft), std::move(rows), threads_, method_));
 }
 
 const Slab& DistributedPeriodicOperator::slab() const {

@@ -42,10 +42,20 @@ class DistributedPeriodicOperator final : public DistributedOperator {
   /// Its slab transform: a contact solver's preconditioner on the same fields shares it (its
   /// half spectra are scratch of each application).
   const std::shared_ptr<detail::SlabFft>& slab_fft() const;
+  /// The same body on the grid with half the cells per side, by the Galerkin coarse kernel of
+  /// the serial operator's coarsened() (convolution/kernels/detail/coarse_kernel.hpp), each rank
+  /// holding the coarse rows of its own pairs of rows: nullptr (on every rank) when a rank's
+  /// rows do not pair up or FFTW's coarse slabs are not those halves. Collective.
+  std::unique_ptr<SurfaceOperator> coarsened() override;
 
  private:
   struct Transforms;
+  // From this rank's rows of the kernel, on the slab transform `fft` of `grid`.
+  DistributedPeriodicOperator(const Communicator& comm, const Grid& grid,
+                              std::shared_ptr<detail::SlabFft> fft, Field kernel_rows, int threads,
+                              Method method);
   Method method_;
+  int threads_;
   std::unique_ptr<Transforms> t_;
 };
 

@@ -8,7 +8,9 @@
 # frf-split against DcfftOperator(split_frf_kernel), bench/results/distributed_split.csv; with
 # WHAT=output, a field's .npy file by MPI-IO against its NetCDF file by PnetCDF
 # (bench_distributed_output), bench/results/distributed_output.csv.
-#   Body: TiN 5 um on steel, period 1 mm; one FFTW thread a rank; FFTW_ESTIMATE plans.
+#   Body: TiN 5 um on steel, period 1 mm; one FFTW thread a rank; FFTW_ESTIMATE plans. NESTED=1:
+#   the contact with the nested start, serial and distributed (a last column: the coarse grids'
+#   applications).
 # Usage: scripts/distributed_scale_run.sh [N ...]   (default 2048 4096; RANKS, default "1 2 4";
 #        WHAT: operator, contact or both (default), free, split or output; SERIAL=0 leaves out the serial rows; TAG
 #        names other result files, distributed_operatorTAG.csv and distributed_contactTAG.csv;
@@ -22,6 +24,7 @@ read -r -a ranks <<<"${RANKS:-1 2 4}"
 what=${WHAT:-both}
 serial=${SERIAL:-1}
 tag=${TAG:-}
+nested=${NESTED:-0}
 cmake --build "$build" --target bench_distributed >/dev/null
 bench=$build/bench/bench_distributed
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
@@ -107,11 +110,19 @@ if [ "$what" != operator ]; then
 {
   header "bench_distributed --contact: a periodic rough contact solved on distributed fields"
   echo "# surface: H 0.8, rms slope 0.05, shortest wavelength 16 cells, roll-off 0.25 mm, seed 2004;"
-  echo "#   mean pressure 0.045 E* x rms slope; tolerance 1e-10; no nested start (serial and distributed)"
+  columns=N,ranks,threads,setup_s,iterations,applications,converged,area_fraction,solve_s,transpose_s,transpose_share,rss_max_mb,rss_sum_mb
+  flags=(--contact)
+  if [ "$nested" != 0 ]; then
+    echo "#   mean pressure 0.045 E* x rms slope; tolerance 1e-10; the nested start (serial and distributed)"
+    columns=$columns,coarse_applications
+    flags+=(--nested)
+  else
+    echo "#   mean pressure 0.045 E* x rms slope; tolerance 1e-10; no nested start (serial and distributed)"
+  fi
   echo "# solve_s: the solve on the slowest rank; transpose_s: the operator's transposes within it"
   echo "#   (the preconditioner's are not counted); rss_*: peak resident memory [MiB] of a rank, sum"
-  echo "N,ranks,threads,setup_s,iterations,applications,converged,area_fraction,solve_s,transpose_s,transpose_share,rss_max_mb,rss_sum_mb"
+  echo "$columns"
 } >"$tmp"
-measure "$root/bench/results/distributed_contact$tag.csv" --contact
+measure "$root/bench/results/distributed_contact$tag.csv" "${flags[@]}"
 fi
 trap - EXIT

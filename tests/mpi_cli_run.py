@@ -7,7 +7,7 @@ on the coated body (frf-split) at 2 and 3 ranks, and the Hertz pressure on steel
 (name = "auto", which chooses DC-FFT as serially) at 2 ranks: summary.json has
 the serial run's keys and "ranks", the same iterations, and the load, approach, pressure,
 displacement and gap equal the serial run's to 1e-10 (the grids are below the nested start's 128
-cells a side, which the distributed solve does not take yet: docs/scale.md); displacement.csv
+cells a side; the nested start's equality is tests/test_distributed.cpp's); displacement.csv
 holds the .npy files' values in the serial file's order. The rough contact and a pressure map
 again with fields.nc (written by the ranks together): the serial file's format, variables,
 coordinates and attributes, summary.json as its `summary`, the fields as above. A wisdom file is

@@ -14,6 +14,7 @@
 #include <tuple>
 
 #include "contact/contact_solver.hpp"
+#include "contact/detail/contact_patches.hpp"
 #include "contact/detail/initial_pressure.hpp"
 #include "contact/indenter.hpp"
 #include "convolution/kernels/influence_kernel.hpp"
@@ -352,34 +353,57 @@ TEST_CASE(
   }
 }
 
-TEST_CASE("a distributed periodic rough contact of a coated body equals the serial solve") {
-  const Communicator comm = Communicator::world();
-  // A rough surface, whole on every rank (the reference) and in slabs; TiN 5 um on steel.
-  const Grid grid(64, 50, 1e-3, 0.8e-3);
-  SelfAffineSpec spec;
-  spec.hurst = 0.8;
-  spec.rms_slope = 0.05;
-  spec.seed = 3;
-  const Field z = self_affine_surface(grid, spec);
-  const Field h = z.maxCoeff() - z;
-  const auto frf = make_frf(LayerStack({Coating{tin, 5e-6, Interface::bonded}}, steel));
-  PeriodicOperator serial_op(grid, periodic_influence_kernel(grid, *frf), Method::frf_split);
-  DistributedPeriodicOperator op(comm, grid, *frf);
-  const Slab& s = op.slab();
-  ContactOptions options;
-  options.nested_start = false;  // not distributed yet: both solves start from the Hertzian start
-  options.compute_approach = true;
-  ContactSolver serial(serial_op, options);
-  const auto distributed = distributed_contact_solver(op, options);
-  // About 10 % contact: mean pressure 0.045 E* times the rms slope.
-  const double load = 0.045 * steel.plane_strain_modulus() * 0.05 * grid.lx() * grid.ly();
-  const double approach = h.mean() - 0.6 * (h.mean() - h.minCoeff());
-  for (const ContactControl control : {ContactControl::load, ContactControl::approach}) {
-    const double value = control == ContactControl::load ? load : approach;
-    const ContactResult b = distributed->solve(rows_of(h, s), control, value);
-    check_same_solve(comm, serial.solve(h, control, value), b, s);
-    CHECK(b.touches_boundary == false);  // a periodic surface has no edge
+namespace {
+
+// A rough surface of `seed` pressed into TiN 5 um on steel to about 10 % contact, whole on every
+// rank (the reference) and in slabs, with its serial and distributed periodic operators.
+struct RoughPeriodicCase {
+  Grid grid;
+  Field h;
+  std::unique_ptr<Frf> frf = make_frf(LayerStack({Coating{tin, 5e-6, Interface::bonded}}, steel));
+  PeriodicOperator serial_op;
+  DistributedPeriodicOperator op;
+  RoughPeriodicCase(const Communicator& comm, const Grid& g, unsigned seed)
+      : grid(g),
+        h(heights(g, seed)),
+        serial_op(g, periodic_influence_kernel(g, *frf), Method::frf_split),
+        op(comm, g, *frf) {}
+  static Field heights(const Grid& g, unsigned seed) {
+    SelfAffineSpec spec;
+    spec.hurst = 0.8;
+    spec.rms_slope = 0.05;
+    spec.seed = seed;
+    const Field z = self_affine_surface(g, spec);
+    return z.maxCoeff() - z;
   }
+  // Serial and distributed solves under load and approach control: the same solve, and the same
+  // coarse applications (none without the nested start).
+  void check_solves(const Communicator& comm, bool nested) {
+    ContactOptions options;
+    options.nested_start = nested;
+    options.compute_approach = true;
+    ContactSolver serial(serial_op, options);
+    const auto distributed = distributed_contact_solver(op, options);
+    const double load = 0.045 * steel.plane_strain_modulus() * 0.05 * grid.lx() * grid.ly();
+    const double approach = h.mean() - 0.6 * (h.mean() - h.minCoeff());
+    for (const ContactControl control : {ContactControl::load, ContactControl::approach}) {
+      const double value = control == ContactControl::load ? load : approach;
+      const ContactResult a = serial.solve(h, control, value);
+      const ContactResult b = distributed->solve(rows_of(h, op.slab()), control, value);
+      CHECK((a.coarse_applications > 0) == nested);
+      CHECK(b.coarse_applications == a.coarse_applications);
+      check_same_solve(comm, a, b, op.slab());
+      CHECK(b.touches_boundary == false);  // a periodic surface has no edge
+    }
+  }
+};
+
+}  // namespace
+
+TEST_CASE("a distributed periodic rough contact of a coated body equals the serial solve") {
+  // 50 rows: no coarse grid pairs them at 3 ranks; both solves start from the Hertzian start.
+  RoughPeriodicCase(Communicator::world(), Grid(64, 50, 1e-3, 0.8e-3), 3)
+      .check_solves(Communicator::world(), false);
 }
 
 TEST_CASE("the distributed level of the heights is the serial quantile, ties and signs alike") {
@@ -405,6 +429,44 @@ TEST_CASE("the distributed level of the heights is the serial quantile, ties and
       }
     }
   }
+}
+
+TEST_CASE("the distributed count of contact patches is the serial one") {
+  const Communicator comm = Communicator::world();
+  // Random masks from sparse to dense (patches crossing the slabs' borders, wrapping both ways,
+  // or spanning every rank), free and periodic; grids whose rows leave a rank empty at 3 ranks.
+  std::mt19937_64 rng(17);
+  for (auto [nx, ny] : {std::pair{40, 30}, {9, 2}, {24, 7}}) {
+    const Slab s = slab_of(comm, nx, ny);
+    const detail::CommunicatorRanks ranks(comm, s);
+    for (double density : {0.1, 0.4, 0.6, 0.9}) {
+      detail::CellMask cells(nx, ny);
+      for (Eigen::Index n = 0; n < cells.size(); ++n)
+        cells(n) = static_cast<double>(rng() >> 11) * 0x1.0p-53 < density;
+      const detail::CellMask mine = cells.middleCols(s.y0, s.rows);
+      for (const bool periodic : {false, true}) {
+        const int serial = detail::count_patches(cells, periodic);
+        CHECK(comm.all(detail::count_patches(mine, periodic, &ranks) == serial));
+      }
+    }
+  }
+}
+
+TEST_CASE("a distributed periodic rough contact takes the serial nested start") {
+  const Communicator comm = Communicator::world();
+  // 128 x 384 cells: the nested start's coarse grid (64 x 192) pairs each rank's rows at 1, 2 and
+  // 3 ranks (FFTW's slabs of 384, 192 or 128 rows and of their halves), and is the coarsest (its
+  // side is under twice 64).
+  RoughPeriodicCase rough(comm, Grid(128, 384, 1e-3, 3e-3), 7);
+  rough.check_solves(comm, true);
+  // The Galerkin coarse operator of the ranks is the serial one's, row for row.
+  const std::unique_ptr<SurfaceOperator> coarse = rough.op.coarsened();
+  const std::unique_ptr<SurfaceOperator> serial_coarse = rough.serial_op.coarsened();
+  REQUIRE(coarse);
+  const auto& coarse_slab = dynamic_cast<const DistributedOperator&>(*coarse).slab();
+  const Field p = random_pressure(serial_coarse->grid(), 5);
+  CHECK(relative_difference(comm, coarse->apply(rows_of(p, coarse_slab)),
+                            rows_of(serial_coarse->apply(p), coarse_slab)) < 1e-12);
 }
 
 TEST_CASE("a distributed contact solve stops on every rank when one rank is interrupted") {

@@ -5,9 +5,13 @@
 
 namespace coatfft::detail {
 
+class SolverRanks;
+
 using CellMask = Eigen::Array<bool, Eigen::Dynamic, Eigen::Dynamic>;
 
-/// The number of patches of the cells set in `cells` (a flood fill, linear in the cells).
-int count_patches(const CellMask& cells, bool periodic);
+/// The number of patches of the cells set in `cells` (a flood fill, linear in the cells). With
+/// `ranks`, `cells` is this rank's rows and the count is the whole grid's, the same on every rank
+/// (collective).
+int count_patches(const CellMask& cells, bool periodic, const SolverRanks* ranks = nullptr);
 
 }  // namespace coatfft::detail

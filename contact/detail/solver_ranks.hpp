@@ -40,6 +40,9 @@ class SolverRanks {
   /// where it can).
   virtual std::unique_ptr<Preconditioner> preconditioner(const SurfaceOperator& op, int threads,
                                                          Planning planning) const = 0;
+  /// The same ranks holding the fields of another distributed operator `op` (its own rows): a
+  /// nested start's coarse operator.
+  virtual std::shared_ptr<const SolverRanks> of(const SurfaceOperator& op) const = 0;
 };
 
 /// `mine` combined over the ranks by Sums' += in rank order (the same on every rank, and for a

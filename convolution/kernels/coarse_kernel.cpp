@@ -39,6 +39,15 @@ Field coarse_periodic_kernel(const Field& kernel) {
   });
 }
 
+Field coarse_periodic_kernel_rows(const Field& rows, const double* before) {
+  const auto nx = rows.rows();
+  const auto wrap = [nx](std::ptrdiff_t d) { return d < 0 ? d + nx : d >= nx ? d - nx : d; };
+  // Coarse row J of the slab reads fine rows 2 J - 1 .. 2 J + 1: within the slab but for -1.
+  return galerkin_sum(nx / 2, rows.cols() / 2, [&](std::ptrdiff_t di, std::ptrdiff_t dj) {
+    return dj < 0 ? before[wrap(di)] : rows(wrap(di), dj);
+  });
+}
+
 Field coarse_kernel_quarter(const Field& quarter) {
   const auto nx = quarter.rows() - 1;  // the fine grid's cells per side
   const auto ny = quarter.cols() - 1;

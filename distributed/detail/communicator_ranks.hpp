@@ -19,6 +19,8 @@ class CommunicatorRanks final : public SolverRanks {
   /// The half-space preconditioner on the slab transform (distributed_contact.cpp).
   std::unique_ptr<Preconditioner> preconditioner(const SurfaceOperator& op, int threads,
                                                  Planning planning) const override;
+  /// `op` is a DistributedOperator on the same communicator (distributed_contact.cpp).
+  std::shared_ptr<const SolverRanks> of(const SurfaceOperator& op) const override;
 
  private:
   Communicator comm_;

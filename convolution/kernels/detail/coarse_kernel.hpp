@@ -16,6 +16,12 @@ namespace coatfft::detail {
 /// fine offsets taken modulo the period.
 Field coarse_periodic_kernel(const Field& kernel);
 
+/// The same for a kernel held in row slabs (distributed/): from the fine rows y0 .. y0 + rows - 1
+/// (nx, rows), y0 and rows even, and the fine row y0 - 1 modulo ny, `before` (nx values), the
+/// coarse rows y0 / 2 .. (y0 + rows) / 2 - 1 (nx / 2, rows / 2): the one row beyond the slab that
+/// the sum reaches.
+Field coarse_periodic_kernel_rows(const Field& rows, const double* before);
+
 /// The Galerkin coarse quarter of a coefficient quarter (nx + 1, ny + 1) of an even kernel on a
 /// grid of even nx, ny (convolution/kernels/influence_kernel.hpp): (nx / 2 + 1, ny / 2 + 1), the
 /// unused entries di = nx / 2 and dj = ny / 2 zero. The offsets it needs, |2 D + a| <= nx - 1,
