@@ -18,8 +18,9 @@ struct Block {
 
 // On x86-64 the closed forms are compiled for AVX-512 and AVX2 besides the baseline SSE2, the
 // widest the processor has chosen when the library loads (target_clones): 5.2, 8.8 and 19.5 ns a
-// cell (measured on an AMD EPYC). Without fused multiply-adds (-ffp-contract=off, this file's
-// option) every width computes the same values.
+// cell on an AMD EPYC (a development measurement; docs/benchmarks.md, "The summary step", has
+// the step's). Without fused multiply-adds (-ffp-contract=off, this file's option) every width
+// computes the same values.
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define COATFFT_WIDEST_VECTORS __attribute__((target_clones("avx512f", "avx2", "default")))
 #else
