@@ -10,10 +10,11 @@
 // stresses are m + rho c for the three roots c of 4 c^3 - 3 c = r, r = 4 J3/rho^3 in [-1, 1]
 // (c = cos(acos(r)/3 - 2 pi k/3)). The root of largest modulus, c in [sqrt(3)/2, 1] for |r|, is
 // simple: from a cubic fit in |r| (within 6.8e-5), two Newton steps reach it to rounding
-// (4.4e-16 measured over |r| in [0, 1]). The other two follow from the sum and product of the
-// roots, c = (-c0 -+ sqrt(3 (1 - c0^2)))/2, which near a double root (|r| -> 1) lose half the
-// digits, as any closed form does: about sqrt(eps) of the largest component there (2e-8
-// measured), 4e-14 elsewhere (tests/test_stress_operator.cpp).
+// (4.4e-16 over |r| in [0, 1], checked densely while developing this). The other two follow from
+// the sum and product of the roots, c = (-c0 -+ sqrt(3 (1 - c0^2)))/2, which near a double root
+// (|r| -> 1) lose half the digits, as any closed form does: within 1e-7 of the largest component
+// there and 1e-12 on random states (tests/test_stress_operator.cpp; about 2e-8 and 4e-14 in the
+// development check).
 #include <algorithm>
 #include <array>
 #include <cmath>
