@@ -111,10 +111,12 @@ std::unique_ptr<SurfaceOperator> DistributedPeriodicOperator::coarsened() {
   if (!comm.all(g.nx() % 2 == 0 && g.ny() % 2 == 0 && s.y0 % 2 == 0 && s.rows % 2 == 0))
     return nullptr;
   const Grid coarse(g.nx() / 2, g.ny() / 2, g.lx(), g.ly());
+  // The coarse rows of this rank's pairs must be FFTW's coarse slab for it (asked before any
+  // transform is planned).
+  const Slab coarse_slab = slab_of(comm, coarse.nx(), coarse.ny());
+  if (!comm.all(coarse_slab.y0 == s.y0 / 2 && coarse_slab.rows == s.rows / 2)) return nullptr;
   auto fft = std::make_shared<detail::SlabFft>(comm, coarse.nx(), coarse.ny(), Planning::estimate,
                                                threads_);
-  // The coarse rows of this rank's pairs must be FFTW's coarse slab for it.
-  if (!comm.all(fft->slab().y0 == s.y0 / 2 && fft->slab().rows == s.rows / 2)) return nullptr;
   const Field kernel = unit_response();
   const std::vector<double> before = row_before(comm, s, kernel);
   Field rows = s.rows > 0 ? detail::coarse_periodic_kernel_rows(kernel, before.data())

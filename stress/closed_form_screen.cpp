@@ -9,11 +9,11 @@ namespace coatfft::detail {
 
 namespace {
 
-// Cells per block: its four arrays (8 KiB each) and the components' slices stay in cache.
+// Cells per block: its four arrays (2 KiB each) and the components' slices stay in cache.
 constexpr std::size_t kBlock = 256;
 
 struct Block {
-  std::array<double, kBlock> mises, tensile, tresca, error;
+  std::array<double, kBlock> mises, tensile, tresca, largest;  // largest: |component|
 };
 
 // On x86-64 the closed forms are compiled for AVX-512 and AVX2 besides the baseline SSE2, the
@@ -27,22 +27,21 @@ struct Block {
 #define COATFFT_WIDEST_VECTORS
 #endif
 
-// The closed forms of n cells into a block, vectorised. The arrays are distinct (restrict: the
-// compiler would otherwise check the pairs of them for overlap, and give up); error is 1e-6 of
-// the largest component, a generous bound on the closed form's error (about 2e-8 of it at worst,
-// near a double root).
+// The closed forms of n cells into a block, vectorised, with each cell's largest |component|. The
+// arrays are distinct (restrict: the compiler would otherwise check the pairs of them for
+// overlap, and give up).
 COATFFT_WIDEST_VECTORS void closed_forms(const double* __restrict xx, const double* __restrict yy,
                                          const double* __restrict zz, const double* __restrict yz,
                                          const double* __restrict xz, const double* __restrict xy,
                                          std::size_t n, double* __restrict mises,
                                          double* __restrict tensile, double* __restrict tresca,
-                                         double* __restrict error) {
+                                         double* __restrict largest) {
   for (std::size_t k = 0; k < n; ++k) {
     mises[k] = von_mises_unscaled(xx[k], yy[k], zz[k], yz[k], xz[k], xy[k]);
     const std::array<double, 3> p = principal_closed_form(xx[k], yy[k], zz[k], yz[k], xz[k], xy[k]);
     tensile[k] = p[0];
     tresca[k] = 0.5 * (p[0] - p[2]);
-    error[k] = 1e-6 * largest_component(xx[k], yy[k], zz[k], yz[k], xz[k], xy[k]);
+    largest[k] = largest_component(xx[k], yy[k], zz[k], yz[k], xz[k], xy[k]);
   }
 }
 
@@ -73,10 +72,10 @@ ClosedFormScreen screen_cells(const std::array<const double*, 6>& components, st
   for (std::size_t first = 0; first < count; first += kBlock) {
     const std::size_t n = std::min(kBlock, count - first);
     closed_forms(xx + first, yy + first, zz + first, yz + first, xz + first, xy + first, n,
-                 b.mises.data(), b.tensile.data(), b.tresca.data(), b.error.data());
+                 b.mises.data(), b.tensile.data(), b.tresca.data(), b.largest.data());
     for (std::size_t k = 0; k < n; ++k) {
       const std::size_t c = first + k;
-      if (!(b.error[k] == 0 || (b.error[k] >= 1e-96 && b.error[k] <= 1e84)))
+      if (!in_closed_form_range(b.largest[k]))
         redo_scaled({xx[c], yy[c], zz[c], yz[c], xz[c], xy[c]}, b.mises[k], b.tensile[k],
                     b.tresca[k]);
       out.finite = out.finite && std::isfinite(b.mises[k]);
@@ -84,9 +83,12 @@ ClosedFormScreen screen_cells(const std::array<const double*, 6>& components, st
         out.mises = b.mises[k];
         out.mises_cell = c;
       }
-      reach_tensile = std::max(reach_tensile, b.tensile[k] - b.error[k]);
-      reach_tresca = std::max(reach_tresca, b.tresca[k] - b.error[k]);
-      const Upper u{c, b.tensile[k] + b.error[k], b.tresca[k] + b.error[k]};
+      // A generous bound on the closed form's error: 1e-6 of the largest component (about 2e-8
+      // of it at worst, near a double root).
+      const double error = 1e-6 * b.largest[k];
+      reach_tensile = std::max(reach_tensile, b.tensile[k] - error);
+      reach_tresca = std::max(reach_tresca, b.tresca[k] - error);
+      const Upper u{c, b.tensile[k] + error, b.tresca[k] + error};
       if (u.tensile >= reach_tensile || u.tresca >= reach_tresca) maybe.push_back(u);
     }
     if (mises_out) std::copy_n(b.mises.data(), n, mises_out + first);

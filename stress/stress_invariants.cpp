@@ -34,7 +34,7 @@ int extreme_exponent(const StressVector& s) {
     scale = std::max(scale, std::abs(v));
     finite = finite && std::isfinite(v);
   }
-  if (!finite || scale == 0.0 || (scale >= 1e-90 && scale <= 1e90)) return 0;
+  if (!finite || detail::in_closed_form_range(scale)) return 0;
   int exponent = 0;
   std::frexp(scale, &exponent);
   return exponent;

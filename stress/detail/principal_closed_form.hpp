@@ -34,6 +34,12 @@ inline double largest_component(double xx, double yy, double zz, double yz, doub
       std::max(std::abs(xz), std::abs(xy)));
 }
 
+/// Whether the closed forms here hold for a tensor whose largest |component| is `largest` [Pa]:
+/// 0 (a zero tensor), or within [1e-90, 1e90].
+inline bool in_closed_form_range(double largest) {
+  return largest == 0 || (largest >= 1e-90 && largest <= 1e90);
+}
+
 /// s1 >= s2 >= s3 of (xx, yy, zz, yz, xz, xy) [Pa], the largest |component| in [1e-90, 1e90].
 inline std::array<double, 3> principal_closed_form(double xx, double yy, double zz, double yz,
                                                    double xz, double xy) {
